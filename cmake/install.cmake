@@ -1,0 +1,20 @@
+# cmake --install: libglass, its headers (GL/gl.h, GL/glu.h, GL/glut.h, glass/*.h), the glass
+# command line, a pkg-config file and a CMake package giving glass::gl.
+include(CMakePackageConfigHelpers)
+
+install(TARGETS glass_gl EXPORT glassTargets
+        LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
+        ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
+        RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/pipeline/include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+
+install(EXPORT glassTargets NAMESPACE glass:: DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/glass)
+configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/glassConfig.cmake.in
+  ${PROJECT_BINARY_DIR}/glassConfig.cmake INSTALL_DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/glass)
+write_basic_package_version_file(${PROJECT_BINARY_DIR}/glassConfigVersion.cmake
+  COMPATIBILITY SameMinorVersion)
+install(FILES ${PROJECT_BINARY_DIR}/glassConfig.cmake ${PROJECT_BINARY_DIR}/glassConfigVersion.cmake
+        DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/glass)
+
+configure_file(${PROJECT_SOURCE_DIR}/cmake/glass.pc.in ${PROJECT_BINARY_DIR}/glass.pc @ONLY)
+install(FILES ${PROJECT_BINARY_DIR}/glass.pc DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig)

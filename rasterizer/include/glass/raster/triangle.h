@@ -1,0 +1,51 @@
+// Triangle rasterization by fixed-point half-space edge functions.
+//
+// Window coordinates are snapped to 8 sub-pixel bits; a pixel is covered when its centre
+// (x + 0.5, y + 0.5) lies inside all three edges, with the top-left rule deciding centres exactly
+// on an edge, so triangles sharing an edge never both draw, nor both miss, a pixel on it.
+// Setup (edge equations, bounding box, attribute planes) is separate from coverage, which walks
+// 8x8 blocks with trivial accept and reject; a later step can bin setups into tiles.
+#pragma once
+
+#include <cstdint>
+
+#include "glass/raster/fragment.h"
+#include "glass/raster/vertex.h"
+
+namespace glass::raster {
+
+struct TriangleSettings {
+  PixelRect bounds;            // framebuffer intersected with the scissor box
+  int varyingCount = 0;
+  bool perspectiveCorrect = true;  // false: varyings affine in screen space
+  // Added to window z before the depth test: polygon offset (spec 3.5.5), computed by the
+  // pipeline as factor * max|dz/dx|,|dz/dy| + units * r, in window-depth units ([0, 1] range).
+  double depthBias = 0.0;
+  bool frontFacing = true;     // passed through to the fragment batches
+};
+
+struct TriangleSetup {
+  // Edge functions E_i(x, y) = A_i * x + B_i * y + C_i in 24.8 fixed point, oriented so the
+  // interior is E_i > 0 (or E_i == 0 on a top or left edge).
+  int64_t edgeA[3], edgeB[3], edgeC[3];
+  PixelRect box;                 // pixels that can be covered, already clipped to the bounds
+  double z0, zdx, zdy;           // window depth plane at pixel centres, bias included
+  AttributePlanes planes;
+  int varyingCount;
+  bool perspectiveCorrect;
+  bool frontFacing;
+  // Signed area in window coordinates (positive: counter-clockwise), for facing and culling.
+  double signedArea;
+};
+
+// Returns false (and draws nothing) for a degenerate triangle or one outside the bounds.
+bool setupTriangle(const WindowVertex& a, const WindowVertex& b, const WindowVertex& c,
+                   const TriangleSettings& settings, TriangleSetup& setup);
+
+// Emits every covered pixel of the setup to the sink, one batch per 8x8 block.
+void rasterizeTriangle(const TriangleSetup& setup, FragmentSink& sink);
+
+// Signed area (twice the area) of a window-space triangle: positive when counter-clockwise.
+double windowSignedArea(const WindowVertex& a, const WindowVertex& b, const WindowVertex& c);
+
+}  // namespace glass::raster
