@@ -1,0 +1,28 @@
+// The OpenGL 1.x lighting equation (OpenGL 1.5 specification, section 2.13.1), free of any GL
+// context: it reads only a LightingState, so unit tests call it directly and both per-vertex
+// lighting (Gouraud) and per-fragment lighting (the GL_WIN_phong_shading extension) share it.
+// docs/lighting.md walks through it term by term.
+#pragma once
+
+#include "lighting/lighting_state.h"
+
+namespace glass {
+
+// Lights one face of a surface point.
+//   eyePoint  the point V in eye coordinates (x, y, z), already divided by w
+//   normal    the eye-space normal n as given: the equation uses it as it is (the pipeline
+//             normalizes it first only when GL_NORMALIZE or GL_RESCALE_NORMAL asks for it).
+//             For a back face the caller passes the reversed normal.
+//   material  the front or the back material
+// Writes the primary colour c_pri (RGB lit, alpha = the material's diffuse alpha) and the
+// secondary colour c_sec (the specular sum when GL_SEPARATE_SPECULAR_COLOR is set, else zero;
+// its alpha is always 0), each clamped to [0, 1].
+void evaluateLighting(const LightingState& state, const Material& material,
+                      const float eyePoint[3], const float normal[3], float primary[4],
+                      float secondary[4]);
+
+// The point (x/w, y/w, z/w) of a homogeneous eye-space position. A position with w = 0 (only
+// reachable through glVertex4 with w = 0) is taken as the point (x, y, z).
+void eyePointFromHomogeneous(const float eyePosition[4], float point[3]);
+
+}  // namespace glass
