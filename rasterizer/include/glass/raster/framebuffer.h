@@ -1,6 +1,7 @@
 // The framebuffer: RGBA8 colour, 24-bit depth, 8-bit stencil. Row 0 is the bottom row, as in GL.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 

@@ -2,7 +2,9 @@
 //
 // Window coordinates are snapped to 8 sub-pixel bits; a pixel is covered when its centre
 // (x + 0.5, y + 0.5) lies inside all three edges, with the top-left rule deciding centres exactly
-// on an edge, so triangles sharing an edge never both draw, nor both miss, a pixel on it.
+// on an edge, so triangles sharing an edge never both draw, nor both miss, a pixel on it. The rule
+// is stated for rows that run downwards, as in raster memory; in GL's bottom-up window coordinates
+// it means left and bottom edges own their centres, which is also what Mesa draws.
 // Setup (edge equations, bounding box, attribute planes) is separate from coverage, which walks
 // 8x8 blocks with trivial accept and reject; a later step can bin setups into tiles.
 #pragma once
@@ -25,8 +27,9 @@ struct TriangleSettings {
 };
 
 struct TriangleSetup {
-  // Edge functions E_i(x, y) = A_i * x + B_i * y + C_i in 24.8 fixed point, oriented so the
-  // interior is E_i > 0 (or E_i == 0 on a top or left edge).
+  // Edge functions E_i(x, y) = A_i * x + B_i * y + C_i in 24.8 fixed point (x, y are window
+  // coordinates times 256), oriented so the interior is E_i > 0 (or E_i == 0 on an edge that owns
+  // its centres: A_i > 0, or A_i == 0 and B_i > 0).
   int64_t edgeA[3], edgeB[3], edgeC[3];
   PixelRect box;                 // pixels that can be covered, already clipped to the bounds
   double z0, zdx, zdy;           // window depth plane at pixel centres, bias included

@@ -1,0 +1,124 @@
+// Triangle setup: everything about a triangle that does not depend on the pixel, computed once.
+//
+// Edge functions. The vertices are snapped to 24.8 fixed point (X = round(256 x)) and put in
+// counter-clockwise order, so the interior lies on the left of every edge. For the edge from
+// (Xi, Yi) to (Xj, Yj):
+//     E(X, Y) = A X + B Y + C,  A = Yi - Yj,  B = Xj - Xi,  C = Xi Yj - Yi Xj
+// is zero on the edge and positive inside. X, Y are window coordinates times 256; the centre of
+// pixel (i, j) is (256 i + 128, 256 j + 128). All of this is exact integer arithmetic in 64 bits,
+// which is what makes two triangles that share an edge agree on every pixel centre along it.
+//
+// Putting the vertices in one orientation before building the edges means the fill does not
+// depend on the order in which the caller gave them: a clockwise triangle covers exactly the
+// pixels of the same triangle given counter-clockwise.
+//
+// Planes. Depth and the perspective-correct attributes are planes in window x, y fitted through
+// the snapped vertex positions: window z (affine in x, y after the perspective division), and for
+// each varying a, a/w and 1/w (both affine in x, y; spec 3.5.1, equation 3.8), so that at a pixel
+// a = (a/w) / (1/w).
+#include <algorithm>
+#include <cmath>
+
+#include "glass/raster/triangle.h"
+#include "subpixel.h"
+
+namespace glass::raster {
+namespace {
+
+// Coefficients of the plane v(x, y) = v0 + dvdx x + dvdy y through three points.
+struct Plane {
+  double v0, dvdx, dvdy;
+};
+
+Plane fitPlane(const double x[3], const double y[3], double v0, double v1, double v2,
+               double area) {
+  const double d1 = v1 - v0, d2 = v2 - v0;
+  Plane p;
+  p.dvdx = (d1 * (y[2] - y[0]) - d2 * (y[1] - y[0])) / area;
+  p.dvdy = (d2 * (x[1] - x[0]) - d1 * (x[2] - x[0])) / area;
+  p.v0 = v0 - p.dvdx * x[0] - p.dvdy * y[0];
+  return p;
+}
+
+}  // namespace
+
+double windowSignedArea(const WindowVertex& a, const WindowVertex& b, const WindowVertex& c) {
+  return (static_cast<double>(b.x) - a.x) * (static_cast<double>(c.y) - a.y) -
+         (static_cast<double>(c.x) - a.x) * (static_cast<double>(b.y) - a.y);
+}
+
+bool setupTriangle(const WindowVertex& a, const WindowVertex& b, const WindowVertex& c,
+                   const TriangleSettings& settings, TriangleSetup& setup) {
+  const WindowVertex* v[3] = {&a, &b, &c};
+  for (const WindowVertex* p : v)
+    if (!isRasterizableCoordinate(p->x) || !isRasterizableCoordinate(p->y)) return false;
+
+  int64_t X[3], Y[3];
+  for (int i = 0; i < 3; ++i) {
+    X[i] = snapToSubpixel(v[i]->x);
+    Y[i] = snapToSubpixel(v[i]->y);
+  }
+  const int64_t area = (X[1] - X[0]) * (Y[2] - Y[0]) - (X[2] - X[0]) * (Y[1] - Y[0]);
+  if (area == 0) return false;
+  if (area < 0) {  // clockwise: walk it the other way round
+    std::swap(X[1], X[2]);
+    std::swap(Y[1], Y[2]);
+    std::swap(v[1], v[2]);
+  }
+
+  // Pixels whose centre 256 i + 128 lies within [min X, max X] (and the same in y); arithmetic
+  // shifts are floor divisions, also for negative coordinates.
+  const int64_t minX = std::min({X[0], X[1], X[2]}), maxX = std::max({X[0], X[1], X[2]});
+  const int64_t minY = std::min({Y[0], Y[1], Y[2]}), maxY = std::max({Y[0], Y[1], Y[2]});
+  PixelRect box;
+  box.x0 = std::max<int64_t>(settings.bounds.x0, (minX - kSubpixelHalf + kSubpixelOne - 1) >> kSubpixelBits);
+  box.y0 = std::max<int64_t>(settings.bounds.y0, (minY - kSubpixelHalf + kSubpixelOne - 1) >> kSubpixelBits);
+  box.x1 = std::min<int64_t>(settings.bounds.x1, ((maxX - kSubpixelHalf) >> kSubpixelBits) + 1);
+  box.y1 = std::min<int64_t>(settings.bounds.y1, ((maxY - kSubpixelHalf) >> kSubpixelBits) + 1);
+  if (box.empty()) return false;
+  setup.box = box;
+
+  for (int i = 0; i < 3; ++i) {
+    const int j = (i + 1) % 3;
+    setup.edgeA[i] = Y[i] - Y[j];
+    setup.edgeB[i] = X[j] - X[i];
+    setup.edgeC[i] = X[i] * Y[j] - Y[i] * X[j];
+  }
+
+  // Planes in pixel units, through the snapped positions (exact in double).
+  double x[3], y[3];
+  for (int i = 0; i < 3; ++i) {
+    x[i] = static_cast<double>(X[i]) / double(kSubpixelOne);
+    y[i] = static_cast<double>(Y[i]) / double(kSubpixelOne);
+  }
+  const double planeArea = (x[1] - x[0]) * (y[2] - y[0]) - (x[2] - x[0]) * (y[1] - y[0]);
+  setup.signedArea = (area > 0) ? planeArea : -planeArea;
+
+  const Plane z = fitPlane(x, y, v[0]->z, v[1]->z, v[2]->z, planeArea);
+  setup.z0 = z.v0 + settings.depthBias;
+  setup.zdx = z.dvdx;
+  setup.zdy = z.dvdy;
+
+  const int varyingCount = std::clamp(settings.varyingCount, 0, kMaxVaryings);
+  // q = 1/w when perspective-correct; q = 1 makes every varying affine in screen space.
+  double q[3];
+  for (int i = 0; i < 3; ++i) q[i] = settings.perspectiveCorrect ? double(v[i]->invW) : 1.0;
+  AttributePlanes& planes = setup.planes;
+  const Plane invW = fitPlane(x, y, q[0], q[1], q[2], planeArea);
+  planes.invW0 = invW.v0;
+  planes.invWdx = invW.dvdx;
+  planes.invWdy = invW.dvdy;
+  for (int k = 0; k < varyingCount; ++k) {
+    const Plane p = fitPlane(x, y, v[0]->varyings[k] * q[0], v[1]->varyings[k] * q[1],
+                             v[2]->varyings[k] * q[2], planeArea);
+    planes.a0[k] = p.v0;
+    planes.dx[k] = p.dvdx;
+    planes.dy[k] = p.dvdy;
+  }
+  setup.varyingCount = varyingCount;
+  setup.perspectiveCorrect = settings.perspectiveCorrect;
+  setup.frontFacing = settings.frontFacing;
+  return true;
+}
+
+}  // namespace glass::raster
