@@ -6,9 +6,9 @@
 
 #include "lighting/lighting_equation.h"
 
-using glass::evaluateLighting;
-using glass::LightingState;
-using glass::Material;
+using glass::gl::evaluateLighting;
+using glass::gl::LightingState;
+using glass::gl::Material;
 
 namespace {
 
@@ -18,7 +18,7 @@ struct Lit {
 };
 
 Lit light(const LightingState& state, const float point[3], const float normal[3],
-          int face = glass::kFrontMaterial) {
+          int face = glass::gl::kFrontMaterial) {
   Lit out{};
   evaluateLighting(state, state.materials[face], point, normal, out.primary, out.secondary);
   return out;
@@ -206,7 +206,7 @@ TEST_CASE("lighting: every one of the eight lights adds its term; disabled light
   s.materials[0] = blackMaterial();
   setColor(s.materials[0].ambient, 1, 1, 1, 1);
   setColor(s.model.ambient, 0, 0, 0, 1);
-  for (int i = 0; i < glass::kMaxLights; ++i) {
+  for (int i = 0; i < glass::gl::kMaxLights; ++i) {
     setColor(s.lights[i].ambient, 0.01f * static_cast<float>(i + 1), 0, 0, 1);
     s.lights[i].enabled = (i % 2) == 1;  // lights 1, 3, 5, 7
   }
@@ -228,9 +228,9 @@ TEST_CASE("lighting: results are clamped to [0, 1], emission included") {
 
 TEST_CASE("lighting: the back material is used when the caller asks for the back face") {
   LightingState s;
-  setColor(s.materials[glass::kBackMaterial].emission, 0.0f, 0.5f, 0.0f, 1);
-  setColor(s.materials[glass::kBackMaterial].diffuse, 0.0f, 0.0f, 0.0f, 0.25f);
-  const Lit lit = light(s, kOrigin, kUp, glass::kBackMaterial);
+  setColor(s.materials[glass::gl::kBackMaterial].emission, 0.0f, 0.5f, 0.0f, 1);
+  setColor(s.materials[glass::gl::kBackMaterial].diffuse, 0.0f, 0.0f, 0.0f, 0.25f);
+  const Lit lit = light(s, kOrigin, kUp, glass::gl::kBackMaterial);
   CHECK(lit.primary[0] == doctest::Approx(0.04f));
   CHECK(lit.primary[1] == doctest::Approx(0.54f));
   CHECK(lit.primary[3] == 0.25f);
@@ -239,7 +239,7 @@ TEST_CASE("lighting: the back material is used when the caller asks for the back
 TEST_CASE("lighting: homogeneous eye positions are divided by w") {
   float point[3];
   const float position[4] = {2, 4, -6, 2};
-  glass::eyePointFromHomogeneous(position, point);
+  glass::gl::eyePointFromHomogeneous(position, point);
   CHECK(point[0] == 1.0f);
   CHECK(point[1] == 2.0f);
   CHECK(point[2] == -3.0f);

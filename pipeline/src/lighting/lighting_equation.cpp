@@ -16,7 +16,7 @@
 #include <cmath>
 #include <numbers>
 
-namespace glass {
+namespace glass::gl {
 namespace {
 
 float dot3(const float a[3], const float b[3]) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
@@ -162,4 +162,4 @@ void evaluateLighting(const LightingState& state, const Material& material,
   secondary[3] = 0.0f;
 }
 
-}  // namespace glass
+}  // namespace glass::gl

@@ -6,7 +6,7 @@
 
 #include "lighting/lighting_state.h"
 
-namespace glass {
+namespace glass::gl {
 
 // Lights one face of a surface point.
 //   eyePoint  the point V in eye coordinates (x, y, z), already divided by w
@@ -25,4 +25,4 @@ void evaluateLighting(const LightingState& state, const Material& material,
 // reachable through glVertex4 with w = 0) is taken as the point (x, y, z).
 void eyePointFromHomogeneous(const float eyePosition[4], float point[3]);
 
-}  // namespace glass
+}  // namespace glass::gl

@@ -5,7 +5,7 @@
 
 #include <GL/gl.h>
 
-namespace glass {
+namespace glass::gl {
 
 // GL_MAX_LIGHTS: the specification asks for at least 8.
 inline constexpr int kMaxLights = 8;
@@ -70,4 +70,4 @@ struct LightingState {
   }
 };
 
-}  // namespace glass
+}  // namespace glass::gl
