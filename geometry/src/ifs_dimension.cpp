@@ -1,0 +1,137 @@
+#include "glass/geometry/ifs_dimension.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+namespace glass::geometry {
+
+std::optional<double> similarityRatio(const Affine2& map) {
+  const double c1x = map.m[0][0], c1y = map.m[1][0];
+  const double c2x = map.m[0][1], c2y = map.m[1][1];
+  const double n1 = c1x * c1x + c1y * c1y;
+  const double n2 = c2x * c2x + c2y * c2y;
+  const double scale = std::max(n1, n2);
+  if (scale == 0.0) return 0.0;  // everything to one point: a similarity with ratio 0
+  constexpr double kTolerance = 1e-9;
+  if (std::abs(n1 - n2) > kTolerance * scale) return std::nullopt;
+  if (std::abs(c1x * c2x + c1y * c2y) > kTolerance * scale) return std::nullopt;
+  return std::sqrt((n1 + n2) / 2.0);
+}
+
+std::optional<double> solveMoranEquation(std::span<const double> ratios) {
+  bool anyPositive = false;
+  for (double r : ratios) {
+    if (!(r >= 0.0 && r < 1.0)) return std::nullopt;
+    anyPositive = anyPositive || r > 0.0;
+  }
+  if (!anyPositive) return std::nullopt;
+  // g(d) = sum r_i^d - 1 is strictly decreasing for 0 < r_i < 1 and tends to -1; 0^d = 0 for d > 0.
+  auto g = [&](double d) {
+    double sum = 0.0;
+    for (double r : ratios) {
+      if (r > 0.0) sum += std::pow(r, d);
+    }
+    return sum - 1.0;
+  };
+  if (g(0.0) <= 0.0) return 0.0;  // a single positive ratio: the attractor is a point
+  double lo = 0.0, hi = 1.0;
+  while (g(hi) > 0.0) {
+    lo = hi;
+    hi *= 2.0;
+    if (hi > 1e6) return std::nullopt;
+  }
+  // Bisection to the last bit: deterministic and immune to Newton's overshoot.
+  for (int i = 0; i < 200 && hi - lo > 0.0; ++i) {
+    const double mid = lo + (hi - lo) / 2.0;
+    if (mid <= lo || mid >= hi) break;
+    (g(mid) > 0.0 ? lo : hi) = mid;
+  }
+  return lo + (hi - lo) / 2.0;
+}
+
+std::optional<BoxCountingEstimate> boxCountingDimension(std::span<const glm::dvec2> points) {
+  if (points.size() < 1000) return std::nullopt;
+  double xMin = points[0].x, xMax = xMin, yMin = points[0].y, yMax = yMin;
+  for (const glm::dvec2& p : points) {
+    xMin = std::min(xMin, p.x);
+    xMax = std::max(xMax, p.x);
+    yMin = std::min(yMin, p.y);
+    yMax = std::max(yMax, p.y);
+  }
+  const double side = std::max(xMax - xMin, yMax - yMin);
+  if (!(side > 0.0) || !std::isfinite(side)) return std::nullopt;
+
+  BoxCountingEstimate estimate;
+  std::vector<std::uint64_t> keys(points.size());
+  const std::size_t wellSampled = points.size() / 20;
+  constexpr int kMaxLevel = 24;
+  for (int level = 0; level <= kMaxLevel; ++level) {
+    const double cells = std::ldexp(1.0, level);
+    const std::uint64_t maxCell = (std::uint64_t{1} << level) - 1;
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      // The top and right edges of the square belong to the last box.
+      const auto cx = std::min(static_cast<std::uint64_t>((points[i].x - xMin) / side * cells), maxCell);
+      const auto cy = std::min(static_cast<std::uint64_t>((points[i].y - yMin) / side * cells), maxCell);
+      keys[i] = (cx << 32) | cy;
+    }
+    std::sort(keys.begin(), keys.end());
+    const auto boxes = static_cast<std::size_t>(std::unique(keys.begin(), keys.end()) - keys.begin());
+    estimate.counts.push_back({level, side / cells, boxes});
+    if (boxes > wellSampled) break;
+  }
+
+  // Fit levels 2 .. the last one still well sampled.
+  estimate.firstFittedLevel = 2;
+  estimate.lastFittedLevel = 2;
+  for (const BoxCount& count : estimate.counts) {
+    if (count.level >= 2 && count.boxes <= wellSampled) estimate.lastFittedLevel = count.level;
+  }
+  if (estimate.lastFittedLevel - estimate.firstFittedLevel < 2) return std::nullopt;
+  double sumX = 0.0, sumY = 0.0, sumXX = 0.0, sumXY = 0.0;
+  int n = 0;
+  for (const BoxCount& count : estimate.counts) {
+    if (count.level < estimate.firstFittedLevel || count.level > estimate.lastFittedLevel) continue;
+    const double x = count.level, y = std::log2(static_cast<double>(count.boxes));
+    sumX += x;
+    sumY += y;
+    sumXX += x * x;
+    sumXY += x * y;
+    ++n;
+  }
+  estimate.dimension = (n * sumXY - sumX * sumY) / (n * sumXX - sumX * sumX);
+  return estimate;
+}
+
+IfsDimensionReport ifsDimension(const IteratedFunctionSystem& ifs, std::uint64_t points) {
+  IfsDimensionReport report;
+  report.allSimilarities = !ifs.maps.empty();
+  std::vector<double> ratios;
+  for (const IfsMap& map : ifs.maps) {
+    report.ratios.push_back(similarityRatio(map.transform));
+    if (report.ratios.back()) {
+      ratios.push_back(*report.ratios.back());
+    } else {
+      report.allSimilarities = false;
+    }
+  }
+  if (report.allSimilarities) {
+    report.moranDimension = solveMoranEquation(ratios);
+    if (report.moranDimension) return report;
+  }
+  const auto probabilities = chaosGameProbabilities(ifs);
+  if (!probabilities) {
+    report.problem = "the maps' probabilities are invalid";
+    return report;
+  }
+  std::vector<glm::dvec2> cloud;
+  cloud.reserve(points);
+  chaosGame(ifs, *probabilities, points, 1, [&cloud](const glm::dvec2& p, int) { cloud.push_back(p); });
+  report.boxCounting = boxCountingDimension(cloud);
+  if (!report.boxCounting) {
+    report.problem = "the attractor is too small or too thin for box counting";
+  }
+  return report;
+}
+
+}  // namespace glass::geometry
