@@ -658,6 +658,10 @@ typedef double GLclampd;
 #define GL_POST_COLOR_MATRIX_GREEN_BIAS          0x80B9
 #define GL_POST_COLOR_MATRIX_BLUE_BIAS           0x80BA
 #define GL_POST_COLOR_MATRIX_ALPHA_BIAS          0x80BB
+#define GL_BLEND_DST_RGB                         0x80C8
+#define GL_BLEND_SRC_RGB                         0x80C9
+#define GL_BLEND_DST_ALPHA                       0x80CA
+#define GL_BLEND_SRC_ALPHA                       0x80CB
 #define GL_COLOR_TABLE                           0x80D0
 #define GL_POST_CONVOLUTION_COLOR_TABLE          0x80D1
 #define GL_POST_COLOR_MATRIX_COLOR_TABLE         0x80D2
@@ -752,6 +756,8 @@ typedef double GLclampd;
 #define GL_COMPRESSED_RGB                        0x84ED
 #define GL_COMPRESSED_RGBA                       0x84EE
 #define GL_TEXTURE_COMPRESSION_HINT              0x84EF
+#define GL_INCR_WRAP                             0x8507
+#define GL_DECR_WRAP                             0x8508
 #define GL_NORMAL_MAP                            0x8511
 #define GL_REFLECTION_MAP                        0x8512
 #define GL_TEXTURE_CUBE_MAP                      0x8513
@@ -955,6 +961,55 @@ GLAPI void GLAPIENTRY glGetClipPlane(GLenum plane, GLdouble *equation);
 /* GLASS-SECTION: fragment operations (fog, alpha, stencil, blend, logic op, attribute stack) */
 
 /* GLASS-SECTION: texturing */
+GLAPI void GLAPIENTRY glGenTextures(GLsizei n, GLuint *textures);
+GLAPI void GLAPIENTRY glDeleteTextures(GLsizei n, const GLuint *textures);
+GLAPI void GLAPIENTRY glBindTexture(GLenum target, GLuint texture);
+GLAPI GLboolean GLAPIENTRY glIsTexture(GLuint texture);
+GLAPI GLboolean GLAPIENTRY glAreTexturesResident(GLsizei n, const GLuint *textures, GLboolean *residences);
+GLAPI void GLAPIENTRY glPrioritizeTextures(GLsizei n, const GLuint *textures, const GLclampf *priorities);
+GLAPI void GLAPIENTRY glTexImage1D(GLenum target, GLint level, GLint internalFormat, GLsizei width, GLint border, GLenum format, GLenum type, const GLvoid *pixels);
+GLAPI void GLAPIENTRY glTexImage2D(GLenum target, GLint level, GLint internalFormat, GLsizei width, GLsizei height, GLint border, GLenum format, GLenum type, const GLvoid *pixels);
+GLAPI void GLAPIENTRY glTexSubImage1D(GLenum target, GLint level, GLint xoffset, GLsizei width, GLenum format, GLenum type, const GLvoid *pixels);
+GLAPI void GLAPIENTRY glTexSubImage2D(GLenum target, GLint level, GLint xoffset, GLint yoffset, GLsizei width, GLsizei height, GLenum format, GLenum type, const GLvoid *pixels);
+GLAPI void GLAPIENTRY glCopyTexImage1D(GLenum target, GLint level, GLenum internalFormat, GLint x, GLint y, GLsizei width, GLint border);
+GLAPI void GLAPIENTRY glCopyTexImage2D(GLenum target, GLint level, GLenum internalFormat, GLint x, GLint y, GLsizei width, GLsizei height, GLint border);
+GLAPI void GLAPIENTRY glCopyTexSubImage1D(GLenum target, GLint level, GLint xoffset, GLint x, GLint y, GLsizei width);
+GLAPI void GLAPIENTRY glCopyTexSubImage2D(GLenum target, GLint level, GLint xoffset, GLint yoffset, GLint x, GLint y, GLsizei width, GLsizei height);
+GLAPI void GLAPIENTRY glGetTexImage(GLenum target, GLint level, GLenum format, GLenum type, GLvoid *pixels);
+GLAPI void GLAPIENTRY glGetTexLevelParameteriv(GLenum target, GLint level, GLenum pname, GLint *params);
+GLAPI void GLAPIENTRY glGetTexLevelParameterfv(GLenum target, GLint level, GLenum pname, GLfloat *params);
+GLAPI void GLAPIENTRY glTexParameterf(GLenum target, GLenum pname, GLfloat param);
+GLAPI void GLAPIENTRY glTexParameteri(GLenum target, GLenum pname, GLint param);
+GLAPI void GLAPIENTRY glTexParameterfv(GLenum target, GLenum pname, const GLfloat *params);
+GLAPI void GLAPIENTRY glTexParameteriv(GLenum target, GLenum pname, const GLint *params);
+GLAPI void GLAPIENTRY glGetTexParameterfv(GLenum target, GLenum pname, GLfloat *params);
+GLAPI void GLAPIENTRY glGetTexParameteriv(GLenum target, GLenum pname, GLint *params);
+GLAPI void GLAPIENTRY glTexEnvf(GLenum target, GLenum pname, GLfloat param);
+GLAPI void GLAPIENTRY glTexEnvi(GLenum target, GLenum pname, GLint param);
+GLAPI void GLAPIENTRY glTexEnvfv(GLenum target, GLenum pname, const GLfloat *params);
+GLAPI void GLAPIENTRY glTexEnviv(GLenum target, GLenum pname, const GLint *params);
+GLAPI void GLAPIENTRY glGetTexEnvfv(GLenum target, GLenum pname, GLfloat *params);
+GLAPI void GLAPIENTRY glGetTexEnviv(GLenum target, GLenum pname, GLint *params);
+GLAPI void GLAPIENTRY glTexGeni(GLenum coord, GLenum pname, GLint param);
+GLAPI void GLAPIENTRY glTexGenf(GLenum coord, GLenum pname, GLfloat param);
+GLAPI void GLAPIENTRY glTexGend(GLenum coord, GLenum pname, GLdouble param);
+GLAPI void GLAPIENTRY glTexGeniv(GLenum coord, GLenum pname, const GLint *params);
+GLAPI void GLAPIENTRY glTexGenfv(GLenum coord, GLenum pname, const GLfloat *params);
+GLAPI void GLAPIENTRY glTexGendv(GLenum coord, GLenum pname, const GLdouble *params);
+GLAPI void GLAPIENTRY glGetTexGeniv(GLenum coord, GLenum pname, GLint *params);
+GLAPI void GLAPIENTRY glGetTexGenfv(GLenum coord, GLenum pname, GLfloat *params);
+GLAPI void GLAPIENTRY glGetTexGendv(GLenum coord, GLenum pname, GLdouble *params);
+
+/* GL_GLASS_bump_map (glass extension, docs/texturing.md): a height map in a 2D texture object
+ * perturbs the normal before per-fragment lighting (glShadeModel(GL_PHONG_WIN)).
+ *   glEnable(GL_BUMP_MAP_GLASS);
+ *   glTexEnvi(GL_BUMP_MAP_GLASS, GL_BUMP_MAP_TEXTURE_GLASS, heightMapTexture);
+ *   glTexEnvf(GL_BUMP_MAP_GLASS, GL_BUMP_SCALE_GLASS, height);
+ * The values 0x474C00xx ("GL" in ASCII) lie far above every range the OpenGL registry assigns. */
+#define GL_GLASS_bump_map 1
+#define GL_BUMP_MAP_GLASS                        0x474C0001
+#define GL_BUMP_MAP_TEXTURE_GLASS                0x474C0002
+#define GL_BUMP_SCALE_GLASS                      0x474C0003
 
 /* GLASS-SECTION: evaluators */
 

@@ -3,7 +3,23 @@
 // current context with currentContext() and do nothing when there is none.
 #pragma once
 
+#include <memory>
+
+#include "core/errors.h"
+#include "core/hint_state.h"
+#include "core/pixel_store.h"
+#include "core/transform_state.h"
+#include "evaluators/evaluator_state.h"
+#include "fragment/fog_state.h"
+#include "fragment/fragment_state.h"
 #include "glass/raster/framebuffer.h"
+#include "lighting/lighting_state.h"
+#include "lists/display_lists.h"
+#include "primitive/raster_state.h"
+#include "texture/texture_state.h"
+#include "vertex/current_state.h"
+#include "vertex/primitive_assembly.h"
+#include "vertex/vertex_arrays.h"
 
 // Stage state. Each header defines one struct with its GL defaults as member initialisers.
 //   core/errors.h               ErrorState        the sticky GL error flag
@@ -22,3 +38,42 @@
 //   lists/display_lists.h       DisplayListState  display lists and the list being compiled
 //   core/pixel_store.h          PixelStoreState   glPixelStore pack and unpack parameters
 //   evaluators/evaluator_state.h EvaluatorState   glMap1/glMap2 and the grid
+//   core/hint_state.h           HintState         glHint
+//
+// Besides GL state, a context holds its framebuffer and the per-draw setup derived from the
+// state at glBegin (primitive/draw_pipeline.h), which is working storage, not GL state.
+
+namespace glass::gl {
+
+class DrawPipeline;
+
+struct Context {
+  Context(int width, int height);  // throws std::bad_alloc when memory runs out
+  ~Context();
+  Context(const Context&) = delete;
+  Context& operator=(const Context&) = delete;
+
+  ErrorState errors;
+  TransformState transform;
+  CurrentState current;
+  ArrayState arrays;
+  PrimitiveAssembly assembly;
+  RasterState raster;
+  FragmentState fragment;
+  FogState fog;
+  LightingState lighting;
+  TextureState texture;
+  DisplayListState lists;
+  PixelStoreState pixelStore;
+  EvaluatorState evaluators;
+  HintState hints;
+
+  raster::Framebuffer framebuffer;
+  std::unique_ptr<DrawPipeline> draw;
+};
+
+// The context current on the calling thread (glassMakeCurrent), or nullptr.
+Context* currentContext();
+void setCurrentContext(Context* ctx);
+
+}  // namespace glass::gl

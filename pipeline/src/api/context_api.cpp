@@ -1,0 +1,55 @@
+// glass/context.h: creating offscreen contexts, making them current, writing PNGs.
+#include <glass/context.h>
+
+#include <new>
+
+#include "core/context.h"
+#include "core/png_writer.h"
+#include "core/transform_state.h"
+
+struct GlassContext {
+  glass::gl::Context gl;
+  GlassContext(int width, int height) : gl(width, height) {}
+};
+
+namespace {
+thread_local GlassContext* currentGlassContext = nullptr;
+}
+
+GlassContext* glassCreateContext(int width, int height) {
+  if (width <= 0 || height <= 0 || width > glass::gl::kMaxViewportSize ||
+      height > glass::gl::kMaxViewportSize) {
+    return nullptr;
+  }
+  try {
+    return new GlassContext(width, height);
+  } catch (const std::bad_alloc&) {
+    return nullptr;
+  }
+}
+
+int glassMakeCurrent(GlassContext* ctx) {
+  currentGlassContext = ctx;
+  glass::gl::setCurrentContext(ctx ? &ctx->gl : nullptr);
+  return 1;
+}
+
+void glassDestroyContext(GlassContext* ctx) {
+  if (!ctx) return;
+  if (currentGlassContext == ctx) glassMakeCurrent(nullptr);
+  delete ctx;
+}
+
+int glassWritePNG(GlassContext* ctx, const char* path) {
+  if (!ctx) return 0;
+  return glass::gl::writeColorBufferPNG(ctx->gl.framebuffer, path) ? 1 : 0;
+}
+
+GlassContext* glassGetCurrentContext(void) { return currentGlassContext; }
+
+int glassGetWidth(const GlassContext* ctx) { return ctx ? ctx->gl.framebuffer.width() : 0; }
+int glassGetHeight(const GlassContext* ctx) { return ctx ? ctx->gl.framebuffer.height() : 0; }
+
+const unsigned char* glassGetColorBuffer(const GlassContext* ctx) {
+  return ctx ? ctx->gl.framebuffer.colorAt(0, 0) : nullptr;
+}

@@ -1,0 +1,23 @@
+#include "core/context.h"
+
+#include "primitive/draw_pipeline.h"
+
+namespace glass::gl {
+
+Context::Context(int width, int height)
+    : framebuffer(width, height), draw(std::make_unique<DrawPipeline>(*this)) {
+  // Spec 2.11.1 and 4.1.2: the viewport and the scissor box start as the whole window.
+  transform.viewport = Viewport{0, 0, width, height};
+  fragment.scissor = ScissorBox{0, 0, width, height};
+}
+
+Context::~Context() = default;
+
+namespace {
+thread_local Context* current = nullptr;
+}
+
+Context* currentContext() { return current; }
+void setCurrentContext(Context* ctx) { current = ctx; }
+
+}  // namespace glass::gl

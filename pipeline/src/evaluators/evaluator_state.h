@@ -1,0 +1,9 @@
+// Evaluator state (glMap1, glMap2, the grid). Placeholder until the evaluator stage lands:
+// replaced by the evaluator stage.
+#pragma once
+
+namespace glass {
+
+struct EvaluatorState {};
+
+}  // namespace glass

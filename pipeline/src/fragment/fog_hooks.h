@@ -1,0 +1,30 @@
+// The interface between the pipeline and the fog stage (spec 3.10). The pipeline calls these;
+// the fog stage implements them in fragment/ (fog_hooks.cpp).
+#pragma once
+
+#include <GL/gl.h>
+
+#include "glass/raster/fragment.h"
+
+namespace glass::gl {
+
+struct Context;
+struct StateValue;
+
+// glEnable/glDisable/glIsEnabled of GL_FOG. False when cap is not GL_FOG.
+bool setFogCapability(Context& ctx, GLenum cap, bool enabled);
+bool getFogCapability(const Context& ctx, GLenum cap, bool& enabled);
+// glGet of fog state (GL_FOG_MODE, GL_FOG_COLOR, ...). False when pname is not fog state.
+bool queryFogState(const Context& ctx, GLenum pname, StateValue& value);
+
+bool fogEnabled(const Context& ctx);
+
+// Per vertex, when fog is enabled: the value interpolated in varying slot 8 (spec 3.10: the eye
+// distance c, which may be approximated by |z_e|).
+float fogCoordinate(const Context& ctx, const float eyePosition[4]);
+
+// Per fragment, after texturing and colour sum: blends color towards the fog colour. The
+// fragment's interpolated fog coordinate is fragment.varyings[8].
+void applyFog(const Context& ctx, const raster::Fragment& fragment, float color[4]);
+
+}  // namespace glass::gl

@@ -1,0 +1,56 @@
+#include "primitive/draw_pipeline.h"
+
+#include <algorithm>
+
+#include "core/context.h"
+
+namespace glass::gl {
+
+void DrawPipeline::prepare() {
+  Context& ctx = ctx_;
+  prepareVertexStage(ctx, vertex_);
+  fragments_.prepare(ctx, vertex_.phong);
+
+  clip_.userPlaneMask = vertex_.clipPlaneMask;
+  clip_.varyingCount = vertex_.varyingCount;
+  viewport_ = makeViewportTransform(ctx.transform.viewport, ctx.transform.depthNear,
+                                    ctx.transform.depthFar);
+
+  // The scissor test as rasterization bounds (spec 4.1.2).
+  raster::PixelRect bounds{0, 0, ctx.framebuffer.width(), ctx.framebuffer.height()};
+  if (ctx.fragment.scissorTest) {
+    const ScissorBox& s = ctx.fragment.scissor;
+    bounds.x0 = std::max(bounds.x0, s.x);
+    bounds.y0 = std::max(bounds.y0, s.y);
+    bounds.x1 = static_cast<int>(std::min<long long>(bounds.x1, static_cast<long long>(s.x) + s.width));
+    bounds.y1 = static_cast<int>(std::min<long long>(bounds.y1, static_cast<long long>(s.y) + s.height));
+  }
+
+  const RasterState& r = ctx.raster;
+  // Attributes are always interpolated perspective-correctly, whatever
+  // GL_PERSPECTIVE_CORRECTION_HINT says (the hint allows it; Mesa does the same).
+  const bool perspective = true;
+  triangleSettings_ = raster::TriangleSettings{};
+  triangleSettings_.bounds = bounds;
+  triangleSettings_.varyingCount = vertex_.varyingCount;
+  triangleSettings_.perspectiveCorrect = perspective;
+
+  lineSettings_ = raster::LineSettings{};
+  lineSettings_.bounds = bounds;
+  lineSettings_.varyingCount = vertex_.varyingCount;
+  lineSettings_.width = r.lineWidth;
+  lineSettings_.perspectiveCorrect = perspective;
+  lineSettings_.stippleFactor = r.lineStipple ? r.lineStippleFactor : 0;
+  lineSettings_.stipplePattern = r.lineStipplePattern;
+  lineSettings_.stippleCounter = &stippleCounter_;
+
+  pointSettings_ = raster::PointSettings{};
+  pointSettings_.bounds = bounds;
+  pointSettings_.varyingCount = vertex_.varyingCount;
+  pointSettings_.size = r.pointSize;
+
+  flat_ = r.shadeModel == GL_FLAT;
+  stippleCounter_ = 0;
+}
+
+}  // namespace glass::gl

@@ -1,0 +1,76 @@
+// The primitive stages between primitive assembly and the rasterizer, in the spirit of Mesa's
+// gallium draw module: each primitive passes through small stages, each in a file of its own.
+//
+//   triangles (triangle_stage.cpp):  facing and culling (facing.h, culling.h) -> two-sided colour
+//     and flat shading (vertex_colors.h) -> polygon mode per face: GL_FILL (polygon_fill.cpp),
+//     GL_LINE or GL_POINT (unfilled_polygon.cpp) with edge flags -> polygon offset
+//     (polygon_offset.h)
+//   lines (line_stage.cpp):           flat shading -> clipping -> viewport -> rasterizeLine
+//   points (point_stage.cpp):         clipping -> viewport -> rasterizePoint
+//
+// Clipping uses the rasterizer's clipPolygon, clipLine and pointInside with the enabled user
+// planes; perspective division and the viewport are in viewport_transform.h. Every fragment goes
+// to the FragmentProcessor.
+#pragma once
+
+#include "fragment/fragment_processor.h"
+#include "glass/raster/clip.h"
+#include "glass/raster/line.h"
+#include "glass/raster/triangle.h"
+#include "primitive/viewport_transform.h"
+#include "vertex/pipeline_vertex.h"
+#include "vertex/vertex_stage.h"
+
+namespace glass::gl {
+
+struct Context;
+
+// Edge flags of an assembled triangle (a, b, c): bit 0 for edge a->b, 1 for b->c, 2 for c->a.
+inline constexpr unsigned kAllEdges = 7u;
+
+class DrawPipeline {
+ public:
+  explicit DrawPipeline(Context& ctx) : ctx_(ctx) {}
+
+  // Derives the vertex, primitive and fragment setup from the GL state (at glBegin).
+  void prepare();
+  const VertexStageSetup& vertexSetup() const { return vertex_; }
+
+  void drawPoint(const PipelineVertex& v);
+  // restartStipple: the segment starts a new line (GL_LINES, the first of a strip).
+  void drawLine(const PipelineVertex& a, const PipelineVertex& b, const PipelineVertex& provoking,
+                bool restartStipple);
+  void drawTriangle(const PipelineVertex& a, const PipelineVertex& b, const PipelineVertex& c,
+                    const PipelineVertex& provoking, unsigned boundaryEdges);
+
+ private:
+  // polygon_fill.cpp
+  void fillTriangle(const raster::ClipVertex (&v)[3], bool frontFacing);
+  // unfilled_polygon.cpp
+  void drawTriangleEdges(const raster::ClipVertex (&v)[3], unsigned boundaryEdges);
+  void drawTriangleVertices(const raster::ClipVertex (&v)[3], unsigned boundaryEdges);
+  // The offset of a polygon for a polygon mode whose offset is enabled, else 0.
+  double polygonDepthBias(const raster::ClipVertex (&v)[3], bool offsetEnabled);
+  // line_stage.cpp, point_stage.cpp: clip, viewport, rasterize.
+  void rasterizeSegment(raster::ClipVertex a, raster::ClipVertex b, double depthBias);
+  void rasterizeVertexPoint(const raster::ClipVertex& v, double depthBias);
+  // Clips a triangle to a polygon in window coordinates; returns its vertex count (0: nothing
+  // visible). polygon_fill.cpp
+  int clipToWindow(const raster::ClipVertex (&v)[3], raster::WindowVertex* out);
+
+  Context& ctx_;
+  VertexStageSetup vertex_;
+  FragmentProcessor fragments_;
+  raster::ClipSettings clip_;
+  ViewportTransform viewport_;
+  raster::TriangleSettings triangleSettings_;
+  raster::LineSettings lineSettings_;
+  raster::PointSettings pointSettings_;
+  bool flat_ = false;
+  int stippleCounter_ = 0;
+  // Scratch space for clipped polygons.
+  raster::ClipVertex clipped_[raster::kMaxClippedPolygonVertices + 3];
+  raster::WindowVertex window_[raster::kMaxClippedPolygonVertices + 3];
+};
+
+}  // namespace glass::gl

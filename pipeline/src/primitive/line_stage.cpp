@@ -1,0 +1,30 @@
+// Lines: flat shading, clipping, perspective division and viewport, then rasterizeLine.
+#include "core/context.h"
+#include "primitive/draw_pipeline.h"
+#include "primitive/vertex_colors.h"
+
+namespace glass::gl {
+
+void DrawPipeline::drawLine(const PipelineVertex& a, const PipelineVertex& b,
+                            const PipelineVertex& provoking, bool restartStipple) {
+  if (restartStipple) stippleCounter_ = 0;
+  raster::ClipVertex va = a.clip, vb = b.clip;
+  if (flat_) {
+    useProvokingColors(provoking, false, va);
+    useProvokingColors(provoking, false, vb);
+  }
+  rasterizeSegment(va, vb, 0.0);
+}
+
+void DrawPipeline::rasterizeSegment(raster::ClipVertex a, raster::ClipVertex b, double depthBias) {
+  const unsigned oa = raster::outcode(a, clip_), ob = raster::outcode(b, clip_);
+  if (oa & ob) return;
+  if ((oa | ob) && !raster::clipLine(a, b, clip_)) return;
+  raster::WindowVertex wa, wb;
+  toWindow(viewport_, a, clip_.varyingCount, wa);
+  toWindow(viewport_, b, clip_.varyingCount, wb);
+  lineSettings_.depthBias = depthBias;
+  raster::rasterizeLine(wa, wb, lineSettings_, fragments_);
+}
+
+}  // namespace glass::gl

@@ -1,0 +1,54 @@
+// GL_FILL polygons: clipping, perspective division and viewport, polygon offset, then the
+// rasterizer's triangle setup and coverage for each triangle of the clipped polygon's fan.
+#include "core/context.h"
+#include "primitive/draw_pipeline.h"
+#include "primitive/polygon_offset.h"
+
+namespace glass::gl {
+
+int DrawPipeline::clipToWindow(const raster::ClipVertex (&v)[3], raster::WindowVertex* out) {
+  const unsigned o0 = raster::outcode(v[0], clip_);
+  const unsigned o1 = raster::outcode(v[1], clip_);
+  const unsigned o2 = raster::outcode(v[2], clip_);
+  if (o0 & o1 & o2) return 0;  // all vertices outside one plane: trivially rejected
+
+  const raster::ClipVertex* polygon = v;
+  int count = 3;
+  if (o0 | o1 | o2) {
+    count = raster::clipPolygon(v, 3, clip_, clipped_);
+    polygon = clipped_;
+  }
+  if (count < 3) return 0;
+  for (int i = 0; i < count; ++i) toWindow(viewport_, polygon[i], clip_.varyingCount, out[i]);
+  return count;
+}
+
+double DrawPipeline::polygonDepthBias(const raster::ClipVertex (&v)[3], bool offsetEnabled) {
+  if (!offsetEnabled) return 0.0;
+  const RasterState& r = ctx_.raster;
+  if (r.polygonOffsetFactor == 0.0f && r.polygonOffsetUnits == 0.0f) return 0.0;
+  const int count = clipToWindow(v, window_);
+  return count >= 3 ? polygonOffset(r.polygonOffsetFactor, r.polygonOffsetUnits, window_, count)
+                    : 0.0;
+}
+
+void DrawPipeline::fillTriangle(const raster::ClipVertex (&v)[3], bool frontFacing) {
+  const int count = clipToWindow(v, window_);
+  if (count < 3) return;
+
+  const RasterState& r = ctx_.raster;
+  triangleSettings_.frontFacing = frontFacing;
+  triangleSettings_.depthBias =
+      r.polygonOffsetFill
+          ? polygonOffset(r.polygonOffsetFactor, r.polygonOffsetUnits, window_, count)
+          : 0.0;
+
+  raster::TriangleSetup setup;
+  for (int i = 1; i + 1 < count; ++i) {
+    if (raster::setupTriangle(window_[0], window_[i], window_[i + 1], triangleSettings_, setup)) {
+      raster::rasterizeTriangle(setup, fragments_);
+    }
+  }
+}
+
+}  // namespace glass::gl

@@ -1,0 +1,41 @@
+// Triangles: facing, culling, colour selection, then the polygon mode of the facing side.
+#include "core/context.h"
+#include "primitive/culling.h"
+#include "primitive/draw_pipeline.h"
+#include "primitive/facing.h"
+#include "primitive/vertex_colors.h"
+
+namespace glass::gl {
+
+void DrawPipeline::drawTriangle(const PipelineVertex& a, const PipelineVertex& b,
+                                const PipelineVertex& c, const PipelineVertex& provoking,
+                                unsigned boundaryEdges) {
+  const RasterState& r = ctx_.raster;
+  const bool front =
+      isFrontFacing(isCounterClockwise(a.clip, b.clip, c.clip), r.frontFace);
+  if (isCulled(r, front)) return;
+
+  raster::ClipVertex v[3] = {a.clip, b.clip, c.clip};
+  const bool back = vertex_.twoSided && !front;
+  if (flat_) {
+    for (raster::ClipVertex& vertex : v) useProvokingColors(provoking, back, vertex);
+  } else if (back) {
+    useBackColors(a, v[0]);
+    useBackColors(b, v[1]);
+    useBackColors(c, v[2]);
+  }
+
+  switch (front ? r.polygonModeFront : r.polygonModeBack) {
+    case GL_LINE:
+      drawTriangleEdges(v, boundaryEdges);
+      break;
+    case GL_POINT:
+      drawTriangleVertices(v, boundaryEdges);
+      break;
+    default:
+      fillTriangle(v, front);
+      break;
+  }
+}
+
+}  // namespace glass::gl

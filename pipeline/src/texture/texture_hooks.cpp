@@ -1,0 +1,124 @@
+// The texturing stage as the pipeline sees it (texture_hooks.h): texture coordinates per vertex,
+// the textured colour per fragment, and the enables and glGet values of texturing state.
+#include "texture/texture_hooks.h"
+
+#include "core/context.h"
+#include "core/state_value.h"
+#include "texture/texture_environment.h"
+#include "texture/texture_lod.h"
+#include "texture/texture_sampler.h"
+#include "vertex/varyings.h"
+
+namespace glass::gl {
+
+bool setTextureCapability(Context& ctx, GLenum cap, bool enabled) {
+  TextureState& t = ctx.texture;
+  switch (cap) {
+    case GL_TEXTURE_1D: t.enabled1D = enabled; return true;
+    case GL_TEXTURE_2D: t.enabled2D = enabled; return true;
+    case GL_TEXTURE_GEN_S:
+    case GL_TEXTURE_GEN_T:
+    case GL_TEXTURE_GEN_R:
+    case GL_TEXTURE_GEN_Q: t.texGen[cap - GL_TEXTURE_GEN_S].enabled = enabled; return true;
+    case GL_BUMP_MAP_GLASS: t.bumpMap.enabled = enabled; return true;
+    default: return false;
+  }
+}
+
+bool getTextureCapability(const Context& ctx, GLenum cap, bool& enabled) {
+  const TextureState& t = ctx.texture;
+  switch (cap) {
+    case GL_TEXTURE_1D: enabled = t.enabled1D; return true;
+    case GL_TEXTURE_2D: enabled = t.enabled2D; return true;
+    case GL_TEXTURE_GEN_S:
+    case GL_TEXTURE_GEN_T:
+    case GL_TEXTURE_GEN_R:
+    case GL_TEXTURE_GEN_Q: enabled = t.texGen[cap - GL_TEXTURE_GEN_S].enabled; return true;
+    case GL_BUMP_MAP_GLASS: enabled = t.bumpMap.enabled; return true;
+    default: return false;
+  }
+}
+
+bool queryTextureState(const Context& ctx, GLenum pname, StateValue& value) {
+  bool enabled = false;
+  if (getTextureCapability(ctx, pname, enabled)) {
+    value.setBooleans({enabled});
+    return true;
+  }
+  const TextureState& t = ctx.texture;
+  switch (pname) {
+    case GL_TEXTURE_BINDING_1D: value.setIntegers({static_cast<double>(t.bound1D->name)}); return true;
+    case GL_TEXTURE_BINDING_2D: value.setIntegers({static_cast<double>(t.bound2D->name)}); return true;
+    case GL_MAX_TEXTURE_SIZE: value.setIntegers({static_cast<double>(kMaxTextureSize)}); return true;
+    case GL_MAX_TEXTURE_UNITS: value.setIntegers({1}); return true;
+    default: return false;
+  }
+}
+
+bool texturingEnabled(const Context& ctx) {
+  const TextureState& t = ctx.texture;
+  return t.enabled1D || t.enabled2D || t.bumpMap.enabled;
+}
+
+void computeTexCoords(const Context& ctx, const float objectPosition[4], const float eyePosition[4],
+                      const float eyeNormal[3], float out[4]) {
+  const TextureState& t = ctx.texture;
+  float coords[4];
+  for (int i = 0; i < 4; ++i) coords[i] = ctx.current.texCoord[i];
+  bool anySphereMap = false;
+  for (const TexGenCoordinate& g : t.texGen) anySphereMap |= g.enabled && g.mode == GL_SPHERE_MAP;
+  float sphereMap[2] = {0.0f, 0.0f};
+  if (anySphereMap) sphereMapCoordinates(eyePosition, eyeNormal, &sphereMap[0], &sphereMap[1]);
+  for (int i = 0; i < 4; ++i) {
+    if (t.texGen[i].enabled)
+      coords[i] = generateTexCoordinate(t.texGen[i], i, objectPosition, eyePosition, sphereMap);
+  }
+  // Spec 2.11.4 ends with the texture matrix: (s, t, r, q) is transformed as a column vector.
+  transformVector4(ctx.transform.texture.top(), coords, out);
+}
+
+// d(a/q)/dx = (da/dx q - a dq/dx) / q^2 for the projected coordinate a/q.
+static double projectedDerivative(double a, double q, double da, double dq) {
+  return (da * q - a * dq) / (q * q);
+}
+
+void applyTexturing(const Context& ctx, const raster::FragmentBatch& batch, int fragmentIndex,
+                    float color[4]) {
+  const TextureObject* texture = ctx.texture.activeTexture();
+  if (texture == nullptr) return;
+  const raster::Fragment& f = batch.fragments[fragmentIndex];
+  const float* tc = f.varyings + varying::kTexCoord;
+  const float q = tc[3];
+  const float s = tc[0] / q, t = tc[1] / q;
+  const bool twoD = texture->target == GL_TEXTURE_2D;
+
+  float texel[4];
+  const SamplerParameters& p = texture->params;
+  // Lambda only matters when the minification and magnification lookups differ.
+  const bool needLambda = isMipmapFilter(p.minFilter) || p.minFilter != p.magFilter;
+  if (!needLambda || batch.planes == nullptr) {
+    // Points and lines carry no derivatives: the base level, magnified (spec 3.8.9).
+    sampleTextureMagnified(*texture, s, t, texel);
+  } else {
+    double dsdx, dsdy, dqdx, dqdy;
+    batch.planes->derivatives(varying::kTexCoord + 0, f.x, f.y, dsdx, dsdy);
+    batch.planes->derivatives(varying::kTexCoord + 3, f.x, f.y, dqdx, dqdy);
+    TexCoordDerivatives d;
+    d.dsdx = projectedDerivative(tc[0], q, dsdx, dqdx);
+    d.dsdy = projectedDerivative(tc[0], q, dsdy, dqdy);
+    if (twoD) {
+      double dtdx, dtdy;
+      batch.planes->derivatives(varying::kTexCoord + 1, f.x, f.y, dtdx, dtdy);
+      d.dtdx = projectedDerivative(tc[1], q, dtdx, dqdx);
+      d.dtdy = projectedDerivative(tc[1], q, dtdy, dqdy);
+    }
+    const TextureImage& base = texture->baseImage();
+    const double rho = textureScaleFactor(d, base.width, twoD ? base.height : 0);
+    const float lambda = levelOfDetail(rho, p.minLod, p.maxLod);
+    sampleTexture(*texture, s, t, lambda, texel);
+  }
+  applyTextureEnvironment(ctx.texture.envMode, texture->baseImage().base, texel,
+                          ctx.texture.envColor, color);
+}
+
+}  // namespace glass::gl

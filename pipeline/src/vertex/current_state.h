@@ -1,0 +1,14 @@
+// Current vertex attributes (spec 2.7; table 6.5): what glColor, glNormal, glTexCoord and
+// glEdgeFlag set and every later glVertex uses.
+#pragma once
+
+namespace glass::gl {
+
+struct CurrentState {
+  float color[4] = {1.0f, 1.0f, 1.0f, 1.0f};   // stored as given; clamped after lighting
+  float normal[3] = {0.0f, 0.0f, 1.0f};
+  float texCoord[4] = {0.0f, 0.0f, 0.0f, 1.0f};
+  bool edgeFlag = true;
+};
+
+}  // namespace glass::gl

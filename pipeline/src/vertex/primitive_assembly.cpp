@@ -1,0 +1,151 @@
+#include "vertex/primitive_assembly.h"
+
+#include "core/context.h"
+#include "primitive/draw_pipeline.h"
+
+namespace glass::gl {
+
+namespace {
+
+// Edge-flag bits for a triangle whose edges a->b, b->c, c->a are boundary edges when flagged.
+unsigned edgeBits(bool ab, bool bc, bool ca) {
+  return (ab ? 1u : 0u) | (bc ? 2u : 0u) | (ca ? 4u : 0u);
+}
+
+// A quadrilateral given in boundary order q0 q1 q2 q3, q3 being its provoking vertex. Split along
+// the diagonal q1-q3 into (q0, q1, q3) and (q1, q2, q3), as Mesa's draw module splits quads, so
+// that colours interpolate as in Mesa. f0..f3: boundary flags of the edges q0q1, q1q2, q2q3, q3q0.
+void drawQuad(DrawPipeline& draw, const PipelineVertex& q0, const PipelineVertex& q1,
+              const PipelineVertex& q2, const PipelineVertex& q3, bool f0, bool f1, bool f2,
+              bool f3) {
+  draw.drawTriangle(q0, q1, q3, q3, edgeBits(f0, false, f3));
+  draw.drawTriangle(q1, q2, q3, q3, edgeBits(f1, f2, false));
+}
+
+// GL_POLYGON as a fan around its first vertex, which is also its provoking vertex (spec 2.13.7).
+// Only the polygon's own edges are boundary edges, each as its starting vertex's flag says.
+void drawPolygon(DrawPipeline& draw, const std::vector<PipelineVertex>& p) {
+  const size_t n = p.size();
+  if (n < 3) return;
+  for (size_t i = 1; i + 1 < n; ++i) {
+    draw.drawTriangle(p[0], p[i], p[i + 1], p[0],
+                      edgeBits(i == 1 && p[0].edgeFlag, p[i].edgeFlag,
+                               i + 2 == n && p[i + 1].edgeFlag));
+  }
+}
+
+}  // namespace
+
+bool isPrimitiveMode(GLenum mode) { return mode <= GL_POLYGON; }
+
+void beginPrimitive(Context& ctx, GLenum mode) {
+  PrimitiveAssembly& pa = ctx.assembly;
+  pa.active = true;
+  pa.mode = mode;
+  pa.vertexCount = 0;
+  pa.polygon.clear();
+  ctx.draw->prepare();
+}
+
+// Provoking vertices follow spec 2.13.7 (table 2.6): the last vertex of each point, line,
+// triangle and quadrilateral, except GL_LINE_LOOP's closing segment (its first vertex) and
+// GL_POLYGON (its first vertex). Edge flags apply to independent triangles, quads and polygons
+// only; strips and fans draw every edge (spec 2.6.2).
+void assembleVertex(Context& ctx, const PipelineVertex& v) {
+  PrimitiveAssembly& pa = ctx.assembly;
+  DrawPipeline& draw = *ctx.draw;
+  PipelineVertex* w = pa.window;
+  const int n = pa.vertexCount++;
+
+  switch (pa.mode) {
+    case GL_POINTS:
+      draw.drawPoint(v);
+      break;
+    case GL_LINES:
+      if (n % 2 == 0) {
+        w[0] = v;
+      } else {
+        draw.drawLine(w[0], v, v, true);
+      }
+      break;
+    case GL_LINE_STRIP:
+    case GL_LINE_LOOP:
+      if (n == 0) {
+        pa.first = v;
+      } else {
+        draw.drawLine(w[0], v, v, n == 1);
+      }
+      w[0] = v;
+      break;
+    case GL_TRIANGLES:
+      if (n % 3 < 2) {
+        w[n % 3] = v;
+      } else {
+        draw.drawTriangle(w[0], w[1], v, v, edgeBits(w[0].edgeFlag, w[1].edgeFlag, v.edgeFlag));
+      }
+      break;
+    case GL_TRIANGLE_STRIP:
+      // Triangle i is (v_i, v_i+1, v_i+2) for even i and (v_i+1, v_i, v_i+2) for odd i, so that
+      // all triangles of the strip have the same orientation.
+      // w[0], w[1] hold the two vertices before v.
+      if (n < 2) {
+        w[n] = v;
+        break;
+      }
+      if (n % 2 == 0) {
+        draw.drawTriangle(w[0], w[1], v, v, kAllEdges);
+      } else {
+        draw.drawTriangle(w[1], w[0], v, v, kAllEdges);
+      }
+      w[0] = w[1];
+      w[1] = v;
+      break;
+    case GL_TRIANGLE_FAN:
+      if (n == 0) {
+        pa.first = v;
+      } else {
+        if (n >= 2) draw.drawTriangle(pa.first, w[0], v, v, kAllEdges);
+        w[0] = v;
+      }
+      break;
+    case GL_QUADS:
+      if (n % 4 < 3) {
+        w[n % 4] = v;
+      } else {
+        drawQuad(draw, w[0], w[1], w[2], v, w[0].edgeFlag, w[1].edgeFlag, w[2].edgeFlag,
+                 v.edgeFlag);
+      }
+      break;
+    case GL_QUAD_STRIP:
+      // Quad i has the boundary v_2i, v_2i+1, v_2i+3, v_2i+2; it is drawn from v_2i+2 so that
+      // v_2i+3, the provoking vertex, comes last: (v_2i+2, v_2i, v_2i+1, v_2i+3).
+      if (n >= 3 && n % 2 == 1) {
+        drawQuad(draw, w[2], w[0], w[1], v, true, true, true, true);
+        w[0] = w[2];
+        w[1] = v;
+      } else if (n < 3) {
+        w[n] = v;
+      } else {
+        w[2] = v;
+      }
+      break;
+    case GL_POLYGON:
+      pa.polygon.push_back(v);
+      break;
+    default:
+      break;
+  }
+}
+
+void endPrimitive(Context& ctx) {
+  PrimitiveAssembly& pa = ctx.assembly;
+  if (pa.mode == GL_LINE_LOOP && pa.vertexCount >= 2) {
+    ctx.draw->drawLine(pa.window[0], pa.first, pa.first, false);
+  } else if (pa.mode == GL_POLYGON) {
+    drawPolygon(*ctx.draw, pa.polygon);
+    pa.polygon.clear();
+  }
+  pa.active = false;
+}
+
+}  // namespace glass::gl

@@ -1,0 +1,36 @@
+// Primitive assembly (spec 2.6.1): glBegin/glEnd bookkeeping that turns the stream of processed
+// vertices into points, lines and triangles of the ten primitive types, each with the provoking
+// vertex the specification names for flat shading (spec 2.13.7, table 2.6) and, for polygons,
+// triangles and quads, the edge flags that say which edges are boundary edges (spec 2.6.2).
+#pragma once
+
+#include <GL/gl.h>
+
+#include <vector>
+
+#include "vertex/pipeline_vertex.h"
+
+namespace glass::gl {
+
+struct PrimitiveAssembly {
+  bool active = false;       // between glBegin and glEnd
+  GLenum mode = GL_POINTS;
+  int vertexCount = 0;       // vertices received since glBegin
+  // The last vertices received, enough for strips, fans and quads; window[0] is the oldest.
+  PipelineVertex window[4];
+  PipelineVertex first;      // line loops and triangle fans keep their first vertex
+  std::vector<PipelineVertex> polygon;  // GL_POLYGON collects every vertex until glEnd
+};
+
+struct Context;
+
+bool isPrimitiveMode(GLenum mode);
+
+// glBegin's work once its errors are checked: prepares the per-draw state and starts assembling.
+void beginPrimitive(Context& ctx, GLenum mode);
+// A vertex from the vertex stage.
+void assembleVertex(Context& ctx, const PipelineVertex& vertex);
+// glEnd's work: closes line loops, draws polygons, drops an incomplete last primitive.
+void endPrimitive(Context& ctx);
+
+}  // namespace glass::gl
