@@ -16,5 +16,14 @@ write_basic_package_version_file(${PROJECT_BINARY_DIR}/glassConfigVersion.cmake
 install(FILES ${PROJECT_BINARY_DIR}/glassConfig.cmake ${PROJECT_BINARY_DIR}/glassConfigVersion.cmake
         DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/glass)
 
+# The prefix in glass.pc is found from the file's own place (${pcfiledir}), so that the package
+# works wherever it is installed, including `cmake --install --prefix` into another directory.
+if(IS_ABSOLUTE "${CMAKE_INSTALL_LIBDIR}")
+  set(GLASS_PC_PREFIX "${CMAKE_INSTALL_PREFIX}")
+else()
+  file(RELATIVE_PATH pc_to_prefix "/${CMAKE_INSTALL_LIBDIR}/pkgconfig" "/")
+  string(REGEX REPLACE "/$" "" pc_to_prefix "${pc_to_prefix}")
+  set(GLASS_PC_PREFIX "\${pcfiledir}/${pc_to_prefix}")
+endif()
 configure_file(${PROJECT_SOURCE_DIR}/cmake/glass.pc.in ${PROJECT_BINARY_DIR}/glass.pc @ONLY)
 install(FILES ${PROJECT_BINARY_DIR}/glass.pc DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig)

@@ -1,0 +1,53 @@
+# The install test (cmake -P): installs the build into a fresh prefix, then builds and runs
+# program.c the two ways a user would:
+#   1. cc program.c $(pkg-config --cflags --libs glass), with PKG_CONFIG_PATH into the prefix; its
+#      <GL/gl.h>, <GL/glu.h> and <glass/context.h> must come from the prefix;
+#   2. a CMake project with find_package(glass) linking glass::gl (consumer/).
+# Variables: BUILD_DIR, SOURCE_DIR (tests/install), WORK_DIR (scratch), C_COMPILER.
+cmake_minimum_required(VERSION 3.25)
+
+function(run description)
+  execute_process(COMMAND ${ARGN} RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT status EQUAL 0)
+    message(FATAL_ERROR "${description} failed (${status}):\n${out}${err}")
+  endif()
+  set(output "${out}" PARENT_SCOPE)
+endfunction()
+
+set(prefix ${WORK_DIR}/prefix)
+file(REMOVE_RECURSE ${WORK_DIR})
+file(MAKE_DIRECTORY ${WORK_DIR})
+
+run("cmake --install" ${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${prefix})
+
+file(GLOB_RECURSE pc_files ${prefix}/*/glass.pc)
+if(NOT pc_files)
+  message(FATAL_ERROR "no glass.pc installed under ${prefix}")
+endif()
+list(GET pc_files 0 pc_file)
+get_filename_component(pc_dir ${pc_file} DIRECTORY)
+set(ENV{PKG_CONFIG_PATH} ${pc_dir})
+
+# 1. pkg-config, exactly as a user types it.
+set(program ${SOURCE_DIR}/program.c)
+run("the headers program.c includes"
+    sh -c "'${C_COMPILER}' -M '${program}' $(pkg-config --cflags glass)")
+foreach(header GL/gl.h GL/glu.h glass/context.h)
+  string(FIND "${output}" "${prefix}/include/${header}" at)
+  if(at EQUAL -1)
+    message(FATAL_ERROR "<${header}> does not resolve into ${prefix}/include; "
+                        "the compiler saw:\n${output}")
+  endif()
+endforeach()
+run("cc program.c $(pkg-config --cflags --libs glass)"
+    sh -c "'${C_COMPILER}' '${program}' $(pkg-config --cflags --libs glass) -o '${WORK_DIR}/program'")
+run("the program built with pkg-config" ${WORK_DIR}/program)
+message(STATUS "pkg-config build: ${output}")
+
+# 2. find_package(glass).
+run("configuring the find_package(glass) project"
+    ${CMAKE_COMMAND} -S ${SOURCE_DIR}/consumer -B ${WORK_DIR}/consumer -DCMAKE_PREFIX_PATH=${prefix}
+    -DCMAKE_C_COMPILER=${C_COMPILER} -DGLASS_CONSUMER_SOURCE=${program})
+run("building the find_package(glass) project" ${CMAKE_COMMAND} --build ${WORK_DIR}/consumer)
+run("the program built with find_package(glass)" ${WORK_DIR}/consumer/consumer)
+message(STATUS "find_package build: ${output}")
