@@ -885,10 +885,36 @@ GLAPI void GLAPIENTRY glColor3ubv(const GLubyte *v);
 GLAPI void GLAPIENTRY glColor4fv(const GLfloat *v);
 GLAPI void GLAPIENTRY glColor4dv(const GLdouble *v);
 GLAPI void GLAPIENTRY glColor4ubv(const GLubyte *v);
+GLAPI void GLAPIENTRY glColor3b(GLbyte r, GLbyte g, GLbyte b);
+GLAPI void GLAPIENTRY glColor3s(GLshort r, GLshort g, GLshort b);
+GLAPI void GLAPIENTRY glColor3i(GLint r, GLint g, GLint b);
+GLAPI void GLAPIENTRY glColor3us(GLushort r, GLushort g, GLushort b);
+GLAPI void GLAPIENTRY glColor3ui(GLuint r, GLuint g, GLuint b);
+GLAPI void GLAPIENTRY glColor4b(GLbyte r, GLbyte g, GLbyte b, GLbyte a);
+GLAPI void GLAPIENTRY glColor4s(GLshort r, GLshort g, GLshort b, GLshort a);
+GLAPI void GLAPIENTRY glColor4i(GLint r, GLint g, GLint b, GLint a);
+GLAPI void GLAPIENTRY glColor4us(GLushort r, GLushort g, GLushort b, GLushort a);
+GLAPI void GLAPIENTRY glColor4ui(GLuint r, GLuint g, GLuint b, GLuint a);
+GLAPI void GLAPIENTRY glColor3bv(const GLbyte *v);
+GLAPI void GLAPIENTRY glColor3sv(const GLshort *v);
+GLAPI void GLAPIENTRY glColor3iv(const GLint *v);
+GLAPI void GLAPIENTRY glColor3usv(const GLushort *v);
+GLAPI void GLAPIENTRY glColor3uiv(const GLuint *v);
+GLAPI void GLAPIENTRY glColor4bv(const GLbyte *v);
+GLAPI void GLAPIENTRY glColor4sv(const GLshort *v);
+GLAPI void GLAPIENTRY glColor4iv(const GLint *v);
+GLAPI void GLAPIENTRY glColor4usv(const GLushort *v);
+GLAPI void GLAPIENTRY glColor4uiv(const GLuint *v);
 GLAPI void GLAPIENTRY glNormal3f(GLfloat x, GLfloat y, GLfloat z);
 GLAPI void GLAPIENTRY glNormal3d(GLdouble x, GLdouble y, GLdouble z);
 GLAPI void GLAPIENTRY glNormal3fv(const GLfloat *v);
 GLAPI void GLAPIENTRY glNormal3dv(const GLdouble *v);
+GLAPI void GLAPIENTRY glNormal3b(GLbyte x, GLbyte y, GLbyte z);
+GLAPI void GLAPIENTRY glNormal3s(GLshort x, GLshort y, GLshort z);
+GLAPI void GLAPIENTRY glNormal3i(GLint x, GLint y, GLint z);
+GLAPI void GLAPIENTRY glNormal3bv(const GLbyte *v);
+GLAPI void GLAPIENTRY glNormal3sv(const GLshort *v);
+GLAPI void GLAPIENTRY glNormal3iv(const GLint *v);
 GLAPI void GLAPIENTRY glTexCoord1f(GLfloat s);
 GLAPI void GLAPIENTRY glTexCoord1d(GLdouble s);
 GLAPI void GLAPIENTRY glTexCoord2f(GLfloat s, GLfloat t);
@@ -905,11 +931,32 @@ GLAPI void GLAPIENTRY glTexCoord1dv(const GLdouble *v);
 GLAPI void GLAPIENTRY glTexCoord2dv(const GLdouble *v);
 GLAPI void GLAPIENTRY glTexCoord3dv(const GLdouble *v);
 GLAPI void GLAPIENTRY glTexCoord4dv(const GLdouble *v);
+GLAPI void GLAPIENTRY glTexCoord1i(GLint s);
+GLAPI void GLAPIENTRY glTexCoord2i(GLint s, GLint t);
+GLAPI void GLAPIENTRY glTexCoord3i(GLint s, GLint t, GLint r);
+GLAPI void GLAPIENTRY glTexCoord4i(GLint s, GLint t, GLint r, GLint q);
+GLAPI void GLAPIENTRY glTexCoord1s(GLshort s);
+GLAPI void GLAPIENTRY glTexCoord2s(GLshort s, GLshort t);
+GLAPI void GLAPIENTRY glTexCoord3s(GLshort s, GLshort t, GLshort r);
+GLAPI void GLAPIENTRY glTexCoord4s(GLshort s, GLshort t, GLshort r, GLshort q);
+GLAPI void GLAPIENTRY glTexCoord1iv(const GLint *v);
+GLAPI void GLAPIENTRY glTexCoord2iv(const GLint *v);
+GLAPI void GLAPIENTRY glTexCoord3iv(const GLint *v);
+GLAPI void GLAPIENTRY glTexCoord4iv(const GLint *v);
+GLAPI void GLAPIENTRY glTexCoord1sv(const GLshort *v);
+GLAPI void GLAPIENTRY glTexCoord2sv(const GLshort *v);
+GLAPI void GLAPIENTRY glTexCoord3sv(const GLshort *v);
+GLAPI void GLAPIENTRY glTexCoord4sv(const GLshort *v);
 GLAPI void GLAPIENTRY glEdgeFlag(GLboolean flag);
 GLAPI void GLAPIENTRY glEdgeFlagv(const GLboolean *flag);
 GLAPI void GLAPIENTRY glRectf(GLfloat x1, GLfloat y1, GLfloat x2, GLfloat y2);
 GLAPI void GLAPIENTRY glRectd(GLdouble x1, GLdouble y1, GLdouble x2, GLdouble y2);
 GLAPI void GLAPIENTRY glRecti(GLint x1, GLint y1, GLint x2, GLint y2);
+GLAPI void GLAPIENTRY glRects(GLshort x1, GLshort y1, GLshort x2, GLshort y2);
+GLAPI void GLAPIENTRY glRectfv(const GLfloat *v1, const GLfloat *v2);
+GLAPI void GLAPIENTRY glRectdv(const GLdouble *v1, const GLdouble *v2);
+GLAPI void GLAPIENTRY glRectiv(const GLint *v1, const GLint *v2);
+GLAPI void GLAPIENTRY glRectsv(const GLshort *v1, const GLshort *v2);
 
 /* ---- Vertex arrays ---- */
 GLAPI void GLAPIENTRY glEnableClientState(GLenum array);
@@ -918,6 +965,8 @@ GLAPI void GLAPIENTRY glVertexPointer(GLint size, GLenum type, GLsizei stride, c
 GLAPI void GLAPIENTRY glColorPointer(GLint size, GLenum type, GLsizei stride, const GLvoid *ptr);
 GLAPI void GLAPIENTRY glNormalPointer(GLenum type, GLsizei stride, const GLvoid *ptr);
 GLAPI void GLAPIENTRY glTexCoordPointer(GLint size, GLenum type, GLsizei stride, const GLvoid *ptr);
+GLAPI void GLAPIENTRY glEdgeFlagPointer(GLsizei stride, const GLvoid *ptr);
+GLAPI void GLAPIENTRY glGetPointerv(GLenum pname, GLvoid **params);
 GLAPI void GLAPIENTRY glArrayElement(GLint i);
 GLAPI void GLAPIENTRY glDrawArrays(GLenum mode, GLint first, GLsizei count);
 GLAPI void GLAPIENTRY glDrawElements(GLenum mode, GLsizei count, GLenum type, const GLvoid *indices);
@@ -948,6 +997,7 @@ GLAPI void GLAPIENTRY glReadPixels(GLint x, GLint y, GLsizei width, GLsizei heig
 /* ---- Rasterization state ---- */
 GLAPI void GLAPIENTRY glPointSize(GLfloat size);
 GLAPI void GLAPIENTRY glLineWidth(GLfloat width);
+GLAPI void GLAPIENTRY glLineStipple(GLint factor, GLushort pattern);
 GLAPI void GLAPIENTRY glShadeModel(GLenum mode);
 GLAPI void GLAPIENTRY glPolygonMode(GLenum face, GLenum mode);
 GLAPI void GLAPIENTRY glCullFace(GLenum mode);
@@ -959,6 +1009,15 @@ GLAPI void GLAPIENTRY glGetClipPlane(GLenum plane, GLdouble *equation);
 /* GLASS-SECTION: lighting (glLight*, glMaterial*, glColorMaterial, ...) */
 
 /* GLASS-SECTION: fragment operations (fog, alpha, stencil, blend, logic op, attribute stack) */
+GLAPI void GLAPIENTRY glAlphaFunc(GLenum func, GLclampf ref);
+GLAPI void GLAPIENTRY glStencilFunc(GLenum func, GLint ref, GLuint mask);
+GLAPI void GLAPIENTRY glStencilOp(GLenum fail, GLenum zfail, GLenum zpass);
+GLAPI void GLAPIENTRY glStencilMask(GLuint mask);
+GLAPI void GLAPIENTRY glBlendFunc(GLenum sfactor, GLenum dfactor);
+GLAPI void GLAPIENTRY glBlendFuncSeparate(GLenum sfactorRGB, GLenum dfactorRGB, GLenum sfactorAlpha, GLenum dfactorAlpha);
+GLAPI void GLAPIENTRY glBlendColor(GLclampf red, GLclampf green, GLclampf blue, GLclampf alpha);
+GLAPI void GLAPIENTRY glBlendEquation(GLenum mode);
+GLAPI void GLAPIENTRY glLogicOp(GLenum opcode);
 
 /* GLASS-SECTION: texturing */
 GLAPI void GLAPIENTRY glGenTextures(GLsizei n, GLuint *textures);

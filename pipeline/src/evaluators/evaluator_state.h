@@ -2,8 +2,8 @@
 // replaced by the evaluator stage.
 #pragma once
 
-namespace glass {
+namespace glass::gl {
 
 struct EvaluatorState {};
 
-}  // namespace glass
+}  // namespace glass::gl

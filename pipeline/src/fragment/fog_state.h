@@ -1,8 +1,8 @@
 // Fog state (glFog). Placeholder until the fog stage lands: replaced by the fog stage.
 #pragma once
 
-namespace glass {
+namespace glass::gl {
 
 struct FogState {};
 
-}  // namespace glass
+}  // namespace glass::gl
