@@ -301,9 +301,17 @@ std::string formatIfsErrors(const IfsParseResult& result, std::string_view fileN
                             std::string_view text) {
   std::string out;
   for (const IfsParseError& error : result.errors) {
-    out += std::string(fileName);
-    if (error.line > 0) out += ":" + std::to_string(error.line) + ":" + std::to_string(error.column);
-    out += ": error: " + error.message + "\n";
+    // Appended piece by piece: GCC 12 misreports operator+ chains on strings (-Wrestrict).
+    out += fileName;
+    if (error.line > 0) {
+      out += ':';
+      out += std::to_string(error.line);
+      out += ':';
+      out += std::to_string(error.column);
+    }
+    out += ": error: ";
+    out += error.message;
+    out += '\n';
     if (error.line <= 0) continue;
     // The offending line and a caret under the column.
     std::size_t start = 0;
@@ -316,7 +324,9 @@ std::string formatIfsErrors(const IfsParseResult& result, std::string_view fileN
     if (end == std::string_view::npos) end = text.size();
     std::string source(text.substr(start, end - start));
     if (!source.empty() && source.back() == '\r') source.pop_back();
-    out += "  " + source + "\n  ";
+    out += "  ";
+    out += source;
+    out += "\n  ";
     for (int c = 1; c < error.column; ++c) out += (c - 1 < static_cast<int>(source.size()) && source[c - 1] == '\t') ? '\t' : ' ';
     out += "^\n";
   }
