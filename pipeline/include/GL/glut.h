@@ -1,0 +1,44 @@
+/* glass: the GLUT geometry routines (GLUT 3.7 specification, chapter 11).
+ *
+ * glass renders offscreen (see glass/context.h), so this header has no windows, menus or event
+ * loop yet: only the shapes, drawn with the vertices, normals and vertex order of freeglut 3.
+ * Sizes: the sphere and cone have the given radius/base and height along +z from z = 0 (the cone)
+ * or centred at the origin (the sphere); the cube has edge `size`; the tetrahedron, octahedron
+ * and icosahedron have circumradius 1, the dodecahedron sqrt(3). glutSolidCylinder and
+ * glutWireCylinder are freeglut's additions.
+ */
+#ifndef GLASS_GL_GLUT_H
+#define GLASS_GL_GLUT_H
+
+#include <GL/gl.h>
+#include <GL/glu.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+GLAPI void GLAPIENTRY glutSolidSphere(GLdouble radius, GLint slices, GLint stacks);
+GLAPI void GLAPIENTRY glutWireSphere(GLdouble radius, GLint slices, GLint stacks);
+GLAPI void GLAPIENTRY glutSolidCone(GLdouble base, GLdouble height, GLint slices, GLint stacks);
+GLAPI void GLAPIENTRY glutWireCone(GLdouble base, GLdouble height, GLint slices, GLint stacks);
+GLAPI void GLAPIENTRY glutSolidCylinder(GLdouble radius, GLdouble height, GLint slices, GLint stacks);
+GLAPI void GLAPIENTRY glutWireCylinder(GLdouble radius, GLdouble height, GLint slices, GLint stacks);
+GLAPI void GLAPIENTRY glutSolidTorus(GLdouble innerRadius, GLdouble outerRadius, GLint sides, GLint rings);
+GLAPI void GLAPIENTRY glutWireTorus(GLdouble innerRadius, GLdouble outerRadius, GLint sides, GLint rings);
+GLAPI void GLAPIENTRY glutSolidCube(GLdouble size);
+GLAPI void GLAPIENTRY glutWireCube(GLdouble size);
+GLAPI void GLAPIENTRY glutSolidTetrahedron(void);
+GLAPI void GLAPIENTRY glutWireTetrahedron(void);
+GLAPI void GLAPIENTRY glutSolidOctahedron(void);
+GLAPI void GLAPIENTRY glutWireOctahedron(void);
+GLAPI void GLAPIENTRY glutSolidDodecahedron(void);
+GLAPI void GLAPIENTRY glutWireDodecahedron(void);
+GLAPI void GLAPIENTRY glutSolidIcosahedron(void);
+GLAPI void GLAPIENTRY glutWireIcosahedron(void);
+/* GLASS-SECTION: glutSolidTeapot / glutWireTeapot (Bezier patches) */
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* GLASS_GL_GLUT_H */
