@@ -1,0 +1,278 @@
+#include "texture/client_pixels.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+
+namespace glass::gl {
+namespace {
+
+// Which RGBA slot each component of a format goes to (index 4 means luminance: R, G and B).
+constexpr int kLuminance = 4;
+
+struct FormatComponents {
+  int count;
+  int slot[4];
+};
+
+bool formatComponents(GLenum format, FormatComponents* out) {
+  switch (format) {
+    case GL_RED: *out = {1, {0}}; return true;
+    case GL_GREEN: *out = {1, {1}}; return true;
+    case GL_BLUE: *out = {1, {2}}; return true;
+    case GL_ALPHA: *out = {1, {3}}; return true;
+    case GL_RGB: *out = {3, {0, 1, 2}}; return true;
+    case GL_BGR: *out = {3, {2, 1, 0}}; return true;
+    case GL_RGBA: *out = {4, {0, 1, 2, 3}}; return true;
+    case GL_BGRA: *out = {4, {2, 1, 0, 3}}; return true;
+    case GL_LUMINANCE: *out = {1, {kLuminance}}; return true;
+    case GL_LUMINANCE_ALPHA: *out = {2, {kLuminance, 3}}; return true;
+    default: return false;
+  }
+}
+
+// A packed type (tables 3.8 to 3.11): the element size in bytes and the bit fields of its
+// components, first component first, each as (shift, width).
+struct PackedType {
+  int bytes;
+  int count;
+  int shift[4];
+  int width[4];
+};
+
+bool packedType(GLenum type, PackedType* out) {
+  switch (type) {
+    case GL_UNSIGNED_BYTE_3_3_2: *out = {1, 3, {5, 2, 0}, {3, 3, 2}}; return true;
+    case GL_UNSIGNED_BYTE_2_3_3_REV: *out = {1, 3, {0, 3, 6}, {3, 3, 2}}; return true;
+    case GL_UNSIGNED_SHORT_5_6_5: *out = {2, 3, {11, 5, 0}, {5, 6, 5}}; return true;
+    case GL_UNSIGNED_SHORT_5_6_5_REV: *out = {2, 3, {0, 5, 11}, {5, 6, 5}}; return true;
+    case GL_UNSIGNED_SHORT_4_4_4_4: *out = {2, 4, {12, 8, 4, 0}, {4, 4, 4, 4}}; return true;
+    case GL_UNSIGNED_SHORT_4_4_4_4_REV: *out = {2, 4, {0, 4, 8, 12}, {4, 4, 4, 4}}; return true;
+    case GL_UNSIGNED_SHORT_5_5_5_1: *out = {2, 4, {11, 6, 1, 0}, {5, 5, 5, 1}}; return true;
+    case GL_UNSIGNED_SHORT_1_5_5_5_REV: *out = {2, 4, {0, 5, 10, 15}, {5, 5, 5, 1}}; return true;
+    case GL_UNSIGNED_INT_8_8_8_8: *out = {4, 4, {24, 16, 8, 0}, {8, 8, 8, 8}}; return true;
+    case GL_UNSIGNED_INT_8_8_8_8_REV: *out = {4, 4, {0, 8, 16, 24}, {8, 8, 8, 8}}; return true;
+    case GL_UNSIGNED_INT_10_10_10_2: *out = {4, 4, {22, 12, 2, 0}, {10, 10, 10, 2}}; return true;
+    case GL_UNSIGNED_INT_2_10_10_10_REV: *out = {4, 4, {0, 10, 20, 30}, {10, 10, 10, 2}}; return true;
+    default: return false;
+  }
+}
+
+int scalarTypeBytes(GLenum type) {
+  switch (type) {
+    case GL_UNSIGNED_BYTE:
+    case GL_BYTE: return 1;
+    case GL_UNSIGNED_SHORT:
+    case GL_SHORT: return 2;
+    case GL_UNSIGNED_INT:
+    case GL_INT:
+    case GL_FLOAT: return 4;
+    default: return 0;
+  }
+}
+
+// The memory layout of a block of pixels (spec 3.6.4, "Unpacking"): where group (i, j) starts.
+struct BlockLayout {
+  size_t elementBytes;  // s
+  size_t groupBytes;    // n * s, or the packed element size
+  size_t rowBytes;      // k * s
+  size_t firstByte;     // the skipped rows and pixels
+};
+
+BlockLayout blockLayout(int width, int elementsPerGroup, int elementBytes, const PixelLayout& layout) {
+  BlockLayout b;
+  b.elementBytes = static_cast<size_t>(elementBytes);
+  b.groupBytes = b.elementBytes * static_cast<size_t>(elementsPerGroup);
+  const size_t rowGroups = static_cast<size_t>(layout.rowLength > 0 ? layout.rowLength : width);
+  const size_t alignment = static_cast<size_t>(std::max(layout.alignment, 1));
+  // k = n l when s >= a, else (a / s) ceil(s n l / a); in bytes: round n l s up to a multiple of a.
+  size_t rowBytes = b.groupBytes * rowGroups;
+  if (b.elementBytes < alignment) rowBytes = (rowBytes + alignment - 1) / alignment * alignment;
+  b.rowBytes = rowBytes;
+  b.firstByte = static_cast<size_t>(layout.skipRows) * rowBytes +
+                static_cast<size_t>(layout.skipPixels) * b.groupBytes;
+  return b;
+}
+
+uint32_t readUnsigned(const unsigned char* p, int bytes, bool swap) {
+  unsigned char b[4] = {0, 0, 0, 0};
+  std::memcpy(b, p, static_cast<size_t>(bytes));
+  if (swap) std::reverse(b, b + bytes);
+  if (bytes == 1) return b[0];
+  if (bytes == 2) {
+    uint16_t v;
+    std::memcpy(&v, b, 2);
+    return v;
+  }
+  uint32_t v;
+  std::memcpy(&v, b, 4);
+  return v;
+}
+
+void writeUnsigned(unsigned char* p, int bytes, bool swap, uint32_t value) {
+  unsigned char b[4];
+  if (bytes == 1) {
+    b[0] = static_cast<unsigned char>(value);
+  } else if (bytes == 2) {
+    const uint16_t v = static_cast<uint16_t>(value);
+    std::memcpy(b, &v, 2);
+  } else {
+    std::memcpy(b, &value, 4);
+  }
+  if (swap) std::reverse(b, b + bytes);
+  std::memcpy(p, b, static_cast<size_t>(bytes));
+}
+
+// Table 2.9: an element of the given type as a float (unsigned: c / (2^b - 1); signed:
+// (2c + 1) / (2^b - 1); float as it is).
+float elementToFloat(const unsigned char* p, GLenum type, bool swap) {
+  switch (type) {
+    case GL_UNSIGNED_BYTE: return static_cast<float>(p[0]) / 255.0f;
+    case GL_BYTE: {
+      const int8_t c = static_cast<int8_t>(p[0]);
+      return (2.0f * c + 1.0f) / 255.0f;
+    }
+    case GL_UNSIGNED_SHORT: return static_cast<float>(readUnsigned(p, 2, swap)) / 65535.0f;
+    case GL_SHORT: {
+      const int16_t c = static_cast<int16_t>(readUnsigned(p, 2, swap));
+      return (2.0f * c + 1.0f) / 65535.0f;
+    }
+    case GL_UNSIGNED_INT:
+      return static_cast<float>(static_cast<double>(readUnsigned(p, 4, swap)) / 4294967295.0);
+    case GL_INT: {
+      const int32_t c = static_cast<int32_t>(readUnsigned(p, 4, swap));
+      return static_cast<float>((2.0 * c + 1.0) / 4294967295.0);
+    }
+    case GL_FLOAT: {
+      const uint32_t bits = readUnsigned(p, 4, swap);
+      float f;
+      std::memcpy(&f, &bits, 4);
+      return f;
+    }
+    default: return 0.0f;
+  }
+}
+
+// Table 4.7 (packing): a component clamped to [0, 1] as an element of the given type.
+void floatToElement(float c, GLenum type, bool swap, unsigned char* p) {
+  const double f = std::clamp(static_cast<double>(c), 0.0, 1.0);
+  switch (type) {
+    case GL_UNSIGNED_BYTE: p[0] = static_cast<unsigned char>(std::nearbyint(f * 255.0)); break;
+    case GL_BYTE:
+      p[0] = static_cast<unsigned char>(static_cast<int8_t>(std::nearbyint((f * 255.0 - 1.0) / 2.0)));
+      break;
+    case GL_UNSIGNED_SHORT:
+      writeUnsigned(p, 2, swap, static_cast<uint32_t>(std::nearbyint(f * 65535.0)));
+      break;
+    case GL_SHORT:
+      writeUnsigned(p, 2, swap,
+                    static_cast<uint16_t>(static_cast<int16_t>(std::nearbyint((f * 65535.0 - 1.0) / 2.0))));
+      break;
+    case GL_UNSIGNED_INT:
+      writeUnsigned(p, 4, swap, static_cast<uint32_t>(std::nearbyint(f * 4294967295.0)));
+      break;
+    case GL_INT:
+      writeUnsigned(p, 4, swap,
+                    static_cast<uint32_t>(static_cast<int32_t>(std::nearbyint((f * 4294967295.0 - 1.0) / 2.0))));
+      break;
+    case GL_FLOAT: {
+      const float v = std::clamp(c, 0.0f, 1.0f);
+      uint32_t bits;
+      std::memcpy(&bits, &v, 4);
+      writeUnsigned(p, 4, swap, bits);
+      break;
+    }
+    default: break;
+  }
+}
+
+}  // namespace
+
+GLenum checkTexelFormatAndType(GLenum format, GLenum type) {
+  FormatComponents components;
+  const bool formatKnown = formatComponents(format, &components);
+  PackedType packed;
+  const bool isPacked = packedType(type, &packed);
+  const bool typeKnown = isPacked || scalarTypeBytes(type) > 0;
+  if (!formatKnown || !typeKnown) return GL_INVALID_ENUM;
+  // Table 3.8: 3-component packed types go with RGB (and BGR), 4-component ones with RGBA/BGRA.
+  if (isPacked && packed.count != components.count) return GL_INVALID_OPERATION;
+  if (isPacked && packed.count == 3 && format != GL_RGB && format != GL_BGR) return GL_INVALID_OPERATION;
+  return GL_NO_ERROR;
+}
+
+void unpackTexels(const void* pixels, int width, int height, GLenum format, GLenum type,
+                  const PixelLayout& layout, BaseFormat base, std::vector<uint8_t>& texels) {
+  FormatComponents components;
+  formatComponents(format, &components);
+  PackedType packed;
+  const bool isPacked = packedType(type, &packed);
+  const int elementBytes = isPacked ? packed.bytes : scalarTypeBytes(type);
+  const BlockLayout block = blockLayout(width, isPacked ? 1 : components.count, elementBytes, layout);
+  const bool swap = layout.swapBytes && elementBytes > 1;
+
+  texels.resize(static_cast<size_t>(width) * static_cast<size_t>(height) * 4);
+  const auto* first = static_cast<const unsigned char*>(pixels) + block.firstByte;
+  for (int j = 0; j < height; ++j) {
+    const unsigned char* row = first + static_cast<size_t>(j) * block.rowBytes;
+    for (int i = 0; i < width; ++i) {
+      const unsigned char* group = row + static_cast<size_t>(i) * block.groupBytes;
+      float values[4];
+      if (isPacked) {
+        const uint32_t element = readUnsigned(group, packed.bytes, swap);
+        for (int c = 0; c < packed.count; ++c) {
+          const uint32_t max = (1u << packed.width[c]) - 1u;
+          values[c] = static_cast<float>((element >> packed.shift[c]) & max) / static_cast<float>(max);
+        }
+      } else {
+        for (int c = 0; c < components.count; ++c)
+          values[c] = elementToFloat(group + static_cast<size_t>(c) * block.elementBytes, type, swap);
+      }
+      float rgba[4] = {0.0f, 0.0f, 0.0f, 1.0f};
+      for (int c = 0; c < components.count; ++c) {
+        if (components.slot[c] == kLuminance) {
+          rgba[0] = rgba[1] = rgba[2] = values[c];
+        } else {
+          rgba[components.slot[c]] = values[c];
+        }
+      }
+      storeTexel(base, rgba, &texels[(static_cast<size_t>(j) * static_cast<size_t>(width) + static_cast<size_t>(i)) * 4]);
+    }
+  }
+}
+
+void packPixelRow(const float* rgba, int width, int row, GLenum format, GLenum type,
+                  const PixelLayout& layout, void* pixels) {
+  FormatComponents components;
+  formatComponents(format, &components);
+  PackedType packed;
+  const bool isPacked = packedType(type, &packed);
+  const int elementBytes = isPacked ? packed.bytes : scalarTypeBytes(type);
+  const BlockLayout block = blockLayout(width, isPacked ? 1 : components.count, elementBytes, layout);
+  const bool swap = layout.swapBytes && elementBytes > 1;
+
+  unsigned char* out = static_cast<unsigned char*>(pixels) + block.firstByte +
+                       static_cast<size_t>(row) * block.rowBytes;
+  for (int i = 0; i < width; ++i) {
+    unsigned char* group = out + static_cast<size_t>(i) * block.groupBytes;
+    const float* in = rgba + static_cast<size_t>(i) * 4;
+    float values[4];
+    for (int c = 0; c < components.count; ++c)
+      values[c] = in[components.slot[c] == kLuminance ? 0 : components.slot[c]];
+    if (isPacked) {
+      uint32_t element = 0;
+      for (int c = 0; c < packed.count; ++c) {
+        const uint32_t max = (1u << packed.width[c]) - 1u;
+        const double f = std::clamp(static_cast<double>(values[c]), 0.0, 1.0);
+        element |= static_cast<uint32_t>(std::nearbyint(f * max)) << packed.shift[c];
+      }
+      writeUnsigned(group, packed.bytes, swap, element);
+    } else {
+      for (int c = 0; c < components.count; ++c)
+        floatToElement(values[c], type, swap, group + static_cast<size_t>(c) * block.elementBytes);
+    }
+  }
+}
+
+}  // namespace glass::gl

@@ -1,0 +1,79 @@
+#include "texture/mipmap_generation.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace glass::gl {
+namespace {
+
+// The weights by which the source texels of one axis contribute to each destination texel:
+// destination texel i covers [i * n / m, (i + 1) * n / m) of the source axis (n source texels,
+// m destination texels). Weights are in units of 1/m of a source texel, so they are integers:
+// texel k, covering [k, k + 1), overlaps [i n / m, (i + 1) n / m) by
+// (min((k + 1) m, (i + 1) n) - max(k m, i n)) / m.
+struct AxisFootprint {
+  int first;                 // the first source texel
+  std::vector<int> weights;  // integer weights, summing to n
+};
+
+std::vector<AxisFootprint> axisFootprints(int n, int m) {
+  std::vector<AxisFootprint> result(static_cast<size_t>(m));
+  for (int i = 0; i < m; ++i) {
+    const long lo = static_cast<long>(i) * n, hi = static_cast<long>(i + 1) * n;
+    AxisFootprint& f = result[static_cast<size_t>(i)];
+    f.first = static_cast<int>(lo / m);
+    for (int k = f.first; static_cast<long>(k) * m < hi; ++k) {
+      const long overlap = std::min(static_cast<long>(k + 1) * m, hi) - std::max(static_cast<long>(k) * m, lo);
+      f.weights.push_back(static_cast<int>(overlap));
+    }
+  }
+  return result;
+}
+
+}  // namespace
+
+TextureImage reduceImageByBoxFilter(const TextureImage& source) {
+  TextureImage out;
+  out.width = std::max(1, source.width / 2);
+  out.height = std::max(1, source.height / 2);
+  out.border = source.border;
+  out.internalFormat = source.internalFormat;
+  out.base = source.base;
+  out.texels.resize(static_cast<size_t>(out.width) * static_cast<size_t>(out.height) * 4);
+
+  const std::vector<AxisFootprint> fx = axisFootprints(source.width, out.width);
+  const std::vector<AxisFootprint> fy = axisFootprints(source.height, out.height);
+  // Total weight of a destination texel: n_x * n_y (each axis's weights sum to n).
+  const long total = static_cast<long>(source.width) * static_cast<long>(source.height);
+  for (int j = 0; j < out.height; ++j) {
+    const AxisFootprint& ry = fy[static_cast<size_t>(j)];
+    for (int i = 0; i < out.width; ++i) {
+      const AxisFootprint& rx = fx[static_cast<size_t>(i)];
+      long sum[4] = {0, 0, 0, 0};
+      for (size_t b = 0; b < ry.weights.size(); ++b) {
+        for (size_t a = 0; a < rx.weights.size(); ++a) {
+          const long w = static_cast<long>(ry.weights[b]) * rx.weights[a];
+          const uint8_t* t = source.texel(rx.first + static_cast<int>(a), ry.first + static_cast<int>(b));
+          for (int c = 0; c < 4; ++c) sum[c] += w * t[c];
+        }
+      }
+      uint8_t* d = out.texel(i, j);
+      // Round to nearest, halves up: (sum + total / 2) / total.
+      for (int c = 0; c < 4; ++c) d[c] = static_cast<uint8_t>((2 * sum[c] + total) / (2 * total));
+    }
+  }
+  return out;
+}
+
+void generateMipmaps(TextureObject& texture) {
+  const int base = texture.params.baseLevel;
+  if (base < 0 || base >= kMaxTextureLevels || !texture.levels[base].defined()) return;
+  const TextureImage& b = texture.levels[base];
+  const int q = std::min(lastMipmapLevel(base, b.width, b.height), texture.params.maxLevel);
+  for (int level = base + 1; level <= q; ++level)
+    texture.levels[level] = reduceImageByBoxFilter(texture.levels[level - 1]);
+  texture.updateCompleteness();
+}
+
+}  // namespace glass::gl

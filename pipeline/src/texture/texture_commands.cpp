@@ -1,0 +1,316 @@
+#include "texture/texture_commands.h"
+
+#include <algorithm>
+#include <cstring>
+#include <new>
+
+#include "core/context.h"
+#include "core/errors.h"
+#include "texture/mipmap_generation.h"
+
+namespace glass::gl {
+namespace {
+
+PixelLayout layoutFrom(const PixelPacking& p) {
+  PixelLayout l;
+  l.alignment = p.alignment;
+  l.rowLength = p.rowLength;
+  l.skipRows = p.skipRows;
+  l.skipPixels = p.skipPixels;
+  l.swapBytes = p.swapBytes;
+  return l;
+}
+
+bool isProxyTarget(GLenum target) {
+  return target == GL_PROXY_TEXTURE_1D || target == GL_PROXY_TEXTURE_2D;
+}
+
+// The targets glTexImage of the given dimensionality accepts.
+bool isTexImageTarget(int dimensions, GLenum target) {
+  return dimensions == 1 ? (target == GL_TEXTURE_1D || target == GL_PROXY_TEXTURE_1D)
+                         : (target == GL_TEXTURE_2D || target == GL_PROXY_TEXTURE_2D);
+}
+
+GLenum nonProxyTarget(int dimensions) { return dimensions == 1 ? GL_TEXTURE_1D : GL_TEXTURE_2D; }
+
+// The image size checks common to glTexImage and glCopyTexImage (spec 3.8.1): border 0 or 1,
+// width and height at least twice the border. The size of the image without its border is
+// written to innerWidth/innerHeight (height 1 for 1D images, which have no vertical border).
+GLenum checkImageSize(int dimensions, GLsizei width, GLsizei height, GLint border, int* innerWidth,
+                      int* innerHeight) {
+  if (border != 0 && border != 1) return GL_INVALID_VALUE;
+  if (width < 2 * border) return GL_INVALID_VALUE;
+  if (dimensions == 2 && height < 2 * border) return GL_INVALID_VALUE;
+  *innerWidth = width - 2 * border;
+  *innerHeight = dimensions == 2 ? height - 2 * border : 1;
+  return GL_NO_ERROR;
+}
+
+// Whether glass can hold a level-`level` image of this size (GL_MAX_TEXTURE_SIZE >> level).
+bool fitsLevel(int level, int innerWidth, int innerHeight) {
+  const int max = kMaxTextureSize >> level;
+  return innerWidth <= max && innerHeight <= max;
+}
+
+// Copies the texels inside the border of a full image (width x height texels, border included)
+// into `image`, whose width/height are the inner size.
+void copyInsideBorder(const std::vector<uint8_t>& full, int fullWidth, int border, int dimensions,
+                      TextureImage& image) {
+  const int rowBorder = dimensions == 2 ? border : 0;
+  const size_t rowBytes = static_cast<size_t>(image.width) * 4;
+  for (int j = 0; j < image.height; ++j) {
+    const size_t from = (static_cast<size_t>(j + rowBorder) * static_cast<size_t>(fullWidth) +
+                         static_cast<size_t>(border)) * 4;
+    std::memcpy(image.texel(0, j), &full[from], rowBytes);
+  }
+}
+
+void afterBaseLevelChange(TextureObject& texture, GLint level) {
+  if (level == texture.params.baseLevel && texture.params.generateMipmap) generateMipmaps(texture);
+  texture.updateCompleteness();
+}
+
+// The colour buffer's RGBA at window (x, y) as floats; pixels outside the window read as zero
+// (the specification leaves them undefined).
+void readFramebufferPixel(const Context& ctx, int x, int y, float rgba[4]) {
+  const raster::Framebuffer& fb = ctx.framebuffer;
+  if (x < 0 || y < 0 || x >= fb.width() || y >= fb.height()) {
+    rgba[0] = rgba[1] = rgba[2] = rgba[3] = 0.0f;
+    return;
+  }
+  const uint8_t* c = fb.colorAt(x, y);
+  for (int k = 0; k < 4; ++k) rgba[k] = static_cast<float>(c[k]) / 255.0f;
+}
+
+}  // namespace
+
+TextureObject* boundTexture(Context& ctx, GLenum target) {
+  if (target == GL_TEXTURE_1D) return ctx.texture.bound1D;
+  if (target == GL_TEXTURE_2D) return ctx.texture.bound2D;
+  return nullptr;
+}
+
+const TextureObject* boundTexture(const Context& ctx, GLenum target) {
+  if (target == GL_TEXTURE_1D) return ctx.texture.bound1D;
+  if (target == GL_TEXTURE_2D) return ctx.texture.bound2D;
+  return nullptr;
+}
+
+PixelLayout unpackLayout(const Context& ctx) { return layoutFrom(ctx.pixelStore.unpack); }
+PixelLayout packLayout(const Context& ctx) { return layoutFrom(ctx.pixelStore.pack); }
+
+UnpackedTexels unpackForDisplayList(const Context& ctx, const TexImageArguments& a, const void* pixels) {
+  BaseFormat base;
+  int w, h;
+  if (pixels == nullptr || isProxyTarget(a.target) || !isTexImageTarget(a.dimensions, a.target) ||
+      !baseFormatOfInternalFormat(a.internalFormat, &base) ||
+      checkImageSize(a.dimensions, a.width, a.height, a.border, &w, &h) != GL_NO_ERROR ||
+      a.level < 0 || a.level >= kMaxTextureLevels || !fitsLevel(a.level, w, h) ||
+      checkTexelFormatAndType(a.format, a.type) != GL_NO_ERROR)
+    return nullptr;
+  try {
+    auto texels = std::make_shared<std::vector<uint8_t>>();
+    unpackTexels(pixels, a.width, a.dimensions == 2 ? a.height : 1, a.format, a.type,
+                 unpackLayout(ctx), base, *texels);
+    return texels;
+  } catch (const std::bad_alloc&) {
+    return nullptr;
+  }
+}
+
+void texImage(Context& ctx, const TexImageArguments& a, const void* pixels, const UnpackedTexels& unpacked) {
+  if (rejectInsideBeginEnd(ctx)) return;
+  if (!isTexImageTarget(a.dimensions, a.target)) return recordError(ctx, GL_INVALID_ENUM);
+  if (a.level < 0 || a.level >= kMaxTextureLevels) return recordError(ctx, GL_INVALID_VALUE);
+  BaseFormat base;
+  if (!baseFormatOfInternalFormat(a.internalFormat, &base)) return recordError(ctx, GL_INVALID_VALUE);
+  int w = 0, h = 0;
+  if (GLenum e = checkImageSize(a.dimensions, a.width, a.height, a.border, &w, &h); e != GL_NO_ERROR)
+    return recordError(ctx, e);
+  if (GLenum e = checkTexelFormatAndType(a.format, a.type); e != GL_NO_ERROR) return recordError(ctx, e);
+
+  if (isProxyTarget(a.target)) {
+    // Spec 3.8.11: a proxy query succeeds (the level state is set) when the image would fit, and
+    // leaves every level parameter zero otherwise; no error either way.
+    TextureImage& proxy = (a.dimensions == 1 ? ctx.texture.proxy1D : ctx.texture.proxy2D)[a.level];
+    proxy.clear();
+    if (fitsLevel(a.level, w, h)) {
+      proxy.width = w;
+      proxy.height = h;
+      proxy.border = a.border;
+      proxy.internalFormat = a.internalFormat;
+      proxy.base = base;
+    } else {
+      proxy.internalFormat = 0;
+    }
+    return;
+  }
+  if (!fitsLevel(a.level, w, h)) return recordError(ctx, GL_INVALID_VALUE);
+
+  TextureObject& texture = *boundTexture(ctx, a.target);
+  try {
+    TextureImage image;
+    image.internalFormat = a.internalFormat;
+    image.base = base;
+    image.border = a.border;
+    if (w > 0 && h > 0) {
+      image.width = w;
+      image.height = h;
+      image.texels.assign(static_cast<size_t>(w) * static_cast<size_t>(h) * 4, 0);
+      const int fullHeight = a.dimensions == 2 ? a.height : 1;
+      if (unpacked) {
+        copyInsideBorder(*unpacked, a.width, a.border, a.dimensions, image);
+      } else if (pixels != nullptr) {
+        if (a.border == 0) {
+          unpackTexels(pixels, w, h, a.format, a.type, unpackLayout(ctx), base, image.texels);
+        } else {
+          std::vector<uint8_t> full;
+          unpackTexels(pixels, a.width, fullHeight, a.format, a.type, unpackLayout(ctx), base, full);
+          copyInsideBorder(full, a.width, a.border, a.dimensions, image);
+        }
+      }
+    }
+    texture.levels[a.level] = std::move(image);
+    afterBaseLevelChange(texture, a.level);
+  } catch (const std::bad_alloc&) {
+    texture.levels[a.level].clear();
+    texture.updateCompleteness();
+    recordError(ctx, GL_OUT_OF_MEMORY);
+  }
+}
+
+UnpackedTexels unpackForDisplayList(const Context& ctx, const TexSubImageArguments& a, const void* pixels) {
+  const TextureObject* texture = boundTexture(ctx, a.target);
+  if (pixels == nullptr || texture == nullptr || a.target != nonProxyTarget(a.dimensions) ||
+      a.level < 0 || a.level >= kMaxTextureLevels || a.width < 0 || a.height < 0 ||
+      checkTexelFormatAndType(a.format, a.type) != GL_NO_ERROR)
+    return nullptr;
+  // The base format decides which components are kept; it is the one of the image when the list
+  // is compiled (an image defined later with another format is rare enough to accept this).
+  const TextureImage& image = texture->levels[a.level];
+  try {
+    auto texels = std::make_shared<std::vector<uint8_t>>();
+    unpackTexels(pixels, a.width, a.dimensions == 2 ? a.height : 1, a.format, a.type,
+                 unpackLayout(ctx), image.base, *texels);
+    return texels;
+  } catch (const std::bad_alloc&) {
+    return nullptr;
+  }
+}
+
+void texSubImage(Context& ctx, const TexSubImageArguments& a, const void* pixels, const UnpackedTexels& unpacked) {
+  if (rejectInsideBeginEnd(ctx)) return;
+  if (a.target != nonProxyTarget(a.dimensions)) return recordError(ctx, GL_INVALID_ENUM);
+  if (a.level < 0 || a.level >= kMaxTextureLevels) return recordError(ctx, GL_INVALID_VALUE);
+  if (GLenum e = checkTexelFormatAndType(a.format, a.type); e != GL_NO_ERROR) return recordError(ctx, e);
+  TextureObject& texture = *boundTexture(ctx, a.target);
+  TextureImage& image = texture.levels[a.level];
+  if (!image.defined()) return recordError(ctx, GL_INVALID_OPERATION);
+  const int height = a.dimensions == 2 ? a.height : 1;
+  const int yoffset = a.dimensions == 2 ? a.yoffset : 0;
+  const int b = image.border;
+  const int rowBorder = a.dimensions == 2 ? b : 0;
+  // Spec 3.8.2: the rectangle must lie inside the image, border included.
+  if (a.width < 0 || height < 0 || a.xoffset < -b || a.xoffset + a.width > image.width + b ||
+      yoffset < -rowBorder || yoffset + height > image.height + rowBorder)
+    return recordError(ctx, GL_INVALID_VALUE);
+  if (a.width == 0 || height == 0) return;
+  if (!unpacked && pixels == nullptr) return;
+  try {
+    std::vector<uint8_t> local;
+    const std::vector<uint8_t>* texels = unpacked.get();
+    if (texels == nullptr) {
+      unpackTexels(pixels, a.width, height, a.format, a.type, unpackLayout(ctx), image.base, local);
+      texels = &local;
+    }
+    for (int j = 0; j < height; ++j) {
+      const int y = yoffset + j;
+      if (y < 0 || y >= image.height) continue;  // a border row: not stored
+      for (int i = 0; i < a.width; ++i) {
+        const int x = a.xoffset + i;
+        if (x < 0 || x >= image.width) continue;
+        std::memcpy(image.texel(x, y), &(*texels)[(static_cast<size_t>(j) * static_cast<size_t>(a.width) + static_cast<size_t>(i)) * 4], 4);
+      }
+    }
+    afterBaseLevelChange(texture, a.level);
+  } catch (const std::bad_alloc&) {
+    recordError(ctx, GL_OUT_OF_MEMORY);
+  }
+}
+
+void copyTexImage(Context& ctx, int dimensions, GLenum target, GLint level, GLenum internalFormat,
+                  GLint x, GLint y, GLsizei width, GLsizei height, GLint border) {
+  if (rejectInsideBeginEnd(ctx)) return;
+  if (target != nonProxyTarget(dimensions)) return recordError(ctx, GL_INVALID_ENUM);
+  if (level < 0 || level >= kMaxTextureLevels) return recordError(ctx, GL_INVALID_VALUE);
+  BaseFormat base;
+  // Spec 3.8.2: the component counts 1 to 4 are not internal formats of glCopyTexImage.
+  const GLint format = static_cast<GLint>(internalFormat);
+  if (format >= 1 && format <= 4) return recordError(ctx, GL_INVALID_VALUE);
+  if (!baseFormatOfInternalFormat(format, &base)) return recordError(ctx, GL_INVALID_VALUE);
+  if (dimensions == 1) height = 1;
+  int w = 0, h = 0;
+  if (GLenum e = checkImageSize(dimensions, width, height, border, &w, &h); e != GL_NO_ERROR)
+    return recordError(ctx, e);
+  if (!fitsLevel(level, w, h)) return recordError(ctx, GL_INVALID_VALUE);
+
+  TextureObject& texture = *boundTexture(ctx, target);
+  try {
+    TextureImage image;
+    image.internalFormat = format;
+    image.base = base;
+    image.border = border;
+    if (w > 0 && h > 0) {
+      image.width = w;
+      image.height = h;
+      image.texels.resize(static_cast<size_t>(w) * static_cast<size_t>(h) * 4);
+      const int rowBorder = dimensions == 2 ? border : 0;
+      for (int j = 0; j < h; ++j) {
+        for (int i = 0; i < w; ++i) {
+          float rgba[4];
+          readFramebufferPixel(ctx, x + border + i, y + rowBorder + j, rgba);
+          storeTexel(base, rgba, image.texel(i, j));
+        }
+      }
+    }
+    texture.levels[level] = std::move(image);
+    afterBaseLevelChange(texture, level);
+  } catch (const std::bad_alloc&) {
+    texture.levels[level].clear();
+    texture.updateCompleteness();
+    recordError(ctx, GL_OUT_OF_MEMORY);
+  }
+}
+
+void copyTexSubImage(Context& ctx, int dimensions, GLenum target, GLint level, GLint xoffset,
+                     GLint yoffset, GLint x, GLint y, GLsizei width, GLsizei height) {
+  if (rejectInsideBeginEnd(ctx)) return;
+  if (target != nonProxyTarget(dimensions)) return recordError(ctx, GL_INVALID_ENUM);
+  if (level < 0 || level >= kMaxTextureLevels) return recordError(ctx, GL_INVALID_VALUE);
+  TextureObject& texture = *boundTexture(ctx, target);
+  TextureImage& image = texture.levels[level];
+  if (!image.defined()) return recordError(ctx, GL_INVALID_OPERATION);
+  if (dimensions == 1) {
+    height = 1;
+    yoffset = 0;
+  }
+  const int b = image.border;
+  const int rowBorder = dimensions == 2 ? b : 0;
+  if (width < 0 || height < 0 || xoffset < -b || xoffset + width > image.width + b ||
+      yoffset < -rowBorder || yoffset + height > image.height + rowBorder)
+    return recordError(ctx, GL_INVALID_VALUE);
+  for (int j = 0; j < height; ++j) {
+    const int ty = yoffset + j;
+    if (ty < 0 || ty >= image.height) continue;
+    for (int i = 0; i < width; ++i) {
+      const int tx = xoffset + i;
+      if (tx < 0 || tx >= image.width) continue;
+      float rgba[4];
+      readFramebufferPixel(ctx, x + i, y + j, rgba);
+      storeTexel(image.base, rgba, image.texel(tx, ty));
+    }
+  }
+  afterBaseLevelChange(texture, level);
+}
+
+}  // namespace glass::gl

@@ -1,0 +1,48 @@
+#include "texture/texture_object.h"
+
+#include <algorithm>
+
+namespace glass::gl {
+
+bool isMipmapFilter(GLenum minFilter) {
+  return minFilter == GL_NEAREST_MIPMAP_NEAREST || minFilter == GL_LINEAR_MIPMAP_NEAREST ||
+         minFilter == GL_NEAREST_MIPMAP_LINEAR || minFilter == GL_LINEAR_MIPMAP_LINEAR;
+}
+
+int lastMipmapLevel(int base, int width, int height) {
+  int size = std::max(width, height);
+  int p = base;
+  while (size > 1) {
+    size /= 2;
+    ++p;
+  }
+  return std::min(p, kMaxTextureLevels - 1);
+}
+
+void TextureObject::updateCompleteness() {
+  complete = false;
+  lastLevel = params.baseLevel;
+  const int base = params.baseLevel;
+  if (base < 0 || base >= kMaxTextureLevels) return;
+  const TextureImage& b = levels[base];
+  if (!b.defined()) return;
+  if (!isMipmapFilter(params.minFilter)) {
+    complete = true;
+    return;
+  }
+  if (params.maxLevel < base) return;
+  const int q = std::min(lastMipmapLevel(base, b.width, b.height), params.maxLevel);
+  for (int i = base + 1; i <= q; ++i) {
+    const TextureImage& level = levels[i];
+    const int shift = i - base;
+    const int w = std::max(1, b.width >> shift);
+    const int h = std::max(1, b.height >> shift);
+    if (level.width != w || level.height != h || level.internalFormat != b.internalFormat ||
+        level.border != b.border)
+      return;
+  }
+  lastLevel = q;
+  complete = true;
+}
+
+}  // namespace glass::gl

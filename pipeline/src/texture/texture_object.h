@@ -1,0 +1,60 @@
+// A texture object (OpenGL 1.5 specification, section 3.8.12): its images, one per mipmap level,
+// and its parameters (glTexParameter, section 3.8.4, table 3.19). Member initialisers are the
+// defaults of table 6.16.
+#pragma once
+
+#include <GL/gl.h>
+
+#include "texture/texture_image.h"
+
+namespace glass::gl {
+
+// The glTexParameter state of a texture object.
+struct SamplerParameters {
+  GLenum minFilter = GL_NEAREST_MIPMAP_LINEAR;
+  GLenum magFilter = GL_LINEAR;
+  GLenum wrapS = GL_REPEAT;
+  GLenum wrapT = GL_REPEAT;
+  GLenum wrapR = GL_REPEAT;
+  float borderColor[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+  float minLod = -1000.0f;
+  float maxLod = 1000.0f;
+  int baseLevel = 0;
+  int maxLevel = 1000;
+  bool generateMipmap = false;
+  float priority = 1.0f;
+};
+
+// True for the four minification filters that use mipmaps.
+bool isMipmapFilter(GLenum minFilter);
+
+struct TextureObject {
+  GLuint name = 0;
+  // GL_TEXTURE_1D or GL_TEXTURE_2D once the object was first bound; 0 before (spec 3.8.12: a
+  // name becomes a texture of the target it is first bound to).
+  GLenum target = 0;
+  TextureImage levels[kMaxTextureLevels];
+  SamplerParameters params;
+
+  // Whether the object can be sampled with its current filter (spec 3.8.10, "Texture
+  // Completeness"): the base level exists; with a mipmap minification filter also every level
+  // from the base to q = min(p, maxLevel), p = floor(log2(max(w_b, h_b))) + base, exists with
+  // size max(1, floor(w_b / 2^(i - base))) x max(1, floor(h_b / 2^(i - base))), the same
+  // internal format and the same border. An incomplete texture turns texturing off for its unit
+  // (spec 3.8.15). Recomputed by updateCompleteness() after every change of images or
+  // parameters.
+  bool complete = false;
+  // q, the last level sampling may use (valid when complete).
+  int lastLevel = 0;
+
+  void updateCompleteness();
+
+  // The base level image (valid when complete).
+  const TextureImage& baseImage() const { return levels[params.baseLevel]; }
+};
+
+// The last level index of a full mipmap chain starting at base with a base image of the given
+// size: base + floor(log2(max(width, height))), clamped to the levels glass stores.
+int lastMipmapLevel(int base, int width, int height);
+
+}  // namespace glass::gl

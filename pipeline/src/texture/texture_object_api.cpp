@@ -1,0 +1,134 @@
+// Texture objects (OpenGL 1.5 specification, section 3.8.12): glGenTextures, glDeleteTextures,
+// glBindTexture, glIsTexture, glAreTexturesResident, glPrioritizeTextures.
+#include <GL/gl.h>
+
+#include <algorithm>
+#include <vector>
+
+#include "core/context.h"
+#include "core/errors.h"
+#include "lists/command_recording.h"
+
+namespace glass::gl {
+namespace {
+
+TextureObject* findTexture(Context& ctx, GLuint name) {
+  auto it = ctx.texture.objects.find(name);
+  return it == ctx.texture.objects.end() ? nullptr : it->second.get();
+}
+
+void bindTexture(Context& ctx, GLenum target, GLuint name) {
+  if (rejectInsideBeginEnd(ctx)) return;
+  TextureState& t = ctx.texture;
+  if (target != GL_TEXTURE_1D && target != GL_TEXTURE_2D) return recordError(ctx, GL_INVALID_ENUM);
+  TextureObject*& binding = target == GL_TEXTURE_1D ? t.bound1D : t.bound2D;
+  if (name == 0) {
+    binding = target == GL_TEXTURE_1D ? &t.default1D : &t.default2D;
+    return;
+  }
+  TextureObject* texture = findTexture(ctx, name);
+  if (texture == nullptr) {
+    // First binding: the name becomes a texture of this target (spec 3.8.12).
+    auto created = std::make_unique<TextureObject>();
+    created->name = name;
+    created->target = target;
+    texture = created.get();
+    t.objects.emplace(name, std::move(created));
+    t.reservedNames.erase(name);
+  } else if (texture->target != target) {
+    return recordError(ctx, GL_INVALID_OPERATION);
+  }
+  binding = texture;
+}
+
+void deleteTextures(Context& ctx, const std::vector<GLuint>& names) {
+  TextureState& t = ctx.texture;
+  for (GLuint name : names) {
+    if (name == 0) continue;
+    t.reservedNames.erase(name);
+    auto it = t.objects.find(name);
+    if (it == t.objects.end()) continue;
+    // Spec 3.8.12: deleting a bound texture binds the default texture in its place.
+    if (t.bound1D == it->second.get()) t.bound1D = &t.default1D;
+    if (t.bound2D == it->second.get()) t.bound2D = &t.default2D;
+    t.objects.erase(it);
+  }
+}
+
+}  // namespace
+}  // namespace glass::gl
+
+using glass::gl::Context;
+
+void GLAPIENTRY glGenTextures(GLsizei n, GLuint* textures) {
+  glass::gl::executeNow([=](Context& ctx) {
+    if (glass::gl::rejectInsideBeginEnd(ctx)) return;
+    if (n < 0) return glass::gl::recordError(ctx, GL_INVALID_VALUE);
+    glass::gl::TextureState& t = ctx.texture;
+    for (GLsizei i = 0; i < n; ++i) {
+      GLuint name = t.nextName;
+      while (name == 0 || t.objects.count(name) != 0 || t.reservedNames.count(name) != 0) ++name;
+      t.reservedNames.insert(name);
+      t.nextName = name + 1;
+      textures[i] = name;
+    }
+  });
+}
+
+void GLAPIENTRY glDeleteTextures(GLsizei n, const GLuint* textures) {
+  glass::gl::executeNow([=](Context& ctx) {
+    if (glass::gl::rejectInsideBeginEnd(ctx)) return;
+    if (n < 0) return glass::gl::recordError(ctx, GL_INVALID_VALUE);
+    glass::gl::deleteTextures(ctx, std::vector<GLuint>(textures, textures + n));
+  });
+}
+
+void GLAPIENTRY glBindTexture(GLenum target, GLuint texture) {
+  glass::gl::compileOrExecute([=](Context& ctx) { glass::gl::bindTexture(ctx, target, texture); });
+}
+
+GLboolean GLAPIENTRY glIsTexture(GLuint texture) {
+  return glass::gl::queryNow(GLboolean(GL_FALSE), [=](Context& ctx) -> GLboolean {
+    if (glass::gl::rejectInsideBeginEnd(ctx)) return GL_FALSE;
+    return texture != 0 && ctx.texture.objects.count(texture) != 0 ? GL_TRUE : GL_FALSE;
+  });
+}
+
+GLboolean GLAPIENTRY glAreTexturesResident(GLsizei n, const GLuint* textures, GLboolean* residences) {
+  return glass::gl::queryNow(GLboolean(GL_FALSE), [=](Context& ctx) -> GLboolean {
+    if (glass::gl::rejectInsideBeginEnd(ctx)) return GL_FALSE;
+    if (n < 0) {
+      glass::gl::recordError(ctx, GL_INVALID_VALUE);
+      return GL_FALSE;
+    }
+    for (GLsizei i = 0; i < n; ++i) {
+      if (textures[i] == 0 || ctx.texture.objects.count(textures[i]) == 0) {
+        glass::gl::recordError(ctx, GL_INVALID_VALUE);
+        return GL_FALSE;
+      }
+    }
+    // Every texture lives in memory the renderer reads directly: all are resident, and the
+    // specification then leaves residences untouched.
+    (void)residences;
+    return GL_TRUE;
+  });
+}
+
+void GLAPIENTRY glPrioritizeTextures(GLsizei n, const GLuint* textures, const GLclampf* priorities) {
+  if (n < 0) {
+    glass::gl::compileOrExecute([](Context& ctx) {
+      if (glass::gl::rejectInsideBeginEnd(ctx)) return;
+      glass::gl::recordError(ctx, GL_INVALID_VALUE);
+    });
+    return;
+  }
+  std::vector<GLuint> names(textures, textures + n);
+  std::vector<GLclampf> values(priorities, priorities + n);
+  glass::gl::compileOrExecute([names, values](Context& ctx) {
+    if (glass::gl::rejectInsideBeginEnd(ctx)) return;
+    for (size_t i = 0; i < names.size(); ++i) {
+      if (glass::gl::TextureObject* t = glass::gl::findTexture(ctx, names[i]))
+        t->params.priority = std::clamp(values[i], 0.0f, 1.0f);
+    }
+  });
+}

@@ -1,0 +1,173 @@
+#include "texture/texture_sampler.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace glass::gl {
+namespace {
+
+// Texel coordinates far outside the image would overflow an int in floor(). The clamping modes
+// only need u to stay outside the image, so it is clamped to [-1, size + 1]; the repeating modes
+// give the same texel for u and for u reduced by a multiple of 2 * size (the period of
+// MIRRORED_REPEAT), so large values are reduced.
+float keepInIntRange(float u, int size, GLenum mode) {
+  if (!(u == u)) return 0.0f;  // NaN
+  if (mode != GL_REPEAT && mode != GL_MIRRORED_REPEAT)
+    return std::clamp(u, -1.0f, static_cast<float>(size) + 1.0f);
+  const float limit = 1048576.0f;  // 2^20, far beyond kMaxTextureSize
+  if (u > -limit && u < limit) return u;
+  if (!std::isfinite(u)) return 0.0f;
+  const double period = 2.0 * size;
+  double r = std::fmod(static_cast<double>(u), period);
+  if (r < 0.0) r += period;
+  return static_cast<float>(r);
+}
+
+int positiveModulo(int i, int n) {
+  const int r = i % n;
+  return r < 0 ? r + n : r;
+}
+
+// wrap() of the header comment; `linear` selects the CLAMP variant for LINEAR filtering.
+int wrapTexelIndex(int i, int size, GLenum mode, bool linear) {
+  switch (mode) {
+    case GL_REPEAT: return positiveModulo(i, size);
+    case GL_MIRRORED_REPEAT: {
+      const int a = positiveModulo(i, 2 * size) - size;
+      const int mirrored = a >= 0 ? a : -(1 + a);
+      return (size - 1) - mirrored;
+    }
+    case GL_CLAMP_TO_EDGE: return std::clamp(i, 0, size - 1);
+    case GL_CLAMP_TO_BORDER: return std::clamp(i, -1, size);
+    case GL_CLAMP: return linear ? std::clamp(i, -1, size) : std::clamp(i, 0, size - 1);
+    default: return positiveModulo(i, size);
+  }
+}
+
+// The texel coordinate u = s * size of one axis; CLAMP clamps s to [0, 1] first.
+float texelCoordinate(float s, int size, GLenum mode) {
+  if (mode == GL_CLAMP) s = std::clamp(s, 0.0f, 1.0f);
+  return keepInIntRange(s * static_cast<float>(size), size, mode);
+}
+
+struct LevelLookup {
+  const TextureImage* image;
+  GLenum wrapS, wrapT;
+  bool twoD;
+  const float* border;
+};
+
+void fetchTexel(const LevelLookup& l, int i, int j, float out[4]) {
+  if (i < 0 || i >= l.image->width || j < 0 || j >= l.image->height) {
+    for (int c = 0; c < 4; ++c) out[c] = l.border[c];
+    return;
+  }
+  const uint8_t* texel = l.image->texel(i, j);
+  for (int c = 0; c < 4; ++c) out[c] = static_cast<float>(texel[c]) * (1.0f / 255.0f);
+}
+
+void sampleNearest(const LevelLookup& l, float s, float t, float out[4]) {
+  const int width = l.image->width;
+  const float u = texelCoordinate(s, width, l.wrapS);
+  const int i = wrapTexelIndex(static_cast<int>(std::floor(u)), width, l.wrapS, false);
+  int j = 0;
+  if (l.twoD) {
+    const int height = l.image->height;
+    const float v = texelCoordinate(t, height, l.wrapT);
+    j = wrapTexelIndex(static_cast<int>(std::floor(v)), height, l.wrapT, false);
+  }
+  fetchTexel(l, i, j, out);
+}
+
+void sampleLinear(const LevelLookup& l, float s, float t, float out[4]) {
+  const int width = l.image->width;
+  const float u = texelCoordinate(s, width, l.wrapS) - 0.5f;
+  const float uFloor = std::floor(u);
+  const float alpha = u - uFloor;
+  const int i0 = wrapTexelIndex(static_cast<int>(uFloor), width, l.wrapS, true);
+  const int i1 = wrapTexelIndex(static_cast<int>(uFloor) + 1, width, l.wrapS, true);
+  if (!l.twoD) {
+    float a[4], b[4];
+    fetchTexel(l, i0, 0, a);
+    fetchTexel(l, i1, 0, b);
+    for (int c = 0; c < 4; ++c) out[c] = (1.0f - alpha) * a[c] + alpha * b[c];
+    return;
+  }
+  const int height = l.image->height;
+  const float v = texelCoordinate(t, height, l.wrapT) - 0.5f;
+  const float vFloor = std::floor(v);
+  const float beta = v - vFloor;
+  const int j0 = wrapTexelIndex(static_cast<int>(vFloor), height, l.wrapT, true);
+  const int j1 = wrapTexelIndex(static_cast<int>(vFloor) + 1, height, l.wrapT, true);
+  float t00[4], t10[4], t01[4], t11[4];
+  fetchTexel(l, i0, j0, t00);
+  fetchTexel(l, i1, j0, t10);
+  fetchTexel(l, i0, j1, t01);
+  fetchTexel(l, i1, j1, t11);
+  const float w00 = (1.0f - alpha) * (1.0f - beta), w10 = alpha * (1.0f - beta);
+  const float w01 = (1.0f - alpha) * beta, w11 = alpha * beta;
+  for (int c = 0; c < 4; ++c) out[c] = w00 * t00[c] + w10 * t10[c] + w01 * t01[c] + w11 * t11[c];
+}
+
+void sampleLevel(const TextureObject& texture, int level, bool linear, const float border[4],
+                 float s, float t, float out[4]) {
+  const LevelLookup l{&texture.levels[level], texture.params.wrapS, texture.params.wrapT,
+                      texture.target != GL_TEXTURE_1D, border};
+  if (linear) {
+    sampleLinear(l, s, t, out);
+  } else {
+    sampleNearest(l, s, t, out);
+  }
+}
+
+}  // namespace
+
+void borderTexel(const TextureObject& texture, float out[4]) {
+  const float* b = texture.params.borderColor;
+  const float r = std::clamp(b[0], 0.0f, 1.0f), g = std::clamp(b[1], 0.0f, 1.0f);
+  const float bl = std::clamp(b[2], 0.0f, 1.0f), a = std::clamp(b[3], 0.0f, 1.0f);
+  switch (texture.baseImage().base) {
+    case BaseFormat::Alpha: out[0] = out[1] = out[2] = 0.0f; out[3] = a; break;
+    case BaseFormat::Luminance: out[0] = out[1] = out[2] = r; out[3] = 1.0f; break;
+    case BaseFormat::LuminanceAlpha: out[0] = out[1] = out[2] = r; out[3] = a; break;
+    case BaseFormat::Intensity: out[0] = out[1] = out[2] = out[3] = r; break;
+    case BaseFormat::RGB: out[0] = r; out[1] = g; out[2] = bl; out[3] = 1.0f; break;
+    case BaseFormat::RGBA: out[0] = r; out[1] = g; out[2] = bl; out[3] = a; break;
+  }
+}
+
+void sampleTextureMagnified(const TextureObject& texture, float s, float t, float out[4]) {
+  float border[4];
+  borderTexel(texture, border);
+  sampleLevel(texture, texture.params.baseLevel, texture.params.magFilter == GL_LINEAR, border, s,
+              t, out);
+}
+
+void sampleTexture(const TextureObject& texture, float s, float t, float lambda, float out[4]) {
+  const SamplerParameters& p = texture.params;
+  if (lambda <= magnificationSwitchOverPoint(p.minFilter, p.magFilter)) {
+    sampleTextureMagnified(texture, s, t, out);
+    return;
+  }
+  float border[4];
+  borderTexel(texture, border);
+  switch (p.minFilter) {
+    case GL_NEAREST:
+      sampleLevel(texture, p.baseLevel, false, border, s, t, out);
+      return;
+    case GL_LINEAR:
+      sampleLevel(texture, p.baseLevel, true, border, s, t, out);
+      return;
+    default:
+      break;
+  }
+  const bool linearWithinLevel = p.minFilter == GL_LINEAR_MIPMAP_NEAREST || p.minFilter == GL_LINEAR_MIPMAP_LINEAR;
+  const MipmapLevels m = selectMipmapLevels(lambda, p.minFilter, p.baseLevel, texture.lastLevel);
+  sampleLevel(texture, m.level1, linearWithinLevel, border, s, t, out);
+  if (m.level2 == m.level1 || m.weight2 == 0.0f) return;
+  float second[4];
+  sampleLevel(texture, m.level2, linearWithinLevel, border, s, t, second);
+  for (int c = 0; c < 4; ++c) out[c] = (1.0f - m.weight2) * out[c] + m.weight2 * second[c];
+}
+
+}  // namespace glass::gl
