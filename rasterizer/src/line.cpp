@@ -1,0 +1,112 @@
+// GL line segments (OpenGL 1.5 spec, sections 3.4.1 and 3.4.2).
+//
+// Which pixels: the quadrilateral of line_quad.cpp, walked by line_quad_walk.h. For width 1 this
+// is the diamond-exit rule (with Mesa's treatment of the end pixels, see line_quad.cpp); for a
+// wider non-antialiased line, with w the width rounded to an integer, a column of w fragments per
+// x (x-major) or a row of w per y (y-major), as 3.4.2 asks.
+//
+// Attributes: t is measured along the major axis, t = (x_r - x_a) / (x_b - x_a) for an x-major
+// segment (y for y-major), clamped to [0, 1]. This is the interpolation 3.4.2 gives wide lines
+// (every fragment of a column shares its values), used for every width as Mesa does; for width 1
+// it differs from equation 3.6's projection onto the segment by less than 1 / (2 |p_b - p_a|).
+//   z = (1 - t) z_a + t z_b                                   (depth: linear in window space)
+//   f = ((1 - t) f_a / w_a + t f_b / w_b) / ((1 - t) / w_a + t / w_b)   (varyings, eq. 3.6)
+//
+// Stipple (3.4.1): a counter s advances by one for each fragment of a width-1 line (each column
+// or row of a wide one); the fragment is kept when bit floor(s / factor) mod 16 of the pattern is
+// set. The counter runs over fragments outside the bounds too: the scissor does not move it.
+#include <algorithm>
+#include <climits>
+#include <cmath>
+
+#include "depth_value.h"
+#include "glass/raster/line.h"
+#include "line_quad.h"
+#include "line_quad_walk.h"
+#include "subpixel.h"
+
+namespace glass::raster {
+namespace {
+
+constexpr int kBatchSize = 64;
+
+class LineFragmentWriter {
+ public:
+  LineFragmentWriter(const WindowVertex& a, const WindowVertex& b, const LineSettings& settings,
+                     bool xMajor, FragmentSink& sink)
+      : a_(a), b_(b), settings_(settings), sink_(sink), xMajor_(xMajor) {
+    varyingCount_ = std::clamp(settings.varyingCount, 0, kMaxVaryings);
+    start_ = xMajor ? a.x : a.y;
+    length_ = (xMajor ? double(b.x) : double(b.y)) - start_;
+    qa_ = settings.perspectiveCorrect ? double(a.invW) : 1.0;
+    qb_ = settings.perspectiveCorrect ? double(b.invW) : 1.0;
+  }
+  ~LineFragmentWriter() { flush(); }
+
+  void emit(int x, int y) {
+    const PixelRect& r = settings_.bounds;
+    if (x < r.x0 || x >= r.x1 || y < r.y0 || y >= r.y1) return;
+    const double centre = (xMajor_ ? x : y) + 0.5;
+    const double t = std::clamp((centre - start_) / length_, 0.0, 1.0);
+    Fragment& f = fragments_[count_++];
+    f.x = x;
+    f.y = y;
+    f.depth = depthValue((1.0 - t) * a_.z + t * b_.z + settings_.depthBias);
+    const double wa = (1.0 - t) * qa_, wb = t * qb_, q = wa + wb;
+    for (int k = 0; k < varyingCount_; ++k)
+      f.varyings[k] = static_cast<float>((wa * a_.varyings[k] + wb * b_.varyings[k]) / q);
+    if (count_ == kBatchSize) flush();
+  }
+
+  void flush() {
+    if (count_ == 0) return;
+    FragmentBatch batch;
+    batch.fragments = fragments_;
+    batch.count = count_;
+    batch.varyingCount = varyingCount_;
+    sink_.processFragments(batch);
+    count_ = 0;
+  }
+
+ private:
+  const WindowVertex& a_;
+  const WindowVertex& b_;
+  const LineSettings& settings_;
+  FragmentSink& sink_;
+  bool xMajor_;
+  int varyingCount_;
+  double start_, length_, qa_, qb_;
+  Fragment fragments_[kBatchSize];
+  int count_ = 0;
+};
+
+}  // namespace
+
+void rasterizeLine(const WindowVertex& a, const WindowVertex& b, const LineSettings& settings,
+                   FragmentSink& sink) {
+  if (!isRasterizableCoordinate(a.x) || !isRasterizableCoordinate(a.y) ||
+      !isRasterizableCoordinate(b.x) || !isRasterizableCoordinate(b.y))
+    return;
+  LineQuad quad;
+  if (!makeLineQuad(a.x, a.y, b.x, b.y, settings.width, quad)) return;
+  LineFragmentWriter writer(a, b, settings, quad.xMajor, sink);
+
+  const bool stippled = settings.stippleFactor > 0;
+  int counter = (stippled && settings.stippleCounter) ? *settings.stippleCounter : 0;
+  const int factor = std::max(settings.stippleFactor, 1);
+  const bool increasing = quad.xMajor ? b.x > a.x : b.y > a.y;
+  bool keep = true;
+  int lastMajor = INT32_MIN;
+  walkLineQuad(quad, increasing, [&](int x, int y) {
+    const int major = quad.xMajor ? x : y;
+    if (stippled && major != lastMajor) {  // a new run: one step of the stipple counter
+      keep = (settings.stipplePattern >> ((counter / factor) % 16)) & 1u;
+      ++counter;
+      lastMajor = major;
+    }
+    if (keep) writer.emit(x, y);
+  });
+  if (stippled && settings.stippleCounter) *settings.stippleCounter = counter;
+}
+
+}  // namespace glass::raster

@@ -1,0 +1,69 @@
+// Visits the pixel centres covered by a line quadrilateral, in order of travel.
+#pragma once
+
+#include <algorithm>
+#include <cstdint>
+
+#include "line_quad.h"
+
+namespace glass::raster {
+
+namespace line_quad_detail {
+inline int64_t floorDiv(int64_t n, int64_t d) {  // d > 0
+  const int64_t q = n / d;
+  return (n % d != 0 && n < 0) ? q - 1 : q;
+}
+inline int64_t ceilDiv(int64_t n, int64_t d) { return -floorDiv(-n, d); }
+}  // namespace line_quad_detail
+
+// Calls visit(x, y) for each pixel whose centre the quad covers, with the same edge functions
+// and ownership rule as triangles (left and bottom edges own their centres). Pixels are visited
+// in runs across the major axis (one run per column of an x-major line, per row of a y-major
+// one); runs go in increasing major coordinate when `increasing` is true, decreasing otherwise,
+// and each run goes in increasing minor coordinate. The work is proportional to the number of
+// runs: each run's extent comes from the four edges by exact integer division.
+template <class Visit>
+void walkLineQuad(const LineQuad& quad, bool increasing, Visit&& visit) {
+  using namespace line_quad_detail;
+  int64_t X[4], Y[4];
+  const int64_t area2 = (quad.x[1] - quad.x[0]) * (quad.y[2] - quad.y[0]) -
+                        (quad.x[2] - quad.x[0]) * (quad.y[1] - quad.y[0]) +
+                        (quad.x[2] - quad.x[0]) * (quad.y[3] - quad.y[0]) -
+                        (quad.x[3] - quad.x[0]) * (quad.y[2] - quad.y[0]);
+  if (area2 == 0) return;
+  for (int i = 0; i < 4; ++i) {  // counter-clockwise order
+    const int k = area2 > 0 ? i : 3 - i;
+    X[i] = quad.x[k];
+    Y[i] = quad.y[k];
+  }
+  // Edge i: A x + B y + C + bias >= 0 inside, bias = 0 on an owning edge and -1 otherwise.
+  int64_t A[4], B[4], C[4];
+  for (int i = 0; i < 4; ++i) {
+    const int j = (i + 1) % 4;
+    A[i] = Y[i] - Y[j];
+    B[i] = X[j] - X[i];
+    const bool owns = A[i] > 0 || (A[i] == 0 && B[i] > 0);
+    C[i] = X[i] * Y[j] - Y[i] * X[j] + (owns ? 0 : -1);
+  }
+  // In terms of (major, minor) coordinates: edge value = P major + Q minor + C.
+  const int64_t* P = quad.xMajor ? A : B;
+  const int64_t* Q = quad.xMajor ? B : A;
+  const int64_t* majorCoord = quad.xMajor ? X : Y;
+  const int64_t lowMajor = ceilDiv(*std::min_element(majorCoord, majorCoord + 4), 256);
+  const int64_t highMajor = floorDiv(*std::max_element(majorCoord, majorCoord + 4), 256);
+  for (int64_t n = 0; n <= highMajor - lowMajor; ++n) {
+    const int64_t k = increasing ? lowMajor + n : highMajor - n;
+    int64_t lo = INT64_MIN, hi = INT64_MAX;
+    for (int i = 0; i < 4; ++i) {
+      const int64_t rest = P[i] * 256 * k + C[i];  // need Q * 256 m + rest >= 0
+      if (Q[i] > 0) lo = std::max(lo, ceilDiv(-rest, 256 * Q[i]));
+      else if (Q[i] < 0) hi = std::min(hi, floorDiv(rest, -256 * Q[i]));
+      else if (rest < 0) hi = INT64_MIN;
+    }
+    for (int64_t m = lo; m <= hi; ++m)
+      quad.xMajor ? visit(static_cast<int>(k), static_cast<int>(m))
+                  : visit(static_cast<int>(m), static_cast<int>(k));
+  }
+}
+
+}  // namespace glass::raster
