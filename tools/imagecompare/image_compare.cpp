@@ -2,26 +2,37 @@
 
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
+#include <OpenImageIO/imageio.h>
 
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <memory>
 #include <ostream>
 #include <unistd.h>
 
 namespace glass {
 namespace {
 
-// Reads an image file whole; returns false with a message when it cannot.
+// Reads an image file whole as 8-bit channels; returns false with a message when it cannot.
+// ImageInput rather than ImageBuf(path): the latter goes through OpenImageIO's shared cache, which
+// would hand back a file's old pixels after the file is rewritten within one process.
 bool readImage(const std::string& path, OIIO::ImageBuf& image, std::string& error) {
-  image.reset(path);
-  if (!image.read(0, 0, /*force=*/true, OIIO::TypeDesc::UINT8)) {
-    error = "cannot read " + path + ": " + image.geterror();
+  std::unique_ptr<OIIO::ImageInput> input = OIIO::ImageInput::open(path);
+  if (!input) {
+    error = "cannot read " + path + ": " + OIIO::geterror();
     return false;
   }
-  return true;
+  OIIO::ImageSpec spec = input->spec();
+  spec.set_format(OIIO::TypeDesc::UINT8);
+  image.reset(spec);
+  const bool read = input->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::UINT8,
+                                      image.localpixels());
+  if (!read) error = "cannot read " + path + ": " + input->geterror();
+  input->close();
+  return read;
 }
 
 // The pixels and channels both images have: the same size is required; channels are the first
