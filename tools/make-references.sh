@@ -14,6 +14,10 @@ cmake --build --preset release -j"$(nproc)" --target mesa_programs >/dev/null
 
 export GALLIUM_DRIVER=llvmpipe
 build=build/release
+if [ ! -x "$build/tools/reference/mesa_info" ]; then
+  echo "make-references: the Mesa builds are off; they need libosmesa6-dev and libglu1-mesa-dev" >&2
+  exit 1
+fi
 version=$("$build/tools/reference/mesa_info" | sed -n 's/^GL_VERSION: .*\(Mesa [^ ]*\).*/\1/p')
 renderer=$("$build/tools/reference/mesa_info" | sed -n 's/^GL_RENDERER: //p')
 package=$(dpkg-query -W -f='${Version}' libosmesa6 2>/dev/null || echo unknown)
