@@ -443,6 +443,7 @@ typedef double GLclampd;
 #define GL_DECR                                  0x1E03
 #define GL_VENDOR                                0x1F00
 #define GL_RENDERER                              0x1F01
+#define GL_VERSION                               0x1F02
 #define GL_EXTENSIONS                            0x1F03
 #define GL_ENABLE_BIT                            0x00002000
 #define GL_S                                     0x2000
@@ -1007,6 +1008,23 @@ GLAPI void GLAPIENTRY glClipPlane(GLenum plane, const GLdouble *equation);
 GLAPI void GLAPIENTRY glGetClipPlane(GLenum plane, GLdouble *equation);
 
 /* GLASS-SECTION: lighting (glLight*, glMaterial*, glColorMaterial, ...) */
+GLAPI void GLAPIENTRY glLightf(GLenum light, GLenum pname, GLfloat param);
+GLAPI void GLAPIENTRY glLighti(GLenum light, GLenum pname, GLint param);
+GLAPI void GLAPIENTRY glLightfv(GLenum light, GLenum pname, const GLfloat *params);
+GLAPI void GLAPIENTRY glLightiv(GLenum light, GLenum pname, const GLint *params);
+GLAPI void GLAPIENTRY glGetLightfv(GLenum light, GLenum pname, GLfloat *params);
+GLAPI void GLAPIENTRY glGetLightiv(GLenum light, GLenum pname, GLint *params);
+GLAPI void GLAPIENTRY glLightModelf(GLenum pname, GLfloat param);
+GLAPI void GLAPIENTRY glLightModeli(GLenum pname, GLint param);
+GLAPI void GLAPIENTRY glLightModelfv(GLenum pname, const GLfloat *params);
+GLAPI void GLAPIENTRY glLightModeliv(GLenum pname, const GLint *params);
+GLAPI void GLAPIENTRY glMaterialf(GLenum face, GLenum pname, GLfloat param);
+GLAPI void GLAPIENTRY glMateriali(GLenum face, GLenum pname, GLint param);
+GLAPI void GLAPIENTRY glMaterialfv(GLenum face, GLenum pname, const GLfloat *params);
+GLAPI void GLAPIENTRY glMaterialiv(GLenum face, GLenum pname, const GLint *params);
+GLAPI void GLAPIENTRY glGetMaterialfv(GLenum face, GLenum pname, GLfloat *params);
+GLAPI void GLAPIENTRY glGetMaterialiv(GLenum face, GLenum pname, GLint *params);
+GLAPI void GLAPIENTRY glColorMaterial(GLenum face, GLenum mode);
 
 /* GLASS-SECTION: fragment operations (fog, alpha, stencil, blend, logic op, attribute stack) */
 GLAPI void GLAPIENTRY glAlphaFunc(GLenum func, GLclampf ref);

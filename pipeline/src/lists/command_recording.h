@@ -31,15 +31,20 @@ namespace glass::gl {
 // Appends a command to the list being compiled.
 void recordListCommand(Context& ctx, ListCommand command);
 
+// The same on a given context, for code that already holds one (glArrayElement compiles the
+// values it reads this way).
+template <class Command>
+inline void compileOrExecuteOn(Context& ctx, Command&& command) {
+  if (ctx.lists.isCompiling()) {
+    recordListCommand(ctx, ListCommand(command));
+    if (ctx.lists.compileMode == GL_COMPILE) return;
+  }
+  command(ctx);
+}
+
 template <class Command>
 inline void compileOrExecute(Command&& command) {
-  Context* ctx = currentContext();
-  if (!ctx) return;
-  if (ctx->lists.isCompiling()) {
-    recordListCommand(*ctx, ListCommand(command));
-    if (ctx->lists.compileMode == GL_COMPILE) return;
-  }
-  command(*ctx);
+  if (Context* ctx = currentContext()) compileOrExecuteOn(*ctx, std::forward<Command>(command));
 }
 
 template <class Command>

@@ -1,0 +1,69 @@
+/* glass: the OpenGL Utility Library (GLU 1.3) functions glass implements, with GLU's names and
+ * enum values. The matrix functions compute as SGI's reference GLU does, through GL calls, so
+ * they are compiled into display lists like the GL calls they make.
+ */
+#ifndef GLASS_GL_GLU_H
+#define GLASS_GL_GLU_H
+
+/* Other headers test these guards; defining them keeps a system glu.h from being mixed in. */
+#ifndef __glu_h__
+#define __glu_h__
+#endif
+#ifndef __GLU_H__
+#define __GLU_H__
+#endif
+
+#include <GL/gl.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#define GLU_VERSION_1_1 1
+#define GLU_VERSION_1_2 1
+#define GLU_VERSION_1_3 1
+
+#define GLU_FALSE                          0
+#define GLU_TRUE                           1
+
+/* gluGetString */
+#define GLU_VERSION                        100800
+#define GLU_EXTENSIONS                     100801
+
+/* Errors (gluErrorString also accepts every GL error) */
+#define GLU_INVALID_ENUM                   100900
+#define GLU_INVALID_VALUE                  100901
+#define GLU_OUT_OF_MEMORY                  100902
+#define GLU_INCOMPATIBLE_GL_VERSION        100903
+#define GLU_INVALID_OPERATION              100904
+
+/* ---- Matrices and projection ---- */
+GLAPI void GLAPIENTRY gluOrtho2D(GLdouble left, GLdouble right, GLdouble bottom, GLdouble top);
+GLAPI void GLAPIENTRY gluPerspective(GLdouble fovy, GLdouble aspect, GLdouble zNear, GLdouble zFar);
+GLAPI void GLAPIENTRY gluLookAt(GLdouble eyeX, GLdouble eyeY, GLdouble eyeZ,
+                                GLdouble centerX, GLdouble centerY, GLdouble centerZ,
+                                GLdouble upX, GLdouble upY, GLdouble upZ);
+GLAPI void GLAPIENTRY gluPickMatrix(GLdouble x, GLdouble y, GLdouble delX, GLdouble delY,
+                                    GLint *viewport);
+GLAPI GLint GLAPIENTRY gluProject(GLdouble objX, GLdouble objY, GLdouble objZ,
+                                  const GLdouble *model, const GLdouble *proj,
+                                  const GLint *view, GLdouble *winX, GLdouble *winY,
+                                  GLdouble *winZ);
+GLAPI GLint GLAPIENTRY gluUnProject(GLdouble winX, GLdouble winY, GLdouble winZ,
+                                    const GLdouble *model, const GLdouble *proj,
+                                    const GLint *view, GLdouble *objX, GLdouble *objY,
+                                    GLdouble *objZ);
+
+/* ---- Errors and strings ---- */
+GLAPI const GLubyte *GLAPIENTRY gluErrorString(GLenum error);
+GLAPI const GLubyte *GLAPIENTRY gluGetString(GLenum name);
+
+/* GLASS-SECTION: quadrics */
+
+/* GLASS-SECTION: mipmaps and image scaling */
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* GLASS_GL_GLU_H */

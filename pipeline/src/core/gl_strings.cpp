@@ -1,0 +1,24 @@
+#include "core/gl_strings.h"
+
+namespace glass::gl {
+
+const char* glString(GLenum name) {
+  switch (name) {
+    case GL_VENDOR:
+      return "glass";
+    case GL_RENDERER:
+      return "glass software rasterizer";
+    case GL_VERSION:
+      // "<major>.<minor> <vendor information>" (spec 6.1.11). glass implements the OpenGL 1.3
+      // fixed-function pipeline in part; the README lists what works.
+      return "1.3 glass 0.1.0 (a subset of OpenGL 1.3)";
+    case GL_EXTENSIONS:
+      // Space-separated. Stages add the extensions they implement here.
+      return "GL_EXT_blend_color GL_EXT_blend_func_separate GL_EXT_blend_minmax "
+             "GL_EXT_blend_subtract GL_EXT_stencil_wrap GL_EXT_rescale_normal GL_WIN_phong_shading";
+    default:
+      return nullptr;
+  }
+}
+
+}  // namespace glass::gl

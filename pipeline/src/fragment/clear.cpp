@@ -1,0 +1,55 @@
+#include "fragment/clear.h"
+
+#include <algorithm>
+
+#include "core/context.h"
+#include "fragment/color_conversion.h"
+#include "glass/raster/fragment.h"
+
+namespace glass::gl {
+
+void clearBuffers(Context& ctx, GLbitfield mask) {
+  raster::Framebuffer& fb = ctx.framebuffer;
+  const FragmentState& f = ctx.fragment;
+  int x0 = 0, y0 = 0, x1 = fb.width(), y1 = fb.height();
+  if (f.scissorTest) {
+    x0 = std::max(x0, f.scissor.x);
+    y0 = std::max(y0, f.scissor.y);
+    x1 = static_cast<int>(std::min<long long>(x1, static_cast<long long>(f.scissor.x) + f.scissor.width));
+    y1 = static_cast<int>(std::min<long long>(y1, static_cast<long long>(f.scissor.y) + f.scissor.height));
+  }
+  if (x0 >= x1 || y0 >= y1) return;
+
+  if (mask & GL_COLOR_BUFFER_BIT) {
+    uint8_t color[4];
+    for (int c = 0; c < 4; ++c) color[c] = floatToColorByte(f.clearColor[c]);
+    const bool all = f.colorMask[0] && f.colorMask[1] && f.colorMask[2] && f.colorMask[3];
+    for (int y = y0; y < y1; ++y) {
+      for (int x = x0; x < x1; ++x) {
+        uint8_t* pixel = fb.colorAt(x, y);
+        for (int c = 0; c < 4; ++c) {
+          if (all || f.colorMask[c]) pixel[c] = color[c];
+        }
+      }
+    }
+  }
+  if ((mask & GL_DEPTH_BUFFER_BIT) && f.depthMask) {
+    // Window depth in [0, 1] to the 24-bit buffer, rounded to nearest as the rasterizer rounds
+    // fragment depths, so that a fragment at the clear depth compares equal.
+    const uint32_t depth =
+        static_cast<uint32_t>(f.clearDepth * static_cast<double>(raster::kDepthMax) + 0.5);
+    for (int y = y0; y < y1; ++y) std::fill(fb.depthAt(x0, y), fb.depthAt(x0, y) + (x1 - x0), depth);
+  }
+  if (mask & GL_STENCIL_BUFFER_BIT) {
+    const unsigned writeMask = f.stencilWriteMask & 0xFFu;
+    const uint8_t value = static_cast<uint8_t>(f.clearStencil & 0xFF);
+    for (int y = y0; y < y1; ++y) {
+      for (int x = x0; x < x1; ++x) {
+        uint8_t* s = fb.stencilAt(x, y);
+        *s = static_cast<uint8_t>((*s & ~writeMask) | (value & writeMask));
+      }
+    }
+  }
+}
+
+}  // namespace glass::gl

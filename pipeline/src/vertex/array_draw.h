@@ -1,0 +1,46 @@
+// glDrawArrays and glDrawElements (spec 2.8): by definition, glBegin(mode), glArrayElement for
+// each index, glEnd. Inside a display list the array data is read at compile time and stored
+// (CompiledArrayDraw).
+#pragma once
+
+#include <GL/gl.h>
+
+#include <vector>
+
+#include "vertex/vertex_arrays.h"
+
+namespace glass::gl {
+
+struct Context;
+
+// Which arrays an element reads: the enabled ones with a pointer.
+struct ArrayElementLayout {
+  bool edgeFlag = false, texCoord = false, normal = false, color = false, vertex = false;
+};
+
+// The values of one array element, as floats (colours and normals normalized).
+struct ArrayElementValues {
+  float vertex[4] = {0.0f, 0.0f, 0.0f, 1.0f};
+  float color[4] = {0.0f, 0.0f, 0.0f, 1.0f};
+  float normal[3] = {0.0f, 0.0f, 1.0f};
+  float texCoord[4] = {0.0f, 0.0f, 0.0f, 1.0f};
+  bool edgeFlag = true;
+};
+
+struct CompiledArrayDraw {
+  GLenum mode = GL_POINTS;
+  ArrayElementLayout layout;
+  std::vector<ArrayElementValues> elements;
+};
+
+ArrayElementLayout currentElementLayout(const ArrayState& arrays);
+void readElement(const ArrayState& arrays, const ArrayElementLayout& layout, int index,
+                 ArrayElementValues& out);
+// Sets the current attributes of the element, then issues its vertex (spec 2.8's order).
+void applyElement(Context& ctx, const ArrayElementLayout& layout, const ArrayElementValues& values);
+
+// Draws elements first .. first + count - 1, or indices[0 .. count) when indices is not null.
+// The caller checked the errors of glDrawArrays / glDrawElements.
+void drawArrayElements(Context& ctx, GLenum mode, const int* indices, int first, int count);
+
+}  // namespace glass::gl

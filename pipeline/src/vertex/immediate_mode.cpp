@@ -1,0 +1,66 @@
+#include "vertex/immediate_mode.h"
+
+#include "core/context.h"
+#include "lighting/lighting_hooks.h"
+#include "primitive/draw_pipeline.h"
+#include "vertex/primitive_assembly.h"
+#include "vertex/vertex_stage.h"
+
+namespace glass::gl {
+
+void beginCommand(Context& ctx, GLenum mode) {
+  if (ctx.assembly.active) return recordError(ctx, GL_INVALID_OPERATION);
+  if (!isPrimitiveMode(mode)) return recordError(ctx, GL_INVALID_ENUM);
+  beginPrimitive(ctx, mode);
+}
+
+void endCommand(Context& ctx) {
+  if (!ctx.assembly.active) return recordError(ctx, GL_INVALID_OPERATION);
+  endPrimitive(ctx);
+}
+
+void vertexCommand(Context& ctx, float x, float y, float z, float w) {
+  if (!ctx.assembly.active) return;
+  const float object[4] = {x, y, z, w};
+  PipelineVertex vertex{};
+  processVertex(ctx, ctx.draw->vertexSetup(), object, vertex);
+  assembleVertex(ctx, vertex);
+}
+
+void colorCommand(Context& ctx, float r, float g, float b, float a) {
+  float* c = ctx.current.color;
+  c[0] = r;
+  c[1] = g;
+  c[2] = b;
+  c[3] = a;
+  onCurrentColorChanged(ctx);
+}
+
+void normalCommand(Context& ctx, float x, float y, float z) {
+  float* n = ctx.current.normal;
+  n[0] = x;
+  n[1] = y;
+  n[2] = z;
+}
+
+void texCoordCommand(Context& ctx, float s, float t, float r, float q) {
+  float* tc = ctx.current.texCoord;
+  tc[0] = s;
+  tc[1] = t;
+  tc[2] = r;
+  tc[3] = q;
+}
+
+void edgeFlagCommand(Context& ctx, bool flag) { ctx.current.edgeFlag = flag; }
+
+void rectCommand(Context& ctx, float x1, float y1, float x2, float y2) {
+  if (ctx.assembly.active) return recordError(ctx, GL_INVALID_OPERATION);
+  beginPrimitive(ctx, GL_POLYGON);
+  vertexCommand(ctx, x1, y1, 0.0f, 1.0f);
+  vertexCommand(ctx, x2, y1, 0.0f, 1.0f);
+  vertexCommand(ctx, x2, y2, 0.0f, 1.0f);
+  vertexCommand(ctx, x1, y2, 0.0f, 1.0f);
+  endPrimitive(ctx);
+}
+
+}  // namespace glass::gl

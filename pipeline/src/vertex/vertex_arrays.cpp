@@ -1,0 +1,150 @@
+#include "vertex/vertex_arrays.h"
+
+#include <cstring>
+#include <memory>
+#include <vector>
+
+#include "core/context.h"
+#include "lists/command_recording.h"
+#include "vertex/array_draw.h"
+#include "vertex/attribute_conversion.h"
+#include "vertex/immediate_mode.h"
+
+namespace glass::gl {
+
+int arrayTypeBytes(GLenum type) {
+  switch (type) {
+    case GL_BYTE: case GL_UNSIGNED_BYTE: return 1;
+    case GL_SHORT: case GL_UNSIGNED_SHORT: return 2;
+    case GL_INT: case GL_UNSIGNED_INT: case GL_FLOAT: return 4;
+    case GL_DOUBLE: return 8;
+    default: return 0;
+  }
+}
+
+namespace {
+
+template <class T>
+T load(const unsigned char* p) {
+  T value;
+  std::memcpy(&value, p, sizeof(T));
+  return value;
+}
+
+// Component i of an element as float: normalized by table 2.9 (colours, normals) or as a number.
+float component(const unsigned char* element, GLenum type, int i, bool normalized) {
+  switch (type) {
+    case GL_BYTE: {
+      const GLbyte v = load<GLbyte>(element + i);
+      return normalized ? normalizedToFloat(v) : static_cast<float>(v);
+    }
+    case GL_UNSIGNED_BYTE: {
+      const GLubyte v = load<GLubyte>(element + i);
+      return normalized ? normalizedToFloat(v) : static_cast<float>(v);
+    }
+    case GL_SHORT: {
+      const GLshort v = load<GLshort>(element + 2 * i);
+      return normalized ? normalizedToFloat(v) : static_cast<float>(v);
+    }
+    case GL_UNSIGNED_SHORT: {
+      const GLushort v = load<GLushort>(element + 2 * i);
+      return normalized ? normalizedToFloat(v) : static_cast<float>(v);
+    }
+    case GL_INT: {
+      const GLint v = load<GLint>(element + 4 * i);
+      return normalized ? normalizedToFloat(v) : static_cast<float>(v);
+    }
+    case GL_UNSIGNED_INT: {
+      const GLuint v = load<GLuint>(element + 4 * i);
+      return normalized ? normalizedToFloat(v) : static_cast<float>(v);
+    }
+    case GL_FLOAT: return load<GLfloat>(element + 4 * i);
+    case GL_DOUBLE: return static_cast<float>(load<GLdouble>(element + 8 * i));
+    default: return 0.0f;
+  }
+}
+
+const unsigned char* elementAddress(const ClientArray& a, int index) {
+  const int stride = a.stride != 0 ? a.stride : a.size * arrayTypeBytes(a.type);
+  return static_cast<const unsigned char*>(a.pointer) + static_cast<long long>(index) * stride;
+}
+
+// Reads `size` components and fills the rest from `defaults` (spec 2.8: missing coordinates
+// default as for the corresponding immediate command).
+void readArray(const ClientArray& a, int index, bool normalized, const float* defaults, int count,
+               float* out) {
+  const unsigned char* element = elementAddress(a, index);
+  for (int i = 0; i < count; ++i) {
+    out[i] = i < a.size ? component(element, a.type, i, normalized) : defaults[i];
+  }
+}
+
+}  // namespace
+
+ArrayElementLayout currentElementLayout(const ArrayState& arrays) {
+  ArrayElementLayout layout;
+  layout.edgeFlag = arrays.edgeFlag.enabled && arrays.edgeFlag.pointer;
+  layout.texCoord = arrays.texCoord.enabled && arrays.texCoord.pointer;
+  layout.normal = arrays.normal.enabled && arrays.normal.pointer;
+  layout.color = arrays.color.enabled && arrays.color.pointer;
+  layout.vertex = arrays.vertex.enabled && arrays.vertex.pointer;
+  return layout;
+}
+
+void readElement(const ArrayState& arrays, const ArrayElementLayout& layout, int index,
+                 ArrayElementValues& out) {
+  static constexpr float kPointDefaults[4] = {0.0f, 0.0f, 0.0f, 1.0f};
+  static constexpr float kColorDefaults[4] = {0.0f, 0.0f, 0.0f, 1.0f};
+  if (layout.edgeFlag) out.edgeFlag = *elementAddress(arrays.edgeFlag, index) != 0;
+  if (layout.texCoord) readArray(arrays.texCoord, index, false, kPointDefaults, 4, out.texCoord);
+  if (layout.normal) readArray(arrays.normal, index, true, kPointDefaults, 3, out.normal);
+  if (layout.color) readArray(arrays.color, index, true, kColorDefaults, 4, out.color);
+  if (layout.vertex) readArray(arrays.vertex, index, false, kPointDefaults, 4, out.vertex);
+}
+
+void applyElement(Context& ctx, const ArrayElementLayout& layout, const ArrayElementValues& v) {
+  if (layout.edgeFlag) edgeFlagCommand(ctx, v.edgeFlag);
+  if (layout.texCoord) texCoordCommand(ctx, v.texCoord[0], v.texCoord[1], v.texCoord[2], v.texCoord[3]);
+  if (layout.normal) normalCommand(ctx, v.normal[0], v.normal[1], v.normal[2]);
+  if (layout.color) colorCommand(ctx, v.color[0], v.color[1], v.color[2], v.color[3]);
+  if (layout.vertex) vertexCommand(ctx, v.vertex[0], v.vertex[1], v.vertex[2], v.vertex[3]);
+}
+
+void arrayElement(Context& ctx, int index) {
+  const ArrayElementLayout layout = currentElementLayout(ctx.arrays);
+  ArrayElementValues values;
+  readElement(ctx.arrays, layout, index, values);
+  // Compiled with the values read now (spec 5.4); executed like the immediate commands.
+  compileOrExecuteOn(ctx, [=](Context& c) { applyElement(c, layout, values); });
+}
+
+void drawArrayElements(Context& ctx, GLenum mode, const int* indices, int first, int count) {
+  const ArrayElementLayout layout = currentElementLayout(ctx.arrays);
+  if (ctx.lists.isCompiling()) {
+    auto draw = std::make_shared<CompiledArrayDraw>();
+    draw->mode = mode;
+    draw->layout = layout;
+    draw->elements.resize(static_cast<size_t>(count));
+    for (int i = 0; i < count; ++i) {
+      readElement(ctx.arrays, layout, indices ? indices[i] : first + i, draw->elements[i]);
+    }
+    std::shared_ptr<const CompiledArrayDraw> compiled = std::move(draw);
+    compileOrExecuteOn(ctx, [compiled](Context& c) {
+      beginCommand(c, compiled->mode);
+      if (!c.assembly.active) return;
+      for (const ArrayElementValues& e : compiled->elements) applyElement(c, compiled->layout, e);
+      endCommand(c);
+    });
+    return;
+  }
+  beginCommand(ctx, mode);
+  if (!ctx.assembly.active) return;
+  ArrayElementValues values;
+  for (int i = 0; i < count; ++i) {
+    readElement(ctx.arrays, layout, indices ? indices[i] : first + i, values);
+    applyElement(ctx, layout, values);
+  }
+  endCommand(ctx);
+}
+
+}  // namespace glass::gl
