@@ -32,10 +32,20 @@ set(ENV{PKG_CONFIG_PATH} ${pc_dir})
 set(program ${SOURCE_DIR}/program.c)
 run("the headers program.c includes"
     sh -c "'${C_COMPILER}' -M '${program}' $(pkg-config --cflags glass)")
+# The dependency list names files by the paths the compiler used (pkg-config's include directory
+# reads prefix/lib/pkgconfig/../../include); compare real paths.
+string(REGEX REPLACE "[ \t\r\n\\]+" ";" dependencies "${output}")
 foreach(header GL/gl.h GL/glu.h glass/context.h)
-  string(FIND "${output}" "${prefix}/include/${header}" at)
-  if(at EQUAL -1)
-    message(FATAL_ERROR "<${header}> does not resolve into ${prefix}/include; "
+  set(used "")
+  foreach(dependency IN LISTS dependencies)
+    if(dependency MATCHES "/${header}$")
+      get_filename_component(used ${dependency} REALPATH)
+      break()
+    endif()
+  endforeach()
+  get_filename_component(expected ${prefix}/include/${header} REALPATH)
+  if(NOT used STREQUAL expected)
+    message(FATAL_ERROR "<${header}> resolves to '${used}', not ${expected}; "
                         "the compiler saw:\n${output}")
   endif()
 endforeach()
