@@ -52,9 +52,11 @@ class LineFragmentWriter {
     f.x = x;
     f.y = y;
     f.depth = depthValue((1.0 - t) * a_.z + t * b_.z + settings_.depthBias);
+    // The weights of the two ends, (1 - t) q_a / q and t q_b / q, sum to one.
     const double wa = (1.0 - t) * qa_, wb = t * qb_, q = wa + wb;
+    const double weightA = wa / q, weightB = wb / q;
     for (int k = 0; k < varyingCount_; ++k)
-      f.varyings[k] = static_cast<float>((wa * a_.varyings[k] + wb * b_.varyings[k]) / q);
+      f.varyings[k] = static_cast<float>(weightA * a_.varyings[k] + weightB * b_.varyings[k]);
     if (count_ == kBatchSize) flush();
   }
 

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <climits>
 
 #include "line_quad.h"
 
@@ -14,6 +15,27 @@ inline int64_t floorDiv(int64_t n, int64_t d) {  // d > 0
   return (n % d != 0 && n < 0) ? q - 1 : q;
 }
 inline int64_t ceilDiv(int64_t n, int64_t d) { return -floorDiv(-n, d); }
+
+// floor(n / d) for n advancing by a fixed step, kept as quotient and remainder so that each step
+// costs additions instead of a 64-bit division.
+struct SteppedFloorDivision {
+  int64_t quotient = 0, remainder = 0, divisor = 1, stepQuotient = 0, stepRemainder = 0;
+  void start(int64_t n, int64_t d, int64_t step) {
+    divisor = d;
+    quotient = floorDiv(n, d);
+    remainder = n - quotient * d;
+    stepQuotient = floorDiv(step, d);
+    stepRemainder = step - stepQuotient * d;
+  }
+  void advance() {
+    quotient += stepQuotient;
+    remainder += stepRemainder;
+    if (remainder >= divisor) {
+      remainder -= divisor;
+      ++quotient;
+    }
+  }
+};
 }  // namespace line_quad_detail
 
 // Calls visit(x, y) for each pixel whose centre the quad covers, with the same edge functions
@@ -51,14 +73,42 @@ void walkLineQuad(const LineQuad& quad, bool increasing, Visit&& visit) {
   const int64_t* majorCoord = quad.xMajor ? X : Y;
   const int64_t lowMajor = ceilDiv(*std::min_element(majorCoord, majorCoord + 4), 256);
   const int64_t highMajor = floorDiv(*std::max_element(majorCoord, majorCoord + 4), 256);
-  for (int64_t n = 0; n <= highMajor - lowMajor; ++n) {
-    const int64_t k = increasing ? lowMajor + n : highMajor - n;
+  if (lowMajor > highMajor) return;
+  const int64_t firstK = increasing ? lowMajor : highMajor, dk = increasing ? 1 : -1;
+
+  // Edge i at run k: need Q * 256 m + P * 256 k + C >= 0. With Q > 0 that is a lower bound
+  // m >= ceil(-(P 256 k + C) / (256 Q)), with Q < 0 an upper bound m <= floor((P 256 k + C) /
+  // (-256 Q)); with Q == 0 the run is all in or all out. Bounds are stepped from run to run.
+  SteppedFloorDivision lower[4], upper[4];
+  int lowerCount = 0, upperCount = 0;
+  int64_t constantEdges[4][2];  // (value at firstK, step) for edges with Q == 0
+  int constantCount = 0;
+  for (int i = 0; i < 4; ++i) {
+    const int64_t rest = P[i] * 256 * firstK + C[i], restStep = P[i] * 256 * dk;
+    if (Q[i] > 0) {  // ceil(-rest / D) = floor((-rest + D - 1) / D)
+      const int64_t d = 256 * Q[i];
+      lower[lowerCount++].start(-rest + d - 1, d, -restStep);
+    } else if (Q[i] < 0) {
+      upper[upperCount++].start(rest, -256 * Q[i], restStep);
+    } else {
+      constantEdges[constantCount][0] = rest;
+      constantEdges[constantCount][1] = restStep;
+      ++constantCount;
+    }
+  }
+  for (int64_t n = 0, k = firstK; n <= highMajor - lowMajor; ++n, k += dk) {
     int64_t lo = INT64_MIN, hi = INT64_MAX;
-    for (int i = 0; i < 4; ++i) {
-      const int64_t rest = P[i] * 256 * k + C[i];  // need Q * 256 m + rest >= 0
-      if (Q[i] > 0) lo = std::max(lo, ceilDiv(-rest, 256 * Q[i]));
-      else if (Q[i] < 0) hi = std::min(hi, floorDiv(rest, -256 * Q[i]));
-      else if (rest < 0) hi = INT64_MIN;
+    for (int i = 0; i < lowerCount; ++i) {
+      lo = std::max(lo, lower[i].quotient);
+      lower[i].advance();
+    }
+    for (int i = 0; i < upperCount; ++i) {
+      hi = std::min(hi, upper[i].quotient);
+      upper[i].advance();
+    }
+    for (int i = 0; i < constantCount; ++i) {
+      if (constantEdges[i][0] < 0) hi = INT64_MIN;
+      constantEdges[i][0] += constantEdges[i][1];
     }
     for (int64_t m = lo; m <= hi; ++m)
       quad.xMajor ? visit(static_cast<int>(k), static_cast<int>(m))
