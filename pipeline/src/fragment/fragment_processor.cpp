@@ -20,6 +20,7 @@ void FragmentProcessor::prepare(Context& ctx, bool phong) {
 
   phong_ = phong;
   texturing_ = texturingEnabled(ctx);
+  bumpMapping_ = phong && bumpMappingActive(ctx);
   colorSum_ = lighting && separateSpecularColor(ctx);
   secondaryVarying_ = colorSum_ && !phong;
   fog_ = fogEnabled(ctx);
@@ -72,8 +73,9 @@ void FragmentProcessor::processFragments(const raster::FragmentBatch& batch) {
       for (int c = 0; c < 4; ++c) secondary[c] = v[varying::kSecondaryColor + c];
     }
     if (phong_) {
-      lightFragment(ctx, v + varying::kEyePosition, v + varying::kEyeNormal, batch.frontFacing,
-                    color, secondary);
+      float normal[3] = {v[varying::kEyeNormal], v[varying::kEyeNormal + 1], v[varying::kEyeNormal + 2]};
+      if (bumpMapping_) perturbNormal(ctx, batch, i, normal);
+      lightFragment(ctx, v + varying::kEyePosition, normal, batch.frontFacing, color, secondary);
     }
     if (texturing_) applyTexturing(ctx, batch, i, color);
     if (colorSum_) applyColorSum(secondary, color);

@@ -29,6 +29,7 @@ class FragmentProcessor final : public raster::FragmentSink {
   Context* ctx_ = nullptr;
 
   bool phong_ = false;
+  bool bumpMapping_ = false;       // GL_GLASS_bump_map perturbs the normal before Phong lighting
   bool texturing_ = false;
   bool secondaryVarying_ = false;  // separate specular colour in varyings 4-7
   bool colorSum_ = false;

@@ -4,6 +4,7 @@
 
 #include "core/context.h"
 #include "core/state_value.h"
+#include "texture/bump_mapping.h"
 #include "texture/texture_environment.h"
 #include "texture/texture_lod.h"
 #include "texture/texture_sampler.h"
@@ -77,10 +78,43 @@ void computeTexCoords(const Context& ctx, const float objectPosition[4], const f
   transformVector4(ctx.transform.texture.top(), coords, out);
 }
 
+namespace {
+
 // d(a/q)/dx = (da/dx q - a dq/dx) / q^2 for the projected coordinate a/q.
-static double projectedDerivative(double a, double q, double da, double dq) {
+double projectedDerivative(double a, double q, double da, double dq) {
   return (da * q - a * dq) / (q * q);
 }
+
+// The screen-space derivatives of s/q and t/q at a fragment of a triangle.
+TexCoordDerivatives texCoordDerivatives(const raster::FragmentBatch& batch, const raster::Fragment& f,
+                                        bool withT) {
+  const float* tc = f.varyings + varying::kTexCoord;
+  double dsdx, dsdy, dqdx, dqdy;
+  batch.planes->derivatives(varying::kTexCoord + 0, f.x, f.y, dsdx, dsdy);
+  batch.planes->derivatives(varying::kTexCoord + 3, f.x, f.y, dqdx, dqdy);
+  TexCoordDerivatives d;
+  d.dsdx = projectedDerivative(tc[0], tc[3], dsdx, dqdx);
+  d.dsdy = projectedDerivative(tc[0], tc[3], dsdy, dqdy);
+  if (withT) {
+    double dtdx, dtdy;
+    batch.planes->derivatives(varying::kTexCoord + 1, f.x, f.y, dtdx, dtdy);
+    d.dtdx = projectedDerivative(tc[1], tc[3], dtdx, dqdx);
+    d.dtdy = projectedDerivative(tc[1], tc[3], dtdy, dqdy);
+  }
+  return d;
+}
+
+// The height map of GL_GLASS_bump_map when it can be sampled: a complete 2D texture object.
+const TextureObject* bumpHeightMap(const Context& ctx) {
+  const BumpMapState& b = ctx.texture.bumpMap;
+  if (!b.enabled || b.texture == 0) return nullptr;
+  const auto it = ctx.texture.objects.find(b.texture);
+  if (it == ctx.texture.objects.end()) return nullptr;
+  const TextureObject* t = it->second.get();
+  return t->target == GL_TEXTURE_2D && t->complete ? t : nullptr;
+}
+
+}  // namespace
 
 void applyTexturing(const Context& ctx, const raster::FragmentBatch& batch, int fragmentIndex,
                     float color[4]) {
@@ -100,18 +134,7 @@ void applyTexturing(const Context& ctx, const raster::FragmentBatch& batch, int 
     // Points and lines carry no derivatives: the base level, magnified (spec 3.8.9).
     sampleTextureMagnified(*texture, s, t, texel);
   } else {
-    double dsdx, dsdy, dqdx, dqdy;
-    batch.planes->derivatives(varying::kTexCoord + 0, f.x, f.y, dsdx, dsdy);
-    batch.planes->derivatives(varying::kTexCoord + 3, f.x, f.y, dqdx, dqdy);
-    TexCoordDerivatives d;
-    d.dsdx = projectedDerivative(tc[0], q, dsdx, dqdx);
-    d.dsdy = projectedDerivative(tc[0], q, dsdy, dqdy);
-    if (twoD) {
-      double dtdx, dtdy;
-      batch.planes->derivatives(varying::kTexCoord + 1, f.x, f.y, dtdx, dtdy);
-      d.dtdx = projectedDerivative(tc[1], q, dtdx, dqdx);
-      d.dtdy = projectedDerivative(tc[1], q, dtdy, dqdy);
-    }
+    const TexCoordDerivatives d = texCoordDerivatives(batch, f, twoD);
     const TextureImage& base = texture->baseImage();
     const double rho = textureScaleFactor(d, base.width, twoD ? base.height : 0);
     const float lambda = levelOfDetail(rho, p.minLod, p.maxLod);
@@ -119,6 +142,22 @@ void applyTexturing(const Context& ctx, const raster::FragmentBatch& batch, int 
   }
   applyTextureEnvironment(ctx.texture.envMode, texture->baseImage().base, texel,
                           ctx.texture.envColor, color);
+}
+
+bool bumpMappingActive(const Context& ctx) { return bumpHeightMap(ctx) != nullptr; }
+
+void perturbNormal(const Context& ctx, const raster::FragmentBatch& batch, int fragmentIndex,
+                   float eyeNormal[3]) {
+  const TextureObject* heightMap = bumpHeightMap(ctx);
+  if (heightMap == nullptr || batch.planes == nullptr) return;
+  const raster::Fragment& f = batch.fragments[fragmentIndex];
+  const float* tc = f.varyings + varying::kTexCoord;
+  const TexCoordDerivatives st = texCoordDerivatives(batch, f, true);
+  double dPdx[3], dPdy[3];
+  for (int k = 0; k < 3; ++k)
+    batch.planes->derivatives(varying::kEyePosition + k, f.x, f.y, dPdx[k], dPdy[k]);
+  perturbNormalByHeightMap(*heightMap, ctx.texture.bumpMap.scale, tc[0] / tc[3], tc[1] / tc[3], st,
+                           dPdx, dPdy, eyeNormal);
 }
 
 }  // namespace glass::gl

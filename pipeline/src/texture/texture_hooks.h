@@ -34,4 +34,14 @@ void computeTexCoords(const Context& ctx, const float objectPosition[4], const f
 void applyTexturing(const Context& ctx, const raster::FragmentBatch& batch, int fragmentIndex,
                     float color[4]);
 
+// GL_GLASS_bump_map (docs/texturing.md): bump mapping is on and its height map is a complete 2D
+// texture. Only per-fragment lighting (GL_PHONG_WIN) uses it.
+bool bumpMappingActive(const Context& ctx);
+
+// Per fragment, before per-fragment lighting: perturbs the interpolated eye-space normal by the
+// height map at the fragment's texture coordinates. Needs the batch's attribute planes (the
+// derivatives of the eye position and texture coordinates); leaves the normal as it is without.
+void perturbNormal(const Context& ctx, const raster::FragmentBatch& batch, int fragmentIndex,
+                   float eyeNormal[3]);
+
 }  // namespace glass::gl
