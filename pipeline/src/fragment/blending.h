@@ -1,23 +1,29 @@
 // Blending (spec 4.1.7, GL 1.4 tables 4.1 and 4.2): source and destination factors, the blend
-// colour, and the blend equations ADD, SUBTRACT, REVERSE_SUBTRACT, MIN and MAX. Computed in float
-// on colours in [0, 1]; the result is clamped to [0, 1].
+// colour, and the blend equations ADD, SUBTRACT, REVERSE_SUBTRACT, MIN and MAX.
+//
+// The colour buffer holds 8-bit components, and blending works in that fixed point, as the spec
+// permits and Mesa's drivers do: colours and factors are 8-bit values v standing for v / 255,
+// each product s * f is rounded to the nearest 8-bit value (s * f / 255, never a tie), and the
+// sum or difference saturates to [0, 255].
 #pragma once
 
 #include <GL/gl.h>
+
+#include <cstdint>
 
 namespace glass::gl {
 
 struct BlendSettings {
   GLenum srcRGB = GL_ONE, dstRGB = GL_ZERO, srcAlpha = GL_ONE, dstAlpha = GL_ZERO;
   GLenum equation = GL_FUNC_ADD;
-  float constant[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+  uint8_t constant[4] = {0, 0, 0, 0};  // glBlendColor, converted to 8 bits
 };
 
 bool isBlendFactor(GLenum factor, bool source);
 bool isBlendEquation(GLenum equation);
 
 // source: the fragment's colour; destination: the colour buffer's. Writes the blended colour.
-void blend(const BlendSettings& settings, const float source[4], const float destination[4],
-           float result[4]);
+void blend(const BlendSettings& settings, const uint8_t source[4], const uint8_t destination[4],
+           uint8_t result[4]);
 
 }  // namespace glass::gl

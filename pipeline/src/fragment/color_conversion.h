@@ -1,8 +1,14 @@
 // Conversion between the colour buffer's 8-bit components and floating-point colour (spec 2.14.9
-// and table 2.9): c -> c / 255 on the way in; on the way out, clamp to [0, 1] and round to the
-// nearest of the 256 levels (floor(c * 255 + 0.5), as Mesa does).
+// and table 2.9): c -> c / 255 on the way in; on the way out, clamp to [0, 1] and round c * 255 to
+// the nearest integer.
+//
+// The rounding is Mesa's (its float-to-ubyte conversion, used by llvmpipe and softpipe alike):
+// c * 255/256 is rounded to float, then to the nearest multiple of 1/256, ties to even. It agrees
+// with floor(c * 255 + 0.5) except near ties, where Mesa's float product decides: 0.3f gives 76,
+// not 77. Following it keeps glass's pictures equal to Mesa's for colours such as 0.3 and 0.9.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 
 namespace glass::gl {
@@ -10,7 +16,9 @@ namespace glass::gl {
 inline uint8_t floatToColorByte(float c) {
   if (!(c > 0.0f)) return 0;  // also NaN
   if (c >= 1.0f) return 255;
-  return static_cast<uint8_t>(c * 255.0f + 0.5f);
+  const float scaled = c * (255.0f / 256.0f);
+  // scaled * 256 is exact; nearbyint rounds ties to even in the default rounding mode.
+  return static_cast<uint8_t>(std::nearbyint(scaled * 256.0f));
 }
 
 inline float colorByteToFloat(uint8_t c) { return static_cast<float>(c) * (1.0f / 255.0f); }

@@ -52,7 +52,7 @@ void FragmentProcessor::prepare(Context& ctx, bool phong) {
   blendSettings_.dstAlpha = f.blendDstAlpha;
   blendSettings_.equation = f.blendEquation;
   for (int i = 0; i < 4; ++i) {
-    blendSettings_.constant[i] = f.blendColor[i];
+    blendSettings_.constant[i] = floatToColorByte(f.blendColor[i]);
     colorMask_[i] = f.colorMask[i];
   }
   writesColor_ = colorMask_[0] || colorMask_[1] || colorMask_[2] || colorMask_[3];
@@ -114,15 +114,9 @@ void FragmentProcessor::processFragments(const raster::FragmentBatch& batch) {
     uint8_t out[4];
     for (int c = 0; c < 4; ++c) out[c] = floatToColorByte(color[c]);
     if (blend_) {
-      // The fragment colour is taken at the buffer's 8-bit precision before blending, as an
-      // implementation with an 8-bit colour buffer blends (so do Mesa's drivers).
-      float source[4], destination[4], blended[4];
-      for (int c = 0; c < 4; ++c) {
-        source[c] = colorByteToFloat(out[c]);
-        destination[c] = colorByteToFloat(pixel[c]);
-      }
-      blend(blendSettings_, source, destination, blended);
-      for (int c = 0; c < 4; ++c) out[c] = floatToColorByte(blended[c]);
+      uint8_t blended[4];
+      blend(blendSettings_, out, pixel, blended);
+      for (int c = 0; c < 4; ++c) out[c] = blended[c];
     } else if (logicOp_) {
       for (int c = 0; c < 4; ++c) out[c] = applyLogicOp(logicOpMode_, out[c], pixel[c]);
     }

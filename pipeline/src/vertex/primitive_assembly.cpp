@@ -12,14 +12,14 @@ unsigned edgeBits(bool ab, bool bc, bool ca) {
   return (ab ? 1u : 0u) | (bc ? 2u : 0u) | (ca ? 4u : 0u);
 }
 
-// A quadrilateral given in boundary order q0 q1 q2 q3, q3 being its provoking vertex. Split along
-// the diagonal q1-q3 into (q0, q1, q3) and (q1, q2, q3), as Mesa's draw module splits quads, so
-// that colours interpolate as in Mesa. f0..f3: boundary flags of the edges q0q1, q1q2, q2q3, q3q0.
+// A quadrilateral given in boundary order q0 q1 q2 q3, split along the diagonal q0-q2 into
+// (q0, q1, q2) and (q0, q2, q3), as Mesa splits GL_QUADS and GL_QUAD_STRIP, so that colours
+// interpolate as in Mesa. f0..f3: boundary flags of the edges q0q1, q1q2, q2q3, q3q0.
 void drawQuad(DrawPipeline& draw, const PipelineVertex& q0, const PipelineVertex& q1,
-              const PipelineVertex& q2, const PipelineVertex& q3, bool f0, bool f1, bool f2,
-              bool f3) {
-  draw.drawTriangle(q0, q1, q3, q3, edgeBits(f0, false, f3));
-  draw.drawTriangle(q1, q2, q3, q3, edgeBits(f1, f2, false));
+              const PipelineVertex& q2, const PipelineVertex& q3, const PipelineVertex& provoking,
+              bool f0, bool f1, bool f2, bool f3) {
+  draw.drawTriangle(q0, q1, q2, provoking, edgeBits(f0, f1, false));
+  draw.drawTriangle(q0, q2, q3, provoking, edgeBits(false, f2, f3));
 }
 
 // GL_POLYGON as a fan around its first vertex, which is also its provoking vertex (spec 2.13.7).
@@ -112,15 +112,14 @@ void assembleVertex(Context& ctx, const PipelineVertex& v) {
       if (n % 4 < 3) {
         w[n % 4] = v;
       } else {
-        drawQuad(draw, w[0], w[1], w[2], v, w[0].edgeFlag, w[1].edgeFlag, w[2].edgeFlag,
+        drawQuad(draw, w[0], w[1], w[2], v, v, w[0].edgeFlag, w[1].edgeFlag, w[2].edgeFlag,
                  v.edgeFlag);
       }
       break;
     case GL_QUAD_STRIP:
-      // Quad i has the boundary v_2i, v_2i+1, v_2i+3, v_2i+2; it is drawn from v_2i+2 so that
-      // v_2i+3, the provoking vertex, comes last: (v_2i+2, v_2i, v_2i+1, v_2i+3).
+      // Quad i has the boundary v_2i, v_2i+1, v_2i+3, v_2i+2 and the provoking vertex v_2i+3.
       if (n >= 3 && n % 2 == 1) {
-        drawQuad(draw, w[2], w[0], w[1], v, true, true, true, true);
+        drawQuad(draw, w[0], w[1], v, w[2], v, true, true, true, true);
         w[0] = w[2];
         w[1] = v;
       } else if (n < 3) {
