@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <set>
 
 #include "glass/raster/line.h"
@@ -86,7 +87,7 @@ TEST_CASE("GL lines: endpoints on pixel centres and on pixel borders") {
 TEST_CASE("GL lines: every octant gives one pixel per column or row, 8-connected") {
   const float cx = 32.3f, cy = 31.7f;
   for (int k = 0; k < 64; ++k) {
-    const double angle = 2 * M_PI * (k + 0.5) / 64;
+    const double angle = 2 * std::numbers::pi * (k + 0.5) / 64;
     const WindowVertex a = windowVertex(cx, cy);
     const WindowVertex b = windowVertex(float(cx + 25 * std::cos(angle)), float(cy + 25 * std::sin(angle)));
     const auto pixels = drawnInOrder(a, b, lineSettings());

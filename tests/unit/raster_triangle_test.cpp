@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <random>
 
 #include "glass/raster/triangle.h"
@@ -97,7 +98,7 @@ TEST_CASE("triangle: a fan around a point inside a circle has no double writes a
   const double cx = 40.37, cy = 39.81, r = 33.0;
   std::vector<WindowVertex> ring;
   for (int i = 0; i < n; ++i) {
-    const double a = 2.0 * M_PI * i / n;
+    const double a = 2.0 * std::numbers::pi * i / n;
     ring.push_back(windowVertex(float(cx + r * std::cos(a)), float(cy + r * std::sin(a))));
   }
   RecordingSink sink;
@@ -111,7 +112,7 @@ TEST_CASE("triangle: a fan around a point inside a circle has no double writes a
       if (w > 1) ++doubles;
       // Well inside the ring polygon (its inscribed radius is r cos(pi / n)).
       const double d = std::hypot(x + 0.5 - cx, y + 0.5 - cy);
-      if (d < r * std::cos(M_PI / n) - 0.01 && w != 1) ++gaps;
+      if (d < r * std::cos(std::numbers::pi / n) - 0.01 && w != 1) ++gaps;
     }
   CHECK(doubles == 0);
   CHECK(gaps == 0);
