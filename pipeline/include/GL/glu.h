@@ -59,6 +59,37 @@ GLAPI const GLubyte *GLAPIENTRY gluErrorString(GLenum error);
 GLAPI const GLubyte *GLAPIENTRY gluGetString(GLenum name);
 
 /* GLASS-SECTION: quadrics */
+/* Quadric objects (GLU 1.3, chapter 6): the vertices, normals and texture coordinates are those
+ * SGI's GLU emits. */
+typedef struct GLUquadric GLUquadric;
+typedef struct GLUquadric GLUquadricObj;
+typedef void (GLAPIENTRY *_GLUfuncptr)(void);
+
+#define GLU_SMOOTH                         100000
+#define GLU_FLAT                           100001
+#define GLU_NONE                           100002
+#define GLU_POINT                          100010
+#define GLU_LINE                           100011
+#define GLU_FILL                           100012
+#define GLU_SILHOUETTE                     100013
+#define GLU_OUTSIDE                        100020
+#define GLU_INSIDE                         100021
+#define GLU_ERROR                          100103
+
+GLAPI GLUquadric *GLAPIENTRY gluNewQuadric(void);
+GLAPI void GLAPIENTRY gluDeleteQuadric(GLUquadric *quad);
+GLAPI void GLAPIENTRY gluQuadricCallback(GLUquadric *quad, GLenum which, _GLUfuncptr callback);
+GLAPI void GLAPIENTRY gluQuadricNormals(GLUquadric *quad, GLenum normals);
+GLAPI void GLAPIENTRY gluQuadricTexture(GLUquadric *quad, GLboolean textureCoords);
+GLAPI void GLAPIENTRY gluQuadricOrientation(GLUquadric *quad, GLenum orientation);
+GLAPI void GLAPIENTRY gluQuadricDrawStyle(GLUquadric *quad, GLenum drawStyle);
+GLAPI void GLAPIENTRY gluSphere(GLUquadric *quad, GLdouble radius, GLint slices, GLint stacks);
+GLAPI void GLAPIENTRY gluCylinder(GLUquadric *quad, GLdouble base, GLdouble top, GLdouble height,
+                                  GLint slices, GLint stacks);
+GLAPI void GLAPIENTRY gluDisk(GLUquadric *quad, GLdouble inner, GLdouble outer, GLint slices,
+                              GLint loops);
+GLAPI void GLAPIENTRY gluPartialDisk(GLUquadric *quad, GLdouble inner, GLdouble outer,
+                                     GLint slices, GLint loops, GLdouble start, GLdouble sweep);
 
 /* GLASS-SECTION: mipmaps and image scaling */
 GLAPI GLint GLAPIENTRY gluBuild1DMipmaps(GLenum target, GLint internalFormat, GLsizei width,

@@ -23,6 +23,10 @@ bool fogEnabled(const Context& ctx);
 // distance c, which may be approximated by |z_e|).
 float fogCoordinate(const Context& ctx, const float eyePosition[4]);
 
+// The fog factor f (spec 3.10) for the eye distance c, clamped to [0, 1].
+struct FogState;
+float fogFactor(const FogState& fog, float c);
+
 // Per fragment, after texturing and colour sum: blends color towards the fog colour. The
 // fragment's interpolated fog coordinate is fragment.varyings[8].
 void applyFog(const Context& ctx, const raster::Fragment& fragment, float color[4]);

@@ -1,8 +1,17 @@
-// Fog state (glFog). Placeholder until the fog stage lands: replaced by the fog stage.
+// Fog state (OpenGL 1.5 specification, section 3.10 and table 6.14), with the GL defaults.
 #pragma once
+
+#include <GL/gl.h>
 
 namespace glass::gl {
 
-struct FogState {};
+struct FogState {
+  bool enabled = false;           // glEnable(GL_FOG)
+  GLenum mode = GL_EXP;           // GL_LINEAR, GL_EXP or GL_EXP2
+  float density = 1.0f;           // EXP and EXP2
+  float start = 0.0f, end = 1.0f; // LINEAR
+  float index = 0.0f;             // colour index mode only; kept for glGet
+  float color[4] = {0.0f, 0.0f, 0.0f, 0.0f};  // clamped to [0, 1] when given
+};
 
 }  // namespace glass::gl

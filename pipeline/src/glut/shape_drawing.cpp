@@ -3,6 +3,8 @@
 // program's client array state, and records into display lists like any other drawing.
 #include <GL/gl.h>
 
+#include <cstddef>
+
 #include "glut/shape_mesh.h"
 
 namespace glass::gl::glut {
@@ -11,8 +13,8 @@ void drawShapeMesh(const ShapeMesh& mesh) {
   for (const ShapeMesh::Draw& d : mesh.draws) {
     glBegin(d.mode);
     for (int k : d.indices) {
-      glNormal3fv(&mesh.normals[3 * static_cast<size_t>(k)]);
-      glVertex3fv(&mesh.positions[3 * static_cast<size_t>(k)]);
+      glNormal3fv(&mesh.normals[3 * static_cast<std::size_t>(k)]);
+      glVertex3fv(&mesh.positions[3 * static_cast<std::size_t>(k)]);
     }
     glEnd();
   }
