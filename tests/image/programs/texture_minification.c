@@ -41,7 +41,7 @@ static void makeTexture(void)
 
 static void floorQuad(void)
 {
-  /* 8 x 60 units of floor, one texture repeat per unit... squared: s over x, t over depth. */
+  /* 8 units wide and 60 deep, one texture repeat every 2 units: s across, t into the distance. */
   glBegin(GL_QUADS);
   glTexCoord2f(0.0f, 0.0f);
   glVertex3f(-4.0f, -1.0f, -1.0f);
