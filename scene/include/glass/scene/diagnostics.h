@@ -1,0 +1,61 @@
+// Messages about a scene: `file:line:col: error: message`, then the offending line with a caret
+// under the place, then notes (where a block was opened, where a file was included from).
+// Parsing goes on after an error so that one run reports several, up to a limit.
+#pragma once
+
+#include "glass/scene/source.h"
+
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+namespace glass::scene {
+
+enum class Severity { Error, Warning, Note };
+
+struct Diagnostic {
+  Severity severity = Severity::Error;
+  SourceLocation where;    // may be invalid for messages about no place in particular
+  int length = 1;          // how many columns the caret line underlines
+  std::string message;
+  std::vector<Diagnostic> notes;
+
+  // Adds a note pointing at another place ("block opened here").
+  Diagnostic &note(SourceLocation at, std::string text, int noteLength = 1);
+};
+
+class Diagnostics {
+public:
+  explicit Diagnostics(int errorLimit = 20) : errorLimit_(errorLimit) {}
+
+  Diagnostic &error(SourceLocation at, std::string message, int length = 1);
+  Diagnostic &warning(SourceLocation at, std::string message, int length = 1);
+  // Adds a message made elsewhere (the lexer's, moved over in source order).
+  void add(Diagnostic diagnostic);
+
+  int errorCount() const { return errorCount_; }
+  bool hasErrors() const { return errorCount_ > 0; }
+  // True once the error limit is reached: the parser stops there.
+  bool full() const { return errorCount_ >= errorLimit_; }
+  int errorLimit() const { return errorLimit_; }
+
+  const std::vector<Diagnostic> &all() const { return list_; }
+
+  // Every message in order, each with its source line and caret; ends with a count line
+  // ("3 errors") when there were errors, and says when the limit cut the list short.
+  std::string format() const;
+  void print(std::ostream &out) const;
+
+private:
+  int errorLimit_;
+  int errorCount_ = 0;
+  std::vector<Diagnostic> list_;
+};
+
+// One message with its source line and caret, as the command line prints it.
+std::string formatDiagnostic(const Diagnostic &diagnostic);
+
+// "file:line:col" for a location (or "file" / "<unknown>" when parts are missing).
+std::string describeLocation(SourceLocation at);
+
+} // namespace glass::scene
