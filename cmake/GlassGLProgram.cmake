@@ -56,6 +56,11 @@ function(glass_add_gl_program name)
     target_include_directories(${name}_mesa PRIVATE ${support_include})
     # OSMesa first: the program's and libGLU's gl* calls must bind to OSMesa's entry points.
     target_link_libraries(${name}_mesa PRIVATE glass_osmesa_context PkgConfig::MESA_GL m)
+    # GLUT shapes come from freeglut, after OSMesa so that freeglut's gl* calls bind to OSMesa.
+    if(TARGET glass_mesa_freeglut)
+      target_link_libraries(${name}_mesa PRIVATE glass_mesa_freeglut
+                            $<TARGET_OBJECTS:glass_mesa_freeglut>)
+    endif()
     add_dependencies(mesa_programs ${name}_mesa)
   endif()
 endfunction()
