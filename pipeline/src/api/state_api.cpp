@@ -39,12 +39,13 @@ bool lookUp(Context& ctx, GLenum pname, StateValue& value) {
 }
 
 // Spec 6.1.2: colours, normals, depth range and depth clear values map [-1, 1] linearly onto the
-// integer range, 1.0 to the most positive and -1.0 to the most negative integer.
+// integer range, 1.0 to the most positive and -1.0 to the most negative integer:
+// i = ((2^32 - 1) c - 1) / 2, rounded to nearest with halves upward, so that 0.0 gives 0.
 GLint normalizedToInteger(double value) {
-  const double scaled = ((4294967295.0 * value) - 1.0) / 2.0;
+  const double scaled = std::floor(4294967295.0 * value / 2.0);
   if (scaled >= 2147483647.0) return std::numeric_limits<GLint>::max();
   if (scaled <= -2147483648.0) return std::numeric_limits<GLint>::min();
-  return static_cast<GLint>(std::lround(scaled));
+  return static_cast<GLint>(scaled);
 }
 
 GLint floatToInteger(double value) {

@@ -1,0 +1,147 @@
+// Vertex arrays (spec 2.8) give the same pixels as the same vertices in immediate mode, for
+// glDrawArrays, glDrawElements with each index type, glArrayElement, strides and component types.
+#include <GL/gl.h>
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "pipeline_test_support.h"
+
+using glass::test::readFramebuffer;
+using glass::test::ScopedContext;
+
+namespace {
+
+constexpr int kSize = 48;
+
+// A fan of triangles with coloured vertices, in interleaved records.
+struct Vertex {
+  GLshort position[2];
+  GLubyte color[4];
+  GLfloat texCoord[2];
+};
+
+std::vector<Vertex> meshVertices() {
+  std::vector<Vertex> v;
+  for (int i = 0; i < 9; ++i) {
+    const double a = i * 0.7;
+    Vertex vertex{};
+    vertex.position[0] = static_cast<GLshort>(24 + std::lround(20 * std::cos(a)) * (i % 2 ? 1 : -1) / 2 + (i % 3));
+    vertex.position[1] = static_cast<GLshort>(24 + std::lround(20 * std::sin(a)));
+    vertex.color[0] = static_cast<GLubyte>(30 * i);
+    vertex.color[1] = static_cast<GLubyte>(255 - 25 * i);
+    vertex.color[2] = static_cast<GLubyte>(i * 77 % 256);
+    vertex.color[3] = 255;
+    vertex.texCoord[0] = static_cast<GLfloat>(i);
+    v.push_back(vertex);
+  }
+  return v;
+}
+
+const GLenum kModes[] = {GL_POINTS, GL_LINES, GL_LINE_STRIP, GL_LINE_LOOP, GL_TRIANGLES,
+                         GL_TRIANGLE_STRIP, GL_TRIANGLE_FAN, GL_QUADS, GL_QUAD_STRIP, GL_POLYGON};
+
+std::vector<uint8_t> renderImmediate(GLenum mode, const std::vector<Vertex>& v,
+                                     const std::vector<int>& order) {
+  glClear(GL_COLOR_BUFFER_BIT);
+  glBegin(mode);
+  for (int i : order) {
+    glColor4ub(v[i].color[0], v[i].color[1], v[i].color[2], v[i].color[3]);
+    glVertex2s(v[i].position[0], v[i].position[1]);
+  }
+  glEnd();
+  return readFramebuffer(kSize, kSize);
+}
+
+}  // namespace
+
+TEST_CASE("pipeline arrays: vertex arrays draw exactly what immediate mode draws") {
+  ScopedContext context(kSize, kSize);
+  glass::test::pixelProjection(kSize, kSize);
+  const std::vector<Vertex> v = meshVertices();
+  glVertexPointer(2, GL_SHORT, sizeof(Vertex), &v[0].position);
+  glColorPointer(4, GL_UNSIGNED_BYTE, sizeof(Vertex), &v[0].color);
+  glTexCoordPointer(2, GL_FLOAT, sizeof(Vertex), &v[0].texCoord);
+  glEnableClientState(GL_VERTEX_ARRAY);
+  glEnableClientState(GL_COLOR_ARRAY);
+  glEnableClientState(GL_TEXTURE_COORD_ARRAY);
+
+  const std::vector<int> inOrder = {0, 1, 2, 3, 4, 5, 6, 7, 8};
+  const std::vector<int> shuffled = {8, 3, 5, 0, 7, 2, 6, 1, 4};
+  for (GLenum mode : kModes) {
+    CAPTURE(mode);
+    const std::vector<uint8_t> expected = renderImmediate(mode, v, inOrder);
+
+    glClear(GL_COLOR_BUFFER_BIT);
+    glDrawArrays(mode, 0, 9);
+    CHECK(readFramebuffer(kSize, kSize) == expected);
+
+    glClear(GL_COLOR_BUFFER_BIT);
+    glBegin(mode);
+    for (int i : inOrder) glArrayElement(i);
+    glEnd();
+    CHECK(readFramebuffer(kSize, kSize) == expected);
+
+    const std::vector<uint8_t> expectedShuffled = renderImmediate(mode, v, shuffled);
+    const std::vector<GLubyte> indices8(shuffled.begin(), shuffled.end());
+    const std::vector<GLushort> indices16(shuffled.begin(), shuffled.end());
+    const std::vector<GLuint> indices32(shuffled.begin(), shuffled.end());
+    glClear(GL_COLOR_BUFFER_BIT);
+    glDrawElements(mode, 9, GL_UNSIGNED_BYTE, indices8.data());
+    CHECK(readFramebuffer(kSize, kSize) == expectedShuffled);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glDrawElements(mode, 9, GL_UNSIGNED_SHORT, indices16.data());
+    CHECK(readFramebuffer(kSize, kSize) == expectedShuffled);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glDrawElements(mode, 9, GL_UNSIGNED_INT, indices32.data());
+    CHECK(readFramebuffer(kSize, kSize) == expectedShuffled);
+  }
+
+  // After a draw, the current attributes are those of the last element (spec 2.8).
+  GLfloat texCoord[4];
+  glGetFloatv(GL_CURRENT_TEXTURE_COORDS, texCoord);
+  CHECK(texCoord[0] == 4.0f);
+  CHECK(glGetError() == GL_NO_ERROR);
+}
+
+TEST_CASE("pipeline arrays: component types convert as the immediate commands do") {
+  ScopedContext context(kSize, kSize);
+  glass::test::pixelProjection(kSize, kSize);
+  // The same triangle as floats, doubles and ints; colours as floats, unsigned shorts and bytes.
+  const GLfloat positionsF[6] = {2, 2, 40, 6, 10, 44};
+  const GLdouble positionsD[6] = {2, 2, 40, 6, 10, 44};
+  const GLint positionsI[6] = {2, 2, 40, 6, 10, 44};
+  const GLfloat colorsF[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
+  const GLushort colorsUS[9] = {65535, 0, 0, 0, 65535, 0, 0, 0, 65535};
+  const GLbyte colorsB[9] = {127, -128, -128, -128, 127, -128, -128, -128, 127};
+
+  glClear(GL_COLOR_BUFFER_BIT);
+  glBegin(GL_TRIANGLES);
+  glColor3f(1, 0, 0), glVertex2f(2, 2);
+  glColor3f(0, 1, 0), glVertex2f(40, 6);
+  glColor3f(0, 0, 1), glVertex2f(10, 44);
+  glEnd();
+  const std::vector<uint8_t> expected = readFramebuffer(kSize, kSize);
+
+  glEnableClientState(GL_VERTEX_ARRAY);
+  glEnableClientState(GL_COLOR_ARRAY);
+  const struct {
+    GLenum vertexType;
+    const void* vertices;
+    GLenum colorType;
+    const void* colors;
+  } cases[] = {{GL_FLOAT, positionsF, GL_FLOAT, colorsF},
+               {GL_DOUBLE, positionsD, GL_UNSIGNED_SHORT, colorsUS},
+               {GL_INT, positionsI, GL_BYTE, colorsB}};
+  for (const auto& c : cases) {
+    CAPTURE(c.vertexType);
+    glVertexPointer(2, c.vertexType, 0, c.vertices);
+    glColorPointer(3, c.colorType, 0, c.colors);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    CHECK(readFramebuffer(kSize, kSize) == expected);
+  }
+  glDisableClientState(GL_VERTEX_ARRAY);
+  glDisableClientState(GL_COLOR_ARRAY);
+}
