@@ -192,6 +192,8 @@ TEST_CASE("pipeline errors: only the listed commands are allowed between glBegin
       {"glPixelStorei", [] { glPixelStorei(GL_PACK_ALIGNMENT, 1); }, GL_INVALID_OPERATION},
       {"glFinish", [] { glFinish(); }, GL_INVALID_OPERATION},
       {"glFlush", [] { glFlush(); }, GL_INVALID_OPERATION},
+      {"glEnableClientState", [] { glEnableClientState(GL_COLOR_ARRAY); }, GL_INVALID_OPERATION},
+      {"glColorPointer", [&] { glColorPointer(3, GL_FLOAT, 0, vertices); }, GL_INVALID_OPERATION},
   };
   for (const ErrorCase& c : forbidden) {
     INFO(c.call);

@@ -60,7 +60,7 @@ TEST_CASE("pipeline state: initial values of a new context") {
   CHECK(getInteger(GL_BLEND_DST) == GL_ZERO);
   CHECK(getInteger(GL_LOGIC_OP_MODE) == GL_COPY);
   CHECK(getInteger(GL_STENCIL_FUNC) == GL_ALWAYS);
-  CHECK(getInteger(GL_STENCIL_VALUE_MASK) == -1);  // all ones
+  CHECK(getInteger(GL_STENCIL_VALUE_MASK) == 255);  // all ones, in the 8 bits of the buffer
   CHECK(getInteger(GL_PACK_ALIGNMENT) == 4);
   CHECK(getInteger(GL_UNPACK_ALIGNMENT) == 4);
   CHECK(getFloat(GL_POINT_SIZE) == 1.0f);

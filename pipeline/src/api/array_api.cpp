@@ -29,8 +29,11 @@ ClientArray* clientArray(Context& ctx, GLenum array) {
   }
 }
 
+// Client array commands are not allowed between glBegin and glEnd either (as in Mesa; spec 2.6.3
+// lists the commands that are).
 void setClientState(GLenum array, bool enabled) {
   executeNow([=](Context& ctx) {
+    if (glass::gl::rejectInsideBeginEnd(ctx)) return;
     ClientArray* a = clientArray(ctx, array);
     if (!a) return recordError(ctx, GL_INVALID_ENUM);
     a->enabled = enabled;
@@ -49,6 +52,7 @@ bool isOneOf(GLenum type, std::initializer_list<GLenum> types) {
 void setPointer(GLenum array, GLint size, bool sizeValid, GLenum type, bool typeValid,
                 GLsizei stride, const GLvoid* pointer) {
   executeNow([=](Context& ctx) {
+    if (glass::gl::rejectInsideBeginEnd(ctx)) return;
     if (!sizeValid || stride < 0) return recordError(ctx, GL_INVALID_VALUE);
     if (!typeValid) return recordError(ctx, GL_INVALID_ENUM);
     ClientArray* a = clientArray(ctx, array);
@@ -106,6 +110,7 @@ void glEdgeFlagPointer(GLsizei stride, const GLvoid* ptr) {
 
 void glGetPointerv(GLenum pname, GLvoid** params) {
   executeNow([=](Context& ctx) {
+    if (glass::gl::rejectInsideBeginEnd(ctx)) return;
     const ClientArray* a = nullptr;
     switch (pname) {
       case GL_VERTEX_ARRAY_POINTER: a = &ctx.arrays.vertex; break;

@@ -114,11 +114,12 @@ bool queryCoreState(const Context& ctx, GLenum pname, StateValue& v) {
     case GL_ALPHA_TEST_REF: v.setColors({f.alphaRef}); return true;
     case GL_STENCIL_FUNC: v.setIntegers({double(f.stencilFunc)}); return true;
     case GL_STENCIL_REF: v.setIntegers({double(f.stencilRef)}); return true;
-    case GL_STENCIL_VALUE_MASK: v.setIntegers({double(static_cast<GLint>(f.stencilValueMask))}); return true;
+    // The masks as the 8-bit stencil buffer sees them (Mesa reports them so too).
+    case GL_STENCIL_VALUE_MASK: v.setIntegers({double(f.stencilValueMask & 0xFFu)}); return true;
     case GL_STENCIL_FAIL: v.setIntegers({double(f.stencilFail)}); return true;
     case GL_STENCIL_PASS_DEPTH_FAIL: v.setIntegers({double(f.stencilDepthFail)}); return true;
     case GL_STENCIL_PASS_DEPTH_PASS: v.setIntegers({double(f.stencilDepthPass)}); return true;
-    case GL_STENCIL_WRITEMASK: v.setIntegers({double(static_cast<GLint>(f.stencilWriteMask))}); return true;
+    case GL_STENCIL_WRITEMASK: v.setIntegers({double(f.stencilWriteMask & 0xFFu)}); return true;
     case GL_DEPTH_FUNC: v.setIntegers({double(f.depthFunc)}); return true;
     case GL_DEPTH_WRITEMASK: v.setBooleans({f.depthMask}); return true;
     case GL_BLEND_SRC:
