@@ -103,7 +103,7 @@ std::optional<BoxCountingEstimate> boxCountingDimension(std::span<const glm::dve
   return estimate;
 }
 
-IfsDimensionReport ifsDimension(const IteratedFunctionSystem& ifs, std::uint64_t points) {
+IfsDimensionReport ifsDimension(const IteratedFunctionSystem& ifs, std::uint64_t points, std::uint64_t seed) {
   IfsDimensionReport report;
   report.allSimilarities = !ifs.maps.empty();
   std::vector<double> ratios;
@@ -126,7 +126,7 @@ IfsDimensionReport ifsDimension(const IteratedFunctionSystem& ifs, std::uint64_t
   }
   std::vector<glm::dvec2> cloud;
   cloud.reserve(points);
-  chaosGame(ifs, *probabilities, points, 1, [&cloud](const glm::dvec2& p, int) { cloud.push_back(p); });
+  chaosGame(ifs, *probabilities, points, seed, [&cloud](const glm::dvec2& p, int) { cloud.push_back(p); });
   report.boxCounting = boxCountingDimension(cloud);
   if (!report.boxCounting) {
     report.problem = "the attractor is too small or too thin for box counting";

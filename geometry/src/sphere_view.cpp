@@ -45,7 +45,8 @@ SphereViewResult solveSphereView(const SphereViewProblem& problem) {
   s.planeOffset = r * (1.0 - 2.0 * problem.visibleFraction);
   s.rimRadius = std::sqrt(r * r - s.planeOffset * s.planeOffset);
   s.zNear = d + s.planeOffset;
-  s.zFar = d + r;
+  s.backDistance = d + r;
+  s.zFar = d + 2.0 * r;
   s.fovyDegrees = 2.0 * std::atan(s.rimRadius / (problem.heightShare * s.zNear)) * (180.0 / std::numbers::pi);
   s.aspect = problem.heightShare / problem.widthShare;
   result.solution = s;

@@ -22,7 +22,8 @@ TEST_CASE("course exam 1: the sphere fills 2/3 of the height and 1/2 of the widt
   const g::SphereViewSolution& s = *result.solution;
   CHECK(s.distance == 3.0);
   CHECK(s.zNear == 3.0);  // the near plane through the centre cuts the sphere in half
-  CHECK(s.zFar == 4.0);
+  CHECK(s.backDistance == 4.0);  // the back of the sphere
+  CHECK(s.zFar == 5.0);          // beyond it, so rounding cannot clip the farthest point
   CHECK(s.aspect == doctest::Approx(4.0 / 3.0));
   CHECK(s.fovyDegrees == doctest::Approx(2 * std::atan(0.5) * 180 / std::numbers::pi));
   CHECK(s.fovyDegrees == doctest::Approx(53.1301023542));
@@ -30,7 +31,7 @@ TEST_CASE("course exam 1: the sphere fills 2/3 of the height and 1/2 of the widt
   // Check by projecting: the same matrices gluLookAt and gluPerspective build (glm's lookAt and
   // perspective follow the GLU definitions). The rim of the cut, the great circle perpendicular to
   // the line of sight, must reach +-2/3 in normalized y and +-1/2 in normalized x, at depth -1
-  // (the near plane); the back of the sphere must reach depth +1 (the far plane).
+  // (the near plane); the back of the sphere must lie inside the far plane.
   const glm::dmat4 view = glm::lookAt(s.eye, s.center, s.up);
   const glm::dmat4 projection =
       glm::perspective(s.fovyDegrees * std::numbers::pi / 180, s.aspect, s.zNear, s.zFar);
@@ -50,7 +51,8 @@ TEST_CASE("course exam 1: the sphere fills 2/3 of the height and 1/2 of the widt
   CHECK(maxX == doctest::Approx(0.5));
   CHECK(maxY == doctest::Approx(2.0 / 3.0));
   const glm::dvec4 back = projection * view * glm::dvec4(s.center + axis, 1.0);
-  CHECK(back.z / back.w == doctest::Approx(1.0));
+  // z_ndc = (f + n)/(f - n) - 2 f n / ((f - n) z) = 4 - 3.75 at z = 4: inside the far plane.
+  CHECK(back.z / back.w == doctest::Approx(0.25));
 }
 
 TEST_CASE("course exam 1: other visible parts move the near plane beyond the centre") {

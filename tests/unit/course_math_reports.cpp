@@ -68,7 +68,7 @@ TEST_CASE("course math: view gives the exam's gluLookAt and gluPerspective") {
   CHECK(contains(report, "tan(fovy/2) = rho / (h zNear) = 0.5"));
   CHECK(contains(report, "aspect = h / w = 1.33333 (4/3)"));
   CHECK(contains(report, "gluLookAt(0, 2, -1,  1, 4, 1,  0, 1, 0);"));
-  CHECK(contains(report, "gluPerspective(53.1301, 1.33333, 3, 4);"));
+  CHECK(contains(report, "gluPerspective(53.1301, 1.33333, 3, 5);"));
   CHECK(contains(report, "glMatrixMode(GL_MODELVIEW);\nglLoadIdentity();\ngluLookAt"));
 }
 

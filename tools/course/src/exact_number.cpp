@@ -11,7 +11,7 @@ namespace {
 
 constexpr int kSquareFree[] = {1, 2, 3, 5, 6, 7, 10, 11, 13, 14, 15};
 
-std::string sqrtSymbol(int k) { return "√" + std::to_string(k); }
+std::string sqrtSymbol(int k) { return std::string("√") + std::to_string(k); }
 
 }  // namespace
 
@@ -32,14 +32,14 @@ std::string exactForm(double x) {
       den /= g;
       const std::string sign = num < 0 ? "-" : "";
       const long long a = num < 0 ? -num : num;
-      if (k == 1) return sign + std::to_string(a) + (den == 1 ? "" : "/" + std::to_string(den));
+      if (k == 1) return sign + std::to_string(a) + (den == 1 ? "" : std::string("/") + std::to_string(den));
       // a √k / den; when den = m k, this is a / (m √k): 1/√2 rather than √2/2.
       if (den % k == 0) {
         const long long m = den / k;
-        return sign + std::to_string(a) + "/" + (m == 1 ? sqrtSymbol(k) : "(" + std::to_string(m) + sqrtSymbol(k) + ")");
+        return sign + std::to_string(a) + "/" + (m == 1 ? sqrtSymbol(k) : std::string("(") + std::to_string(m) + sqrtSymbol(k) + ")");
       }
       const std::string top = (a == 1 ? "" : std::to_string(a)) + sqrtSymbol(k);
-      return sign + top + (den == 1 ? "" : "/" + std::to_string(den));
+      return sign + top + (den == 1 ? "" : std::string("/") + std::to_string(den));
     }
   }
   return {};

@@ -4,6 +4,9 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include <algorithm>
+#include <cmath>
+
 namespace glass::course {
 
 namespace g = glass::geometry;
@@ -41,27 +44,42 @@ class GlMatrixStack final : public g::IfsMatrixStackVisitor {
 
 }  // namespace
 
-int defaultIfsDepth(const g::IteratedFunctionSystem& ifs, std::uint64_t budget) {
+int defaultIfsDepth(const g::IteratedFunctionSystem& ifs, int pixels, std::uint64_t budget) {
+  // The largest singular value of each linear part: how much the map can stretch a length.
+  double stretch = 0.0;
+  for (const g::IfsMap& map : ifs.maps) {
+    const auto& m = map.transform.m;
+    const double a = m[0][0], b = m[0][1], c = m[1][0], d = m[1][1];
+    // Eigenvalues of L^T L: (t +- sqrt(t^2 - 4 det^2)) / 2 with t = a^2 + b^2 + c^2 + d^2.
+    const double t = a * a + b * b + c * c + d * d, det = a * d - b * c;
+    stretch = std::max(stretch, std::sqrt((t + std::sqrt(std::max(0.0, t * t - 4 * det * det))) / 2));
+  }
+  // The base figure fills about the window, `pixels` across; go deeper while the slowest copies
+  // stay at least three pixels across, so that the holes of the fractal still show.
+  double size = std::max(pixels, 1);
   int depth = 0;
-  while (depth < kMaxDepth && g::ifsBaseCopies(ifs, depth + 1) <= budget) ++depth;
-  return ifs.maps.size() <= 1 ? std::min(depth, 8) : depth;
+  while (depth < kMaxDepth && size * stretch >= 3.0 && g::ifsBaseCopies(ifs, depth + 1) <= budget) {
+    ++depth;
+    size *= stretch;
+  }
+  return depth;
 }
 
 std::string checkIfsPicture(const g::IteratedFunctionSystem& ifs, const IfsPicture& picture) {
   if (ifs.maps.empty()) return "the IFS has no maps";
   if (picture.method == IfsPicture::Method::Depth) {
     if (picture.depth < 0 || picture.depth > kMaxDepth) {
-      return "the depth must lie in 0.." + std::to_string(kMaxDepth) + " (one matrix on GL's stack per level)";
+      return std::string("the depth must lie in 0..") + std::to_string(kMaxDepth) + " (one matrix on GL's stack per level)";
     }
     const std::uint64_t copies = g::ifsBaseCopies(ifs, picture.depth);
     if (copies > g::kMaxIfsBaseCopies) {
-      return "depth " + std::to_string(picture.depth) + " would draw " + std::to_string(ifs.maps.size()) + "^" +
+      return std::string("depth ") + std::to_string(picture.depth) + " would draw " + std::to_string(ifs.maps.size()) + "^" +
              std::to_string(picture.depth) + " base figures, more than the limit of " +
              std::to_string(g::kMaxIfsBaseCopies) + "; lower the depth";
     }
   } else {
     if (picture.points == 0 || picture.points > g::kMaxChaosGamePoints) {
-      return "the number of points must lie in 1.." + std::to_string(g::kMaxChaosGamePoints);
+      return std::string("the number of points must lie in 1..") + std::to_string(g::kMaxChaosGamePoints);
     }
     if (!g::chaosGameProbabilities(ifs)) return "the maps' probabilities are not usable (give all or none, >= 0)";
   }

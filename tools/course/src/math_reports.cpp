@@ -23,10 +23,10 @@ namespace {
 constexpr double kDegreesPerRadian = 180.0 / std::numbers::pi;
 
 std::string vec(const glm::dvec3& v) {
-  return "(" + compact(v.x) + ", " + compact(v.y) + ", " + compact(v.z) + ")";
+  return std::string("(") + compact(v.x) + ", " + compact(v.y) + ", " + compact(v.z) + ")";
 }
 std::string vecDecimal(const glm::dvec3& v) {
-  return "(" + decimal(v.x) + ", " + decimal(v.y) + ", " + decimal(v.z) + ")";
+  return std::string("(") + decimal(v.x) + ", " + decimal(v.y) + ", " + decimal(v.z) + ")";
 }
 
 // Display width in code points, so that "√" counts once.
@@ -304,7 +304,10 @@ std::string viewReport(const g::SphereViewProblem& problem) {
       << ", fovy = " << decimal(s.fovyDegrees) << " degrees\n";
   out << "Width: aspect times the height is 2 rho / w, so aspect = h / w = " << describe(s.aspect)
       << " (the window must have this shape for the picture not to be stretched)\n";
-  out << "  zFar = d + r = " << describe(s.zFar) << " reaches the back of the sphere (any larger value also works)\n";
+  out << "Far: zFar must reach the back of the sphere, d + r = " << describe(s.backDistance)
+      << "; exactly that puts the farthest point on the far\n"
+         "plane, where rounding can clip it, so take more: zFar = d + 2r = "
+      << describe(s.zFar) << "\n";
   out << "Any up vector not along C - E will do: the image is a circle centred in the window.\n\n";
   auto number = [](double x) { return decimal(x); };
   out << "glMatrixMode(GL_MODELVIEW);\n"
@@ -374,14 +377,14 @@ std::string arcReport(double startDegrees, double endDegrees, double radius) {
     const double a0 = (startDegrees + sweep * k / pieces) / kDegreesPerRadian;
     const double a1 = (startDegrees + sweep * (k + 1) / pieces) / kDegreesPerRadian;
     const g::BezierCurve arc = g::circularArc(a0, a1, circle);
-    out << "\n" << (pieces > 1 ? "Piece " + std::to_string(k + 1) + ": " : "") << "from " << degrees(a0) << " to "
+    out << "\n" << (pieces > 1 ? std::string("Piece ") + std::to_string(k + 1) + ": " : "") << "from " << degrees(a0) << " to "
         << degrees(a1) << " degrees, h = " << degrees((a1 - a0) / 2) << " degrees\n";
     out << "  i  " << padRight("control point", 22) << padRight("weight", 10)
         << "homogeneous (w x, w y, w z, w) for glMap1(GL_MAP1_VERTEX_4, ...)\n";
     for (std::size_t i = 0; i < arc.controlPointCount(); ++i) {
       const glm::dvec3 p = arc.controlPoint(i);
       const double w = arc.weight(i);
-      out << "  " << i << "  " << padRight("(" + compact(p.x) + ", " + compact(p.y) + ")", 22)
+      out << "  " << i << "  " << padRight(std::string("(") + compact(p.x) + ", " + compact(p.y) + ")", 22)
           << padRight(compact(w), 10) << "(" << compact(w * p.x) << ", " << compact(w * p.y) << ", "
           << compact(w * p.z) << ", " << compact(w) << ")\n";
     }
@@ -431,7 +434,7 @@ std::string torusPatchReport(double majorRadius, double minorRadius, bool inner)
       const glm::dvec3 pa = a.controlPoint(i, j), pb = b.controlPoint(i, j);
       const glm::dvec3 perR = pb - pa;         // coefficient of R
       const glm::dvec3 perr = pa - 2.0 * perR;  // coefficient of r (R = 2, r = 1 in a)
-      const std::string point = "(" + symbolic(perR.x, perr.x) + ", " + symbolic(perR.y, perr.y) + ", " +
+      const std::string point = std::string("(") + symbolic(perR.x, perr.x) + ", " + symbolic(perR.y, perr.y) + ", " +
                                 symbolic(perR.z, perr.z) + ")";
       out << "  " << i << " " << j << "   " << padRight(point, 23) << padRight(compact(a.weight(i, j)), 9)
           << vecDecimal(numeric.controlPoint(i, j)) << "\n";

@@ -53,8 +53,8 @@ struct IfsDimensionReport {
   std::string problem;                         // why no dimension could be given, if none
 };
 
-// Moran when possible; else box counting over `points` chaos-game points (fixed seed).
-IfsDimensionReport ifsDimension(const IteratedFunctionSystem& ifs,
-                                std::uint64_t points = 2'000'000);
+// Moran when possible; else box counting over `points` chaos-game points from `seed`.
+IfsDimensionReport ifsDimension(const IteratedFunctionSystem& ifs, std::uint64_t points = 2'000'000,
+                                std::uint64_t seed = 1);
 
 }  // namespace glass::geometry

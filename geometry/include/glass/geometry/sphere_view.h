@@ -16,9 +16,10 @@
 // its width:
 //   window height at distance n:  2 n tan(fovy / 2) = 2 rho / h  =>  fovy = 2 atan(rho / (h n))
 //   window width at distance n:   aspect * (2 rho / h) = 2 rho / w  =>  aspect = h / w
-//   near = n, far = d + r (the back of the sphere; any larger value also works).
+//   near = n; far must reach the back of the sphere, d + r. Exactly d + r puts the sphere's
+//   farthest point on the far plane, where rounding can clip it, so far = d + 2r is given.
 // The exam: E = (0, 2, -1), C = (1, 4, 1), r = 1, h = 2/3, w = 1/2, f = 1/2 gives d = 3, t = 0,
-// fovy = 2 atan(1/2) = 53.13 degrees, aspect = 4/3, near = 3, far = 4: at the centre's distance
+// fovy = 2 atan(1/2) = 53.13 degrees, aspect = 4/3, near = 3, far >= 4 (5 given): at the centre's distance
 // the window is 4 wide and 3 high, and the sphere's great circle, 2 across, fills 1/2 and 2/3.
 // The window itself must then have the aspect ratio h / w, 4:3, for the picture not to be
 // stretched. gluLookAt(E, C, up) with any up not parallel to C - E: the image is a circle centred
@@ -50,6 +51,7 @@ struct SphereViewSolution {
   // The working: distance to the centre, the near plane's offset t beyond the centre, and the
   // radius of the rim circle the near plane cuts.
   double distance = 0.0, planeOffset = 0.0, rimRadius = 0.0;
+  double backDistance = 0.0;  // d + r, the least zFar that keeps all of the sphere
 };
 
 struct SphereViewResult {

@@ -20,9 +20,11 @@ struct IfsPicture {
   std::uint64_t seed = 1;
 };
 
-// The deepest depth whose base copies stay within `budget` (at most 30 levels: GL guarantees a
-// modelview stack of 32 matrices).
-int defaultIfsDepth(const geometry::IteratedFunctionSystem& ifs, std::uint64_t budget = 1u << 17);
+// A depth for a picture of `pixels` across: the depth at which the copies that shrink slowest
+// (by the largest stretch factor of any map) are still three pixels across or more, within `budget` base
+// copies and at most 30 levels (GL guarantees a modelview stack of 32 matrices). Maps that
+// shrink slowly, like the fern's, stop at the budget: the chaos game suits them better.
+int defaultIfsDepth(const geometry::IteratedFunctionSystem& ifs, int pixels, std::uint64_t budget = 1u << 18);
 
 // Empty when the picture can be drawn, else why not (depth beyond the limits, bad probabilities).
 std::string checkIfsPicture(const geometry::IteratedFunctionSystem& ifs, const IfsPicture& picture);
