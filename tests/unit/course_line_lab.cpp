@@ -49,6 +49,25 @@ TEST_CASE("course homework 1: the squares are the nearest ones, one per column o
   }
 }
 
+TEST_CASE("course homework 1: without ties, Bresenham and GL's rule choose the same squares") {
+  // Where no step of the segment passes exactly halfway between two squares, the nearest square
+  // is unique, and GL's diamond-exit rule finds it too (less the last square). The two differ
+  // only at ties, which they break differently.
+  int withoutTies = 0;
+  for (const c::GridSegment& s : c::randomSegments(20000, 32, 31)) {
+    const int dx = s.x1 - s.x0, dy = s.y1 - s.y0;
+    const int major = std::abs(dx) >= std::abs(dy) ? dx : dy, minor = std::abs(dx) >= std::abs(dy) ? dy : dx;
+    bool tie = false;
+    for (int k = 1; k < std::abs(major); ++k) tie = tie || std::llabs(2LL * minor * k) % (2 * std::abs(major)) == std::abs(major);
+    if (tie) continue;
+    ++withoutTies;
+    auto bresenham = c::lineSquares(c::LineAlgorithm::Bresenham, s);
+    bresenham.pop_back();
+    CHECK(c::sortedSquares(bresenham) == c::sortedSquares(c::lineSquares(c::LineAlgorithm::DiamondExit, s)));
+  }
+  CHECK(withoutTies > 10000);
+}
+
 TEST_CASE("course homework 1: GL's rule leaves out the last square") {
   const auto squares = c::lineSquares(c::LineAlgorithm::DiamondExit, {0, 0, 5, 2});
   REQUIRE_FALSE(squares.empty());
