@@ -5,6 +5,7 @@
 
 #include <memory>
 
+#include "core/attrib_stack.h"
 #include "core/errors.h"
 #include "core/hint_state.h"
 #include "core/pixel_store.h"
@@ -67,6 +68,7 @@ struct Context {
   PixelStoreState pixelStore;
   EvaluatorState evaluators;
   HintState hints;
+  AttribStackState attribStack;  // glPushAttrib / glPushClientAttrib (core/attrib_stack.h)
 
   raster::Framebuffer framebuffer;
   std::unique_ptr<DrawPipeline> draw;

@@ -1,5 +1,7 @@
 #include "core/state_query.h"
 
+#include "core/attrib_stack.h"
+
 #include "core/capabilities.h"
 #include "core/context.h"
 #include "fragment/fog_hooks.h"
@@ -189,7 +191,8 @@ bool queryCoreState(const Context& ctx, GLenum pname, StateValue& v) {
 }  // namespace
 
 bool queryState(const Context& ctx, GLenum pname, StateValue& value) {
-  if (queryCoreState(ctx, pname, value) || queryLightingState(ctx, pname, value) ||
+  if (queryCoreState(ctx, pname, value) || queryAttribStackState(ctx, pname, value) ||
+      queryLightingState(ctx, pname, value) ||
       queryFogState(ctx, pname, value) || queryTextureState(ctx, pname, value)) {
     return true;
   }

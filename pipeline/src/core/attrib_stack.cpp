@@ -1,0 +1,357 @@
+// glPushAttrib, glPopAttrib, glPushClientAttrib and glPopClientAttrib (OpenGL 1.5
+// specification, section 6.1.14 and the "attribute" column of tables 6.5-6.30).
+//
+// A push copies the state of every group its mask names into a new entry; a pop writes back the
+// groups of the top entry and removes it. Pushing onto a full stack sets GL_STACK_OVERFLOW and
+// popping an empty one GL_STACK_UNDERFLOW, changing nothing. glPushAttrib and glPopAttrib are
+// compiled into display lists; the client versions are not (spec 5.4).
+//
+// Groups glass has no state for (GL_ACCUM_BUFFER_BIT, GL_PIXEL_MODE_BIT, the polygon stipple
+// pattern) are accepted and save nothing.
+#include "core/attrib_stack.h"
+
+#include <cstring>
+
+#include "core/capabilities.h"
+#include "core/context.h"
+#include "core/errors.h"
+#include "core/state_value.h"
+#include "lists/command_recording.h"
+#include "texture/texture_object.h"
+
+namespace glass::gl {
+
+namespace {
+
+// Every capability GL_ENABLE_BIT saves (table 6.x "enable" attributes), where glass has it.
+constexpr GLenum kEnableCapabilities[] = {
+    GL_ALPHA_TEST, GL_AUTO_NORMAL, GL_BLEND, GL_CLIP_PLANE0, GL_CLIP_PLANE1, GL_CLIP_PLANE2,
+    GL_CLIP_PLANE3, GL_CLIP_PLANE4, GL_CLIP_PLANE5, GL_COLOR_MATERIAL, GL_CULL_FACE,
+    GL_DEPTH_TEST, GL_DITHER, GL_FOG, GL_LIGHT0, GL_LIGHT1, GL_LIGHT2, GL_LIGHT3, GL_LIGHT4,
+    GL_LIGHT5, GL_LIGHT6, GL_LIGHT7, GL_LIGHTING, GL_LINE_SMOOTH, GL_LINE_STIPPLE,
+    GL_COLOR_LOGIC_OP, GL_INDEX_LOGIC_OP, GL_MAP1_COLOR_4, GL_MAP1_INDEX, GL_MAP1_NORMAL,
+    GL_MAP1_TEXTURE_COORD_1, GL_MAP1_TEXTURE_COORD_2, GL_MAP1_TEXTURE_COORD_3,
+    GL_MAP1_TEXTURE_COORD_4, GL_MAP1_VERTEX_3, GL_MAP1_VERTEX_4, GL_MAP2_COLOR_4, GL_MAP2_INDEX,
+    GL_MAP2_NORMAL, GL_MAP2_TEXTURE_COORD_1, GL_MAP2_TEXTURE_COORD_2, GL_MAP2_TEXTURE_COORD_3,
+    GL_MAP2_TEXTURE_COORD_4, GL_MAP2_VERTEX_3, GL_MAP2_VERTEX_4, GL_NORMALIZE, GL_POINT_SMOOTH,
+    GL_POLYGON_OFFSET_FILL, GL_POLYGON_OFFSET_LINE, GL_POLYGON_OFFSET_POINT, GL_POLYGON_SMOOTH,
+    GL_POLYGON_STIPPLE, GL_RESCALE_NORMAL, GL_SCISSOR_TEST, GL_STENCIL_TEST, GL_TEXTURE_1D,
+    GL_TEXTURE_2D, GL_TEXTURE_GEN_S, GL_TEXTURE_GEN_T, GL_TEXTURE_GEN_R, GL_TEXTURE_GEN_Q};
+constexpr int kEnableCount = sizeof(kEnableCapabilities) / sizeof(kEnableCapabilities[0]);
+
+// The texture state GL_TEXTURE_BIT saves: enables, bindings (by name), the bound objects'
+// parameters, the environment and texture coordinate generation.
+struct TextureAttributes {
+  bool enabled1D, enabled2D;
+  GLuint bound1D, bound2D;
+  SamplerParameters params1D, params2D;
+  GLenum envMode;
+  float envColor[4];
+  TexGenCoordinate texGen[4];
+  BumpMapState bumpMap;
+};
+
+}  // namespace
+
+struct AttribEntry {
+  GLbitfield mask = 0;
+  CurrentState current;
+  RasterState raster;
+  FragmentState fragment;
+  LightingState lighting;
+  FogState fog;
+  HintState hints;
+  EvaluatorAttributes evaluators;
+  GLuint listBase = 0;
+  // GL_TRANSFORM_BIT and GL_VIEWPORT_BIT: the parts of TransformState that are not matrices.
+  GLenum matrixMode = GL_MODELVIEW;
+  double clipPlanes[raster::kMaxUserClipPlanes][4] = {};
+  unsigned clipPlaneEnabled = 0;
+  bool normalize = false, rescaleNormal = false;
+  Viewport viewport;
+  double depthNear = 0.0, depthFar = 1.0;
+  TextureAttributes texture{};
+  bool enableKnown[kEnableCount] = {};
+  bool enabled[kEnableCount] = {};
+};
+
+struct ClientAttribEntry {
+  GLbitfield mask = 0;
+  PixelStoreState pixelStore;
+  ArrayState arrays;
+};
+
+namespace {
+
+TextureObject* boundObject(TextureState& t, GLenum target, GLuint name) {
+  TextureObject* fallback = target == GL_TEXTURE_1D ? &t.default1D : &t.default2D;
+  if (name == 0) return fallback;
+  auto found = t.objects.find(name);
+  // A texture deleted since the push is no longer there: the binding falls back to the default.
+  if (found == t.objects.end() || found->second->target != target) return fallback;
+  return found->second.get();
+}
+
+TextureAttributes saveTexture(const TextureState& t) {
+  TextureAttributes a{};
+  a.enabled1D = t.enabled1D;
+  a.enabled2D = t.enabled2D;
+  a.bound1D = t.bound1D->name;
+  a.bound2D = t.bound2D->name;
+  a.params1D = t.bound1D->params;
+  a.params2D = t.bound2D->params;
+  a.envMode = t.envMode;
+  std::memcpy(a.envColor, t.envColor, sizeof a.envColor);
+  for (int i = 0; i < 4; ++i) a.texGen[i] = t.texGen[i];
+  a.bumpMap = t.bumpMap;
+  return a;
+}
+
+void restoreTexture(TextureState& t, const TextureAttributes& a) {
+  t.enabled1D = a.enabled1D;
+  t.enabled2D = a.enabled2D;
+  t.bound1D = boundObject(t, GL_TEXTURE_1D, a.bound1D);
+  t.bound2D = boundObject(t, GL_TEXTURE_2D, a.bound2D);
+  if (t.bound1D->name == a.bound1D) {
+    t.bound1D->params = a.params1D;
+    t.bound1D->updateCompleteness();
+  }
+  if (t.bound2D->name == a.bound2D) {
+    t.bound2D->params = a.params2D;
+    t.bound2D->updateCompleteness();
+  }
+  t.envMode = a.envMode;
+  std::memcpy(t.envColor, a.envColor, sizeof a.envColor);
+  for (int i = 0; i < 4; ++i) t.texGen[i] = a.texGen[i];
+  t.bumpMap = a.bumpMap;
+}
+
+std::shared_ptr<const AttribEntry> saveAttributes(const Context& ctx, GLbitfield mask) {
+  auto e = std::make_shared<AttribEntry>();
+  e->mask = mask;
+  // Whole stage states are small enough to copy as they are; pop restores only the groups asked.
+  if (mask & GL_CURRENT_BIT) e->current = ctx.current;
+  if (mask & (GL_POINT_BIT | GL_LINE_BIT | GL_POLYGON_BIT | GL_LIGHTING_BIT)) e->raster = ctx.raster;
+  if (mask & (GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT | GL_COLOR_BUFFER_BIT | GL_SCISSOR_BIT)) {
+    e->fragment = ctx.fragment;
+  }
+  if (mask & GL_LIGHTING_BIT) e->lighting = ctx.lighting;
+  if (mask & GL_FOG_BIT) e->fog = ctx.fog;
+  if (mask & GL_HINT_BIT) e->hints = ctx.hints;
+  if (mask & GL_EVAL_BIT) e->evaluators = ctx.evaluators.attributes;
+  if (mask & GL_LIST_BIT) e->listBase = ctx.lists.listBase;
+  const TransformState& t = ctx.transform;
+  if (mask & GL_TRANSFORM_BIT) {
+    e->matrixMode = t.matrixMode;
+    std::memcpy(e->clipPlanes, t.clipPlanes, sizeof e->clipPlanes);
+    e->clipPlaneEnabled = t.clipPlaneEnabled;
+    e->normalize = t.normalize;
+    e->rescaleNormal = t.rescaleNormal;
+  }
+  if (mask & GL_VIEWPORT_BIT) {
+    e->viewport = t.viewport;
+    e->depthNear = t.depthNear;
+    e->depthFar = t.depthFar;
+  }
+  if (mask & GL_TEXTURE_BIT) e->texture = saveTexture(ctx.texture);
+  if (mask & GL_ENABLE_BIT) {
+    for (int i = 0; i < kEnableCount; ++i) {
+      bool on = false;
+      e->enableKnown[i] = getCapability(ctx, kEnableCapabilities[i], on);
+      e->enabled[i] = on;
+    }
+  }
+  return e;
+}
+
+void restoreAttributes(Context& ctx, const AttribEntry& e) {
+  const GLbitfield mask = e.mask;
+  // Enables first: the groups restored after them (lighting, fog, ...) carry their own enables
+  // too, and the values they saved are the same.
+  if (mask & GL_ENABLE_BIT) {
+    for (int i = 0; i < kEnableCount; ++i) {
+      if (e.enableKnown[i]) setCapability(ctx, kEnableCapabilities[i], e.enabled[i]);
+    }
+  }
+  if (mask & GL_CURRENT_BIT) ctx.current = e.current;
+  RasterState& r = ctx.raster;
+  if (mask & GL_POINT_BIT) {
+    r.pointSize = e.raster.pointSize;
+    r.pointSmooth = e.raster.pointSmooth;
+  }
+  if (mask & GL_LINE_BIT) {
+    r.lineWidth = e.raster.lineWidth;
+    r.lineSmooth = e.raster.lineSmooth;
+    r.lineStipple = e.raster.lineStipple;
+    r.lineStippleFactor = e.raster.lineStippleFactor;
+    r.lineStipplePattern = e.raster.lineStipplePattern;
+  }
+  if (mask & GL_POLYGON_BIT) {
+    r.cullFace = e.raster.cullFace;
+    r.cullFaceMode = e.raster.cullFaceMode;
+    r.frontFace = e.raster.frontFace;
+    r.polygonModeFront = e.raster.polygonModeFront;
+    r.polygonModeBack = e.raster.polygonModeBack;
+    r.polygonSmooth = e.raster.polygonSmooth;
+    r.polygonStipple = e.raster.polygonStipple;
+    r.polygonOffsetFactor = e.raster.polygonOffsetFactor;
+    r.polygonOffsetUnits = e.raster.polygonOffsetUnits;
+    r.polygonOffsetFill = e.raster.polygonOffsetFill;
+    r.polygonOffsetLine = e.raster.polygonOffsetLine;
+    r.polygonOffsetPoint = e.raster.polygonOffsetPoint;
+  }
+  if (mask & GL_LIGHTING_BIT) {
+    ctx.lighting = e.lighting;
+    r.shadeModel = e.raster.shadeModel;
+  }
+  if (mask & GL_FOG_BIT) ctx.fog = e.fog;
+  FragmentState& f = ctx.fragment;
+  const FragmentState& s = e.fragment;
+  if (mask & GL_DEPTH_BUFFER_BIT) {
+    f.depthTest = s.depthTest;
+    f.depthFunc = s.depthFunc;
+    f.depthMask = s.depthMask;
+    f.clearDepth = s.clearDepth;
+  }
+  if (mask & GL_STENCIL_BUFFER_BIT) {
+    f.stencilTest = s.stencilTest;
+    f.stencilFunc = s.stencilFunc;
+    f.stencilRef = s.stencilRef;
+    f.stencilValueMask = s.stencilValueMask;
+    f.stencilFail = s.stencilFail;
+    f.stencilDepthFail = s.stencilDepthFail;
+    f.stencilDepthPass = s.stencilDepthPass;
+    f.stencilWriteMask = s.stencilWriteMask;
+    f.clearStencil = s.clearStencil;
+  }
+  if (mask & GL_COLOR_BUFFER_BIT) {
+    f.alphaTest = s.alphaTest;
+    f.alphaFunc = s.alphaFunc;
+    f.alphaRef = s.alphaRef;
+    f.blend = s.blend;
+    f.blendSrcRGB = s.blendSrcRGB;
+    f.blendDstRGB = s.blendDstRGB;
+    f.blendSrcAlpha = s.blendSrcAlpha;
+    f.blendDstAlpha = s.blendDstAlpha;
+    f.blendEquation = s.blendEquation;
+    std::memcpy(f.blendColor, s.blendColor, sizeof f.blendColor);
+    f.dither = s.dither;
+    f.colorLogicOp = s.colorLogicOp;
+    f.indexLogicOp = s.indexLogicOp;
+    f.logicOp = s.logicOp;
+    std::memcpy(f.colorMask, s.colorMask, sizeof f.colorMask);
+    std::memcpy(f.clearColor, s.clearColor, sizeof f.clearColor);
+  }
+  if (mask & GL_SCISSOR_BIT) {
+    f.scissorTest = s.scissorTest;
+    f.scissor = s.scissor;
+  }
+  TransformState& t = ctx.transform;
+  if (mask & GL_TRANSFORM_BIT) {
+    t.matrixMode = e.matrixMode;
+    std::memcpy(t.clipPlanes, e.clipPlanes, sizeof t.clipPlanes);
+    t.clipPlaneEnabled = e.clipPlaneEnabled;
+    t.normalize = e.normalize;
+    t.rescaleNormal = e.rescaleNormal;
+  }
+  if (mask & GL_VIEWPORT_BIT) {
+    t.viewport = e.viewport;
+    t.depthNear = e.depthNear;
+    t.depthFar = e.depthFar;
+  }
+  if (mask & GL_HINT_BIT) ctx.hints = e.hints;
+  if (mask & GL_EVAL_BIT) ctx.evaluators.attributes = e.evaluators;
+  if (mask & GL_LIST_BIT) ctx.lists.listBase = e.listBase;
+  if (mask & GL_TEXTURE_BIT) restoreTexture(ctx.texture, e.texture);
+}
+
+void pushAttrib(Context& ctx, GLbitfield mask) {
+  if (rejectInsideBeginEnd(ctx)) return;
+  auto& stack = ctx.attribStack.server;
+  if (static_cast<int>(stack.size()) >= kMaxAttribStackDepth) {
+    recordError(ctx, GL_STACK_OVERFLOW);
+    return;
+  }
+  stack.push_back(saveAttributes(ctx, mask));
+}
+
+void popAttrib(Context& ctx) {
+  if (rejectInsideBeginEnd(ctx)) return;
+  auto& stack = ctx.attribStack.server;
+  if (stack.empty()) {
+    recordError(ctx, GL_STACK_UNDERFLOW);
+    return;
+  }
+  const std::shared_ptr<const AttribEntry> top = stack.back();
+  stack.pop_back();
+  restoreAttributes(ctx, *top);
+}
+
+void pushClientAttrib(Context& ctx, GLbitfield mask) {
+  if (rejectInsideBeginEnd(ctx)) return;
+  auto& stack = ctx.attribStack.client;
+  if (static_cast<int>(stack.size()) >= kMaxClientAttribStackDepth) {
+    recordError(ctx, GL_STACK_OVERFLOW);
+    return;
+  }
+  auto e = std::make_shared<ClientAttribEntry>();
+  e->mask = mask;
+  if (mask & GL_CLIENT_PIXEL_STORE_BIT) e->pixelStore = ctx.pixelStore;
+  if (mask & GL_CLIENT_VERTEX_ARRAY_BIT) e->arrays = ctx.arrays;
+  stack.push_back(std::move(e));
+}
+
+void popClientAttrib(Context& ctx) {
+  if (rejectInsideBeginEnd(ctx)) return;
+  auto& stack = ctx.attribStack.client;
+  if (stack.empty()) {
+    recordError(ctx, GL_STACK_UNDERFLOW);
+    return;
+  }
+  const std::shared_ptr<const ClientAttribEntry> top = stack.back();
+  stack.pop_back();
+  if (top->mask & GL_CLIENT_PIXEL_STORE_BIT) ctx.pixelStore = top->pixelStore;
+  if (top->mask & GL_CLIENT_VERTEX_ARRAY_BIT) ctx.arrays = top->arrays;
+}
+
+}  // namespace
+
+bool queryAttribStackState(const Context& ctx, GLenum pname, StateValue& value) {
+  switch (pname) {
+    case GL_ATTRIB_STACK_DEPTH:
+      value.setIntegers({double(ctx.attribStack.server.size())});
+      return true;
+    case GL_MAX_ATTRIB_STACK_DEPTH: value.setIntegers({double(kMaxAttribStackDepth)}); return true;
+    case GL_CLIENT_ATTRIB_STACK_DEPTH:
+      value.setIntegers({double(ctx.attribStack.client.size())});
+      return true;
+    case GL_MAX_CLIENT_ATTRIB_STACK_DEPTH:
+      value.setIntegers({double(kMaxClientAttribStackDepth)});
+      return true;
+    default: return false;
+  }
+}
+
+}  // namespace glass::gl
+
+using glass::gl::Context;
+
+extern "C" {
+
+void glPushAttrib(GLbitfield mask) {
+  glass::gl::compileOrExecute([=](Context& ctx) { glass::gl::pushAttrib(ctx, mask); });
+}
+
+void glPopAttrib(void) {
+  glass::gl::compileOrExecute([](Context& ctx) { glass::gl::popAttrib(ctx); });
+}
+
+void glPushClientAttrib(GLbitfield mask) {
+  glass::gl::executeNow([=](Context& ctx) { glass::gl::pushClientAttrib(ctx, mask); });
+}
+
+void glPopClientAttrib(void) {
+  glass::gl::executeNow([](Context& ctx) { glass::gl::popClientAttrib(ctx); });
+}
+
+}  // extern "C"
