@@ -8,7 +8,7 @@
 // not 77. Following it keeps glass's pictures equal to Mesa's for colours such as 0.3 and 0.9.
 #pragma once
 
-#include <cmath>
+#include <bit>
 #include <cstdint>
 
 namespace glass::gl {
@@ -16,9 +16,11 @@ namespace glass::gl {
 inline uint8_t floatToColorByte(float c) {
   if (!(c > 0.0f)) return 0;  // also NaN
   if (c >= 1.0f) return 255;
-  const float scaled = c * (255.0f / 256.0f);
-  // scaled * 256 is exact; nearbyint rounds ties to even in the default rounding mode.
-  return static_cast<uint8_t>(std::nearbyint(scaled * 256.0f));
+  // Adding 2^15 leaves 8 fraction bits in the float's mantissa: the sum is scaled rounded to the
+  // nearest multiple of 1/256 (ties to even), and its low mantissa bits hold scaled * 256.
+  // scaled < 255/256, so the result is at most 255.
+  const float sum = c * (255.0f / 256.0f) + 32768.0f;
+  return static_cast<uint8_t>(std::bit_cast<uint32_t>(sum) & 0xFFu);
 }
 
 inline float colorByteToFloat(uint8_t c) { return static_cast<float>(c) * (1.0f / 255.0f); }

@@ -1,5 +1,7 @@
 #include "fragment/fragment_processor.h"
 
+#include <cstring>
+
 #include "core/context.h"
 #include "fragment/color_conversion.h"
 #include "fragment/color_sum.h"
@@ -56,6 +58,7 @@ void FragmentProcessor::prepare(Context& ctx, bool phong) {
     colorMask_[i] = f.colorMask[i];
   }
   writesColor_ = colorMask_[0] || colorMask_[1] || colorMask_[2] || colorMask_[3];
+  allChannels_ = colorMask_[0] && colorMask_[1] && colorMask_[2] && colorMask_[3];
 }
 
 void FragmentProcessor::processFragments(const raster::FragmentBatch& batch) {
@@ -120,8 +123,12 @@ void FragmentProcessor::processFragments(const raster::FragmentBatch& batch) {
     } else if (logicOp_) {
       for (int c = 0; c < 4; ++c) out[c] = applyLogicOp(logicOpMode_, out[c], pixel[c]);
     }
-    for (int c = 0; c < 4; ++c) {
-      if (colorMask_[c]) pixel[c] = out[c];
+    if (allChannels_) {
+      std::memcpy(pixel, out, 4);
+    } else {
+      for (int c = 0; c < 4; ++c) {
+        if (colorMask_[c]) pixel[c] = out[c];
+      }
     }
   }
 }

@@ -56,6 +56,7 @@ class FragmentProcessor final : public raster::FragmentSink {
   GLenum logicOpMode_ = GL_COPY;
   bool colorMask_[4] = {true, true, true, true};
   bool writesColor_ = true;
+  bool allChannels_ = true;
 };
 
 }  // namespace glass::gl
