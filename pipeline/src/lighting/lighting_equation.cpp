@@ -76,8 +76,8 @@ LightGeometry lightGeometry(const LightSource& light, const float eyePoint[3]) {
     float direction[3] = {light.spotDirection[0], light.spotDirection[1], light.spotDirection[2]};
     normalize3(direction);
     const float cosine = -dot3(g.toLight, direction);
-    const float cosCutoff =
-        static_cast<float>(std::cos(static_cast<double>(light.spotCutoff) * (std::numbers::pi / 180.0)));
+    const double cutoffRadians = static_cast<double>(light.spotCutoff) * std::numbers::pi / 180.0;
+    const float cosCutoff = static_cast<float>(std::cos(cutoffRadians));
     if (cosine < cosCutoff) {
       g.spot = 0.0f;
     } else {
