@@ -5,12 +5,16 @@
  *   small_triangles  250,000 triangles of about 18 pixels scattered with random depths, depth test
  *   large_triangles  64 triangles of about half the screen each, tilted in depth, depth test
  *   lines            200,000 width-1 lines up to 64 pixels long
+ *   lit_spheres      48 spheres of 3,132 triangles (150,336 in all), smooth shaded and lit by a
+ *                    directional and a positional light with a specular highlight, colour
+ *                    material from a colour array, depth test
  * A frame is glClear, the draw call and glFinish. Each frame is drawn once to warm up, then RUNS
  * times; the median time is reported, with the fastest and slowest.
  *
  * Usage: benchmark [--png DIR]   (--png also writes each frame to DIR/<frame>.png, to look at) */
 #include <GL/gl.h>
 
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -31,6 +35,7 @@ typedef struct {
   int depthTest;
   GLfloat *positions; /* x, y, z per vertex */
   GLubyte *colors;    /* r, g, b, a per vertex */
+  GLfloat *normals;   /* x, y, z per vertex, for lit frames; NULL otherwise */
 } Frame;
 
 static void allocate(Frame *frame)
@@ -56,7 +61,7 @@ static void setVertex(Frame *frame, size_t v, float x, float y, float z, Lcg *ra
 /* Triangles about 6 pixels across at random places and depths (z in [-1, 1], ortho). */
 static Frame smallTriangles(void)
 {
-  Frame frame = {"small_triangles", GL_TRIANGLES, 250000, 3, 1, NULL, NULL};
+  Frame frame = {"small_triangles", GL_TRIANGLES, 250000, 3, 1, NULL, NULL, NULL};
   Lcg random = {1u};
   allocate(&frame);
   for (int t = 0; t < frame.primitives; ++t) {
@@ -73,7 +78,7 @@ static Frame smallTriangles(void)
  * cut through each other and the depth test decides most pixels many times over. */
 static Frame largeTriangles(void)
 {
-  Frame frame = {"large_triangles", GL_TRIANGLES, 64, 3, 1, NULL, NULL};
+  Frame frame = {"large_triangles", GL_TRIANGLES, 64, 3, 1, NULL, NULL, NULL};
   Lcg random = {2u};
   allocate(&frame);
   for (int t = 0; t < frame.primitives; ++t)
@@ -86,7 +91,7 @@ static Frame largeTriangles(void)
 
 static Frame lines(void)
 {
-  Frame frame = {"lines", GL_LINES, 200000, 2, 0, NULL, NULL};
+  Frame frame = {"lines", GL_LINES, 200000, 2, 0, NULL, NULL, NULL};
   Lcg random = {3u};
   allocate(&frame);
   for (int l = 0; l < frame.primitives; ++l) {
@@ -96,6 +101,101 @@ static Frame lines(void)
               y + lcg_range(&random, -45.0f, 45.0f), 0.0f, &random);
   }
   return frame;
+}
+
+enum { SPHERE_COLUMNS = 8, SPHERE_ROWS = 6, SPHERE_SLICES = 58, SPHERE_STACKS = 28 };
+
+/* One vertex of a sphere of radius r centred at (cx, cy): longitude i of SPHERE_SLICES, latitude j
+ * of SPHERE_STACKS from the north pole; the normal is the unit direction from the centre. */
+static void sphereVertex(Frame *frame, size_t v, float cx, float cy, float r, int i, int j,
+                         const GLubyte color[3])
+{
+  const float theta = 2.0f * 3.14159265f * (float)i / SPHERE_SLICES;
+  const float phi = 3.14159265f * (float)j / SPHERE_STACKS;
+  const float nx = sinf(phi) * cosf(theta), ny = sinf(phi) * sinf(theta), nz = cosf(phi);
+  frame->positions[3 * v] = cx + r * nx;
+  frame->positions[3 * v + 1] = cy + r * ny;
+  frame->positions[3 * v + 2] = r * nz;
+  frame->normals[3 * v] = nx;
+  frame->normals[3 * v + 1] = ny;
+  frame->normals[3 * v + 2] = nz;
+  for (int c = 0; c < 3; ++c) frame->colors[4 * v + c] = color[c];
+  frame->colors[4 * v + 3] = 255;
+}
+
+/* 48 lit spheres on an 8 x 6 grid filling the screen, as separate triangles: two per quad of the
+ * longitude-latitude grid, one at each pole. */
+static Frame litSpheres(void)
+{
+  const int perSphere = 2 * SPHERE_SLICES * (SPHERE_STACKS - 1);
+  Frame frame = {"lit_spheres", GL_TRIANGLES, SPHERE_COLUMNS * SPHERE_ROWS * perSphere, 3, 1,
+                 NULL, NULL, NULL};
+  const float cellW = (float)WIDTH / SPHERE_COLUMNS, cellH = (float)HEIGHT / SPHERE_ROWS;
+  const float r = 0.45f * (cellW < cellH ? cellW : cellH);
+  Lcg random = {4u};
+  size_t v = 0;
+  allocate(&frame);
+  frame.normals = malloc((size_t)frame.primitives * 3 * 3 * sizeof(GLfloat));
+  if (!frame.normals) {
+    fprintf(stderr, "benchmark: out of memory\n");
+    exit(1);
+  }
+  for (int row = 0; row < SPHERE_ROWS; ++row)
+    for (int column = 0; column < SPHERE_COLUMNS; ++column) {
+      const float cx = cellW * ((float)column + 0.5f), cy = cellH * ((float)row + 0.5f);
+      GLubyte color[3];
+      for (int c = 0; c < 3; ++c) color[c] = (GLubyte)(60 + lcg_below(&random, 196));
+      for (int j = 0; j < SPHERE_STACKS; ++j)
+        for (int i = 0; i < SPHERE_SLICES; ++i) {
+          /* The quad (i, j)-(i + 1, j + 1), counter-clockwise seen from outside. */
+          if (j != 0) {
+            sphereVertex(&frame, v++, cx, cy, r, i, j, color);
+            sphereVertex(&frame, v++, cx, cy, r, i, j + 1, color);
+            sphereVertex(&frame, v++, cx, cy, r, i + 1, j, color);
+          }
+          if (j != SPHERE_STACKS - 1) {
+            sphereVertex(&frame, v++, cx, cy, r, i + 1, j, color);
+            sphereVertex(&frame, v++, cx, cy, r, i, j + 1, color);
+            sphereVertex(&frame, v++, cx, cy, r, i + 1, j + 1, color);
+          }
+        }
+    }
+  return frame;
+}
+
+/* The state of a frame, set before it is timed. Lit frames: a depth range as deep as the screen
+ * is wide (the spheres keep their shape in depth), a white directional light from the upper left
+ * front, a warm positional light near the upper right corner, a white highlight, colour
+ * material. The other frames: depth in [-1, 1], no lighting. */
+static void prepareFrameState(int lit)
+{
+  glMatrixMode(GL_PROJECTION);
+  glLoadIdentity();
+  glOrtho(0.0, WIDTH, 0.0, HEIGHT, lit ? -WIDTH : -1.0, lit ? WIDTH : 1.0);
+  glMatrixMode(GL_MODELVIEW);
+  static const GLfloat direction[4] = {-0.4f, 0.5f, 0.8f, 0.0f};
+  static const GLfloat lamp[4] = {0.9f * WIDTH, 0.9f * HEIGHT, 600.0f, 1.0f};
+  static const GLfloat warm[4] = {0.6f, 0.5f, 0.3f, 1.0f};
+  static const GLfloat white[4] = {1.0f, 1.0f, 1.0f, 1.0f};
+  if (!lit) {
+    glDisable(GL_LIGHTING);
+    glDisable(GL_COLOR_MATERIAL);
+    glDisableClientState(GL_NORMAL_ARRAY);
+    return;
+  }
+  glLightfv(GL_LIGHT0, GL_POSITION, direction);
+  glLightfv(GL_LIGHT1, GL_POSITION, lamp);
+  glLightfv(GL_LIGHT1, GL_DIFFUSE, warm);
+  glLightfv(GL_LIGHT1, GL_SPECULAR, warm);
+  glMaterialfv(GL_FRONT, GL_SPECULAR, white);
+  glMaterialf(GL_FRONT, GL_SHININESS, 32.0f);
+  glColorMaterial(GL_FRONT, GL_AMBIENT_AND_DIFFUSE);
+  glEnable(GL_COLOR_MATERIAL);
+  glEnable(GL_LIGHT0);
+  glEnable(GL_LIGHT1);
+  glEnable(GL_LIGHTING);
+  glShadeModel(GL_SMOOTH);
+  glEnableClientState(GL_NORMAL_ARRAY);
 }
 
 static double now_ms(void)
@@ -115,6 +215,7 @@ static double drawFrame(const Frame *frame)
     glDisable(GL_DEPTH_TEST);
   glVertexPointer(3, GL_FLOAT, 0, frame->positions);
   glColorPointer(4, GL_UNSIGNED_BYTE, 0, frame->colors);
+  if (frame->normals) glNormalPointer(GL_FLOAT, 0, frame->normals);
   glDrawArrays(frame->mode, 0, frame->primitives * frame->verticesPerPrimitive);
   glFinish();
   return now_ms() - start;
@@ -149,7 +250,7 @@ int main(int argc, char **argv)
   const char *pngDir = NULL;
   char model[256], path[1024];
   GlassContext *ctx;
-  Frame frames[3];
+  Frame frames[4];
 
   if (argc == 3 && strcmp(argv[1], "--png") == 0)
     pngDir = argv[2];
@@ -186,8 +287,10 @@ int main(int argc, char **argv)
   frames[0] = smallTriangles();
   frames[1] = largeTriangles();
   frames[2] = lines();
-  for (int f = 0; f < 3; ++f) {
+  frames[3] = litSpheres();
+  for (int f = 0; f < 4; ++f) {
     double times[RUNS];
+    prepareFrameState(frames[f].normals != NULL);
     drawFrame(&frames[f]);
     for (int r = 0; r < RUNS; ++r) times[r] = drawFrame(&frames[f]);
     qsort(times, RUNS, sizeof times[0], byValue);
@@ -200,6 +303,7 @@ int main(int argc, char **argv)
     }
     free(frames[f].positions);
     free(frames[f].colors);
+    free(frames[f].normals);
   }
 
   glassDestroyContext(ctx);
