@@ -13,7 +13,7 @@ export LP_NUM_THREADS="$threads" GLASS_THREADS="$threads" GALLIUM_DRIVER=llvmpip
 
 cmake --preset release >/dev/null
 targets="benchmark"
-if cmake --build --preset release --target help | grep -q 'benchmark_mesa'; then
+if cmake --build --preset release --target help | grep 'benchmark_mesa' >/dev/null; then
   targets="$targets benchmark_mesa"
 fi
 # shellcheck disable=SC2086 # one word per target
