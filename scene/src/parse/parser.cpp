@@ -1,4 +1,5 @@
 // The parser's driver: files, includes, the statement table, blocks and push/pop.
+#include "gl_api.h"
 #include "parser_impl.h"
 
 #include <algorithm>
@@ -178,6 +179,20 @@ Program Parser::parse(const std::string &path, const std::string *text) {
   parseFile(file);
   includeStack_.pop_back();
   if (!diagnostics_.full()) checkOverrides();
+  // glClearColor only sets the value glClear uses; a scene that never clears after setting it
+  // keeps the old background, which is rarely what was meant.
+  const Statement *lastClearColor = nullptr;
+  for (const Statement &statement : program_.statements) {
+    if (std::holds_alternative<ClearColor>(statement.body)) lastClearColor = &statement;
+    if (const Clear *clear = std::get_if<Clear>(&statement.body); clear && (clear->mask & GL_COLOR_BUFFER_BIT) != 0) {
+      lastClearColor = nullptr;
+    }
+  }
+  if (lastClearColor != nullptr) {
+    diagnostics_.warning(lastClearColor->where,
+                         "'clear_color' only sets the colour that 'clear' (glClear) fills with; no 'clear' follows it",
+                         lastClearColor->length);
+  }
   // Keyframes must lie on frames the scene has.
   for (const Parameter &parameter : program_.parameters) {
     for (const Keyframe &key : parameter.keys) {

@@ -1,0 +1,51 @@
+// Rendering a parsed scene to pictures: one frame at a time, in a fresh GL context each, with
+// supersampling and the teaching views. Uses glass/context.h to make the context and glReadPixels
+// to read it back, so it works on glass and, in the reference build, on Mesa.
+#pragma once
+
+#include "glass/scene/diagnostics.h"
+#include "glass/scene/program.h"
+
+#include <string>
+
+namespace glass::scene {
+
+enum class View {
+  Color,     // the picture
+  Depth,     // the depth buffer as grey, stretched between the nearest and farthest depth drawn
+  Overdraw,  // fragments per pixel, counted in the stencil buffer, as a heat map
+  Wireframe, // every polygon in line mode
+};
+
+struct RenderOptions {
+  int width = 0, height = 0; // 0: the scene's `size`
+  // Supersampling: the frame is drawn at supersample times the size in each direction and each
+  // supersample x supersample block is averaged (a box filter) into one pixel.
+  int supersample = 1;
+  View view = View::Color;
+  long traceVertex = -1; // >= 0: follow that vertex through the pipeline
+};
+
+struct RenderedFrame {
+  Image image;       // RGBA8, top row first, at the requested size
+  std::string notes; // what a view measured ("overdraw: up to 5 fragments a pixel"), or empty
+  std::string trace; // the vertex trace, or a note that the vertex was not reached
+};
+
+// The largest framebuffer side a context accepts.
+constexpr int kMaxFramebufferSide = 16384;
+
+// Draws frame `frame` (0-based) of the program. Returns false with messages in `diagnostics`
+// on a GL error, a failing context or an unsupported view.
+bool renderFrame(const Program &program, int frame, const RenderOptions &options, RenderedFrame &result,
+                 Diagnostics &diagnostics);
+
+// Writes the picture (alpha left out) as PNG, JPEG, BMP or TGA, chosen by the file name's
+// extension. The file is written whole or not at all: a temporary file in the same directory is
+// renamed over `path` when complete. Returns false and a reason on failure.
+bool writeImage(const std::string &path, const Image &image, std::string &reason);
+
+// True when writeImage knows the extension of `path`.
+bool isSupportedImagePath(const std::string &path);
+
+} // namespace glass::scene

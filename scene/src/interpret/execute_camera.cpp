@@ -1,0 +1,146 @@
+// Output, camera and transform statements.
+#include "interpret/executor.h"
+
+#include <glass/geometry/quaternion.h>
+
+#include <cmath>
+
+namespace glass::scene {
+
+namespace {
+
+// The camera statements replace the projection matrix, as a GL program's reshape function does
+// (glMatrixMode(GL_PROJECTION); glLoadIdentity(); ...; glMatrixMode(GL_MODELVIEW)).
+template <typename F> void setProjection(F &&multiply) {
+  glMatrixMode(GL_PROJECTION);
+  glLoadIdentity();
+  multiply();
+  glMatrixMode(GL_MODELVIEW);
+}
+
+} // namespace
+
+void Interpreter::Executor::run(const Viewport &s) {
+  std::vector<double> v = values(s.rect);
+  if (v[2] < 0 || v[3] < 0) fail("the viewport's width and height must not be negative");
+  glViewport(scaled(v[0]), scaled(v[1]), scaled(v[2]), scaled(v[3]));
+}
+
+void Interpreter::Executor::run(const ClearColor &s) {
+  std::vector<double> c = values(s.rgba);
+  glClearColor(static_cast<GLclampf>(c[0]), static_cast<GLclampf>(c[1]), static_cast<GLclampf>(c[2]),
+               static_cast<GLclampf>(c[3]));
+}
+
+void Interpreter::Executor::run(const ClearDepth &s) { glClearDepth(value(s.depth)); }
+
+void Interpreter::Executor::run(const ClearStencil &s) {
+  if (!options_.countOverdraw) glClearStencil(s.value);
+}
+
+void Interpreter::Executor::run(const Clear &s) {
+  GLbitfield mask = s.mask;
+  // The overdraw count lives in the stencil buffer and covers the whole frame.
+  if (options_.countOverdraw) mask &= ~static_cast<GLbitfield>(GL_STENCIL_BUFFER_BIT);
+  if (mask != 0) glClear(mask);
+}
+
+void Interpreter::Executor::run(const Perspective &s) {
+  double aspect = 0.0;
+  if (s.aspect) {
+    aspect = value(*s.aspect);
+  } else {
+    // `auto`: the aspect ratio of the current viewport, as a reshape function computes it.
+    GLint viewport[4] = {0, 0, 1, 1};
+    glGetIntegerv(GL_VIEWPORT, viewport);
+    aspect = viewport[3] > 0 ? static_cast<double>(viewport[2]) / viewport[3] : 1.0;
+  }
+  double fovy = value(s.fovy), zNear = value(s.zNear), zFar = value(s.zFar);
+  if (!(fovy > 0.0 && fovy < 180.0)) fail("the field of view must be between 0 and 180 degrees");
+  if (!(zNear > 0.0 && zFar > zNear)) fail("perspective needs 0 < near < far");
+  setProjection([&] { gluPerspective(fovy, aspect, zNear, zFar); });
+}
+
+void Interpreter::Executor::run(const Frustum &s) {
+  std::vector<double> p = values(s.planes);
+  setProjection([&] { glFrustum(p[0], p[1], p[2], p[3], p[4], p[5]); });
+}
+
+void Interpreter::Executor::run(const Ortho &s) {
+  std::vector<double> p = values(s.planes);
+  if (p.size() == 4) {
+    setProjection([&] { gluOrtho2D(p[0], p[1], p[2], p[3]); });
+  } else {
+    setProjection([&] { glOrtho(p[0], p[1], p[2], p[3], p[4], p[5]); });
+  }
+}
+
+void Interpreter::Executor::run(const LookAt &s) {
+  std::vector<double> v = values(s.values);
+  gluLookAt(v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7], v[8]);
+}
+
+void Interpreter::Executor::run(const LoadIdentity &) { glLoadIdentity(); }
+
+void Interpreter::Executor::run(const Translate &s) {
+  std::vector<double> v = values(s.v);
+  glTranslated(v[0], v[1], v[2]);
+}
+
+void Interpreter::Executor::run(const Rotate &s) {
+  std::vector<double> axis = values(s.axis);
+  glRotated(value(s.angle), axis[0], axis[1], axis[2]);
+}
+
+void Interpreter::Executor::run(const RotateQuaternion &s) {
+  std::vector<double> q = values(s.wxyz);
+  geometry::Quaternion quaternion(q[0], q[1], q[2], q[3]);
+  if (geometry::normSquared(quaternion) == 0.0) fail("the quaternion 0 0 0 0 is no rotation");
+  // The guide's equation 8, for the normalised quaternion, as a 4x4 matrix (column-major for GL).
+  glm::dmat3 r = geometry::rotationMatrix(quaternion);
+  GLdouble m[16] = {r[0][0], r[0][1], r[0][2], 0, r[1][0], r[1][1], r[1][2], 0,
+                    r[2][0], r[2][1], r[2][2], 0, 0,       0,       0,       1};
+  glMultMatrixd(m);
+}
+
+void Interpreter::Executor::run(const RotateByParameter &s) {
+  const std::vector<double> &r = values_.values[static_cast<std::size_t>(s.parameter)];
+  if (r[1] == 0.0 && r[2] == 0.0 && r[3] == 0.0) {
+    if (r[0] != 0.0) fail("the rotation axis 0 0 0 has no direction");
+    return;
+  }
+  glRotated(r[0], r[1], r[2], r[3]);
+}
+
+void Interpreter::Executor::run(const Scale &s) {
+  std::vector<double> v = values(s.v);
+  glScaled(v[0], v[1], v[2]);
+}
+
+void Interpreter::Executor::run(const MultMatrix &s) {
+  std::vector<double> v = values(s.rowMajor);
+  GLdouble m[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+  if (v.size() == 16) {
+    // Written row by row, as on paper; GL takes columns.
+    for (int r = 0; r < 4; ++r) {
+      for (int c = 0; c < 4; ++c) m[c * 4 + r] = v[static_cast<std::size_t>(r * 4 + c)];
+    }
+  } else {
+    // The 2D affine map [a11 a12 a13; a21 a22 a23; 0 0 1] acting on x and y, z unchanged.
+    m[0] = v[0], m[4] = v[1], m[12] = v[2];
+    m[1] = v[3], m[5] = v[4], m[13] = v[5];
+  }
+  glMultMatrixd(m);
+}
+
+void Interpreter::Executor::run(const Push &) {
+  glPushMatrix();
+  glPushAttrib(GL_ALL_ATTRIB_BITS);
+}
+
+void Interpreter::Executor::run(const Pop &) {
+  glPopAttrib();
+  glPopMatrix();
+}
+
+} // namespace glass::scene

@@ -1,0 +1,51 @@
+// Replays a parsed scene into the current GL context, one statement after another, each as the
+// GL calls docs/scene-format.md gives for it. Only the public GL, GLU and GLUT API is used, so
+// the same code draws with glass or with Mesa.
+#pragma once
+
+#include "glass/scene/diagnostics.h"
+#include "glass/scene/program.h"
+#include "interpret/frame_values.h"
+
+#include <iosfwd>
+#include <memory>
+
+namespace glass::scene {
+
+class VertexTracer;
+
+struct InterpreterOptions {
+  // Pixel sizes in the scene (viewport, scissor, line width, point size) are multiplied by this:
+  // the supersampling factor, so that a supersampled frame is the same picture, only finer.
+  int pixelScale = 1;
+  // Teaching views: wireframe forces glPolygonMode(GL_FRONT_AND_BACK, GL_LINE); countOverdraw
+  // makes the stencil buffer count fragments (the scene's own stencil statements are skipped).
+  bool wireframe = false;
+  bool countOverdraw = false;
+  // Definitions become display lists; when false their statements are replayed at each
+  // instance (the vertex trace needs to see every vertex).
+  bool compileDefinitions = true;
+  VertexTracer *tracer = nullptr;
+  // Where warnings about the GL go (a missing extension); null: into the diagnostics only.
+};
+
+class Interpreter {
+public:
+  Interpreter(const Program &program, const InterpreterOptions &options);
+  ~Interpreter();
+  Interpreter(const Interpreter &) = delete;
+  Interpreter &operator=(const Interpreter &) = delete;
+
+  // Draws frame `frame` into the current context, which must be fresh (GL's initial state) and
+  // of the size the frame is drawn at. Returns false when a GL error or a bad value stopped it;
+  // the messages are in `diagnostics`.
+  bool drawFrame(int frame, Diagnostics &diagnostics);
+
+  class Executor; // the statement-by-statement part (executor.h)
+
+private:
+  const Program &program_;
+  InterpreterOptions options_;
+};
+
+} // namespace glass::scene

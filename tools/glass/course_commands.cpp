@@ -1,0 +1,23 @@
+// `glass lines`, `glass ifs` and `glass math`: the course's exercises (docs/course.md). The
+// commands themselves are in the course library (tools/course, glass/course/commands.h).
+#include "command_registry.h"
+
+#include <glass/course/commands.h>
+
+#include <iostream>
+
+namespace glass::cli {
+
+namespace {
+
+int runLines(const std::vector<std::string> &args) { return course::runLinesCommand(args, std::cout, std::cerr); }
+int runIfs(const std::vector<std::string> &args) { return course::runIfsCommand(args, std::cout, std::cerr); }
+int runMath(const std::vector<std::string> &args) { return course::runMathCommand(args, std::cout, std::cerr); }
+
+const bool linesRegistered = registerCommand({"lines", course::kLinesSummary, runLines});
+const bool ifsRegistered = registerCommand({"ifs", course::kIfsSummary, runIfs});
+const bool mathRegistered = registerCommand({"math", course::kMathSummary, runMath});
+
+} // namespace
+
+} // namespace glass::cli
