@@ -69,8 +69,8 @@ LightGeometry lightGeometry(const LightSource& light, const float eyePoint[3]) {
 
   // Spotlight: with cutoff c and exponent s, and PV the unit vector from the light to the point,
   //   spot_i = (PV . s_d)^s  when PV . s_d >= cos(c),   0 when outside the cone,   1 when c = 180.
-  // The specification applies it to directional lights too (PV = -VP); the direction s_d is used
-  // as a unit vector.
+  // The specification applies it to directional lights too (PV = -VP), and so does Mesa; the
+  // direction s_d is used as a unit vector.
   g.spot = 1.0f;
   if (light.spotCutoff != 180.0f) {
     float direction[3] = {light.spotDirection[0], light.spotDirection[1], light.spotDirection[2]};
