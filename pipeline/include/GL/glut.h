@@ -36,6 +36,11 @@ GLAPI void GLAPIENTRY glutWireDodecahedron(void);
 GLAPI void GLAPIENTRY glutSolidIcosahedron(void);
 GLAPI void GLAPIENTRY glutWireIcosahedron(void);
 /* GLASS-SECTION: glutSolidTeapot / glutWireTeapot (Bezier patches) */
+/* The Utah teapot, 1.575 size tall and centred on the origin, y up, spout towards +x (freeglut
+ * 3's size and orientation), drawn through glMap2/glEvalMesh2; the solid one has texture
+ * coordinates. */
+GLAPI void GLAPIENTRY glutSolidTeapot(GLdouble size);
+GLAPI void GLAPIENTRY glutWireTeapot(GLdouble size);
 
 #ifdef __cplusplus
 }

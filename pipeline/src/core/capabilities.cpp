@@ -1,6 +1,7 @@
 #include "core/capabilities.h"
 
 #include "core/context.h"
+#include "evaluators/evaluator_commands.h"
 #include "fragment/fog_hooks.h"
 #include "lighting/lighting_hooks.h"
 #include "texture/texture_hooks.h"
@@ -68,7 +69,7 @@ bool setCapability(Context& ctx, GLenum cap, bool enabled) {
     return true;
   }
   return setLightingCapability(ctx, cap, enabled) || setFogCapability(ctx, cap, enabled) ||
-         setTextureCapability(ctx, cap, enabled);
+         setTextureCapability(ctx, cap, enabled) || setEvaluatorCapability(ctx, cap, enabled);
 }
 
 bool getCapability(const Context& ctx, GLenum cap, bool& enabled) {
@@ -86,7 +87,7 @@ bool getCapability(const Context& ctx, GLenum cap, bool& enabled) {
     return true;
   }
   return getLightingCapability(ctx, cap, enabled) || getFogCapability(ctx, cap, enabled) ||
-         getTextureCapability(ctx, cap, enabled);
+         getTextureCapability(ctx, cap, enabled) || getEvaluatorCapability(ctx, cap, enabled);
 }
 
 }  // namespace glass::gl

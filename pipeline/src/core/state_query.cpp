@@ -4,6 +4,7 @@
 
 #include "core/capabilities.h"
 #include "core/context.h"
+#include "evaluators/evaluator_commands.h"
 #include "fragment/fog_hooks.h"
 #include "lighting/lighting_hooks.h"
 #include "texture/texture_hooks.h"
@@ -193,7 +194,8 @@ bool queryCoreState(const Context& ctx, GLenum pname, StateValue& v) {
 bool queryState(const Context& ctx, GLenum pname, StateValue& value) {
   if (queryCoreState(ctx, pname, value) || queryAttribStackState(ctx, pname, value) ||
       queryLightingState(ctx, pname, value) ||
-      queryFogState(ctx, pname, value) || queryTextureState(ctx, pname, value)) {
+      queryFogState(ctx, pname, value) || queryTextureState(ctx, pname, value) ||
+      queryEvaluatorState(ctx, pname, value)) {
     return true;
   }
   bool enabled = false;
