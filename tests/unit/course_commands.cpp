@@ -8,6 +8,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -129,6 +130,20 @@ TEST_CASE("course command: glass ifs renders the Sierpinski triangle part by par
   CHECK(near(at(0.01, 0.51), {64, 115, 230}));  // part 3: blue
   CHECK(at(0.3, 0.3) == std::array<int, 3>{0, 0, 0});        // the middle hole
   CHECK(at(0.8, 0.8) == std::array<int, 3>{0, 0, 0});        // outside the triangle
+}
+
+TEST_CASE("course command: glass ifs draws the same bytes every time, and another seed differently") {
+  auto render = [](const std::string& name, const std::string& seed) {
+    const std::string path = outputPath(name);
+    REQUIRE(run(c::runIfsCommand, {example("fern.ifs"), "--points", "50000", "--seed", seed, "--size", "120x160", "-o", path})
+                .status == 0);
+    std::ifstream in(path, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  const std::string first = render("fern_a.png", "7"), second = render("fern_b.png", "7"), other = render("fern_c.png", "8");
+  CHECK(first.size() > 100);
+  CHECK(first == second);
+  CHECK(first != other);
 }
 
 TEST_CASE("course command: glass ifs keeps the aspect ratio, and its mistakes") {
