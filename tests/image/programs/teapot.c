@@ -1,8 +1,9 @@
 /* glutSolidTeapot and glutWireTeapot: the Utah teapot, lit and textured, with a wire teapot
  * beside it. glass draws them through its evaluators (glMap2, glEvalMesh2 with GL_AUTO_NORMAL);
- * the Mesa reference is freeglut 3's teapot, which evaluates the same 32 bicubic patches on the
- * same grids (8 x 8 points per patch solid, 10 x 10 wire) at the same size and orientation, and
- * draws them as triangles split along the other diagonal of each grid quad.
+ * the Mesa reference is freeglut 3's teapot (see reference_images/README.md), which evaluates
+ * the same 32 bicubic patches on the same grids (8 x 8 points per patch solid, 10 x 10 wire) at
+ * the same size and orientation, and draws them as triangles split along the other diagonal of
+ * each grid quad.
  *
  * The solid teapot's texture coordinates run over each patch (s along its first index, t along
  * its second), so the checkerboard repeats on every patch. */
@@ -10,30 +11,9 @@
 #include <GL/glu.h>
 #include <GL/glut.h>
 
-#include <stdarg.h>
-
 #include "gl_program.h"
 
 enum { WIDTH = 400, HEIGHT = 300, TEXTURE = 16 };
-
-#ifdef FREEGLUT
-#include <GL/freeglut_ext.h>
-
-/* The Mesa build links freeglut. Its shapes need no window, only glutInit's "initialised" flag,
- * which they check through the error handler: with one installed they carry on. */
-static void ignoreMessage(const char *format, va_list arguments)
-{
-  (void)format;
-  (void)arguments;
-}
-static void prepareGlut(void)
-{
-  glutInitErrorFunc(ignoreMessage);
-  glutInitWarningFunc(ignoreMessage);
-}
-#else
-static void prepareGlut(void) {}
-#endif
 
 static void checkerTexture(void)
 {
@@ -58,7 +38,6 @@ static void draw(void)
   static const GLfloat white[4] = {0.9f, 0.9f, 0.9f, 1.0f};
   static const GLfloat specular[4] = {0.4f, 0.4f, 0.4f, 1.0f};
 
-  prepareGlut();
   glClearColor(0.12f, 0.14f, 0.18f, 1.0f);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   glEnable(GL_DEPTH_TEST);
