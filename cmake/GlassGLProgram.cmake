@@ -3,13 +3,14 @@
 # A GL program is a plain C (or C++) program that uses only <GL/gl.h>, <GL/glu.h> and
 # <glass/context.h> (glassCreateContext, glassMakeCurrent, glassWritePNG, glassDestroyContext).
 #
-#   glass_add_gl_program(<name> SOURCES <file>...)
+#   glass_add_gl_program(<name> [GLASS_ONLY] SOURCES <file>...)
 #
 # builds
 #   <name>       against glass: libglass (glass::gl) and glass's own GL headers;
 #   <name>_mesa  against Mesa: the system's GL headers, libOSMesa and libGLU, with glass/context.h
 #                implemented on OSMesa by tools/reference/osmesa_context.c. Only when pkg-config
-#                finds osmesa and glu (GLASS_HAVE_MESA is then ON).
+#                finds osmesa and glu (GLASS_HAVE_MESA is then ON), and not for GLASS_ONLY
+#                programs, which use glass's own extensions that Mesa does not have.
 # Mesa is the independent oracle: its picture of a program is the reference glass must match.
 
 set(GLASS_HAVE_MESA OFF)
@@ -39,7 +40,7 @@ if(NOT TARGET mesa_programs)
 endif()
 
 function(glass_add_gl_program name)
-  cmake_parse_arguments(PARSE_ARGV 1 ARG "" "" "SOURCES")
+  cmake_parse_arguments(PARSE_ARGV 1 ARG "GLASS_ONLY" "" "SOURCES")
   if(NOT ARG_SOURCES)
     message(FATAL_ERROR "glass_add_gl_program(${name}): no SOURCES")
   endif()
@@ -51,7 +52,7 @@ function(glass_add_gl_program name)
   target_include_directories(${name} PRIVATE ${support_include})
   target_link_libraries(${name} PRIVATE glass::gl m)
 
-  if(GLASS_HAVE_MESA)
+  if(GLASS_HAVE_MESA AND NOT ARG_GLASS_ONLY)
     add_executable(${name}_mesa ${ARG_SOURCES})
     target_include_directories(${name}_mesa PRIVATE ${support_include})
     # OSMesa first: the program's and libGLU's gl* calls must bind to OSMesa's entry points.
