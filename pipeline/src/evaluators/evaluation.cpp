@@ -13,6 +13,9 @@
 // collapses to one point, the spec leaves the normal undefined (Mesa sends a zero normal); glass
 // sends the limit of the normal from inside the patch, which is what a lit sphere pole or teapot
 // lid needs.
+//
+// GL_MAP1_INDEX and GL_MAP2_INDEX are kept, enabled and queried like the other maps, but glass has
+// only RGBA mode, where a colour index is ignored (spec 2.7), so they produce nothing.
 #include <algorithm>
 #include <vector>
 
