@@ -136,8 +136,8 @@ void applyTexturing(const Context& ctx, const raster::FragmentBatch& batch, int 
   } else {
     const TexCoordDerivatives d = texCoordDerivatives(batch, f, twoD);
     const TextureImage& base = texture->baseImage();
-    const double rho = textureScaleFactor(d, base.width, twoD ? base.height : 0);
-    const float lambda = levelOfDetail(rho, p.minLod, p.maxLod);
+    const double rhoSquared = textureScaleFactorSquared(d, base.width, twoD ? base.height : 0);
+    const float lambda = levelOfDetailFromSquaredScale(rhoSquared, p.minLod, p.maxLod);
     sampleTexture(*texture, s, t, lambda, texel);
   }
   applyTextureEnvironment(ctx.texture.envMode, texture->baseImage().base, texel,

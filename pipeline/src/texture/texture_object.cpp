@@ -2,6 +2,9 @@
 
 #include <algorithm>
 
+#include "texture/texture_lod.h"
+#include "texture/texture_sampler.h"
+
 namespace glass::gl {
 
 bool isMipmapFilter(GLenum minFilter) {
@@ -26,6 +29,9 @@ void TextureObject::updateCompleteness() {
   if (base < 0 || base >= kMaxTextureLevels) return;
   const TextureImage& b = levels[base];
   if (!b.defined()) return;
+  borderTexel(*this, sampling.border);
+  for (float& c : sampling.border) c *= 255.0f;
+  sampling.switchOverPoint = magnificationSwitchOverPoint(params.minFilter, params.magFilter);
   if (!isMipmapFilter(params.minFilter)) {
     complete = true;
     return;

@@ -47,6 +47,13 @@ struct TextureObject {
   // q, the last level sampling may use (valid when complete).
   int lastLevel = 0;
 
+  // Values every lookup needs, derived from the parameters and the base level's format by
+  // updateCompleteness() so that they are not recomputed per fragment.
+  struct Sampling {
+    float border[4] = {0.0f, 0.0f, 0.0f, 0.0f};  // the border texel, components in [0, 255]
+    float switchOverPoint = 0.0f;                 // c of spec 3.8.9
+  } sampling;
+
   void updateCompleteness();
 
   // The base level image (valid when complete).

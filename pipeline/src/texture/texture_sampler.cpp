@@ -31,7 +31,9 @@ int positiveModulo(int i, int n) {
 // wrap() of the header comment; `linear` selects the CLAMP variant for LINEAR filtering.
 int wrapTexelIndex(int i, int size, GLenum mode, bool linear) {
   switch (mode) {
-    case GL_REPEAT: return positiveModulo(i, size);
+    case GL_REPEAT:
+      // Power-of-two sizes (the usual case) wrap with a mask: the same result, no division.
+      return (size & (size - 1)) == 0 ? (i & (size - 1)) : positiveModulo(i, size);
     case GL_MIRRORED_REPEAT: {
       const int a = positiveModulo(i, 2 * size) - size;
       const int mirrored = a >= 0 ? a : -(1 + a);
@@ -41,6 +43,17 @@ int wrapTexelIndex(int i, int size, GLenum mode, bool linear) {
     case GL_CLAMP_TO_BORDER: return std::clamp(i, -1, size);
     case GL_CLAMP: return linear ? std::clamp(i, -1, size) : std::clamp(i, 0, size - 1);
     default: return positiveModulo(i, size);
+  }
+}
+
+// The pair wrap(i), wrap(i + 1) of LINEAR filtering. For REPEAT the second follows from the
+// first without another division.
+void wrapTexelPair(int i, int size, GLenum mode, int* i0, int* i1) {
+  *i0 = wrapTexelIndex(i, size, mode, true);
+  if (mode == GL_REPEAT) {
+    *i1 = *i0 + 1 == size ? 0 : *i0 + 1;
+  } else {
+    *i1 = wrapTexelIndex(i + 1, size, mode, true);
   }
 }
 
@@ -54,16 +67,15 @@ struct LevelLookup {
   const TextureImage* image;
   GLenum wrapS, wrapT;
   bool twoD;
-  const float* border;
+  const float* border;  // the border texel, components in [0, 255]
 };
 
-void fetchTexel(const LevelLookup& l, int i, int j, float out[4]) {
-  if (i < 0 || i >= l.image->width || j < 0 || j >= l.image->height) {
-    for (int c = 0; c < 4; ++c) out[c] = l.border[c];
-    return;
-  }
+// Texel (i, j) with components in [0, 255] (the scale to [0, 1] is applied once per lookup).
+const float* fetchTexel(const LevelLookup& l, int i, int j, float scratch[4]) {
+  if (i < 0 || i >= l.image->width || j < 0 || j >= l.image->height) return l.border;
   const uint8_t* texel = l.image->texel(i, j);
-  for (int c = 0; c < 4; ++c) out[c] = static_cast<float>(texel[c]) * (1.0f / 255.0f);
+  for (int c = 0; c < 4; ++c) scratch[c] = static_cast<float>(texel[c]);
+  return scratch;
 }
 
 void sampleNearest(const LevelLookup& l, float s, float t, float out[4]) {
@@ -76,7 +88,9 @@ void sampleNearest(const LevelLookup& l, float s, float t, float out[4]) {
     const float v = texelCoordinate(t, height, l.wrapT);
     j = wrapTexelIndex(static_cast<int>(std::floor(v)), height, l.wrapT, false);
   }
-  fetchTexel(l, i, j, out);
+  float scratch[4];
+  const float* texel = fetchTexel(l, i, j, scratch);
+  for (int c = 0; c < 4; ++c) out[c] = texel[c] * (1.0f / 255.0f);
 }
 
 void sampleLinear(const LevelLookup& l, float s, float t, float out[4]) {
@@ -84,35 +98,35 @@ void sampleLinear(const LevelLookup& l, float s, float t, float out[4]) {
   const float u = texelCoordinate(s, width, l.wrapS) - 0.5f;
   const float uFloor = std::floor(u);
   const float alpha = u - uFloor;
-  const int i0 = wrapTexelIndex(static_cast<int>(uFloor), width, l.wrapS, true);
-  const int i1 = wrapTexelIndex(static_cast<int>(uFloor) + 1, width, l.wrapS, true);
+  int i0, i1;
+  wrapTexelPair(static_cast<int>(uFloor), width, l.wrapS, &i0, &i1);
+  float a[4], b[4];
   if (!l.twoD) {
-    float a[4], b[4];
-    fetchTexel(l, i0, 0, a);
-    fetchTexel(l, i1, 0, b);
-    for (int c = 0; c < 4; ++c) out[c] = (1.0f - alpha) * a[c] + alpha * b[c];
+    const float* t0 = fetchTexel(l, i0, 0, a);
+    const float* t1 = fetchTexel(l, i1, 0, b);
+    for (int c = 0; c < 4; ++c) out[c] = ((1.0f - alpha) * t0[c] + alpha * t1[c]) * (1.0f / 255.0f);
     return;
   }
   const int height = l.image->height;
   const float v = texelCoordinate(t, height, l.wrapT) - 0.5f;
   const float vFloor = std::floor(v);
   const float beta = v - vFloor;
-  const int j0 = wrapTexelIndex(static_cast<int>(vFloor), height, l.wrapT, true);
-  const int j1 = wrapTexelIndex(static_cast<int>(vFloor) + 1, height, l.wrapT, true);
-  float t00[4], t10[4], t01[4], t11[4];
-  fetchTexel(l, i0, j0, t00);
-  fetchTexel(l, i1, j0, t10);
-  fetchTexel(l, i0, j1, t01);
-  fetchTexel(l, i1, j1, t11);
+  int j0, j1;
+  wrapTexelPair(static_cast<int>(vFloor), height, l.wrapT, &j0, &j1);
+  float c00[4], c10[4], c01[4], c11[4];
+  const float* t00 = fetchTexel(l, i0, j0, c00);
+  const float* t10 = fetchTexel(l, i1, j0, c10);
+  const float* t01 = fetchTexel(l, i0, j1, c01);
+  const float* t11 = fetchTexel(l, i1, j1, c11);
   const float w00 = (1.0f - alpha) * (1.0f - beta), w10 = alpha * (1.0f - beta);
   const float w01 = (1.0f - alpha) * beta, w11 = alpha * beta;
-  for (int c = 0; c < 4; ++c) out[c] = w00 * t00[c] + w10 * t10[c] + w01 * t01[c] + w11 * t11[c];
+  for (int c = 0; c < 4; ++c)
+    out[c] = (w00 * t00[c] + w10 * t10[c] + w01 * t01[c] + w11 * t11[c]) * (1.0f / 255.0f);
 }
 
-void sampleLevel(const TextureObject& texture, int level, bool linear, const float border[4],
-                 float s, float t, float out[4]) {
+void sampleLevel(const TextureObject& texture, int level, bool linear, float s, float t, float out[4]) {
   const LevelLookup l{&texture.levels[level], texture.params.wrapS, texture.params.wrapT,
-                      texture.target != GL_TEXTURE_1D, border};
+                      texture.target != GL_TEXTURE_1D, texture.sampling.border};
   if (linear) {
     sampleLinear(l, s, t, out);
   } else {
@@ -137,36 +151,31 @@ void borderTexel(const TextureObject& texture, float out[4]) {
 }
 
 void sampleTextureMagnified(const TextureObject& texture, float s, float t, float out[4]) {
-  float border[4];
-  borderTexel(texture, border);
-  sampleLevel(texture, texture.params.baseLevel, texture.params.magFilter == GL_LINEAR, border, s,
-              t, out);
+  sampleLevel(texture, texture.params.baseLevel, texture.params.magFilter == GL_LINEAR, s, t, out);
 }
 
 void sampleTexture(const TextureObject& texture, float s, float t, float lambda, float out[4]) {
   const SamplerParameters& p = texture.params;
-  if (lambda <= magnificationSwitchOverPoint(p.minFilter, p.magFilter)) {
+  if (lambda <= texture.sampling.switchOverPoint) {
     sampleTextureMagnified(texture, s, t, out);
     return;
   }
-  float border[4];
-  borderTexel(texture, border);
   switch (p.minFilter) {
     case GL_NEAREST:
-      sampleLevel(texture, p.baseLevel, false, border, s, t, out);
+      sampleLevel(texture, p.baseLevel, false, s, t, out);
       return;
     case GL_LINEAR:
-      sampleLevel(texture, p.baseLevel, true, border, s, t, out);
+      sampleLevel(texture, p.baseLevel, true, s, t, out);
       return;
     default:
       break;
   }
   const bool linearWithinLevel = p.minFilter == GL_LINEAR_MIPMAP_NEAREST || p.minFilter == GL_LINEAR_MIPMAP_LINEAR;
   const MipmapLevels m = selectMipmapLevels(lambda, p.minFilter, p.baseLevel, texture.lastLevel);
-  sampleLevel(texture, m.level1, linearWithinLevel, border, s, t, out);
+  sampleLevel(texture, m.level1, linearWithinLevel, s, t, out);
   if (m.level2 == m.level1 || m.weight2 == 0.0f) return;
   float second[4];
-  sampleLevel(texture, m.level2, linearWithinLevel, border, s, t, second);
+  sampleLevel(texture, m.level2, linearWithinLevel, s, t, second);
   for (int c = 0; c < 4; ++c) out[c] = (1.0f - m.weight2) * out[c] + m.weight2 * second[c];
 }
 
