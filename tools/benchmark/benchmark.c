@@ -8,6 +8,9 @@
  *   lit_spheres      48 spheres of 3,132 triangles (150,336 in all), smooth shaded and lit by a
  *                    directional and a positional light with a specular highlight, colour
  *                    material from a colour array, depth test
+ *   textured_scene   a floor with its 256 x 256 texture repeated 30 times each way and 24 textured
+ *                    cubes, in perspective, lit by a directional light, GL_MODULATE, mipmapped
+ *                    (GL_GENERATE_MIPMAP) and filtered trilinearly (GL_LINEAR_MIPMAP_LINEAR)
  * A frame is glClear, the draw call and glFinish. Each frame is drawn once to warm up, then RUNS
  * times; the median time is reported, with the fastest and slowest.
  *
@@ -36,6 +39,7 @@ typedef struct {
   GLfloat *positions; /* x, y, z per vertex */
   GLubyte *colors;    /* r, g, b, a per vertex */
   GLfloat *normals;   /* x, y, z per vertex, for lit frames; NULL otherwise */
+  GLfloat *texCoords; /* s, t per vertex, for textured frames; NULL otherwise */
 } Frame;
 
 static void allocate(Frame *frame)
@@ -61,7 +65,7 @@ static void setVertex(Frame *frame, size_t v, float x, float y, float z, Lcg *ra
 /* Triangles about 6 pixels across at random places and depths (z in [-1, 1], ortho). */
 static Frame smallTriangles(void)
 {
-  Frame frame = {"small_triangles", GL_TRIANGLES, 250000, 3, 1, NULL, NULL, NULL};
+  Frame frame = {"small_triangles", GL_TRIANGLES, 250000, 3, 1, NULL, NULL, NULL, NULL};
   Lcg random = {1u};
   allocate(&frame);
   for (int t = 0; t < frame.primitives; ++t) {
@@ -78,7 +82,7 @@ static Frame smallTriangles(void)
  * cut through each other and the depth test decides most pixels many times over. */
 static Frame largeTriangles(void)
 {
-  Frame frame = {"large_triangles", GL_TRIANGLES, 64, 3, 1, NULL, NULL, NULL};
+  Frame frame = {"large_triangles", GL_TRIANGLES, 64, 3, 1, NULL, NULL, NULL, NULL};
   Lcg random = {2u};
   allocate(&frame);
   for (int t = 0; t < frame.primitives; ++t)
@@ -91,7 +95,7 @@ static Frame largeTriangles(void)
 
 static Frame lines(void)
 {
-  Frame frame = {"lines", GL_LINES, 200000, 2, 0, NULL, NULL, NULL};
+  Frame frame = {"lines", GL_LINES, 200000, 2, 0, NULL, NULL, NULL, NULL};
   Lcg random = {3u};
   allocate(&frame);
   for (int l = 0; l < frame.primitives; ++l) {
@@ -129,7 +133,7 @@ static Frame litSpheres(void)
 {
   const int perSphere = 2 * SPHERE_SLICES * (SPHERE_STACKS - 1);
   Frame frame = {"lit_spheres", GL_TRIANGLES, SPHERE_COLUMNS * SPHERE_ROWS * perSphere, 3, 1,
-                 NULL, NULL, NULL};
+                 NULL, NULL, NULL, NULL};
   const float cellW = (float)WIDTH / SPHERE_COLUMNS, cellH = (float)HEIGHT / SPHERE_ROWS;
   const float r = 0.45f * (cellW < cellH ? cellW : cellH);
   Lcg random = {4u};
@@ -161,6 +165,113 @@ static Frame litSpheres(void)
         }
     }
   return frame;
+}
+
+enum { SCENE_CUBES_X = 6, SCENE_CUBES_Z = 4, SCENE_TEXTURE = 256 };
+
+/* A textured quad: four corners counter-clockwise, one normal, texture coordinates s0..s1 along
+ * the first edge and t0..t1 along the second. */
+static void texturedQuad(Frame *frame, size_t v, const float corners[4][3], const float normal[3],
+                         float sMax, float tMax)
+{
+  static const float st[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  for (int k = 0; k < 4; ++k, ++v) {
+    for (int c = 0; c < 3; ++c) {
+      frame->positions[3 * v + c] = corners[k][c];
+      frame->normals[3 * v + c] = normal[c];
+    }
+    for (int c = 0; c < 4; ++c) frame->colors[4 * v + c] = 255;
+    frame->texCoords[2 * v] = st[k][0] * sMax;
+    frame->texCoords[2 * v + 1] = st[k][1] * tMax;
+  }
+}
+
+/* A floor 60 units square centred under the camera, its texture repeated 30 times each way, and
+ * 6 x 4 cubes of side 2 standing on it, each face carrying the whole texture once. */
+static Frame texturedScene(void)
+{
+  Frame frame = {"textured_scene", GL_QUADS, 1 + 6 * SCENE_CUBES_X * SCENE_CUBES_Z, 4, 1,
+                 NULL, NULL, NULL, NULL};
+  allocate(&frame);
+  frame.normals = malloc((size_t)frame.primitives * 4 * 3 * sizeof(GLfloat));
+  frame.texCoords = malloc((size_t)frame.primitives * 4 * 2 * sizeof(GLfloat));
+  if (!frame.normals || !frame.texCoords) {
+    fprintf(stderr, "benchmark: out of memory\n");
+    exit(1);
+  }
+  static const float up[3] = {0, 1, 0};
+  const float floorCorners[4][3] = {{-30, 0, 30}, {30, 0, 30}, {30, 0, -30}, {-30, 0, -30}};
+  size_t v = 0;
+  texturedQuad(&frame, v, floorCorners, up, 30.0f, 30.0f);
+  v += 4;
+  /* The six faces of a unit cube as corner indices (bit 0: x, bit 1: y, bit 2: z) with normals. */
+  static const int faces[6][4] = {{4, 5, 7, 6}, {1, 0, 2, 3}, {5, 1, 3, 7},
+                                  {0, 4, 6, 2}, {6, 7, 3, 2}, {0, 1, 5, 4}};
+  static const float normals[6][3] = {{0, 0, 1}, {0, 0, -1}, {1, 0, 0},
+                                      {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}};
+  for (int i = 0; i < SCENE_CUBES_X; ++i)
+    for (int j = 0; j < SCENE_CUBES_Z; ++j) {
+      const float x0 = -11.0f + 4.0f * (float)i, z0 = -4.0f - 5.0f * (float)j;
+      for (int f = 0; f < 6; ++f) {
+        float corners[4][3];
+        for (int k = 0; k < 4; ++k) {
+          const int c = faces[f][k];
+          corners[k][0] = x0 + 2.0f * (float)(c & 1);
+          corners[k][1] = 2.0f * (float)((c >> 1) & 1);
+          corners[k][2] = z0 + 2.0f * (float)((c >> 2) & 1);
+        }
+        texturedQuad(&frame, v, corners, normals[f], 1.0f, 1.0f);
+        v += 4;
+      }
+    }
+  return frame;
+}
+
+/* The textured scene's state: perspective from 3 units above the floor and 6 in front of the
+ * first row of cubes, looking slightly down, a
+ * directional light, and a mipmapped checkerboard texture modulated by the lit colour. */
+static void prepareTexturedFrameState(void)
+{
+  static GLubyte texels[SCENE_TEXTURE][SCENE_TEXTURE][3];
+  static const GLfloat direction[4] = {-0.3f, 0.8f, 0.5f, 0.0f};
+  static const GLfloat white[4] = {1.0f, 1.0f, 1.0f, 1.0f};
+  for (int j = 0; j < SCENE_TEXTURE; ++j)
+    for (int i = 0; i < SCENE_TEXTURE; ++i) {
+      const int check = ((i / 32) + (j / 32)) % 2;
+      texels[j][i][0] = (GLubyte)(check ? 230 : 60 + i / 4);
+      texels[j][i][1] = (GLubyte)(check ? 210 : 70 + j / 4);
+      texels[j][i][2] = (GLubyte)(check ? 170 : 140);
+    }
+  glMatrixMode(GL_PROJECTION);
+  glLoadIdentity();
+  glFrustum(-0.1 * WIDTH / HEIGHT, 0.1 * WIDTH / HEIGHT, -0.1, 0.1, 0.1, 100.0);
+  glMatrixMode(GL_MODELVIEW);
+  glLoadIdentity();
+  glRotatef(12.0f, 1.0f, 0.0f, 0.0f);
+  glTranslatef(0.0f, -3.0f, -6.0f);
+  /* The light's direction is given in world space: the camera's matrix transforms it. */
+  glLightfv(GL_LIGHT0, GL_POSITION, direction);
+  static const GLfloat ambient[4] = {0.25f, 0.25f, 0.25f, 1.0f};
+  static const GLfloat black[4] = {0.0f, 0.0f, 0.0f, 1.0f};
+  glDisable(GL_LIGHT1);
+  /* The lit frame left colour material tracking; every material colour is set again here. */
+  glDisable(GL_COLOR_MATERIAL);
+  glMaterialfv(GL_FRONT, GL_AMBIENT, ambient);
+  glMaterialfv(GL_FRONT, GL_DIFFUSE, white);
+  glMaterialfv(GL_FRONT, GL_SPECULAR, black);
+  glEnable(GL_LIGHT0);
+  glEnable(GL_LIGHTING);
+  glEnable(GL_CULL_FACE);
+  glEnableClientState(GL_NORMAL_ARRAY);
+  glEnableClientState(GL_TEXTURE_COORD_ARRAY);
+  glTexParameteri(GL_TEXTURE_2D, GL_GENERATE_MIPMAP, GL_TRUE);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB, SCENE_TEXTURE, SCENE_TEXTURE, 0, GL_RGB, GL_UNSIGNED_BYTE,
+               texels);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
+  glEnable(GL_TEXTURE_2D);
 }
 
 /* The state of a frame, set before it is timed. Lit frames: a depth range as deep as the screen
@@ -216,6 +327,7 @@ static double drawFrame(const Frame *frame)
   glVertexPointer(3, GL_FLOAT, 0, frame->positions);
   glColorPointer(4, GL_UNSIGNED_BYTE, 0, frame->colors);
   if (frame->normals) glNormalPointer(GL_FLOAT, 0, frame->normals);
+  if (frame->texCoords) glTexCoordPointer(2, GL_FLOAT, 0, frame->texCoords);
   glDrawArrays(frame->mode, 0, frame->primitives * frame->verticesPerPrimitive);
   glFinish();
   return now_ms() - start;
@@ -250,7 +362,7 @@ int main(int argc, char **argv)
   const char *pngDir = NULL;
   char model[256], path[1024];
   GlassContext *ctx;
-  Frame frames[4];
+  Frame frames[5];
 
   if (argc == 3 && strcmp(argv[1], "--png") == 0)
     pngDir = argv[2];
@@ -288,9 +400,13 @@ int main(int argc, char **argv)
   frames[1] = largeTriangles();
   frames[2] = lines();
   frames[3] = litSpheres();
-  for (int f = 0; f < 4; ++f) {
+  frames[4] = texturedScene();
+  for (int f = 0; f < 5; ++f) {
     double times[RUNS];
-    prepareFrameState(frames[f].normals != NULL);
+    if (frames[f].texCoords)
+      prepareTexturedFrameState();
+    else
+      prepareFrameState(frames[f].normals != NULL);
     drawFrame(&frames[f]);
     for (int r = 0; r < RUNS; ++r) times[r] = drawFrame(&frames[f]);
     qsort(times, RUNS, sizeof times[0], byValue);
@@ -304,6 +420,7 @@ int main(int argc, char **argv)
     free(frames[f].positions);
     free(frames[f].colors);
     free(frames[f].normals);
+    free(frames[f].texCoords);
   }
 
   glassDestroyContext(ctx);
