@@ -434,3 +434,65 @@ TEST_CASE("bump mapping tilts the normal by the height map's slope") {
   CHECK(near(litQuad(1, 1), 180, 2));  // 255 / sqrt 2
   CHECK(glGetError() == GL_NO_ERROR);
 }
+
+TEST_CASE("display lists compile texture commands with the pixels of compile time") {
+  ScopedContext context;
+  GLuint texture = 0;
+  glGenTextures(1, &texture);
+  GLubyte texel[4] = {255, 0, 0, 255};
+  const GLuint list = glGenLists(1);
+  glNewList(list, GL_COMPILE);
+  glBindTexture(GL_TEXTURE_2D, texture);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, texel);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_DECAL);
+  glEndList();
+  // GL_COMPILE did not execute anything, and the client's memory changes before the call.
+  CHECK(glIsTexture(texture) == GL_FALSE);
+  texel[0] = 0;
+  texel[1] = 255;
+  glCallList(list);
+  CHECK(glIsTexture(texture) == GL_TRUE);
+  GLubyte back[4] = {};
+  glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_UNSIGNED_BYTE, back);
+  CHECK(back[0] == 255);
+  CHECK(back[1] == 0);
+  GLint value = 0;
+  glGetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, &value);
+  CHECK(value == GL_NEAREST);
+  glGetTexEnviv(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, &value);
+  CHECK(value == GL_DECAL);
+  glDeleteLists(list, 1);
+  CHECK(glGetError() == GL_NO_ERROR);
+}
+
+TEST_CASE("points and lines are textured with the base level, magnified") {
+  ScopedContext context(16, 16);
+  pixelProjection(16, 16);
+  const GLubyte texels[2] = {40, 220};
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_LUMINANCE, 2, 1, 0, GL_LUMINANCE, GL_UNSIGNED_BYTE, texels);
+  // A mipmapped minification filter would need more levels; the texture must be complete.
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glEnable(GL_TEXTURE_2D);
+  glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
+  glBegin(GL_POINTS);
+  glTexCoord2f(0.25f, 0.5f);
+  glVertex2f(2.5f, 2.5f);
+  glTexCoord2f(0.75f, 0.5f);
+  glVertex2f(5.5f, 2.5f);
+  glEnd();
+  CHECK(pixelAt(2, 2).r == 40);
+  CHECK(pixelAt(5, 2).r == 220);
+  // A horizontal line from s = 0 to s = 1 across 8 pixels: the first half dark, the second light.
+  glBegin(GL_LINES);
+  glTexCoord2f(0.0f, 0.5f);
+  glVertex2f(0.0f, 8.5f);
+  glTexCoord2f(1.0f, 0.5f);
+  glVertex2f(8.0f, 8.5f);
+  glEnd();
+  CHECK(pixelAt(1, 8).r == 40);
+  CHECK(pixelAt(6, 8).r == 220);
+  CHECK(glGetError() == GL_NO_ERROR);
+}
