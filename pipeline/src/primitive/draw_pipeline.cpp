@@ -38,7 +38,7 @@ void DrawPipeline::prepare() {
   lineSettings_ = raster::LineSettings{};
   lineSettings_.bounds = bounds;
   lineSettings_.varyingCount = vertex_.varyingCount;
-  lineSettings_.width = r.lineWidth;
+  lineSettings_.width = std::min(r.lineWidth, kMaxLineWidth);  // GL_ALIASED_LINE_WIDTH_RANGE
   lineSettings_.perspectiveCorrect = perspective;
   lineSettings_.stippleFactor = r.lineStipple ? r.lineStippleFactor : 0;
   lineSettings_.stipplePattern = r.lineStipplePattern;
@@ -47,10 +47,16 @@ void DrawPipeline::prepare() {
   pointSettings_ = raster::PointSettings{};
   pointSettings_.bounds = bounds;
   pointSettings_.varyingCount = vertex_.varyingCount;
-  pointSettings_.size = r.pointSize;
+  pointSettings_.size = std::min(r.pointSize, kMaxPointSize);  // GL_ALIASED_POINT_SIZE_RANGE
 
   flat_ = r.shadeModel == GL_FLAT;
   stippleCounter_ = 0;
+
+  polygonStipple_.prepare(r.polygonStipplePattern, fragments_);
+  polygonSink_ = r.polygonStipple ? static_cast<raster::FragmentSink*>(&polygonStipple_) : &fragments_;
+  recording_ = ctx.renderMode.mode != GL_RENDER;
+  lineReset_ = false;
+  if (recording_) recorder_.prepare(ctx, vertex_.texturing);
 }
 
 }  // namespace glass::gl
