@@ -15,7 +15,8 @@ const char* glString(GLenum name) {
     case GL_EXTENSIONS:
       // Space-separated. Stages add the extensions they implement here.
       return "GL_EXT_blend_color GL_EXT_blend_func_separate GL_EXT_blend_minmax "
-             "GL_EXT_blend_subtract GL_EXT_stencil_wrap GL_EXT_rescale_normal GL_WIN_phong_shading";
+             "GL_EXT_blend_subtract GL_EXT_stencil_wrap GL_EXT_rescale_normal GL_WIN_phong_shading "
+             "GL_ARB_texture_mirrored_repeat GL_SGIS_generate_mipmap GL_GLASS_bump_map";
     default:
       return nullptr;
   }
