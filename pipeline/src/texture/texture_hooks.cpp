@@ -80,26 +80,26 @@ void computeTexCoords(const Context& ctx, const float objectPosition[4], const f
 
 namespace {
 
-// d(a/q)/dx = (da/dx q - a dq/dx) / q^2 for the projected coordinate a/q.
-double projectedDerivative(double a, double q, double da, double dq) {
-  return (da * q - a * dq) / (q * q);
-}
-
-// The screen-space derivatives of s/q and t/q at a fragment of a triangle.
+// The screen-space derivatives of s/q and t/q at a fragment of a triangle, exactly. The
+// rasterizer's planes give s/w, t/w and q/w as affine functions A, C, B of window (x, y); the 1/w
+// cancels in the projected coordinate, s/q = A / B, so
+//   d(s/q)/dx = (A_x B - A B_x) / B^2,
+// and likewise for y and for t/q = C / B.
 TexCoordDerivatives texCoordDerivatives(const raster::FragmentBatch& batch, const raster::Fragment& f,
                                         bool withT) {
-  const float* tc = f.varyings + varying::kTexCoord;
-  double dsdx, dsdy, dqdx, dqdy;
-  batch.planes->derivatives(varying::kTexCoord + 0, f.x, f.y, dsdx, dsdy);
-  batch.planes->derivatives(varying::kTexCoord + 3, f.x, f.y, dqdx, dqdy);
+  const raster::AttributePlanes& planes = *batch.planes;
+  const double x = f.x + 0.5, y = f.y + 0.5;  // the pixel centre
+  const int s = varying::kTexCoord, t = varying::kTexCoord + 1, q = varying::kTexCoord + 3;
+  const double a = planes.a0[s] + planes.dx[s] * x + planes.dy[s] * y;
+  const double b = planes.a0[q] + planes.dx[q] * x + planes.dy[q] * y;
+  const double inverseB2 = 1.0 / (b * b);
   TexCoordDerivatives d;
-  d.dsdx = projectedDerivative(tc[0], tc[3], dsdx, dqdx);
-  d.dsdy = projectedDerivative(tc[0], tc[3], dsdy, dqdy);
+  d.dsdx = (planes.dx[s] * b - a * planes.dx[q]) * inverseB2;
+  d.dsdy = (planes.dy[s] * b - a * planes.dy[q]) * inverseB2;
   if (withT) {
-    double dtdx, dtdy;
-    batch.planes->derivatives(varying::kTexCoord + 1, f.x, f.y, dtdx, dtdy);
-    d.dtdx = projectedDerivative(tc[1], tc[3], dtdx, dqdx);
-    d.dtdy = projectedDerivative(tc[1], tc[3], dtdy, dqdy);
+    const double c = planes.a0[t] + planes.dx[t] * x + planes.dy[t] * y;
+    d.dtdx = (planes.dx[t] * b - c * planes.dx[q]) * inverseB2;
+    d.dtdy = (planes.dy[t] * b - c * planes.dy[q]) * inverseB2;
   }
   return d;
 }

@@ -113,13 +113,24 @@ void sampleLinear(const LevelLookup& l, float s, float t, float out[4]) {
   const float beta = v - vFloor;
   int j0, j1;
   wrapTexelPair(static_cast<int>(vFloor), height, l.wrapT, &j0, &j1);
+  const float w00 = (1.0f - alpha) * (1.0f - beta), w10 = alpha * (1.0f - beta);
+  const float w01 = (1.0f - alpha) * beta, w11 = alpha * beta;
+  if (i0 >= 0 && i1 >= 0 && j0 >= 0 && j1 >= 0 && i0 < width && i1 < width && j0 < height && j1 < height) {
+    // All four texels inside the image (always so except near a CLAMP or CLAMP_TO_BORDER edge):
+    // read the bytes directly.
+    const uint8_t* p00 = l.image->texel(i0, j0);
+    const uint8_t* p10 = l.image->texel(i1, j0);
+    const uint8_t* p01 = l.image->texel(i0, j1);
+    const uint8_t* p11 = l.image->texel(i1, j1);
+    for (int c = 0; c < 4; ++c)
+      out[c] = (w00 * p00[c] + w10 * p10[c] + w01 * p01[c] + w11 * p11[c]) * (1.0f / 255.0f);
+    return;
+  }
   float c00[4], c10[4], c01[4], c11[4];
   const float* t00 = fetchTexel(l, i0, j0, c00);
   const float* t10 = fetchTexel(l, i1, j0, c10);
   const float* t01 = fetchTexel(l, i0, j1, c01);
   const float* t11 = fetchTexel(l, i1, j1, c11);
-  const float w00 = (1.0f - alpha) * (1.0f - beta), w10 = alpha * (1.0f - beta);
-  const float w01 = (1.0f - alpha) * beta, w11 = alpha * beta;
   for (int c = 0; c < 4; ++c)
     out[c] = (w00 * t00[c] + w10 * t10[c] + w01 * t01[c] + w11 * t11[c]) * (1.0f / 255.0f);
 }
