@@ -15,6 +15,7 @@
 #include <cstdlib>
 #include <vector>
 
+#include "lighting/color_material.h"
 #include "lighting/lighting_equation.h"
 
 namespace {
@@ -173,4 +174,59 @@ TEST_CASE("Phong shading: GL_PHONG_WIN is accepted and reported by glGet") {
   CHECK(glGetError() == GL_NO_ERROR);
   glassMakeCurrent(nullptr);
   glassDestroyContext(ctx);
+}
+
+TEST_CASE("Phong shading: colour material takes each fragment's interpolated colour") {
+  const Scene scene;
+  GlassContext* ctx = glassCreateContext(kSize, kSize);
+  REQUIRE(glassMakeCurrent(ctx) == 1);
+  glMatrixMode(GL_PROJECTION);
+  glLoadIdentity();
+  glOrtho(-1.0, 1.0, -1.0, 1.0, -1.0, 1.0);
+  glMatrixMode(GL_MODELVIEW);
+  glLoadIdentity();
+  scene.apply();
+  glColorMaterial(GL_FRONT, GL_DIFFUSE);
+  glEnable(GL_COLOR_MATERIAL);
+  glShadeModel(GL_PHONG_WIN);
+  glClear(GL_COLOR_BUFFER_BIT);
+  // The colour runs from (0, 1, 0.5) on the left edge to (1, 0, 0.5) on the right.
+  glNormal3f(0.0f, 0.0f, 1.0f);
+  glBegin(GL_QUADS);
+  glColor3f(0.0f, 1.0f, 0.5f);
+  glVertex2f(-1.0f, -1.0f);
+  glColor3f(1.0f, 0.0f, 0.5f);
+  glVertex2f(1.0f, -1.0f);
+  glVertex2f(1.0f, 1.0f);
+  glColor3f(0.0f, 1.0f, 0.5f);
+  glVertex2f(-1.0f, 1.0f);
+  glEnd();
+  CHECK(glGetError() == GL_NO_ERROR);
+  std::vector<unsigned char> pixels(kSize * kSize * 4);
+  glReadPixels(0, 0, kSize, kSize, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());
+  glassMakeCurrent(nullptr);
+  glassDestroyContext(ctx);
+
+  glass::gl::LightingState state = scene.state;
+  state.colorMaterial.enabled = true;
+  state.colorMaterial.face = GL_FRONT;
+  state.colorMaterial.mode = GL_DIFFUSE;
+  int worst = 0;
+  const float normal[3] = {0.0f, 0.0f, 1.0f};
+  for (int j = 0; j < kSize; ++j) {
+    for (int i = 0; i < kSize; ++i) {
+      const float t = (static_cast<float>(i) + 0.5f) / kSize;
+      const float color[4] = {t, 1.0f - t, 0.5f, 1.0f};
+      const float y = -1.0f + (static_cast<float>(j) + 0.5f) / 32.0f;
+      const float point[3] = {-1.0f + 2.0f * t, y, 0.0f};
+      const glass::gl::Material m =
+          glass::gl::materialWithColor(state, glass::gl::kFrontMaterial, color);
+      float primary[4], secondary[4];
+      glass::gl::evaluateLighting(state, m, point, normal, primary, secondary);
+      for (int c = 0; c < 3; ++c) {
+        worst = std::max(worst, std::abs(pixels[(j * kSize + i) * 4 + c] - toByte(primary[c])));
+      }
+    }
+  }
+  CHECK(worst <= 1);
 }
