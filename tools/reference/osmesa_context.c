@@ -3,7 +3,7 @@
  * A GL test program calls only GL, GLU and the four glass context functions. Linked with this
  * file, libOSMesa and libGLU instead of libglass, the same source renders with Mesa, and that
  * picture is the reference glass is compared against. The context matches what glass promises:
- * RGBA8 colour, 24-bit depth, 8-bit stencil, no accumulation buffer.
+ * RGBA8 colour, 24-bit depth, 8-bit stencil, a 16-bit-per-channel accumulation buffer.
  */
 #include <glass/context.h>
 
@@ -37,7 +37,7 @@ GlassContext *glassCreateContext(int width, int height) {
   ctx->width = width;
   ctx->height = height;
   ctx->pixels = malloc((size_t)width * (size_t)height * 4);
-  ctx->osmesa = OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 0, NULL);
+  ctx->osmesa = OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 16, NULL);
   if (!ctx->pixels || !ctx->osmesa) {
     glassDestroyContext(ctx);
     return NULL;

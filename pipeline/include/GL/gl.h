@@ -1121,6 +1121,74 @@ GLAPI void GLAPIENTRY glEvalPoint2(GLint i, GLint j);
 GLAPI void GLAPIENTRY glEvalMesh1(GLenum mode, GLint i1, GLint i2);
 GLAPI void GLAPIENTRY glEvalMesh2(GLenum mode, GLint i1, GLint i2, GLint j1, GLint j2);
 
+/* GLASS-SECTION: raster position, pixel rectangles, bitmaps, polygon stipple, accumulation
+ * buffer, selection and feedback, interleaved arrays */
+GLAPI void GLAPIENTRY glRasterPos2s(GLshort x, GLshort y);
+GLAPI void GLAPIENTRY glRasterPos2i(GLint x, GLint y);
+GLAPI void GLAPIENTRY glRasterPos2f(GLfloat x, GLfloat y);
+GLAPI void GLAPIENTRY glRasterPos2d(GLdouble x, GLdouble y);
+GLAPI void GLAPIENTRY glRasterPos3s(GLshort x, GLshort y, GLshort z);
+GLAPI void GLAPIENTRY glRasterPos3i(GLint x, GLint y, GLint z);
+GLAPI void GLAPIENTRY glRasterPos3f(GLfloat x, GLfloat y, GLfloat z);
+GLAPI void GLAPIENTRY glRasterPos3d(GLdouble x, GLdouble y, GLdouble z);
+GLAPI void GLAPIENTRY glRasterPos4s(GLshort x, GLshort y, GLshort z, GLshort w);
+GLAPI void GLAPIENTRY glRasterPos4i(GLint x, GLint y, GLint z, GLint w);
+GLAPI void GLAPIENTRY glRasterPos4f(GLfloat x, GLfloat y, GLfloat z, GLfloat w);
+GLAPI void GLAPIENTRY glRasterPos4d(GLdouble x, GLdouble y, GLdouble z, GLdouble w);
+GLAPI void GLAPIENTRY glRasterPos2sv(const GLshort *v);
+GLAPI void GLAPIENTRY glRasterPos2iv(const GLint *v);
+GLAPI void GLAPIENTRY glRasterPos2fv(const GLfloat *v);
+GLAPI void GLAPIENTRY glRasterPos2dv(const GLdouble *v);
+GLAPI void GLAPIENTRY glRasterPos3sv(const GLshort *v);
+GLAPI void GLAPIENTRY glRasterPos3iv(const GLint *v);
+GLAPI void GLAPIENTRY glRasterPos3fv(const GLfloat *v);
+GLAPI void GLAPIENTRY glRasterPos3dv(const GLdouble *v);
+GLAPI void GLAPIENTRY glRasterPos4sv(const GLshort *v);
+GLAPI void GLAPIENTRY glRasterPos4iv(const GLint *v);
+GLAPI void GLAPIENTRY glRasterPos4fv(const GLfloat *v);
+GLAPI void GLAPIENTRY glRasterPos4dv(const GLdouble *v);
+GLAPI void GLAPIENTRY glWindowPos2s(GLshort x, GLshort y);
+GLAPI void GLAPIENTRY glWindowPos2i(GLint x, GLint y);
+GLAPI void GLAPIENTRY glWindowPos2f(GLfloat x, GLfloat y);
+GLAPI void GLAPIENTRY glWindowPos2d(GLdouble x, GLdouble y);
+GLAPI void GLAPIENTRY glWindowPos3s(GLshort x, GLshort y, GLshort z);
+GLAPI void GLAPIENTRY glWindowPos3i(GLint x, GLint y, GLint z);
+GLAPI void GLAPIENTRY glWindowPos3f(GLfloat x, GLfloat y, GLfloat z);
+GLAPI void GLAPIENTRY glWindowPos3d(GLdouble x, GLdouble y, GLdouble z);
+GLAPI void GLAPIENTRY glWindowPos2sv(const GLshort *v);
+GLAPI void GLAPIENTRY glWindowPos2iv(const GLint *v);
+GLAPI void GLAPIENTRY glWindowPos2fv(const GLfloat *v);
+GLAPI void GLAPIENTRY glWindowPos2dv(const GLdouble *v);
+GLAPI void GLAPIENTRY glWindowPos3sv(const GLshort *v);
+GLAPI void GLAPIENTRY glWindowPos3iv(const GLint *v);
+GLAPI void GLAPIENTRY glWindowPos3fv(const GLfloat *v);
+GLAPI void GLAPIENTRY glWindowPos3dv(const GLdouble *v);
+GLAPI void GLAPIENTRY glBitmap(GLsizei width, GLsizei height, GLfloat xorig, GLfloat yorig, GLfloat xmove, GLfloat ymove, const GLubyte *bitmap);
+GLAPI void GLAPIENTRY glDrawPixels(GLsizei width, GLsizei height, GLenum format, GLenum type, const GLvoid *pixels);
+GLAPI void GLAPIENTRY glCopyPixels(GLint x, GLint y, GLsizei width, GLsizei height, GLenum type);
+GLAPI void GLAPIENTRY glPixelZoom(GLfloat xfactor, GLfloat yfactor);
+GLAPI void GLAPIENTRY glPixelTransferf(GLenum pname, GLfloat param);
+GLAPI void GLAPIENTRY glPixelTransferi(GLenum pname, GLint param);
+GLAPI void GLAPIENTRY glPixelMapfv(GLenum map, GLsizei mapsize, const GLfloat *values);
+GLAPI void GLAPIENTRY glPixelMapuiv(GLenum map, GLsizei mapsize, const GLuint *values);
+GLAPI void GLAPIENTRY glPixelMapusv(GLenum map, GLsizei mapsize, const GLushort *values);
+GLAPI void GLAPIENTRY glGetPixelMapfv(GLenum map, GLfloat *values);
+GLAPI void GLAPIENTRY glGetPixelMapuiv(GLenum map, GLuint *values);
+GLAPI void GLAPIENTRY glGetPixelMapusv(GLenum map, GLushort *values);
+GLAPI void GLAPIENTRY glPolygonStipple(const GLubyte *mask);
+GLAPI void GLAPIENTRY glGetPolygonStipple(GLubyte *mask);
+GLAPI void GLAPIENTRY glAccum(GLenum op, GLfloat value);
+GLAPI void GLAPIENTRY glClearAccum(GLfloat red, GLfloat green, GLfloat blue, GLfloat alpha);
+GLAPI GLint GLAPIENTRY glRenderMode(GLenum mode);
+GLAPI void GLAPIENTRY glSelectBuffer(GLsizei size, GLuint *buffer);
+GLAPI void GLAPIENTRY glFeedbackBuffer(GLsizei size, GLenum type, GLfloat *buffer);
+GLAPI void GLAPIENTRY glInitNames(void);
+GLAPI void GLAPIENTRY glLoadName(GLuint name);
+GLAPI void GLAPIENTRY glPushName(GLuint name);
+GLAPI void GLAPIENTRY glPopName(void);
+GLAPI void GLAPIENTRY glPassThrough(GLfloat token);
+GLAPI void GLAPIENTRY glInterleavedArrays(GLenum format, GLsizei stride, const GLvoid *pointer);
+
 #ifdef __cplusplus
 }
 #endif

@@ -1,8 +1,9 @@
 /* glass: an offscreen OpenGL 1.x context that renders into memory.
  *
- * A context owns a framebuffer of RGBA8 colour, a 24-bit depth buffer and an 8-bit stencil
- * buffer. GL calls act on the context that is current on the calling thread; with no current
- * context they do nothing.
+ * A context owns a framebuffer of RGBA8 colour, a 24-bit depth buffer, an 8-bit stencil
+ * buffer and an accumulation buffer of 16 bits per channel (allocated when first used). GL calls
+ * act on the context that is current on the calling thread; with no current context they do
+ * nothing.
  *
  *   GlassContext *ctx = glassCreateContext(640, 480);
  *   glassMakeCurrent(ctx);
@@ -25,7 +26,8 @@ extern "C" {
 
 typedef struct GlassContext GlassContext;
 
-/* RGBA8 colour, depth >= 24 bits, 8-bit stencil; NULL on a bad size or no memory.
+/* RGBA8 colour, depth >= 24 bits, 8-bit stencil, 16-bit accumulation; NULL on a bad size or no
+ * memory.
  * Sizes from 1 to 16384 pixels a side are accepted. */
 GLASS_API GlassContext *glassCreateContext(int width, int height);
 

@@ -7,6 +7,7 @@
 
 #include "core/context.h"
 #include "lists/command_recording.h"
+#include "select/render_mode_query.h"
 #include "vertex/array_draw.h"
 #include "vertex/primitive_assembly.h"
 #include "vertex/vertex_arrays.h"
@@ -118,7 +119,12 @@ void glGetPointerv(GLenum pname, GLvoid** params) {
       case GL_NORMAL_ARRAY_POINTER: a = &ctx.arrays.normal; break;
       case GL_TEXTURE_COORD_ARRAY_POINTER: a = &ctx.arrays.texCoord; break;
       case GL_EDGE_FLAG_ARRAY_POINTER: a = &ctx.arrays.edgeFlag; break;
-      default: return recordError(ctx, GL_INVALID_ENUM);
+      default: {
+        void* buffer = nullptr;  // the selection and feedback buffers (select/)
+        if (!glass::gl::queryRenderModePointer(ctx, pname, &buffer)) return recordError(ctx, GL_INVALID_ENUM);
+        if (params) *params = buffer;
+        return;
+      }
     }
     if (params) *params = const_cast<GLvoid*>(a->pointer);
   });

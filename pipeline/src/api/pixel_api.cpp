@@ -58,8 +58,8 @@ void glReadPixels(GLint x, GLint y, GLsizei width, GLsizei height, GLenum format
   executeNow([=](Context& ctx) {
     if (glass::gl::rejectInsideBeginEnd(ctx)) return;
     if (width < 0 || height < 0) return recordError(ctx, GL_INVALID_VALUE);
-    if (!glass::gl::isReadPixelsFormat(format) || !glass::gl::isReadPixelsType(type)) {
-      return recordError(ctx, GL_INVALID_ENUM);
+    if (const GLenum error = glass::gl::checkReadPixelsFormatAndType(format, type); error != GL_NO_ERROR) {
+      return recordError(ctx, error);
     }
     if (!pixels) return;
     glass::gl::readPixels(ctx, x, y, width, height, format, type, pixels);

@@ -6,8 +6,9 @@
 // popping an empty one GL_STACK_UNDERFLOW, changing nothing. glPushAttrib and glPopAttrib are
 // compiled into display lists; the client versions are not (spec 5.4).
 //
-// Groups glass has no state for (GL_ACCUM_BUFFER_BIT, GL_PIXEL_MODE_BIT, the polygon stipple
-// pattern) are accepted and save nothing.
+// GL_CURRENT_BIT includes the current raster position, GL_PIXEL_MODE_BIT the pixel transfer
+// state and zoom (the pixel maps belong to no group, table 6.17), GL_ACCUM_BUFFER_BIT the
+// accumulation buffer's clear value, GL_POLYGON_STIPPLE_BIT the stipple pattern.
 #include "core/attrib_stack.h"
 
 #include <cstring>
@@ -71,6 +72,9 @@ struct AttribEntry {
   Viewport viewport;
   double depthNear = 0.0, depthFar = 1.0;
   TextureAttributes texture{};
+  RasterPositionState rasterPosition;  // GL_CURRENT_BIT
+  PixelTransferState pixelTransfer;    // GL_PIXEL_MODE_BIT, without the maps
+  float accumulationClear[4] = {};     // GL_ACCUM_BUFFER_BIT
   bool enableKnown[kEnableCount] = {};
   bool enabled[kEnableCount] = {};
 };
@@ -130,8 +134,20 @@ std::shared_ptr<const AttribEntry> saveAttributes(const Context& ctx, GLbitfield
   auto e = std::make_shared<AttribEntry>();
   e->mask = mask;
   // Whole stage states are small enough to copy as they are; pop restores only the groups asked.
-  if (mask & GL_CURRENT_BIT) e->current = ctx.current;
-  if (mask & (GL_POINT_BIT | GL_LINE_BIT | GL_POLYGON_BIT | GL_LIGHTING_BIT)) e->raster = ctx.raster;
+  if (mask & GL_CURRENT_BIT) {
+    e->current = ctx.current;
+    e->rasterPosition = ctx.rasterPosition;
+  }
+  if (mask & (GL_POINT_BIT | GL_LINE_BIT | GL_POLYGON_BIT | GL_POLYGON_STIPPLE_BIT | GL_LIGHTING_BIT)) {
+    e->raster = ctx.raster;
+  }
+  if (mask & GL_PIXEL_MODE_BIT) {
+    e->pixelTransfer = ctx.pixelTransfer;
+    e->pixelTransfer.maps = {};
+  }
+  if (mask & GL_ACCUM_BUFFER_BIT) {
+    std::memcpy(e->accumulationClear, ctx.accumulation.clearValue, sizeof e->accumulationClear);
+  }
   if (mask & (GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT | GL_COLOR_BUFFER_BIT | GL_SCISSOR_BIT)) {
     e->fragment = ctx.fragment;
   }
@@ -173,8 +189,20 @@ void restoreAttributes(Context& ctx, const AttribEntry& e) {
       if (e.enableKnown[i]) setCapability(ctx, kEnableCapabilities[i], e.enabled[i]);
     }
   }
-  if (mask & GL_CURRENT_BIT) ctx.current = e.current;
+  if (mask & GL_CURRENT_BIT) {
+    ctx.current = e.current;
+    ctx.rasterPosition = e.rasterPosition;
+  }
+  if (mask & GL_PIXEL_MODE_BIT) {
+    auto maps = std::move(ctx.pixelTransfer.maps);
+    ctx.pixelTransfer = e.pixelTransfer;
+    ctx.pixelTransfer.maps = std::move(maps);
+  }
+  if (mask & GL_ACCUM_BUFFER_BIT) {
+    std::memcpy(ctx.accumulation.clearValue, e.accumulationClear, sizeof e.accumulationClear);
+  }
   RasterState& r = ctx.raster;
+  if (mask & GL_POLYGON_STIPPLE_BIT) r.polygonStipplePattern = e.raster.polygonStipplePattern;
   if (mask & GL_POINT_BIT) {
     r.pointSize = e.raster.pointSize;
     r.pointSmooth = e.raster.pointSmooth;

@@ -5,6 +5,7 @@
 
 #include <memory>
 
+#include "accum/accumulation_state.h"
 #include "core/attrib_stack.h"
 #include "core/errors.h"
 #include "core/hint_state.h"
@@ -16,7 +17,10 @@
 #include "glass/raster/framebuffer.h"
 #include "lighting/lighting_state.h"
 #include "lists/display_lists.h"
+#include "pixels/pixel_transfer_state.h"
+#include "pixels/raster_position.h"
 #include "primitive/raster_state.h"
+#include "select/render_mode_state.h"
 #include "texture/texture_state.h"
 #include "vertex/current_state.h"
 #include "vertex/primitive_assembly.h"
@@ -40,6 +44,10 @@
 //   core/pixel_store.h          PixelStoreState   glPixelStore pack and unpack parameters
 //   evaluators/evaluator_state.h EvaluatorState   glMap1/glMap2 and the grid
 //   core/hint_state.h           HintState         glHint
+//   pixels/raster_position.h    RasterPositionState the current raster position (glRasterPos)
+//   pixels/pixel_transfer_state.h PixelTransferState glPixelTransfer, glPixelMap, glPixelZoom
+//   accum/accumulation_state.h  AccumulationState glClearAccum and the accumulation buffer
+//   select/render_mode_state.h  RenderModeState   glRenderMode, selection and feedback
 //
 // Besides GL state, a context holds its framebuffer and the per-draw setup derived from the
 // state at glBegin (primitive/draw_pipeline.h), which is working storage, not GL state.
@@ -69,6 +77,10 @@ struct Context {
   EvaluatorState evaluators;
   HintState hints;
   AttribStackState attribStack;  // glPushAttrib / glPushClientAttrib (core/attrib_stack.h)
+  RasterPositionState rasterPosition;
+  PixelTransferState pixelTransfer;
+  AccumulationState accumulation;
+  RenderModeState renderMode;
 
   raster::Framebuffer framebuffer;
   std::unique_ptr<DrawPipeline> draw;

@@ -2,11 +2,14 @@
 
 #include "core/attrib_stack.h"
 
+#include "accum/accumulation.h"
 #include "core/capabilities.h"
 #include "core/context.h"
 #include "evaluators/evaluator_commands.h"
 #include "fragment/fog_hooks.h"
 #include "lighting/lighting_hooks.h"
+#include "pixels/pixel_queries.h"
+#include "select/render_mode_query.h"
 #include "texture/texture_hooks.h"
 
 namespace glass::gl {
@@ -147,8 +150,7 @@ bool queryCoreState(const Context& ctx, GLenum pname, StateValue& v) {
       v.setIntegers({8});
       return true;
     case GL_DEPTH_BITS: v.setIntegers({24}); return true;
-    case GL_ACCUM_RED_BITS: case GL_ACCUM_GREEN_BITS: case GL_ACCUM_BLUE_BITS:
-    case GL_ACCUM_ALPHA_BITS: case GL_INDEX_BITS: case GL_AUX_BUFFERS:
+    case GL_INDEX_BITS: case GL_AUX_BUFFERS:
       v.setIntegers({0});
       return true;
     case GL_RGBA_MODE: v.setBooleans({true}); return true;
@@ -195,7 +197,8 @@ bool queryState(const Context& ctx, GLenum pname, StateValue& value) {
   if (queryCoreState(ctx, pname, value) || queryAttribStackState(ctx, pname, value) ||
       queryLightingState(ctx, pname, value) ||
       queryFogState(ctx, pname, value) || queryTextureState(ctx, pname, value) ||
-      queryEvaluatorState(ctx, pname, value)) {
+      queryEvaluatorState(ctx, pname, value) || queryPixelState(ctx, pname, value) ||
+      queryAccumulationState(ctx, pname, value) || queryRenderModeState(ctx, pname, value)) {
     return true;
   }
   bool enabled = false;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "accum/accumulation.h"
 #include "core/context.h"
 #include "fragment/color_conversion.h"
 #include "glass/raster/fragment.h"
@@ -9,6 +10,8 @@
 namespace glass::gl {
 
 void clearBuffers(Context& ctx, GLbitfield mask) {
+  // As in Mesa, glClear does nothing in selection and feedback modes, where nothing is drawn.
+  if (ctx.renderMode.mode != GL_RENDER) return;
   raster::Framebuffer& fb = ctx.framebuffer;
   const FragmentState& f = ctx.fragment;
   int x0 = 0, y0 = 0, x1 = fb.width(), y1 = fb.height();
@@ -40,6 +43,7 @@ void clearBuffers(Context& ctx, GLbitfield mask) {
         static_cast<uint32_t>(f.clearDepth * static_cast<double>(raster::kDepthMax) + 0.5);
     for (int y = y0; y < y1; ++y) std::fill(fb.depthAt(x0, y), fb.depthAt(x0, y) + (x1 - x0), depth);
   }
+  if (mask & GL_ACCUM_BUFFER_BIT) clearAccumulationBuffer(ctx, x0, y0, x1, y1);
   if (mask & GL_STENCIL_BUFFER_BIT) {
     const unsigned writeMask = f.stencilWriteMask & 0xFFu;
     const uint8_t value = static_cast<uint8_t>(f.clearStencil & 0xFF);

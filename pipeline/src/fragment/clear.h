@@ -8,8 +8,8 @@ namespace glass::gl {
 
 struct Context;
 
-// mask: GL_COLOR_BUFFER_BIT, GL_DEPTH_BUFFER_BIT, GL_STENCIL_BUFFER_BIT (GL_ACCUM_BUFFER_BIT is
-// accepted; there is no accumulation buffer).
+// mask: GL_COLOR_BUFFER_BIT, GL_DEPTH_BUFFER_BIT, GL_STENCIL_BUFFER_BIT, GL_ACCUM_BUFFER_BIT.
+// Nothing is cleared in GL_SELECT and GL_FEEDBACK render modes.
 void clearBuffers(Context& ctx, GLbitfield mask);
 
 }  // namespace glass::gl

@@ -1,5 +1,6 @@
 // glReadPixels (spec 4.3.2): reads a rectangle of the colour, depth or stencil buffer into client
-// memory, bottom row first, laid out by the GL_PACK_* parameters of glPixelStore.
+// memory, bottom row first, through the pixel transfer operations (pixels/pixel_transfer.h) and
+// laid out by the GL_PACK_* parameters of glPixelStore (texture/client_pixels.h packs).
 #pragma once
 
 #include <GL/gl.h>
@@ -8,11 +9,10 @@ namespace glass::gl {
 
 struct Context;
 
-// Formats: GL_RGBA, GL_RGB, GL_RED, GL_GREEN, GL_BLUE, GL_ALPHA, GL_LUMINANCE,
-// GL_LUMINANCE_ALPHA, GL_BGR, GL_BGRA, GL_DEPTH_COMPONENT, GL_STENCIL_INDEX.
-// Types: GL_UNSIGNED_BYTE, GL_BYTE, GL_UNSIGNED_SHORT, GL_SHORT, GL_UNSIGNED_INT, GL_INT, GL_FLOAT.
-bool isReadPixelsFormat(GLenum format);
-bool isReadPixelsType(GLenum type);
+// The format and type errors of glReadPixels: those of checkPixelFormatAndType (every format
+// and type of tables 3.5 and 3.6, packed types with matching formats), and GL_INVALID_OPERATION
+// for GL_COLOR_INDEX, which an RGBA context cannot read.
+GLenum checkReadPixelsFormatAndType(GLenum format, GLenum type);
 
 // Pixels outside the framebuffer are left untouched in client memory. The caller checked the
 // errors.

@@ -10,14 +10,21 @@
 //
 // Clipping uses the rasterizer's clipPolygon, clipLine and pointInside with the enabled user
 // planes; perspective division and the viewport are in viewport_transform.h. Every fragment goes
-// to the FragmentProcessor.
+// to the FragmentProcessor, those of filled polygons through the polygon stipple first
+// (polygon_stipple.h) when GL_POLYGON_STIPPLE is on.
+//
+// In GL_SELECT and GL_FEEDBACK render modes nothing is rasterized: each point, line and polygon
+// that survives clipping goes to the PrimitiveRecorder (select/primitive_recorder.h) instead, in
+// window coordinates (spec 5.2, 5.3).
 #pragma once
 
 #include "fragment/fragment_processor.h"
 #include "glass/raster/clip.h"
 #include "glass/raster/line.h"
 #include "glass/raster/triangle.h"
+#include "primitive/polygon_stipple.h"
 #include "primitive/viewport_transform.h"
+#include "select/primitive_recorder.h"
 #include "vertex/pipeline_vertex.h"
 #include "vertex/vertex_stage.h"
 
@@ -68,6 +75,11 @@ class DrawPipeline {
   raster::PointSettings pointSettings_;
   bool flat_ = false;
   int stippleCounter_ = 0;
+  PolygonStippleFilter polygonStipple_;
+  raster::FragmentSink* polygonSink_ = &fragments_;  // polygonStipple_ when stippling
+  bool recording_ = false;   // GL_SELECT or GL_FEEDBACK: primitives go to recorder_
+  bool lineReset_ = false;   // the next recorded line starts a new line (GL_LINE_RESET_TOKEN)
+  PrimitiveRecorder recorder_;
   // Scratch space for clipped polygons.
   raster::ClipVertex clipped_[raster::kMaxClippedPolygonVertices + 3];
   raster::WindowVertex window_[raster::kMaxClippedPolygonVertices + 3];

@@ -7,7 +7,10 @@ namespace glass::gl {
 
 void DrawPipeline::drawLine(const PipelineVertex& a, const PipelineVertex& b,
                             const PipelineVertex& provoking, bool restartStipple) {
-  if (restartStipple) stippleCounter_ = 0;
+  if (restartStipple) {
+    stippleCounter_ = 0;
+    lineReset_ = true;
+  }
   raster::ClipVertex va = a.clip, vb = b.clip;
   if (flat_) {
     useProvokingColors(provoking, false, va);
@@ -23,6 +26,11 @@ void DrawPipeline::rasterizeSegment(raster::ClipVertex a, raster::ClipVertex b, 
   raster::WindowVertex wa, wb;
   toWindow(viewport_, a, clip_.varyingCount, wa);
   toWindow(viewport_, b, clip_.varyingCount, wb);
+  if (recording_) {
+    recorder_.line(wa, wb, lineReset_);
+    lineReset_ = false;
+    return;
+  }
   lineSettings_.depthBias = depthBias;
   raster::rasterizeLine(wa, wb, lineSettings_, fragments_);
 }

@@ -11,6 +11,7 @@ void DrawPipeline::rasterizeVertexPoint(const raster::ClipVertex& v, double dept
   if (!raster::pointInside(v, clip_)) return;
   raster::WindowVertex w;
   toWindow(viewport_, v, clip_.varyingCount, w);
+  if (recording_) return recorder_.point(w);
   pointSettings_.depthBias = depthBias;
   raster::rasterizePoint(w, pointSettings_, fragments_);
 }

@@ -35,6 +35,7 @@ double DrawPipeline::polygonDepthBias(const raster::ClipVertex (&v)[3], bool off
 void DrawPipeline::fillTriangle(const raster::ClipVertex (&v)[3], bool frontFacing) {
   const int count = clipToWindow(v, window_);
   if (count < 3) return;
+  if (recording_) return recorder_.polygon(window_, count);
 
   const RasterState& r = ctx_.raster;
   triangleSettings_.frontFacing = frontFacing;
@@ -46,7 +47,7 @@ void DrawPipeline::fillTriangle(const raster::ClipVertex (&v)[3], bool frontFaci
   raster::TriangleSetup setup;
   for (int i = 1; i + 1 < count; ++i) {
     if (raster::setupTriangle(window_[0], window_[i], window_[i + 1], triangleSettings_, setup)) {
-      raster::rasterizeTriangle(setup, fragments_);
+      raster::rasterizeTriangle(setup, *polygonSink_);
     }
   }
 }

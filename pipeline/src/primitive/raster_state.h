@@ -1,8 +1,10 @@
 // Rasterization state (spec 3.3-3.5; tables 6.12 and 6.13): point size, line width and stipple,
-// shade model, polygon mode, culling, front face and polygon offset.
+// shade model, polygon mode, culling, front face, polygon offset and polygon stipple.
 #pragma once
 
 #include <GL/gl.h>
+
+#include "primitive/polygon_stipple.h"
 
 namespace glass::gl {
 
@@ -31,11 +33,13 @@ struct RasterState {
   bool polygonOffsetLine = false;
   bool polygonOffsetPoint = false;
 
+  bool polygonStipple = false;       // GL_POLYGON_STIPPLE
+  PolygonStipplePattern polygonStipplePattern;  // glPolygonStipple
+
   // Accepted and reported, without effect: glass draws aliased primitives only.
   bool pointSmooth = false;
   bool lineSmooth = false;
   bool polygonSmooth = false;
-  bool polygonStipple = false;
 };
 
 }  // namespace glass::gl

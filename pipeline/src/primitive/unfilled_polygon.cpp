@@ -15,6 +15,7 @@ void DrawPipeline::drawTriangleEdges(const raster::ClipVertex (&v)[3], unsigned 
   for (int i = 0; i < 3; ++i) {
     if (!(boundaryEdges & (1u << i))) continue;
     stippleCounter_ = 0;
+    lineReset_ = true;
     rasterizeSegment(v[i], v[(i + 1) % 3], bias);
   }
 }

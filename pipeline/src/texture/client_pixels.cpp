@@ -190,20 +190,50 @@ void floatToElement(float c, GLenum type, bool swap, unsigned char* p) {
 }  // namespace
 
 GLenum checkTexelFormatAndType(GLenum format, GLenum type) {
-  FormatComponents components;
-  const bool formatKnown = formatComponents(format, &components);
+  // Textures take colour formats only, and no bitmaps.
+  if (!isColorFormat(format) || type == GL_BITMAP) return GL_INVALID_ENUM;
+  return checkPixelFormatAndType(format, type);
+}
+
+GLenum checkPixelFormatAndType(GLenum format, GLenum type) {
+  FormatComponents components{};
+  const bool indexOrDepth =
+      format == GL_COLOR_INDEX || format == GL_STENCIL_INDEX || format == GL_DEPTH_COMPONENT;
+  const bool formatKnown = formatComponents(format, &components) || indexOrDepth;
   PackedType packed;
   const bool isPacked = packedType(type, &packed);
-  const bool typeKnown = isPacked || scalarTypeBytes(type) > 0;
+  const bool typeKnown = isPacked || scalarTypeBytes(type) > 0 || type == GL_BITMAP;
   if (!formatKnown || !typeKnown) return GL_INVALID_ENUM;
+  // Spec 3.6.4: bitmaps hold indices only.
+  if (type == GL_BITMAP && format != GL_COLOR_INDEX && format != GL_STENCIL_INDEX) {
+    return GL_INVALID_ENUM;
+  }
   // Table 3.8: 3-component packed types go with RGB (and BGR), 4-component ones with RGBA/BGRA.
-  if (isPacked && packed.count != components.count) return GL_INVALID_OPERATION;
+  if (isPacked && (indexOrDepth || packed.count != components.count)) return GL_INVALID_OPERATION;
   if (isPacked && packed.count == 3 && format != GL_RGB && format != GL_BGR) return GL_INVALID_OPERATION;
   return GL_NO_ERROR;
 }
 
+bool isColorFormat(GLenum format) {
+  FormatComponents components;
+  return formatComponents(format, &components);
+}
+
 void unpackTexels(const void* pixels, int width, int height, GLenum format, GLenum type,
                   const PixelLayout& layout, BaseFormat base, std::vector<uint8_t>& texels) {
+  texels.resize(static_cast<size_t>(width) * static_cast<size_t>(height) * 4);
+  std::vector<float> rgba(static_cast<size_t>(width) * 4);
+  for (int j = 0; j < height; ++j) {
+    unpackColorRow(pixels, width, j, format, type, layout, rgba.data());
+    for (int i = 0; i < width; ++i) {
+      storeTexel(base, &rgba[static_cast<size_t>(i) * 4],
+                 &texels[(static_cast<size_t>(j) * static_cast<size_t>(width) + static_cast<size_t>(i)) * 4]);
+    }
+  }
+}
+
+void unpackColorRow(const void* pixels, int width, int row, GLenum format, GLenum type,
+                    const PixelLayout& layout, float* rgbaOut) {
   FormatComponents components;
   formatComponents(format, &components);
   PackedType packed;
@@ -212,38 +242,41 @@ void unpackTexels(const void* pixels, int width, int height, GLenum format, GLen
   const BlockLayout block = blockLayout(width, isPacked ? 1 : components.count, elementBytes, layout);
   const bool swap = layout.swapBytes && elementBytes > 1;
 
-  texels.resize(static_cast<size_t>(width) * static_cast<size_t>(height) * 4);
-  const auto* first = static_cast<const unsigned char*>(pixels) + block.firstByte;
-  for (int j = 0; j < height; ++j) {
-    const unsigned char* row = first + static_cast<size_t>(j) * block.rowBytes;
-    for (int i = 0; i < width; ++i) {
-      const unsigned char* group = row + static_cast<size_t>(i) * block.groupBytes;
-      float values[4];
-      if (isPacked) {
-        const uint32_t element = readUnsigned(group, packed.bytes, swap);
-        for (int c = 0; c < packed.count; ++c) {
-          const uint32_t max = (1u << packed.width[c]) - 1u;
-          values[c] = static_cast<float>((element >> packed.shift[c]) & max) / static_cast<float>(max);
-        }
+  const unsigned char* first = static_cast<const unsigned char*>(pixels) + block.firstByte +
+                               static_cast<size_t>(row) * block.rowBytes;
+  for (int i = 0; i < width; ++i) {
+    const unsigned char* group = first + static_cast<size_t>(i) * block.groupBytes;
+    float values[4];
+    if (isPacked) {
+      const uint32_t element = readUnsigned(group, packed.bytes, swap);
+      for (int c = 0; c < packed.count; ++c) {
+        const uint32_t max = (1u << packed.width[c]) - 1u;
+        values[c] = static_cast<float>((element >> packed.shift[c]) & max) / static_cast<float>(max);
+      }
+    } else {
+      for (int c = 0; c < components.count; ++c)
+        values[c] = elementToFloat(group + static_cast<size_t>(c) * block.elementBytes, type, swap);
+    }
+    float* rgba = rgbaOut + static_cast<size_t>(i) * 4;
+    rgba[0] = rgba[1] = rgba[2] = 0.0f;
+    rgba[3] = 1.0f;
+    for (int c = 0; c < components.count; ++c) {
+      if (components.slot[c] == kLuminance) {
+        rgba[0] = rgba[1] = rgba[2] = values[c];
       } else {
-        for (int c = 0; c < components.count; ++c)
-          values[c] = elementToFloat(group + static_cast<size_t>(c) * block.elementBytes, type, swap);
+        rgba[components.slot[c]] = values[c];
       }
-      float rgba[4] = {0.0f, 0.0f, 0.0f, 1.0f};
-      for (int c = 0; c < components.count; ++c) {
-        if (components.slot[c] == kLuminance) {
-          rgba[0] = rgba[1] = rgba[2] = values[c];
-        } else {
-          rgba[components.slot[c]] = values[c];
-        }
-      }
-      storeTexel(base, rgba, &texels[(static_cast<size_t>(j) * static_cast<size_t>(width) + static_cast<size_t>(i)) * 4]);
     }
   }
 }
 
 void packPixelRow(const float* rgba, int width, int row, GLenum format, GLenum type,
                   const PixelLayout& layout, void* pixels) {
+  packColorSpan(rgba, width, width, 0, row, format, type, layout, LuminancePacking::Red, pixels);
+}
+
+void packColorSpan(const float* rgba, int count, int width, int column, int row, GLenum format,
+                   GLenum type, const PixelLayout& layout, LuminancePacking luminance, void* pixels) {
   FormatComponents components;
   formatComponents(format, &components);
   PackedType packed;
@@ -253,13 +286,21 @@ void packPixelRow(const float* rgba, int width, int row, GLenum format, GLenum t
   const bool swap = layout.swapBytes && elementBytes > 1;
 
   unsigned char* out = static_cast<unsigned char*>(pixels) + block.firstByte +
-                       static_cast<size_t>(row) * block.rowBytes;
-  for (int i = 0; i < width; ++i) {
+                       static_cast<size_t>(row) * block.rowBytes +
+                       static_cast<size_t>(column) * block.groupBytes;
+  for (int i = 0; i < count; ++i) {
     unsigned char* group = out + static_cast<size_t>(i) * block.groupBytes;
     const float* in = rgba + static_cast<size_t>(i) * 4;
     float values[4];
-    for (int c = 0; c < components.count; ++c)
-      values[c] = in[components.slot[c] == kLuminance ? 0 : components.slot[c]];
+    for (int c = 0; c < components.count; ++c) {
+      if (components.slot[c] != kLuminance) {
+        values[c] = in[components.slot[c]];
+      } else if (luminance == LuminancePacking::Red) {
+        values[c] = in[0];
+      } else {
+        values[c] = std::min(1.0f, in[0] + in[1] + in[2]);
+      }
+    }
     if (isPacked) {
       uint32_t element = 0;
       for (int c = 0; c < packed.count; ++c) {
@@ -271,6 +312,113 @@ void packPixelRow(const float* rgba, int width, int row, GLenum format, GLenum t
     } else {
       for (int c = 0; c < components.count; ++c)
         floatToElement(values[c], type, swap, group + static_cast<size_t>(c) * block.elementBytes);
+    }
+  }
+}
+
+namespace {
+
+// Bitmaps (spec 3.6.4, "Unpacking of bitmaps"): a row of l bits (l the row length or the width)
+// takes a ceil(l / 8a) bytes, a the alignment; pixel i of a row is bit skipPixels + i, counted
+// from the most significant bit of each byte, or from the least with GL_*_LSB_FIRST.
+struct BitPosition {
+  size_t byte;
+  unsigned mask;
+};
+
+BitPosition bitmapBit(int width, int column, int row, const PixelLayout& layout) {
+  const size_t rowBits = static_cast<size_t>(layout.rowLength > 0 ? layout.rowLength : width);
+  const size_t alignment = static_cast<size_t>(std::max(layout.alignment, 1));
+  const size_t rowBytes = (rowBits + 8 * alignment - 1) / (8 * alignment) * alignment;
+  const size_t bit = static_cast<size_t>(layout.skipPixels) + static_cast<size_t>(column);
+  const unsigned shift = static_cast<unsigned>(bit % 8);
+  return {(static_cast<size_t>(layout.skipRows) + static_cast<size_t>(row)) * rowBytes + bit / 8,
+          layout.lsbFirst ? 1u << shift : 0x80u >> shift};
+}
+
+// A one-component block (depth or index) of a scalar type: where pixel `column` of `row` starts.
+const unsigned char* scalarElement(const void* pixels, int width, int column, int row, GLenum type,
+                                   const PixelLayout& layout) {
+  const BlockLayout block = blockLayout(width, 1, scalarTypeBytes(type), layout);
+  return static_cast<const unsigned char*>(pixels) + block.firstByte +
+         static_cast<size_t>(row) * block.rowBytes + static_cast<size_t>(column) * block.groupBytes;
+}
+
+}  // namespace
+
+void unpackDepthRow(const void* pixels, int width, int row, GLenum type, const PixelLayout& layout,
+                    float* depth) {
+  const bool swap = layout.swapBytes && scalarTypeBytes(type) > 1;
+  for (int i = 0; i < width; ++i) {
+    depth[i] = elementToFloat(scalarElement(pixels, width, i, row, type, layout), type, swap);
+  }
+}
+
+void unpackIndexRow(const void* pixels, int width, int row, GLenum type, const PixelLayout& layout,
+                    int32_t* indices) {
+  if (type == GL_BITMAP) {
+    const auto* bytes = static_cast<const unsigned char*>(pixels);
+    for (int i = 0; i < width; ++i) {
+      const BitPosition bit = bitmapBit(width, i, row, layout);
+      indices[i] = (bytes[bit.byte] & bit.mask) ? 1 : 0;
+    }
+    return;
+  }
+  const int bytes = scalarTypeBytes(type);
+  const bool swap = layout.swapBytes && bytes > 1;
+  for (int i = 0; i < width; ++i) {
+    const unsigned char* p = scalarElement(pixels, width, i, row, type, layout);
+    const uint32_t raw = readUnsigned(p, bytes, swap);
+    switch (type) {
+      case GL_BYTE: indices[i] = static_cast<int8_t>(raw); break;
+      case GL_SHORT: indices[i] = static_cast<int16_t>(raw); break;
+      case GL_FLOAT: {
+        float f;
+        std::memcpy(&f, &raw, 4);
+        // Spec 3.6.4: a floating-point index keeps its integer part; out-of-range values are
+        // clamped rather than left undefined.
+        indices[i] = static_cast<int32_t>(std::clamp(std::trunc(static_cast<double>(f)), -2147483648.0, 2147483647.0));
+        break;
+      }
+      default: indices[i] = static_cast<int32_t>(raw); break;  // unsigned types and GL_INT
+    }
+  }
+}
+
+void packDepthSpan(const float* depth, int count, int width, int column, int row, GLenum type,
+                   const PixelLayout& layout, void* pixels) {
+  const bool swap = layout.swapBytes && scalarTypeBytes(type) > 1;
+  for (int i = 0; i < count; ++i) {
+    auto* p = const_cast<unsigned char*>(scalarElement(pixels, width, column + i, row, type, layout));
+    floatToElement(depth[i], type, swap, p);
+  }
+}
+
+void packIndexSpan(const uint32_t* indices, int count, int width, int column, int row, GLenum type,
+                   const PixelLayout& layout, void* pixels) {
+  if (type == GL_BITMAP) {
+    auto* bytes = static_cast<unsigned char*>(pixels);
+    for (int i = 0; i < count; ++i) {
+      const BitPosition bit = bitmapBit(width, column + i, row, layout);
+      if (indices[i] & 1u) {
+        bytes[bit.byte] = static_cast<unsigned char>(bytes[bit.byte] | bit.mask);
+      } else {
+        bytes[bit.byte] = static_cast<unsigned char>(bytes[bit.byte] & ~bit.mask);
+      }
+    }
+    return;
+  }
+  const int bytes = scalarTypeBytes(type);
+  const bool swap = layout.swapBytes && bytes > 1;
+  for (int i = 0; i < count; ++i) {
+    auto* p = const_cast<unsigned char*>(scalarElement(pixels, width, column + i, row, type, layout));
+    if (type == GL_FLOAT) {
+      const float f = static_cast<float>(indices[i]);
+      uint32_t bits;
+      std::memcpy(&bits, &f, 4);
+      writeUnsigned(p, 4, swap, bits);
+    } else {
+      writeUnsigned(p, bytes, swap, indices[i]);  // masked to the type's width
     }
   }
 }

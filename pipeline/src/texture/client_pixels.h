@@ -1,9 +1,11 @@
-// Reading texel data from client memory (glTexImage, glTexSubImage: "unpacking", OpenGL 1.5
-// specification, section 3.6.4) and writing it back (glGetTexImage: "packing", section 4.3.2),
-// with the format/type combinations of tables 3.5 to 3.8 and the glPixelStore layout parameters.
+// Reading pixel data from client memory ("unpacking", OpenGL 1.5 specification, section 3.6.4)
+// and writing it back ("packing", section 4.3.2), with the format/type combinations of tables 3.5
+// to 3.8 and the glPixelStore layout parameters. Texture images (glTexImage, glGetTexImage), pixel
+// rectangles (glDrawPixels, glReadPixels), bitmaps (glBitmap, glPolygonStipple) all read and write
+// client memory through these functions.
 //
-// Pixel transfer operations (glPixelTransfer scale and bias, glPixelMap) are not applied: glass
-// keeps them at their defaults, where they change nothing.
+// Pixel transfer operations (glPixelTransfer, glPixelMap) are not applied here: they act on the
+// unpacked values (pixels/pixel_transfer.h). Texture images do not apply them.
 #pragma once
 
 #include <GL/gl.h>
@@ -12,18 +14,13 @@
 #include <cstdint>
 #include <vector>
 
+#include "core/pixel_store.h"
 #include "texture/texture_image.h"
 
 namespace glass::gl {
 
 // The glPixelStore parameters of one direction (GL_UNPACK_* or GL_PACK_*).
-struct PixelLayout {
-  int alignment = 4;   // 1, 2, 4 or 8
-  int rowLength = 0;   // 0: rows are as long as the image
-  int skipRows = 0;
-  int skipPixels = 0;
-  bool swapBytes = false;
-};
+using PixelLayout = PixelPacking;
 
 // Checks a format/type pair for texture images. Returns GL_NO_ERROR, GL_INVALID_ENUM (a format or
 // type that is not one of the GL's, or one textures do not take: COLOR_INDEX, STENCIL_INDEX,
@@ -44,5 +41,44 @@ void unpackTexels(const void* pixels, int width, int height, GLenum format, GLen
 // R).
 void packPixelRow(const float* rgba, int width, int row, GLenum format, GLenum type,
                   const PixelLayout& layout, void* pixels);
+
+// The format and type checks of glDrawPixels and glReadPixels (spec 3.6.4, 4.3.2; tables 3.5,
+// 3.6 and 3.8). Returns GL_INVALID_ENUM for a format or type that is not the GL's, or GL_BITMAP
+// with a format other than GL_COLOR_INDEX and GL_STENCIL_INDEX, and GL_INVALID_OPERATION for a
+// packed type whose components do not match the format (table 3.8).
+GLenum checkPixelFormatAndType(GLenum format, GLenum type);
+
+// GL_RED, GL_GREEN, GL_BLUE, GL_ALPHA, GL_RGB, GL_BGR, GL_RGBA, GL_BGRA, GL_LUMINANCE,
+// GL_LUMINANCE_ALPHA.
+bool isColorFormat(GLenum format);
+
+// Unpacking, one row of a width-pixel block at a time (row 0 first; spec 3.6.4):
+// Colour formats to RGBA floats, 4 per pixel: elements converted by table 2.9, luminance copied
+// to R, G and B, missing components R, G, B = 0 and A = 1.
+void unpackColorRow(const void* pixels, int width, int row, GLenum format, GLenum type,
+                    const PixelLayout& layout, float* rgba);
+// GL_DEPTH_COMPONENT: one value per pixel, converted like a colour component (table 2.9).
+void unpackDepthRow(const void* pixels, int width, int row, GLenum type, const PixelLayout& layout,
+                    float* depth);
+// GL_COLOR_INDEX and GL_STENCIL_INDEX: integers as given (floats truncated), GL_BITMAP one bit
+// each (spec 3.6.4, "Unpacking of bitmaps", honouring GL_UNPACK_LSB_FIRST).
+void unpackIndexRow(const void* pixels, int width, int row, GLenum type, const PixelLayout& layout,
+                    int32_t* indices);
+
+// Packing. A span of count pixels starting at column `column` of row `row` of a block `width`
+// pixels wide: the pixels outside the span are left as they are in client memory.
+// How luminance is formed from RGBA: R alone (glGetTexImage, table 6.1), or R + G + B clamped to
+// [0, 1] (glReadPixels, spec 4.3.2).
+enum class LuminancePacking { Red, Sum };
+// rgba: 4 floats per pixel, clamped to [0, 1] and converted by table 4.7.
+void packColorSpan(const float* rgba, int count, int width, int column, int row, GLenum format,
+                   GLenum type, const PixelLayout& layout, LuminancePacking luminance, void* pixels);
+// GL_DEPTH_COMPONENT: values clamped to [0, 1] and converted by table 4.7.
+void packDepthSpan(const float* depth, int count, int width, int column, int row, GLenum type,
+                   const PixelLayout& layout, void* pixels);
+// GL_STENCIL_INDEX and GL_COLOR_INDEX: integers masked to the type's width; GL_BITMAP writes bit
+// 0 of each index.
+void packIndexSpan(const uint32_t* indices, int count, int width, int column, int row, GLenum type,
+                   const PixelLayout& layout, void* pixels);
 
 }  // namespace glass::gl

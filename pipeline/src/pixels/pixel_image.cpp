@@ -1,0 +1,179 @@
+#include "pixels/pixel_image.h"
+
+#include <cmath>
+
+#include "core/context.h"
+#include "pixels/pixel_fragments.h"
+#include "pixels/pixel_transfer.h"
+#include "select/render_mode.h"
+#include "texture/client_pixels.h"
+
+namespace glass::gl {
+
+namespace {
+
+size_t pixelCount(int width, int height) {
+  return static_cast<size_t>(width) * static_cast<size_t>(height);
+}
+
+// Pixel commands act only with a valid raster position (spec 2.13), and rasterize only in
+// GL_RENDER mode; in feedback mode they leave their token (spec 5.3).
+bool shouldRasterize(Context& ctx, GLenum feedbackToken) {
+  if (!ctx.rasterPosition.valid) return false;
+  if (ctx.renderMode.mode == GL_RENDER) return true;
+  recordPixelCommand(ctx, feedbackToken);
+  return false;
+}
+
+// Colours, depths or stencil indices after the transfer operations, drawn at the raster position.
+void drawColors(Context& ctx, int width, int height, std::vector<float> rgba) {
+  transferColors(ctx.pixelTransfer, rgba.data(), static_cast<int>(pixelCount(width, height)));
+  FragmentImage image;
+  image.width = width;
+  image.height = height;
+  image.colors = rgba.data();
+  drawImageFragments(ctx, image);
+}
+
+void drawDepths(Context& ctx, int width, int height, std::vector<float> depth) {
+  transferDepths(ctx.pixelTransfer, depth.data(), static_cast<int>(pixelCount(width, height)));
+  FragmentImage image;
+  image.width = width;
+  image.height = height;
+  image.depths = depth.data();
+  drawImageFragments(ctx, image);
+}
+
+void drawStencil(Context& ctx, int width, int height, std::vector<int32_t> indices) {
+  transferStencilIndices(ctx.pixelTransfer, indices.data(), static_cast<int>(pixelCount(width, height)));
+  drawStencilImage(ctx, width, height, indices.data());
+}
+
+}  // namespace
+
+UnpackedImage unpackImage(const void* pixels, int width, int height, GLenum format, GLenum type,
+                          const PixelPacking& unpack) {
+  UnpackedImage image;
+  image.width = width;
+  image.height = height;
+  const size_t count = pixelCount(width, height);
+  switch (format) {
+    case GL_COLOR_INDEX:
+    case GL_STENCIL_INDEX:
+      image.kind = format == GL_STENCIL_INDEX ? PixelKind::Stencil : PixelKind::ColorIndex;
+      image.indices.resize(count);
+      for (int j = 0; j < height; ++j) {
+        unpackIndexRow(pixels, width, j, type, unpack, image.indices.data() + static_cast<size_t>(j) * width);
+      }
+      break;
+    case GL_DEPTH_COMPONENT:
+      image.kind = PixelKind::Depth;
+      image.values.resize(count);
+      for (int j = 0; j < height; ++j) {
+        unpackDepthRow(pixels, width, j, type, unpack, image.values.data() + static_cast<size_t>(j) * width);
+      }
+      break;
+    default:
+      image.kind = PixelKind::Color;
+      image.values.resize(count * 4);
+      for (int j = 0; j < height; ++j) {
+        unpackColorRow(pixels, width, j, format, type, unpack,
+                       image.values.data() + static_cast<size_t>(j) * width * 4);
+      }
+      break;
+  }
+  return image;
+}
+
+void drawPixels(Context& ctx, const UnpackedImage& image) {
+  if (!shouldRasterize(ctx, GL_DRAW_PIXEL_TOKEN)) return;
+  if (image.width == 0 || image.height == 0) return;
+  switch (image.kind) {
+    case PixelKind::Color:
+      drawColors(ctx, image.width, image.height, image.values);
+      break;
+    case PixelKind::ColorIndex: {
+      std::vector<float> rgba(pixelCount(image.width, image.height) * 4);
+      colorIndicesToRGBA(ctx.pixelTransfer, image.indices.data(),
+                         static_cast<int>(pixelCount(image.width, image.height)), rgba.data());
+      FragmentImage fragments;
+      fragments.width = image.width;
+      fragments.height = image.height;
+      fragments.colors = rgba.data();
+      drawImageFragments(ctx, fragments);
+      break;
+    }
+    case PixelKind::Depth:
+      drawDepths(ctx, image.width, image.height, image.values);
+      break;
+    case PixelKind::Stencil:
+      drawStencil(ctx, image.width, image.height, image.indices);
+      break;
+  }
+}
+
+void copyPixels(Context& ctx, int x, int y, int width, int height, GLenum type) {
+  if (!shouldRasterize(ctx, GL_COPY_PIXEL_TOKEN)) return;
+  if (width == 0 || height == 0) return;
+  // The whole source is read before anything is drawn, so that overlapping source and
+  // destination rectangles copy the original pixels (spec 4.3.3: as if read, then drawn).
+  const raster::Framebuffer& fb = ctx.framebuffer;
+  const size_t count = pixelCount(width, height);
+  auto inside = [&](int i, int j) {
+    const long long fx = static_cast<long long>(x) + i, fy = static_cast<long long>(y) + j;
+    return fx >= 0 && fy >= 0 && fx < fb.width() && fy < fb.height();
+  };
+  if (type == GL_COLOR) {
+    std::vector<float> rgba(count * 4, 0.0f);
+    for (int j = 0; j < height; ++j) {
+      for (int i = 0; i < width; ++i) {
+        if (!inside(i, j)) continue;
+        const uint8_t* c = fb.colorAt(x + i, y + j);
+        float* out = &rgba[(static_cast<size_t>(j) * width + i) * 4];
+        for (int k = 0; k < 4; ++k) out[k] = static_cast<float>(c[k]) / 255.0f;
+      }
+    }
+    drawColors(ctx, width, height, std::move(rgba));
+  } else if (type == GL_DEPTH) {
+    std::vector<float> depth(count, 0.0f);
+    for (int j = 0; j < height; ++j) {
+      for (int i = 0; i < width; ++i) {
+        if (!inside(i, j)) continue;
+        depth[static_cast<size_t>(j) * width + i] =
+            static_cast<float>(static_cast<double>(*fb.depthAt(x + i, y + j)) / raster::kDepthMax);
+      }
+    }
+    drawDepths(ctx, width, height, std::move(depth));
+  } else {
+    std::vector<int32_t> indices(count, 0);
+    for (int j = 0; j < height; ++j) {
+      for (int i = 0; i < width; ++i) {
+        if (inside(i, j)) indices[static_cast<size_t>(j) * width + i] = *fb.stencilAt(x + i, y + j);
+      }
+    }
+    drawStencil(ctx, width, height, std::move(indices));
+  }
+}
+
+void drawBitmap(Context& ctx, int width, int height, float xorig, float yorig, float xmove,
+                float ymove, const std::vector<uint8_t>& bits) {
+  RasterPositionState& r = ctx.rasterPosition;
+  if (!r.valid) return;  // an invalid raster position is not moved either (spec 3.7)
+  if (ctx.renderMode.mode == GL_RENDER) {
+    if (width > 0 && height > 0 && !bits.empty()) {
+      // Spec 3.7: the bitmap's lower left corner is at (floor(x_rp - x_o), floor(y_rp - y_o)).
+      // Like Mesa (and SGI's implementation), a raster position 1e-4 below an integer counts as
+      // that integer, so that positions computed as whole pixels with a rounding error stay put.
+      const float epsilon = 0.0001f;
+      const int xll = static_cast<int>(std::floor(r.window[0] + epsilon - xorig));
+      const int yll = static_cast<int>(std::floor(r.window[1] + epsilon - yorig));
+      drawBitmapFragments(ctx, xll, yll, width, height, bits.data());
+    }
+  } else {
+    recordPixelCommand(ctx, GL_BITMAP_TOKEN);
+  }
+  r.window[0] += xmove;
+  r.window[1] += ymove;
+}
+
+}  // namespace glass::gl
