@@ -8,9 +8,8 @@
 //
 // freeglut's shape functions need no window, only glutInit's "initialised" flag, which they
 // check through its error handler: with glutInitErrorFunc installed they report and carry on.
-#include <doctest/doctest.h>
-
 #include <GL/freeglut.h>
+#include <doctest/doctest.h>
 
 #include <cmath>
 #include <cstdarg>
@@ -74,8 +73,7 @@ void checkSame(const std::vector<Primitive>& expected, const std::vector<Primiti
     for (size_t k = 0; k < expected[p].data.size(); ++k) {
       const float e = expected[p].data[k], a = actual[p].data[k];
       if (tolerance == 0.0f ? e != a : std::fabs(e - a) > tolerance) {
-        INFO("vertex " << k / 6 << " component " << k % 6 << ": freeglut " << e << ", glass "
-                       << a);
+        INFO("vertex " << k / 6 << " component " << k % 6 << ": freeglut " << e << ", glass " << a);
         CHECK(false);
         return;
       }
@@ -91,7 +89,9 @@ void glDisableClientState(GLenum) {}
 void glVertexPointer(GLint, GLenum, GLsizei, const GLvoid* p) {
   g_positions = static_cast<const GLfloat*>(p);
 }
-void glNormalPointer(GLenum, GLsizei, const GLvoid* p) { g_normals = static_cast<const GLfloat*>(p); }
+void glNormalPointer(GLenum, GLsizei, const GLvoid* p) {
+  g_normals = static_cast<const GLfloat*>(p);
+}
 void glTexCoordPointer(GLint, GLenum, GLsizei, const GLvoid*) {}
 void glDrawArrays(GLenum mode, GLint first, GLsizei count) {
   Primitive p{mode, {}};
@@ -111,32 +111,53 @@ namespace shapes = glass::gl::glut;
 TEST_CASE("GLUT round shapes match freeglut bit for bit") {
   for (bool wire : {false, true}) {
     INFO("wire " << wire);
-    const struct { double r; int slices, stacks; } spheres[] = {{1.0, 16, 8}, {0.7, 5, 2}, {2.5, 31, 17}};
+    const struct {
+      double r;
+      int slices, stacks;
+    } spheres[] = {{1.0, 16, 8}, {0.7, 5, 2}, {2.5, 31, 17}};
     for (const auto& s : spheres) {
       INFO("sphere " << s.r << " " << s.slices << " " << s.stacks);
-      checkSame(freeglut([&] { wire ? glutWireSphere(s.r, s.slices, s.stacks)
-                                    : glutSolidSphere(s.r, s.slices, s.stacks); }),
-                expand(shapes::sphereMesh(static_cast<float>(s.r), s.slices, s.stacks, wire)), 0.0f);
+      checkSame(freeglut([&] {
+                  wire ? glutWireSphere(s.r, s.slices, s.stacks)
+                       : glutSolidSphere(s.r, s.slices, s.stacks);
+                }),
+                expand(shapes::sphereMesh(static_cast<float>(s.r), s.slices, s.stacks, wire)),
+                0.0f);
     }
-    const struct { double b, h; int slices, stacks; } cones[] = {{1.0, 2.0, 16, 4}, {0.3, 0.7, 3, 1}, {1.7, 0.9, 20, 7}};
+    const struct {
+      double b, h;
+      int slices, stacks;
+    } cones[] = {{1.0, 2.0, 16, 4}, {0.3, 0.7, 3, 1}, {1.7, 0.9, 20, 7}};
     for (const auto& c : cones) {
       INFO("cone/cylinder " << c.b << " " << c.h << " " << c.slices << " " << c.stacks);
-      checkSame(freeglut([&] { wire ? glutWireCone(c.b, c.h, c.slices, c.stacks)
-                                    : glutSolidCone(c.b, c.h, c.slices, c.stacks); }),
+      checkSame(freeglut([&] {
+                  wire ? glutWireCone(c.b, c.h, c.slices, c.stacks)
+                       : glutSolidCone(c.b, c.h, c.slices, c.stacks);
+                }),
                 expand(shapes::coneMesh(static_cast<float>(c.b), static_cast<float>(c.h), c.slices,
-                                        c.stacks, wire)), 0.0f);
-      checkSame(freeglut([&] { wire ? glutWireCylinder(c.b, c.h, c.slices, c.stacks)
-                                    : glutSolidCylinder(c.b, c.h, c.slices, c.stacks); }),
+                                        c.stacks, wire)),
+                0.0f);
+      checkSame(freeglut([&] {
+                  wire ? glutWireCylinder(c.b, c.h, c.slices, c.stacks)
+                       : glutSolidCylinder(c.b, c.h, c.slices, c.stacks);
+                }),
                 expand(shapes::cylinderMesh(static_cast<float>(c.b), static_cast<float>(c.h),
-                                            c.slices, c.stacks, wire)), 0.0f);
+                                            c.slices, c.stacks, wire)),
+                0.0f);
     }
-    const struct { double inner, outer; int sides, rings; } tori[] = {{0.3, 1.0, 8, 16}, {0.5, 0.9, 3, 2}, {0.25, 2.0, 13, 29}};
+    const struct {
+      double inner, outer;
+      int sides, rings;
+    } tori[] = {{0.3, 1.0, 8, 16}, {0.5, 0.9, 3, 2}, {0.25, 2.0, 13, 29}};
     for (const auto& t : tori) {
       INFO("torus " << t.inner << " " << t.outer << " " << t.sides << " " << t.rings);
-      checkSame(freeglut([&] { wire ? glutWireTorus(t.inner, t.outer, t.sides, t.rings)
-                                    : glutSolidTorus(t.inner, t.outer, t.sides, t.rings); }),
+      checkSame(freeglut([&] {
+                  wire ? glutWireTorus(t.inner, t.outer, t.sides, t.rings)
+                       : glutSolidTorus(t.inner, t.outer, t.sides, t.rings);
+                }),
                 expand(shapes::torusMesh(static_cast<float>(t.inner), static_cast<float>(t.outer),
-                                         t.sides, t.rings, wire)), 0.0f);
+                                         t.sides, t.rings, wire)),
+                0.0f);
     }
   }
 }

@@ -68,7 +68,9 @@ std::vector<Styles> allStyles() {
   for (GLenum normals : {GLU_SMOOTH, GLU_FLAT, GLU_NONE})
     for (GLenum orientation : {GLU_OUTSIDE, GLU_INSIDE})
       for (GLenum drawStyle : {GLU_FILL, GLU_LINE, GLU_SILHOUETTE, GLU_POINT})
-        for (bool texture : {false, true}) out.push_back({normals, orientation, drawStyle, texture});
+        for (bool texture : {false, true}) {
+          out.push_back({normals, orientation, drawStyle, texture});
+        }
   return out;
 }
 

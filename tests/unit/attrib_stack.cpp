@@ -35,7 +35,7 @@ GLfloat number(GLenum pname) {
 
 }  // namespace
 
-TEST_CASE("glPushAttrib(GL_LIGHTING_BIT) restores lights, materials, the model and the shade model") {
+TEST_CASE("glPushAttrib(GL_LIGHTING_BIT) restores lights, materials, model and shade model") {
   ScopedContext scope;
   glPushAttrib(GL_LIGHTING_BIT);
   const GLfloat red[4] = {1, 0, 0, 1};

@@ -135,7 +135,9 @@ ShapeMesh coneMesh(float base, float height, int slices, int stacks, bool wire) 
     return mesh;
   }
   ShapeMesh::Draw bottom = draw(GL_TRIANGLE_STRIP);
-  for (int j = 0; j <= slices; ++j) bottom.indices.insert(bottom.indices.end(), {0, 1 + j % slices});
+  for (int j = 0; j <= slices; ++j) {
+    bottom.indices.insert(bottom.indices.end(), {0, 1 + j % slices});
+  }
   mesh.draws.push_back(bottom);
   for (int i = 0; i < stacks; ++i) {
     ShapeMesh::Draw band = draw(GL_TRIANGLE_STRIP);
@@ -172,7 +174,8 @@ ShapeMesh cylinderMesh(float radius, float height, int slices, int stacks, bool 
   }
   mesh.addVertex(0.0f, 0.0f, height, 0.0f, 0.0f, 1.0f);
   const int top = mesh.vertexCount() - 1;
-  auto ring = [slices](int i) { return 1 + (i + 1) * slices; };  // side ring i; ring(stacks+1) is the top cap ring
+  // Side ring i; ring(stacks + 1) is the ring of the top cap.
+  auto ring = [slices](int i) { return 1 + (i + 1) * slices; };
 
   if (wire) {
     ShapeMesh::Draw lines = draw(GL_LINES);
@@ -188,7 +191,9 @@ ShapeMesh cylinderMesh(float radius, float height, int slices, int stacks, bool 
     return mesh;
   }
   ShapeMesh::Draw bottom = draw(GL_TRIANGLE_STRIP);
-  for (int j = 0; j <= slices; ++j) bottom.indices.insert(bottom.indices.end(), {0, 1 + j % slices});
+  for (int j = 0; j <= slices; ++j) {
+    bottom.indices.insert(bottom.indices.end(), {0, 1 + j % slices});
+  }
   mesh.draws.push_back(bottom);
   for (int i = 0; i < stacks; ++i) {
     ShapeMesh::Draw band = draw(GL_TRIANGLE_STRIP);
@@ -198,7 +203,9 @@ ShapeMesh cylinderMesh(float radius, float height, int slices, int stacks, bool 
     mesh.draws.push_back(band);
   }
   ShapeMesh::Draw cap = draw(GL_TRIANGLE_STRIP);
-  for (int j = 0; j <= slices; ++j) cap.indices.insert(cap.indices.end(), {ring(stacks + 1) + j % slices, top});
+  for (int j = 0; j <= slices; ++j) {
+    cap.indices.insert(cap.indices.end(), {ring(stacks + 1) + j % slices, top});
+  }
   mesh.draws.push_back(cap);
   return mesh;
 }

@@ -73,7 +73,9 @@ bool queryLightingState(const Context& ctx, GLenum pname, StateValue& value) {
                                                          : GL_SINGLE_COLOR)});
       return true;
     case GL_COLOR_MATERIAL_FACE: value.setIntegers({double(l.colorMaterial.face)}); return true;
-    case GL_COLOR_MATERIAL_PARAMETER: value.setIntegers({double(l.colorMaterial.mode)}); return true;
+    case GL_COLOR_MATERIAL_PARAMETER:
+      value.setIntegers({double(l.colorMaterial.mode)});
+      return true;
     case GL_MAX_LIGHTS: value.setIntegers({double(kMaxLights)}); return true;
     default: return false;
   }

@@ -34,7 +34,8 @@ struct Material {
   float specular[4] = {0.0f, 0.0f, 0.0f, 1.0f};
   float emission[4] = {0.0f, 0.0f, 0.0f, 1.0f};
   float shininess = 0.0f;       // [0, 128]
-  float colorIndexes[3] = {0.0f, 1.0f, 1.0f};  // kept for glGetMaterial; colour index mode is not supported
+  // GL_COLOR_INDEXES: kept for glGetMaterial; glass has no colour index mode.
+  float colorIndexes[3] = {0.0f, 1.0f, 1.0f};
 };
 
 // glLightModel.
