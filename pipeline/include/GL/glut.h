@@ -35,10 +35,9 @@ GLAPI void GLAPIENTRY glutSolidDodecahedron(void);
 GLAPI void GLAPIENTRY glutWireDodecahedron(void);
 GLAPI void GLAPIENTRY glutSolidIcosahedron(void);
 GLAPI void GLAPIENTRY glutWireIcosahedron(void);
-/* GLASS-SECTION: glutSolidTeapot / glutWireTeapot (Bezier patches) */
-/* The Utah teapot, 1.575 size tall and centred on the origin, y up, spout towards +x (freeglut
- * 3's size and orientation), drawn through glMap2/glEvalMesh2; the solid one has texture
- * coordinates. */
+/* The Utah teapot, about 1.575 size tall and centred on the origin, y up, spout towards +x,
+ * tessellated exactly as freeglut 3 does it (32 bicubic patches on 8 x 8 points solid, as
+ * triangles with texture coordinates; 10 x 10 wire, as line strips). */
 GLAPI void GLAPIENTRY glutSolidTeapot(GLdouble size);
 GLAPI void GLAPIENTRY glutWireTeapot(GLdouble size);
 

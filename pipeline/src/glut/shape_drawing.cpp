@@ -14,6 +14,7 @@ void drawShapeMesh(const ShapeMesh& mesh) {
     glBegin(d.mode);
     for (int k : d.indices) {
       glNormal3fv(&mesh.normals[3 * static_cast<std::size_t>(k)]);
+      if (!mesh.texCoords.empty()) glTexCoord2fv(&mesh.texCoords[2 * static_cast<std::size_t>(k)]);
       glVertex3fv(&mesh.positions[3 * static_cast<std::size_t>(k)]);
     }
     glEnd();

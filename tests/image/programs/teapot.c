@@ -1,9 +1,7 @@
 /* glutSolidTeapot and glutWireTeapot: the Utah teapot, lit and textured, with a wire teapot
- * beside it. glass draws them through its evaluators (glMap2, glEvalMesh2 with GL_AUTO_NORMAL);
- * the Mesa reference is freeglut 3's teapot (see reference_images/README.md), which evaluates
- * the same 32 bicubic patches on the same grids (8 x 8 points per patch solid, 10 x 10 wire) at
- * the same size and orientation, and draws them as triangles split along the other diagonal of
- * each grid quad.
+ * beside it. The Mesa reference is freeglut 3's teapot (see reference_images/README.md); glass
+ * tessellates the teapot as freeglut does (8 x 8 points per patch as triangles for the solid one,
+ * 10 x 10 as line strips for the wire one), so both draw the same triangles.
  *
  * The solid teapot's texture coordinates run over each patch (s along its first index, t along
  * its second), so the checkerboard repeats on every patch. */
