@@ -22,11 +22,16 @@ Matrix4 scaleMatrix(float x, float y, float z) {
 }
 
 bool rotationMatrix(float angleDegrees, float x, float y, float z, Matrix4& r) {
-  // Sine and cosine in double, rounded to float: the float matrix then holds the correctly
-  // rounded values for angles such as 90 degrees.
-  const double radians = static_cast<double>(angleDegrees) * (std::numbers::pi / 180.0);
-  const float s = static_cast<float>(std::sin(radians));
-  const float c = static_cast<float>(std::cos(radians));
+  // The rounding is not the specification's business; glass takes Mesa's (m_matrix.c), because
+  // it decides where a vertex that lies exactly on a clip plane or a polygon edge falls: the
+  // angle in radians is computed in double, rounded to float, and its sine and cosine taken in
+  // float. At 90 degrees the cosine is then cosf(float(pi / 2)) = -4.37e-8, not 0, and a
+  // glutWireSphere turned by glRotatef(90, 1, 0, 0) has its equator just below y = 0, so the
+  // clip plane y >= 0 removes it, as in Mesa.
+  const float radians =
+      static_cast<float>(static_cast<double>(angleDegrees) * std::numbers::pi / 180.0);
+  const float s = std::sin(radians);
+  const float c = std::cos(radians);
   r = Matrix4::identity();
 
   // Rotations about a coordinate axis: the general formula below gives the same values
@@ -47,8 +52,9 @@ bool rotationMatrix(float angleDegrees, float x, float y, float z, Matrix4& r) {
     return true;
   }
 
+  // Mesa leaves the matrix alone for an axis shorter than 1e-4.
   const float length = std::sqrt(x * x + y * y + z * z);
-  if (!(length > 0.0f)) return false;
+  if (!(length > 1.0e-4f)) return false;
   x /= length;
   y /= length;
   z /= length;
@@ -66,25 +72,35 @@ bool rotationMatrix(float angleDegrees, float x, float y, float z, Matrix4& r) {
   return true;
 }
 
-Matrix4 orthoMatrix(double l, double r, double b, double t, double n, double f) {
+Matrix4 orthoMatrix(double left, double right, double bottom, double top, double zNear,
+                    double zFar) {
+  // In float from the arguments rounded to float, term by term as Mesa (_math_float_ortho).
+  const float l = static_cast<float>(left), r = static_cast<float>(right);
+  const float b = static_cast<float>(bottom), t = static_cast<float>(top);
+  const float n = static_cast<float>(zNear), f = static_cast<float>(zFar);
   Matrix4 o = Matrix4::identity();
-  o.at(0, 0) = static_cast<float>(2.0 / (r - l));
-  o.at(1, 1) = static_cast<float>(2.0 / (t - b));
-  o.at(2, 2) = static_cast<float>(-2.0 / (f - n));
-  o.at(0, 3) = static_cast<float>(-(r + l) / (r - l));
-  o.at(1, 3) = static_cast<float>(-(t + b) / (t - b));
-  o.at(2, 3) = static_cast<float>(-(f + n) / (f - n));
+  o.at(0, 0) = 2.0f / (r - l);
+  o.at(1, 1) = 2.0f / (t - b);
+  o.at(2, 2) = -2.0f / (f - n);
+  o.at(0, 3) = -(r + l) / (r - l);
+  o.at(1, 3) = -(t + b) / (t - b);
+  o.at(2, 3) = -(f + n) / (f - n);
   return o;
 }
 
-Matrix4 frustumMatrix(double l, double r, double b, double t, double n, double f) {
+Matrix4 frustumMatrix(double left, double right, double bottom, double top, double zNear,
+                      double zFar) {
+  // In float from the arguments rounded to float, as Mesa (_math_matrix_frustum).
+  const float l = static_cast<float>(left), r = static_cast<float>(right);
+  const float b = static_cast<float>(bottom), t = static_cast<float>(top);
+  const float n = static_cast<float>(zNear), f = static_cast<float>(zFar);
   Matrix4 p{};
-  p.at(0, 0) = static_cast<float>(2.0 * n / (r - l));
-  p.at(0, 2) = static_cast<float>((r + l) / (r - l));
-  p.at(1, 1) = static_cast<float>(2.0 * n / (t - b));
-  p.at(1, 2) = static_cast<float>((t + b) / (t - b));
-  p.at(2, 2) = static_cast<float>(-(f + n) / (f - n));
-  p.at(2, 3) = static_cast<float>(-2.0 * f * n / (f - n));
+  p.at(0, 0) = (2.0f * n) / (r - l);
+  p.at(0, 2) = (r + l) / (r - l);
+  p.at(1, 1) = (2.0f * n) / (t - b);
+  p.at(1, 2) = (t + b) / (t - b);
+  p.at(2, 2) = -(f + n) / (f - n);
+  p.at(2, 3) = -(2.0f * f * n) / (f - n);
   p.at(3, 2) = -1.0f;
   return p;
 }
