@@ -1,15 +1,19 @@
 // Polygon offset (spec 3.5.5): the depth of every fragment of a polygon is moved by
 //   o = m * factor + r * units
 // where m is the polygon's maximum depth slope, approximated as the spec allows by
-// max(|dz_w/dx_w|, |dz_w/dy_w|) (as Mesa does), and r is the smallest difference the 24-bit depth
-// buffer resolves, 1 / (2^24 - 1) in window depth units.
+// max(|dz_w/dx_w|, |dz_w/dy_w|) (as Mesa does), and r is "the smallest value that is guaranteed to
+// produce a resolvable difference" in the 24-bit depth buffer, which the specification leaves to
+// the implementation. glass takes Mesa's (llvmpipe and its draw module: offset_units * mrd * 2),
+// r = 2 / (2^24 - 1): one step of 1 / (2^24 - 1) is lost to rounding half the time, two are
+// always resolved. With r = 1 / (2^24 - 1), glPolygonOffset(1, 1) outlines (hidden-line removal)
+// lost half their pixels to the fill where Mesa keeps them.
 #pragma once
 
 #include "glass/raster/vertex.h"
 
 namespace glass::gl {
 
-inline constexpr double kMinimumResolvableDepth = 1.0 / 16777215.0;
+inline constexpr double kMinimumResolvableDepth = 2.0 / 16777215.0;
 
 // The maximum depth slope m of the plane through a, b and c (0 for a degenerate triangle).
 double maxDepthSlope(const raster::WindowVertex& a, const raster::WindowVertex& b,
