@@ -1,6 +1,9 @@
 // Non-antialiased points (OpenGL 1.5 spec, section 3.3).
 //
-// The size is rounded to an integer w (at least 1). The point covers the w x w square of pixels
+// The size is rounded to an integer w (at least 1): the specification says "the nearest integer"
+// and leaves halves open; glass rounds them down, as Mesa's llvmpipe does (the size snapped to
+// 1/256, then (s + 127) / 256), so sizes 1.5, 2.5 and 3.5 give 1, 2 and 3 pixels, 1.6 gives 2.
+// The point covers the w x w square of pixels
 // centred on (floor(x) + 1/2, floor(y) + 1/2) when w is odd and on (floor(x + 1/2),
 // floor(y + 1/2)) when w is even, that is the pixels
 //   odd w:  floor(x) - (w - 1) / 2  ..  floor(x) + (w - 1) / 2
@@ -28,7 +31,8 @@ int64_t firstPixel(int64_t fixed, int width) {
 
 void rasterizePoint(const WindowVertex& v, const PointSettings& settings, FragmentSink& sink) {
   if (!isRasterizableCoordinate(v.x) || !isRasterizableCoordinate(v.y)) return;
-  const int width = std::max(1, static_cast<int>(std::nearbyint(settings.size)));
+  const int64_t sizeIn256ths = static_cast<int64_t>(std::floor(settings.size * 256.0f + 0.5f));
+  const int width = static_cast<int>(std::max<int64_t>(1, (sizeIn256ths + 127) >> kSubpixelBits));
   const int64_t x0 = firstPixel(snapToSubpixel(v.x), width);
   const int64_t y0 = firstPixel(snapToSubpixel(v.y), width);
   const PixelRect& r = settings.bounds;
