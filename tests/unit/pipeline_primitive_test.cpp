@@ -229,3 +229,24 @@ TEST_CASE("pipeline primitives: glRect draws a polygon and the viewport maps to 
   CHECK(pixelAt(10, 10).g == 0);
   CHECK(pixelAt(40, 40).g == 0);
 }
+
+TEST_CASE("pipeline primitives: quads split along v0-v2, or along v1-v3 when clipped, as Mesa") {
+  ScopedContext context(64, 64);
+  glass::test::pixelProjection(64, 64);
+  // Red, green, blue, black corners. Near the v1 corner, the (v0, v1, v2) triangle of the v0-v2
+  // split has blue in it; the (v0, v1, v3) triangle of the v1-v3 split has none.
+  const auto quad = [](float left) {
+    glClear(GL_COLOR_BUFFER_BIT);
+    glBegin(GL_QUADS);
+    glColor3f(1, 0, 0), glVertex2f(left, 4);
+    glColor3f(0, 1, 0), glVertex2f(60, 4);
+    glColor3f(0, 0, 1), glVertex2f(60, 60);
+    glColor3f(0, 0, 0), glVertex2f(left, 60);
+    glEnd();
+  };
+  quad(4.0f);  // inside the window
+  CHECK(pixelAt(50, 8).b > 0);
+  quad(-20.0f);  // crosses the left clip plane
+  CHECK(pixelAt(50, 8).b == 0);
+  CHECK(pixelAt(50, 8).g > 0);
+}

@@ -42,6 +42,8 @@ class DrawPipeline {
   // Derives the vertex, primitive and fragment setup from the GL state (at glBegin).
   void prepare();
   const VertexStageSetup& vertexSetup() const { return vertex_; }
+  // The vertex lies outside a frustum plane or an enabled user clip plane.
+  bool needsClipping(const PipelineVertex& v) const { return raster::outcode(v.clip, clip_) != 0; }
 
   void drawPoint(const PipelineVertex& v);
   // restartStipple: the segment starts a new line (GL_LINES, the first of a strip).

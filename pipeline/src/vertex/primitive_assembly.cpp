@@ -12,14 +12,20 @@ unsigned edgeBits(bool ab, bool bc, bool ca) {
   return (ab ? 1u : 0u) | (bc ? 2u : 0u) | (ca ? 4u : 0u);
 }
 
-// A quadrilateral given in boundary order q0 q1 q2 q3, split along the diagonal q0-q2 into
-// (q0, q1, q2) and (q0, q2, q3), as Mesa splits GL_QUADS and GL_QUAD_STRIP, so that colours
-// interpolate as in Mesa. f0..f3: boundary flags of the edges q0q1, q1q2, q2q3, q3q0.
+// A quadrilateral given in boundary order q0 q1 q2 q3, split into two triangles along the
+// diagonal q0-q2, (q0, q1, q2) and (q0, q2, q3), or along q1-q3, (q0, q1, q3) and (q1, q2, q3).
+// The specification leaves the split open; it decides how colours interpolate across the quad.
+// f0..f3: boundary flags of the edges q0q1, q1q2, q2q3, q3q0.
 void drawQuad(DrawPipeline& draw, const PipelineVertex& q0, const PipelineVertex& q1,
               const PipelineVertex& q2, const PipelineVertex& q3, const PipelineVertex& provoking,
-              bool f0, bool f1, bool f2, bool f3) {
-  draw.drawTriangle(q0, q1, q2, provoking, edgeBits(f0, f1, false));
-  draw.drawTriangle(q0, q2, q3, provoking, edgeBits(false, f2, f3));
+              bool alongQ1Q3, bool f0, bool f1, bool f2, bool f3) {
+  if (alongQ1Q3) {
+    draw.drawTriangle(q0, q1, q3, provoking, edgeBits(f0, false, f3));
+    draw.drawTriangle(q1, q2, q3, provoking, edgeBits(f1, f2, false));
+  } else {
+    draw.drawTriangle(q0, q1, q2, provoking, edgeBits(f0, f1, false));
+    draw.drawTriangle(q0, q2, q3, provoking, edgeBits(false, f2, f3));
+  }
 }
 
 // GL_POLYGON as a fan around its first vertex, which is also its provoking vertex (spec 2.13.7).
@@ -34,6 +40,17 @@ void drawPolygon(DrawPipeline& draw, const std::vector<PipelineVertex>& p) {
   }
 }
 
+// GL_QUADS: each quad v0 v1 v2 v3 with v3 provoking. Mesa splits the quads of a draw call along
+// v0-v2 when every vertex lies inside the clip volume and along v1-v3 when some vertex must be
+// clipped (its draw module takes a different path then). glass decides the same way for the
+// quads of one glBegin/glEnd, so that colours interpolate across quads as in Mesa.
+void drawQuads(DrawPipeline& draw, const std::vector<PipelineVertex>& v, bool needsClipping) {
+  for (size_t i = 0; i + 3 < v.size(); i += 4) {
+    drawQuad(draw, v[i], v[i + 1], v[i + 2], v[i + 3], v[i + 3], needsClipping, v[i].edgeFlag,
+             v[i + 1].edgeFlag, v[i + 2].edgeFlag, v[i + 3].edgeFlag);
+  }
+}
+
 }  // namespace
 
 bool isPrimitiveMode(GLenum mode) { return mode <= GL_POLYGON; }
@@ -43,7 +60,8 @@ void beginPrimitive(Context& ctx, GLenum mode) {
   pa.active = true;
   pa.mode = mode;
   pa.vertexCount = 0;
-  pa.polygon.clear();
+  pa.pending.clear();
+  pa.pendingNeedsClipping = false;
   ctx.draw->prepare();
 }
 
@@ -109,17 +127,15 @@ void assembleVertex(Context& ctx, const PipelineVertex& v) {
       }
       break;
     case GL_QUADS:
-      if (n % 4 < 3) {
-        w[n % 4] = v;
-      } else {
-        drawQuad(draw, w[0], w[1], w[2], v, v, w[0].edgeFlag, w[1].edgeFlag, w[2].edgeFlag,
-                 v.edgeFlag);
-      }
+      // Held until glEnd: see drawQuads.
+      pa.pending.push_back(v);
+      pa.pendingNeedsClipping = pa.pendingNeedsClipping || draw.needsClipping(v);
       break;
     case GL_QUAD_STRIP:
       // Quad i has the boundary v_2i, v_2i+1, v_2i+3, v_2i+2 and the provoking vertex v_2i+3.
       if (n >= 3 && n % 2 == 1) {
-        drawQuad(draw, w[0], w[1], v, w[2], v, true, true, true, true);
+        // Split along v_2i-v_2i+3, as Mesa splits quad strips whether clipped or not.
+        drawQuad(draw, w[0], w[1], v, w[2], v, false, true, true, true, true);
         w[0] = w[2];
         w[1] = v;
       } else if (n < 3) {
@@ -129,7 +145,7 @@ void assembleVertex(Context& ctx, const PipelineVertex& v) {
       }
       break;
     case GL_POLYGON:
-      pa.polygon.push_back(v);
+      pa.pending.push_back(v);
       break;
     default:
       break;
@@ -141,9 +157,11 @@ void endPrimitive(Context& ctx) {
   if (pa.mode == GL_LINE_LOOP && pa.vertexCount >= 2) {
     ctx.draw->drawLine(pa.window[0], pa.first, pa.first, false);
   } else if (pa.mode == GL_POLYGON) {
-    drawPolygon(*ctx.draw, pa.polygon);
-    pa.polygon.clear();
+    drawPolygon(*ctx.draw, pa.pending);
+  } else if (pa.mode == GL_QUADS) {
+    drawQuads(*ctx.draw, pa.pending, pa.pendingNeedsClipping);
   }
+  pa.pending.clear();
   pa.active = false;
 }
 

@@ -19,7 +19,9 @@ struct PrimitiveAssembly {
   // The last vertices received, enough for strips, fans and quads; window[0] is the oldest.
   PipelineVertex window[4];
   PipelineVertex first;      // line loops and triangle fans keep their first vertex
-  std::vector<PipelineVertex> polygon;  // GL_POLYGON collects every vertex until glEnd
+  // GL_POLYGON and GL_QUADS hold their vertices until glEnd (primitive_assembly.cpp says why).
+  std::vector<PipelineVertex> pending;
+  bool pendingNeedsClipping = false;  // some pending vertex lies outside a clip plane
 };
 
 struct Context;
@@ -30,7 +32,7 @@ bool isPrimitiveMode(GLenum mode);
 void beginPrimitive(Context& ctx, GLenum mode);
 // A vertex from the vertex stage.
 void assembleVertex(Context& ctx, const PipelineVertex& vertex);
-// glEnd's work: closes line loops, draws polygons, drops an incomplete last primitive.
+// glEnd's work: closes line loops, draws polygons and quads, drops an incomplete last primitive.
 void endPrimitive(Context& ctx);
 
 }  // namespace glass::gl
