@@ -1,4 +1,4 @@
-#include "interpret/frame_values.h"
+#include "glass/scene/frame_values.h"
 
 #include <glass/geometry/quaternion.h>
 #include <glass/geometry/rotation.h>

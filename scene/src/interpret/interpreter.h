@@ -5,7 +5,7 @@
 
 #include "glass/scene/diagnostics.h"
 #include "glass/scene/program.h"
-#include "interpret/frame_values.h"
+#include "glass/scene/frame_values.h"
 
 #include <iosfwd>
 #include <memory>
