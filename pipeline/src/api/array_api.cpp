@@ -26,6 +26,7 @@ ClientArray* clientArray(Context& ctx, GLenum array) {
     case GL_NORMAL_ARRAY: return &ctx.arrays.normal;
     case GL_TEXTURE_COORD_ARRAY: return &ctx.arrays.texCoord;
     case GL_EDGE_FLAG_ARRAY: return &ctx.arrays.edgeFlag;
+    case GL_INDEX_ARRAY: return &ctx.arrays.index;  // accepted, never drawn (core/color_index.h)
     default: return nullptr;
   }
 }
@@ -119,6 +120,7 @@ void glGetPointerv(GLenum pname, GLvoid** params) {
       case GL_NORMAL_ARRAY_POINTER: a = &ctx.arrays.normal; break;
       case GL_TEXTURE_COORD_ARRAY_POINTER: a = &ctx.arrays.texCoord; break;
       case GL_EDGE_FLAG_ARRAY_POINTER: a = &ctx.arrays.edgeFlag; break;
+      case GL_INDEX_ARRAY_POINTER: a = &ctx.arrays.index; break;
       default: {
         void* buffer = nullptr;  // the selection and feedback buffers (select/)
         if (!glass::gl::queryRenderModePointer(ctx, pname, &buffer)) return recordError(ctx, GL_INVALID_ENUM);

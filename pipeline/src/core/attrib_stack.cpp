@@ -37,7 +37,8 @@ constexpr GLenum kEnableCapabilities[] = {
     GL_MAP2_TEXTURE_COORD_4, GL_MAP2_VERTEX_3, GL_MAP2_VERTEX_4, GL_NORMALIZE, GL_POINT_SMOOTH,
     GL_POLYGON_OFFSET_FILL, GL_POLYGON_OFFSET_LINE, GL_POLYGON_OFFSET_POINT, GL_POLYGON_SMOOTH,
     GL_POLYGON_STIPPLE, GL_RESCALE_NORMAL, GL_SCISSOR_TEST, GL_STENCIL_TEST, GL_TEXTURE_1D,
-    GL_TEXTURE_2D, GL_TEXTURE_GEN_S, GL_TEXTURE_GEN_T, GL_TEXTURE_GEN_R, GL_TEXTURE_GEN_Q};
+    GL_TEXTURE_2D, GL_TEXTURE_GEN_S, GL_TEXTURE_GEN_T, GL_TEXTURE_GEN_R, GL_TEXTURE_GEN_Q,
+    GL_MULTISAMPLE, GL_SAMPLE_ALPHA_TO_COVERAGE, GL_SAMPLE_ALPHA_TO_ONE, GL_SAMPLE_COVERAGE};
 constexpr int kEnableCount = sizeof(kEnableCapabilities) / sizeof(kEnableCapabilities[0]);
 
 // The texture state GL_TEXTURE_BIT saves: enables, bindings (by name), the bound objects'
@@ -148,7 +149,8 @@ std::shared_ptr<const AttribEntry> saveAttributes(const Context& ctx, GLbitfield
   if (mask & GL_ACCUM_BUFFER_BIT) {
     std::memcpy(e->accumulationClear, ctx.accumulation.clearValue, sizeof e->accumulationClear);
   }
-  if (mask & (GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT | GL_COLOR_BUFFER_BIT | GL_SCISSOR_BIT)) {
+  if (mask & (GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT | GL_COLOR_BUFFER_BIT | GL_SCISSOR_BIT |
+              GL_MULTISAMPLE_BIT)) {
     e->fragment = ctx.fragment;
   }
   if (mask & GL_LIGHTING_BIT) e->lighting = ctx.lighting;
@@ -269,10 +271,21 @@ void restoreAttributes(Context& ctx, const AttribEntry& e) {
     f.logicOp = s.logicOp;
     std::memcpy(f.colorMask, s.colorMask, sizeof f.colorMask);
     std::memcpy(f.clearColor, s.clearColor, sizeof f.clearColor);
+    f.clearIndex = s.clearIndex;
+    f.indexMask = s.indexMask;
+    f.drawBuffer = s.drawBuffer;
   }
   if (mask & GL_SCISSOR_BIT) {
     f.scissorTest = s.scissorTest;
     f.scissor = s.scissor;
+  }
+  if (mask & GL_MULTISAMPLE_BIT) {
+    f.multisample = s.multisample;
+    f.sampleAlphaToCoverage = s.sampleAlphaToCoverage;
+    f.sampleAlphaToOne = s.sampleAlphaToOne;
+    f.sampleCoverage = s.sampleCoverage;
+    f.sampleCoverageValue = s.sampleCoverageValue;
+    f.sampleCoverageInvert = s.sampleCoverageInvert;
   }
   TransformState& t = ctx.transform;
   if (mask & GL_TRANSFORM_BIT) {

@@ -35,6 +35,10 @@ bool* coreCapability(Context& ctx, GLenum cap) {
     case GL_COLOR_LOGIC_OP: return &f.colorLogicOp;
     case GL_INDEX_LOGIC_OP: return &f.indexLogicOp;
     case GL_DITHER: return &f.dither;
+    case GL_MULTISAMPLE: return &f.multisample;  // fragment/multisample.h: no sample buffers
+    case GL_SAMPLE_ALPHA_TO_COVERAGE: return &f.sampleAlphaToCoverage;
+    case GL_SAMPLE_ALPHA_TO_ONE: return &f.sampleAlphaToOne;
+    case GL_SAMPLE_COVERAGE: return &f.sampleCoverage;
     default: return nullptr;
   }
 }
@@ -47,6 +51,7 @@ const ClientArray* clientArray(const Context& ctx, GLenum cap) {
     case GL_NORMAL_ARRAY: return &a.normal;
     case GL_TEXTURE_COORD_ARRAY: return &a.texCoord;
     case GL_EDGE_FLAG_ARRAY: return &a.edgeFlag;
+    case GL_INDEX_ARRAY: return &a.index;
     default: return nullptr;
   }
 }

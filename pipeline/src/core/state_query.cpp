@@ -4,13 +4,17 @@
 
 #include "accum/accumulation.h"
 #include "core/capabilities.h"
+#include "core/color_index.h"
 #include "core/context.h"
 #include "evaluators/evaluator_commands.h"
 #include "fragment/fog_hooks.h"
+#include "fragment/multisample.h"
 #include "lighting/lighting_hooks.h"
 #include "pixels/pixel_queries.h"
 #include "select/render_mode_query.h"
+#include "texture/compressed_textures.h"
 #include "texture/texture_hooks.h"
+#include "texture/texture_units.h"
 
 namespace glass::gl {
 
@@ -155,7 +159,8 @@ bool queryCoreState(const Context& ctx, GLenum pname, StateValue& v) {
       return true;
     case GL_RGBA_MODE: v.setBooleans({true}); return true;
     case GL_INDEX_MODE: case GL_DOUBLEBUFFER: case GL_STEREO: v.setBooleans({false}); return true;
-    case GL_DRAW_BUFFER: case GL_READ_BUFFER: v.setIntegers({double(GL_FRONT)}); return true;
+    case GL_DRAW_BUFFER: v.setIntegers({double(f.drawBuffer)}); return true;
+    case GL_READ_BUFFER: v.setIntegers({double(ctx.pixelTransfer.readBuffer)}); return true;
 
     // Display lists (table 6.32, 6.33)
     case GL_LIST_BASE: v.setIntegers({double(lists.listBase)}); return true;
@@ -198,7 +203,9 @@ bool queryState(const Context& ctx, GLenum pname, StateValue& value) {
       queryLightingState(ctx, pname, value) ||
       queryFogState(ctx, pname, value) || queryTextureState(ctx, pname, value) ||
       queryEvaluatorState(ctx, pname, value) || queryPixelState(ctx, pname, value) ||
-      queryAccumulationState(ctx, pname, value) || queryRenderModeState(ctx, pname, value)) {
+      queryAccumulationState(ctx, pname, value) || queryRenderModeState(ctx, pname, value) ||
+      queryColorIndexState(ctx, pname, value) || queryMultisampleState(ctx, pname, value) ||
+      queryTextureUnitState(ctx, pname, value) || queryCompressedTextureState(ctx, pname, value)) {
     return true;
   }
   bool enabled = false;

@@ -49,6 +49,22 @@ struct FragmentState {
   float clearColor[4] = {0.0f, 0.0f, 0.0f, 0.0f};
   double clearDepth = 1.0;
   int clearStencil = 0;
+
+  // Colour index mode only (core/color_index.h): kept and queried, no effect in RGBA mode.
+  float clearIndex = 0.0f;           // glClearIndex
+  GLuint indexMask = ~0u;            // glIndexMask
+
+  // glDrawBuffer (fragment/buffer_selection.h): GL_NONE writes no colour at all.
+  GLenum drawBuffer = GL_FRONT;
+
+  // Multisampling (OpenGL 1.3, spec 3.2.1, 4.1.3; fragment/multisample.h): glass's framebuffer
+  // has no sample buffers, so these are kept and queried but change no fragment.
+  bool multisample = true;           // GL_MULTISAMPLE
+  bool sampleAlphaToCoverage = false;
+  bool sampleAlphaToOne = false;
+  bool sampleCoverage = false;
+  float sampleCoverageValue = 1.0f;  // glSampleCoverage, clamped to [0, 1]
+  bool sampleCoverageInvert = false;
 };
 
 }  // namespace glass::gl

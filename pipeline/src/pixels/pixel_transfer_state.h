@@ -32,6 +32,8 @@ struct PixelTransferState {
   float zoomX = 1.0f;                           // glPixelZoom
   float zoomY = 1.0f;
 
+  GLenum readBuffer = GL_FRONT;                 // glReadBuffer (fragment/buffer_selection.h)
+
   const std::vector<float>& map(GLenum name) const { return maps[name - GL_PIXEL_MAP_I_TO_I]; }
 };
 

@@ -9,6 +9,7 @@ struct CurrentState {
   float normal[3] = {0.0f, 0.0f, 1.0f};
   float texCoord[4] = {0.0f, 0.0f, 0.0f, 1.0f};
   bool edgeFlag = true;
+  float index = 1.0f;  // glIndex: kept and queried, no effect in RGBA mode (core/color_index.h)
 };
 
 }  // namespace glass::gl

@@ -21,6 +21,7 @@ struct ArrayState {
   ClientArray normal{false, 3, GL_FLOAT, 0, nullptr};
   ClientArray texCoord;                       // size 4, GL_FLOAT
   ClientArray edgeFlag{false, 1, GL_UNSIGNED_BYTE, 0, nullptr};
+  ClientArray index{false, 1, GL_FLOAT, 0, nullptr};  // glIndexPointer: never read in RGBA mode
 };
 
 struct Context;
