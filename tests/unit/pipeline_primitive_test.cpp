@@ -250,3 +250,25 @@ TEST_CASE("pipeline primitives: quads split along v0-v2, or along v1-v3 when cli
   CHECK(pixelAt(50, 8).b == 0);
   CHECK(pixelAt(50, 8).g > 0);
 }
+
+TEST_CASE("pipeline primitives: in GL_LINE mode the cut along a user clip plane is drawn, as Mesa") {
+  ScopedContext context(64, 64);
+  glass::test::pixelProjection(64, 64);
+  glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
+  glColor3f(1, 1, 1);
+  const GLdouble keepBelow[4] = {0, -1, 0, 32.5};  // y <= 32.5 in window coordinates
+  glClipPlane(GL_CLIP_PLANE0, keepBelow);
+  glEnable(GL_CLIP_PLANE0);
+  glBegin(GL_TRIANGLES);
+  glVertex2f(4.5f, 4.5f), glVertex2f(60.5f, 4.5f), glVertex2f(32.5f, 60.5f);
+  glEnd();
+  CHECK(pixelAt(32, 32).r == 255);  // on the cut
+  CHECK(pixelAt(32, 20).r == 0);    // inside the triangle
+  // Along the frustum planes nothing is drawn: the same triangle cut by the window's edge.
+  glDisable(GL_CLIP_PLANE0);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glBegin(GL_TRIANGLES);
+  glVertex2f(4.5f, 4.5f), glVertex2f(60.5f, 4.5f), glVertex2f(32.5f, 90.5f);
+  glEnd();
+  CHECK(pixelAt(32, 63).r == 0);
+}
