@@ -80,7 +80,8 @@ void computeTexCoords(const Context& ctx, const float objectPosition[4], const f
 
 namespace {
 
-// The screen-space derivatives of s/q and t/q at a fragment of a triangle, exactly. The
+// The screen-space derivatives of s/q and t/q at a fragment of a triangle, exactly (bump
+// mapping needs the surface's tangents at the fragment itself). The
 // rasterizer's planes give s/w, t/w and q/w as affine functions A, C, B of window (x, y); the 1/w
 // cancels in the projected coordinate, s/q = A / B, so
 //   d(s/q)/dx = (A_x B - A B_x) / B^2,
@@ -134,7 +135,12 @@ void applyTexturing(const Context& ctx, const raster::FragmentBatch& batch, int 
     // Points and lines carry no derivatives: the base level, magnified (spec 3.8.9).
     sampleTextureMagnified(*texture, s, t, texel);
   } else {
-    const TexCoordDerivatives d = texCoordDerivatives(batch, f, twoD);
+    // One lambda per 2x2 pixel quad (texture_lod.h): every fragment of the quad computes the
+    // same value from the same upper-left pixel.
+    const PixelQuad quad = pixelQuadOf(f.x, f.y, ctx.framebuffer.height());
+    const TexCoordDerivatives d =
+        quadTexCoordDifferences(*batch.planes, varying::kTexCoord, varying::kTexCoord + 1,
+                                varying::kTexCoord + 3, quad, twoD);
     const TextureImage& base = texture->baseImage();
     const double rhoSquared = textureScaleFactorSquared(d, base.width, twoD ? base.height : 0);
     const float lambda = levelOfDetailFromSquaredScale(rhoSquared, p.minLod, p.maxLod);

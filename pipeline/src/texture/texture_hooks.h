@@ -30,7 +30,8 @@ void computeTexCoords(const Context& ctx, const float objectPosition[4], const f
 
 // Per fragment, after rasterization: replaces color with the textured colour (spec 3.8.13).
 // The fragment's texture coordinates are batch.fragments[fragmentIndex].varyings[9..12]; the
-// batch's attribute planes (triangles only) give derivatives for the level of detail.
+// batch's attribute planes (triangles only) give the texture coordinates at the other pixels of
+// the fragment's 2x2 quad, whose differences set the level of detail (texture_lod.h).
 void applyTexturing(const Context& ctx, const raster::FragmentBatch& batch, int fragmentIndex,
                     float color[4]);
 

@@ -2,9 +2,8 @@
 // (OpenGL 1.5 specification, sections 3.8.8 "Texture Minification" and 3.8.9 "Texture
 // Magnification").
 //
-// glass evaluates lambda per pixel, from the exact screen-space derivatives of the texture
-// coordinates at the pixel centre (the rasterizer's AttributePlanes), not from differences
-// across a 2x2 quad.
+// glass computes one lambda per 2x2 pixel quad, from the differences of the texture coordinates
+// between the quad's pixels (quadTexCoordDifferences below), as Mesa's llvmpipe does.
 #pragma once
 
 #include <GL/gl.h>
@@ -12,17 +11,73 @@
 #include <algorithm>
 #include <cmath>
 
+#include "glass/raster/fragment.h"
+
 namespace glass::gl {
 
-// Screen-space derivatives of the texture coordinates s and t (already divided by q).
+// Screen-space derivatives of the texture coordinates s and t (already divided by q), or the
+// differences across a pixel quad that stand in for them.
 struct TexCoordDerivatives {
   double dsdx = 0.0, dsdy = 0.0;
   double dtdx = 0.0, dtdy = 0.0;
 };
 
+// The 2x2 pixel quad that shares one level of detail.
+//
+// Section 3.8.8 lets an implementation approximate rho (the derivatives of u and v enter only
+// through it). glass uses the approximation of Mesa's llvmpipe, the renderer the image tests
+// compare with, so that mipmap level boundaries fall on the same pixels: the window is cut into
+// 2x2 quads, and every fragment of a quad takes the quad's lambda, computed from differences of
+// the texture coordinates between the quad's pixel centres (covered by the primitive or not):
+//   du/dx ~ u(upper right) - u(upper left),   du/dy ~ u(upper left) - u(lower left),
+// and the same for v; the lower-right pixel is not used.
+//
+// llvmpipe pairs rows from the top of the window (it renders a window's top row first, and
+// OSMesa turns the picture the right way up afterwards), so glass pairs them the same way: with
+// an even window height the quads are {2i, 2i + 1} x {2j, 2j + 1} in window coordinates; with an
+// odd height the bottom row pairs with the row below the window.
+struct PixelQuad {
+  int left;  // window x of the quad's left column
+  int top;   // window y of the quad's upper row; the lower row is top - 1
+};
+inline PixelQuad pixelQuadOf(int x, int y, int windowHeight) {
+  const int rowFromTop = windowHeight - 1 - y;
+  return {x & ~1, windowHeight - 1 - (rowFromTop & ~1)};
+}
+
+// The differences of s/q and t/q across `quad` (see PixelQuad), from the triangle's attribute
+// planes. The planes give s/w, t/w and q/w as affine functions A, C, B of window (x, y), so the
+// projected coordinate at a pixel centre is s/q = A / B (the 1/w cancels). With A and B taken at
+// the upper-left centre (a and b below), the right neighbour has A + A_x, B + B_x and the lower
+// one A - A_y, B - B_y, so
+//   s/q(right) - s/q(upper left) = (A + A_x)/(B + B_x) - A/B = (A_x B - A B_x) / (B (B + B_x)),
+//   s/q(upper left) - s/q(lower) = A/B - (A - A_y)/(B - B_y) = (A_y B - A B_y) / (B (B - B_y)):
+// the same differences, without the cancellation of subtracting two nearly equal quotients.
+// s, t and q are the varying indices of the coordinates; t is skipped unless withT.
+inline TexCoordDerivatives quadTexCoordDifferences(const raster::AttributePlanes& planes, int s,
+                                                   int t, int q, PixelQuad quad, bool withT) {
+  const double x = quad.left + 0.5, y = quad.top + 0.5;  // the upper-left pixel centre
+  const double a = planes.a0[s] + planes.dx[s] * x + planes.dy[s] * y;
+  const double b = planes.a0[q] + planes.dx[q] * x + planes.dy[q] * y;
+  const double bx = planes.dx[q], by = planes.dy[q];
+  const double inverseRight = 1.0 / (b * (b + bx));
+  const double inverseLower = 1.0 / (b * (b - by));
+  TexCoordDerivatives d;
+  d.dsdx = (planes.dx[s] * b - a * bx) * inverseRight;
+  d.dsdy = (planes.dy[s] * b - a * by) * inverseLower;
+  if (withT) {
+    const double c = planes.a0[t] + planes.dx[t] * x + planes.dy[t] * y;
+    d.dtdx = (planes.dx[t] * b - c * bx) * inverseRight;
+    d.dtdy = (planes.dy[t] * b - c * by) * inverseLower;
+  }
+  return d;
+}
+
 // The scale factor rho (equation 3.21 with the 2D terms): with u = s * width and v = t * height
 // of the base level image,
-//   rho = max( sqrt((du/dx)^2 + (dv/dx)^2), sqrt((du/dy)^2 + (dv/dy)^2) ).
+//   rho = max( sqrt((du/dx)^2 + (dv/dx)^2), sqrt((du/dy)^2 + (dv/dy)^2) ),
+// the full Euclidean lengths, as llvmpipe computes them by default (it has the cheaper
+// max-of-absolute-values form of the specification behind a switch that is off).
 // A one-dimensional texture passes height = 0 (v is identically zero).
 // (The functions here run once per fragment, so they are defined inline below.)
 inline double textureScaleFactorSquared(const TexCoordDerivatives& d, int width, int height) {
