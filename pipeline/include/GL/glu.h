@@ -101,6 +101,81 @@ GLAPI GLint GLAPIENTRY gluScaleImage(GLenum format, GLsizei widthIn, GLsizei hei
                                      GLenum typeIn, const void *dataIn, GLsizei widthOut,
                                      GLsizei heightOut, GLenum typeOut, GLvoid *dataOut);
 
+/* GLASS-SECTION: polygon tessellation (GLU 1.3, chapter 5). Contours that cross themselves and
+ * each other, with any of the five winding rules, the combine callback for crossings, edge flags
+ * and boundary-only output; the GLU 1.0 calls (gluBeginPolygon, gluNextContour, gluEndPolygon)
+ * too. The tessellation uses the input vertices and the crossings only, as SGI's GLU does, though
+ * not necessarily the same triangles (glu/tessellator.cpp). */
+typedef struct GLUtesselator GLUtesselator;
+typedef struct GLUtesselator GLUtesselatorObj;
+typedef struct GLUtesselator GLUtriangulatorObj;
+
+#define GLU_TESS_MAX_COORD                 1.0e150
+
+#define GLU_TESS_BEGIN                     100100
+#define GLU_BEGIN                          100100
+#define GLU_TESS_VERTEX                    100101
+#define GLU_VERTEX                         100101
+#define GLU_TESS_END                       100102
+#define GLU_END                            100102
+#define GLU_TESS_ERROR                     100103
+#define GLU_TESS_EDGE_FLAG                 100104
+#define GLU_EDGE_FLAG                      100104
+#define GLU_TESS_COMBINE                   100105
+#define GLU_TESS_BEGIN_DATA                100106
+#define GLU_TESS_VERTEX_DATA               100107
+#define GLU_TESS_END_DATA                  100108
+#define GLU_TESS_ERROR_DATA                100109
+#define GLU_TESS_EDGE_FLAG_DATA            100110
+#define GLU_TESS_COMBINE_DATA              100111
+
+#define GLU_CW                             100120
+#define GLU_CCW                            100121
+#define GLU_INTERIOR                       100122
+#define GLU_EXTERIOR                       100123
+#define GLU_UNKNOWN                        100124
+
+#define GLU_TESS_WINDING_RULE              100140
+#define GLU_TESS_BOUNDARY_ONLY             100141
+#define GLU_TESS_TOLERANCE                 100142
+
+#define GLU_TESS_ERROR1                    100151
+#define GLU_TESS_ERROR2                    100152
+#define GLU_TESS_ERROR3                    100153
+#define GLU_TESS_ERROR4                    100154
+#define GLU_TESS_ERROR5                    100155
+#define GLU_TESS_ERROR6                    100156
+#define GLU_TESS_ERROR7                    100157
+#define GLU_TESS_ERROR8                    100158
+#define GLU_TESS_MISSING_BEGIN_POLYGON     100151
+#define GLU_TESS_MISSING_BEGIN_CONTOUR     100152
+#define GLU_TESS_MISSING_END_POLYGON       100153
+#define GLU_TESS_MISSING_END_CONTOUR       100154
+#define GLU_TESS_COORD_TOO_LARGE           100155
+#define GLU_TESS_NEED_COMBINE_CALLBACK     100156
+
+#define GLU_TESS_WINDING_ODD               100130
+#define GLU_TESS_WINDING_NONZERO           100131
+#define GLU_TESS_WINDING_POSITIVE          100132
+#define GLU_TESS_WINDING_NEGATIVE          100133
+#define GLU_TESS_WINDING_ABS_GEQ_TWO       100134
+
+GLAPI GLUtesselator *GLAPIENTRY gluNewTess(void);
+GLAPI void GLAPIENTRY gluDeleteTess(GLUtesselator *tess);
+GLAPI void GLAPIENTRY gluTessCallback(GLUtesselator *tess, GLenum which, _GLUfuncptr CallBackFunc);
+GLAPI void GLAPIENTRY gluTessProperty(GLUtesselator *tess, GLenum which, GLdouble data);
+GLAPI void GLAPIENTRY gluGetTessProperty(GLUtesselator *tess, GLenum which, GLdouble *data);
+GLAPI void GLAPIENTRY gluTessNormal(GLUtesselator *tess, GLdouble valueX, GLdouble valueY,
+                                    GLdouble valueZ);
+GLAPI void GLAPIENTRY gluTessBeginPolygon(GLUtesselator *tess, GLvoid *data);
+GLAPI void GLAPIENTRY gluTessBeginContour(GLUtesselator *tess);
+GLAPI void GLAPIENTRY gluTessVertex(GLUtesselator *tess, GLdouble *location, GLvoid *data);
+GLAPI void GLAPIENTRY gluTessEndContour(GLUtesselator *tess);
+GLAPI void GLAPIENTRY gluTessEndPolygon(GLUtesselator *tess);
+GLAPI void GLAPIENTRY gluBeginPolygon(GLUtesselator *tess);
+GLAPI void GLAPIENTRY gluNextContour(GLUtesselator *tess, GLenum type);
+GLAPI void GLAPIENTRY gluEndPolygon(GLUtesselator *tess);
+
 #ifdef __cplusplus
 }
 #endif
