@@ -1,4 +1,4 @@
-// gluProject and gluUnProject (GLU 1.3 specification, section 4.3): object coordinates to window
+// gluProject, gluUnProject and gluUnProject4 (GLU 1.3 specification, section 4.3): object coordinates to window
 // coordinates through given modelview, projection and viewport, and back. In double precision,
 // with the operations in the order of SGI's reference GLU.
 #include <GL/glu.h>
@@ -94,6 +94,29 @@ GLint gluUnProject(GLdouble winX, GLdouble winY, GLdouble winZ, const GLdouble* 
   *objX = out[0] / out[3];
   *objY = out[1] / out[3];
   *objZ = out[2] / out[3];
+  return GLU_TRUE;
+}
+
+// GLU 1.3: the same inverse for a point given with its clip w, whose depth range is [near, far];
+// the result is not divided by its w, which is returned too.
+GLint gluUnProject4(GLdouble winX, GLdouble winY, GLdouble winZ, GLdouble clipW,
+                    const GLdouble* model, const GLdouble* proj, const GLint* view,
+                    GLdouble nearVal, GLdouble farVal, GLdouble* objX, GLdouble* objY,
+                    GLdouble* objZ, GLdouble* objW) {
+  if (!model || !proj || !view || !objX || !objY || !objZ || !objW) return GLU_FALSE;
+  double combined[16], inverse[16];
+  multiplyMatrices(model, proj, combined);
+  if (!invertMatrix(combined, inverse)) return GLU_FALSE;
+  double in[4] = {(winX - view[0]) / view[2], (winY - view[1]) / view[3],
+                  (winZ - nearVal) / (farVal - nearVal), clipW};
+  for (int i = 0; i < 3; ++i) in[i] = in[i] * 2.0 - 1.0;
+  double out[4];
+  multiplyMatrixVector(inverse, in, out);
+  if (out[3] == 0.0) return GLU_FALSE;
+  *objX = out[0];
+  *objY = out[1];
+  *objZ = out[2];
+  *objW = out[3];
   return GLU_TRUE;
 }
 

@@ -1,4 +1,5 @@
-// GLU mipmaps: gluBuild1DMipmaps, gluBuild2DMipmaps and gluScaleImage, built on the GL API.
+// GLU mipmaps: gluBuild1DMipmaps, gluBuild2DMipmaps, their *Levels forms and gluScaleImage,
+// built on the GL API.
 //
 // They follow the algorithm of the SGI GLU that Mesa ships, so that a program's mipmaps come out
 // the same with glass as with Mesa's libGLU:
@@ -323,6 +324,35 @@ GLint buildMipmaps(GLenum target, int dimensions, GLint internalFormat, GLsizei 
   return 0;
 }
 
+// log2 of a power of two, -1 for any other size (GLU's computeLog).
+int exactLog2(int value) {
+  return value > 0 && (value & (value - 1)) == 0 ? log2OfPowerOfTwo(value) : -1;
+}
+
+// gluBuild*MipmapLevels (GLU 1.3): the image is level `level`, already of the size the caller
+// wants (no resampling); each further level halves the previous one as above, and the levels
+// from base to max are loaded. Every level down to 1 x 1 counts: level + log2 of the larger
+// side is the last, and base and max must lie in [level, last].
+GLint buildMipmapLevels(GLenum target, int dimensions, GLint internalFormat, GLsizei width,
+                        GLsizei height, GLenum format, GLenum type, GLint level, GLint base,
+                        GLint max, const void* data) {
+  if (isPackedOrBitmapType(type)) return GLU_INVALID_ENUM;
+  if (const GLint error = checkMipmapArguments(format, type); error != 0) return error;
+  if (width < 1 || height < 1) return GLU_INVALID_VALUE;
+  const int last = std::max(exactLog2(width), dimensions == 2 ? exactLog2(height) : -1) + level;
+  if (base < 0 || base < level || max < base || last < max) return GLU_INVALID_VALUE;
+  try {
+    ClientImage image = readClientImage(width, height, format, type, data);
+    for (int l = level; l <= max; ++l) {
+      if (l > level) image = halveImage(image, type);
+      if (l >= base) uploadLevel(target, dimensions, l, internalFormat, image, format, type);
+    }
+  } catch (const std::bad_alloc&) {
+    return GLU_OUT_OF_MEMORY;
+  }
+  return 0;
+}
+
 // Normalizes a raw element value to [0, 1] (or [-1, 1]) as GL does (table 2.9), and back.
 double normalize(double v, GLenum type) {
   switch (type) {
@@ -361,6 +391,20 @@ GLint GLAPIENTRY gluBuild1DMipmaps(GLenum target, GLint internalFormat, GLsizei 
 GLint GLAPIENTRY gluBuild2DMipmaps(GLenum target, GLint internalFormat, GLsizei width, GLsizei height,
                                    GLenum format, GLenum type, const void* data) {
   return buildMipmaps(target, 2, internalFormat, width, height, format, type, data);
+}
+
+GLint GLAPIENTRY gluBuild1DMipmapLevels(GLenum target, GLint internalFormat, GLsizei width,
+                                        GLenum format, GLenum type, GLint level, GLint base,
+                                        GLint max, const void* data) {
+  return buildMipmapLevels(target, 1, internalFormat, width, 1, format, type, level, base, max,
+                           data);
+}
+
+GLint GLAPIENTRY gluBuild2DMipmapLevels(GLenum target, GLint internalFormat, GLsizei width,
+                                        GLsizei height, GLenum format, GLenum type, GLint level,
+                                        GLint base, GLint max, const void* data) {
+  return buildMipmapLevels(target, 2, internalFormat, width, height, format, type, level, base,
+                           max, data);
 }
 
 GLint GLAPIENTRY gluScaleImage(GLenum format, GLsizei widthIn, GLsizei heightIn, GLenum typeIn,
