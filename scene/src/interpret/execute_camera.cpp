@@ -23,7 +23,7 @@ template <typename F> void setProjection(F &&multiply) {
 void Interpreter::Executor::run(const Viewport &s) {
   std::vector<double> v = values(s.rect);
   if (v[2] < 0 || v[3] < 0) fail("the viewport's width and height must not be negative");
-  glViewport(scaled(v[0]), scaled(v[1]), scaled(v[2]), scaled(v[3]));
+  glViewport(scaledX(v[0]), scaledY(v[1]), scaledX(v[2]), scaledY(v[3]));
 }
 
 void Interpreter::Executor::run(const ClearColor &s) {
@@ -129,6 +129,23 @@ void Interpreter::Executor::run(const MultMatrix &s) {
     // The 2D affine map [a11 a12 a13; a21 a22 a23; 0 0 1] acting on x and y, z unchanged.
     m[0] = v[0], m[4] = v[1], m[12] = v[2];
     m[1] = v[3], m[5] = v[4], m[13] = v[5];
+  }
+  glMultMatrixd(m);
+}
+
+// The planar projection shadow (as in the OpenGL Programming Guide's shadow technique): with the
+// plane P = (a, b, c, d) and the light L = (x, y, z, w), the matrix M = (P.L) I - L P^T sends
+// every point p to where the ray from L through p meets the plane (a light with w = 0 casts
+// parallel rays along -(x, y, z)).
+void Interpreter::Executor::run(const ShadowMatrix &s) {
+  std::vector<double> p = values(s.plane), l = values(s.light);
+  const double dot = p[0] * l[0] + p[1] * l[1] + p[2] * l[2] + p[3] * l[3];
+  if (dot == 0.0) fail("the light lies in the shadow's plane: no shadow can be cast");
+  GLdouble m[16];
+  for (int column = 0; column < 4; ++column) {
+    for (int row = 0; row < 4; ++row) {
+      m[column * 4 + row] = (row == column ? dot : 0.0) - l[static_cast<std::size_t>(row)] * p[static_cast<std::size_t>(column)];
+    }
   }
   glMultMatrixd(m);
 }

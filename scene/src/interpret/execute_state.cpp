@@ -171,19 +171,19 @@ void Interpreter::Executor::run(const ClipPlane &s) {
 void Interpreter::Executor::run(const LineWidth &s) {
   double width = value(s.width);
   if (!(width > 0.0)) fail("the line width must be greater than 0");
-  glLineWidth(static_cast<GLfloat>(width * options_.pixelScale));
+  glLineWidth(static_cast<GLfloat>(width * widthScale()));
 }
 
 void Interpreter::Executor::run(const PointSize &s) {
   double size = value(s.size);
   if (!(size > 0.0)) fail("the point size must be greater than 0");
-  glPointSize(static_cast<GLfloat>(size * options_.pixelScale));
+  glPointSize(static_cast<GLfloat>(size * widthScale()));
 }
 
 void Interpreter::Executor::run(const Scissor &s) {
   std::vector<double> v = values(s.rect);
   if (v[2] < 0 || v[3] < 0) fail("the scissor box's width and height must not be negative");
-  glScissor(scaled(v[0]), scaled(v[1]), scaled(v[2]), scaled(v[3]));
+  glScissor(scaledX(v[0]), scaledY(v[1]), scaledX(v[2]), scaledY(v[3]));
 }
 
 void Interpreter::Executor::run(const LogicOp &s) { glLogicOp(s.op); }

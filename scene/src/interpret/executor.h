@@ -48,6 +48,7 @@ public:
   void run(const RotateByParameter &s);
   void run(const Scale &s);
   void run(const MultMatrix &s);
+  void run(const ShadowMatrix &s);
   void run(const Push &s);
   void run(const Pop &s);
 
@@ -114,7 +115,9 @@ private:
   void compileDefinitions();
   // Reports GL errors raised by the statement just run.
   void checkGlErrors(const Statement &statement);
-  GLint scaled(double pixels) const;
+  GLint scaledX(double pixels) const;
+  GLint scaledY(double pixels) const;
+  double widthScale() const;
 
   const Program &program_;
   const InterpreterOptions &options_;

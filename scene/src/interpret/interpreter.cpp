@@ -36,6 +36,7 @@ const char *glFunctionOf(const Statement &statement) {
           [](const RotateQuaternion &) { return "glMultMatrixd"; },
           [](const RotateByParameter &) { return "glRotated"; }, [](const Scale &) { return "glScaled"; },
           [](const MultMatrix &) { return "glMultMatrixd"; },
+          [](const ShadowMatrix &) { return "glMultMatrixd"; },
           [](const Push &) { return "glPushMatrix/glPushAttrib"; },
           [](const Pop &) { return "glPopAttrib/glPopMatrix"; }, [](const Color &) { return "glColor4d"; },
           [](const Normal &) { return "glNormal3d"; }, [](const TexCoord &) { return "glTexCoord"; },
@@ -113,9 +114,15 @@ void Interpreter::Executor::fail(const std::string &message) const {
   throw error;
 }
 
-GLint Interpreter::Executor::scaled(double pixels) const {
-  return static_cast<GLint>(std::lround(pixels * options_.pixelScale));
+GLint Interpreter::Executor::scaledX(double pixels) const {
+  return static_cast<GLint>(std::lround(pixels * options_.scaleX));
 }
+
+GLint Interpreter::Executor::scaledY(double pixels) const {
+  return static_cast<GLint>(std::lround(pixels * options_.scaleY));
+}
+
+double Interpreter::Executor::widthScale() const { return std::sqrt(options_.scaleX * options_.scaleY); }
 
 void Interpreter::Executor::drawFrame() {
   setUpFrame();

@@ -15,9 +15,11 @@ namespace glass::scene {
 class VertexTracer;
 
 struct InterpreterOptions {
-  // Pixel sizes in the scene (viewport, scissor, line width, point size) are multiplied by this:
-  // the supersampling factor, so that a supersampled frame is the same picture, only finer.
-  int pixelScale = 1;
+  // Pixel measures in the scene (viewport, scissor, line width, point size) are in pixels of the
+  // scene's `size`; drawn at another size or supersampled, they are scaled so that the frame is
+  // the same picture at another resolution: x by scaleX, y by scaleY, widths by their geometric
+  // mean.
+  double scaleX = 1.0, scaleY = 1.0;
   // Teaching views: wireframe forces glPolygonMode(GL_FRONT_AND_BACK, GL_LINE); countOverdraw
   // makes the stencil buffer count fragments (the scene's own stencil statements are skipped).
   bool wireframe = false;

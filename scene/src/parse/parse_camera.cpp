@@ -147,4 +147,18 @@ void Parser::parseMatrix(StatementReader &r) {
   emit(r, MultMatrix{values});
 }
 
+void Parser::parseShadowMatrix(StatementReader &r) {
+  static const ParamSpec specs[] = {
+      {"plane", ParamKind::Numbers, 4, 4, {}, "a b c d of the plane ax + by + cz + d = 0"},
+      {"light", ParamKind::Numbers, 4, 4, {}, "x y z w; w = 0 for a directional light"},
+  };
+  NamedParams params = NamedParams::read(r, specs);
+  const ParamValue *plane = params.take("plane");
+  const ParamValue *light = params.take("light");
+  if (plane == nullptr || light == nullptr) {
+    r.fail(r.statementToken(), "'shadow_matrix' needs 'plane A B C D' and 'light X Y Z W'");
+  }
+  emit(r, ShadowMatrix{plane->numbers, light->numbers});
+}
+
 } // namespace glass::scene

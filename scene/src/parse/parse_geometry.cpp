@@ -3,12 +3,22 @@
 #include "load/obj_model.h"
 #include "parser_impl.h"
 
+#include <optional>
+
 namespace glass::scene {
 
 void Parser::parseBegin(StatementReader &r) {
-  GLenumValue mode = r.word(names::primitiveModes, "primitive type");
-  r.end();
+  // A mistake on the `begin` line still opens the block, so that its `end` finds it.
+  GLenumValue mode = GL_POINTS;
+  std::optional<StatementError> mistake;
+  try {
+    mode = r.word(names::primitiveModes, "primitive type");
+    r.end();
+  } catch (const StatementError &error) {
+    mistake = error;
+  }
   OpenBlock block;
+  block.broken = mistake.has_value();
   block.kind = BlockKind::Begin;
   block.statement.where = r.statementToken().where;
   block.statement.length = r.statementToken().length;
@@ -17,6 +27,7 @@ void Parser::parseBegin(StatementReader &r) {
   block.length = r.statementToken().length;
   block.pushDepth = pushes_.size();
   blocks_.push_back(std::move(block));
+  if (mistake) throw *mistake;
 }
 
 // GL silently drops vertices that do not make a whole primitive (OpenGL 1.1 section 2.6.1);

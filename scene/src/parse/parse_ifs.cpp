@@ -63,43 +63,51 @@ void Parser::parseIfs(StatementReader &r) {
       {"colors", ParamKind::Boolean, 1, 1, {}, ""},
       {"file", ParamKind::String, 1, 1, {}, ""},
   };
-  NamedParams params = NamedParams::read(r, specs);
-  Ifs ifs;
-  ifs.mode = params.wordOr("mode", 0) == 0 ? Ifs::Mode::Recursive : Ifs::Mode::Chaos;
-  ifs.partColors = params.booleanOr("colors", true);
-  if (ifs.mode == Ifs::Mode::Recursive) {
-    ifs.depth = static_cast<int>(params.integerOr("depth", 6));
-  } else {
-    ifs.points = params.integerOr("points", 100000);
-    ifs.seed = static_cast<std::uint64_t>(params.integerOr("seed", 1));
-  }
-  const ParamValue *file = params.take("file");
-  params.requireAllUsed(r, ifs.mode == Ifs::Mode::Recursive
-                               ? "in mode recursive (points and seed belong to mode chaos)"
-                               : "in mode chaos (depth belongs to mode recursive)");
   OpenBlock block;
-  if (file != nullptr) {
-    std::string path = resolvePath(file->string, file->where);
-    geometry::IfsParseResult loaded = geometry::loadIfsFile(path);
-    if (!loaded.ok()) {
-      const geometry::IfsParseError &first = loaded.errors.front();
-      r.fail(file->where, file->length,
-             "cannot use IFS file '" + path + "': " +
-                 (first.line > 0 ? "line " + std::to_string(first.line) + ":" + std::to_string(first.column) + ": " : "") +
-                 first.message);
-    }
-    appendFileMaps(loaded.ifs, ifs, file->where);
-    // The file's step-0 figure, unless the block draws its own.
-    block.body.push_back(basePolygon(loaded.ifs.base, file->where));
-    block.fileBase = true;
-  }
   block.kind = BlockKind::Ifs;
   block.statement.where = r.statementToken().where;
   block.statement.length = r.statementToken().length;
-  block.statement.body = std::move(ifs);
   block.where = r.statementToken().where;
   block.length = r.statementToken().length;
   block.pushDepth = pushes_.size();
+  Ifs ifs;
+  // A mistake on the `ifs` line still opens the block, so that its maps and `end` find it.
+  try {
+    NamedParams params = NamedParams::read(r, specs);
+    ifs.mode = params.wordOr("mode", 0) == 0 ? Ifs::Mode::Recursive : Ifs::Mode::Chaos;
+    ifs.partColors = params.booleanOr("colors", true);
+    if (ifs.mode == Ifs::Mode::Recursive) {
+      ifs.depth = static_cast<int>(params.integerOr("depth", 6));
+    } else {
+      ifs.points = params.integerOr("points", 100000);
+      ifs.seed = static_cast<std::uint64_t>(params.integerOr("seed", 1));
+    }
+    const ParamValue *file = params.take("file");
+    params.requireAllUsed(r, ifs.mode == Ifs::Mode::Recursive
+                                 ? "in mode recursive (points and seed belong to mode chaos)"
+                                 : "in mode chaos (depth belongs to mode recursive)");
+    if (file != nullptr) {
+      std::string path = resolvePath(file->string, file->where);
+      geometry::IfsParseResult loaded = geometry::loadIfsFile(path);
+      if (!loaded.ok()) {
+        const geometry::IfsParseError &first = loaded.errors.front();
+        r.fail(file->where, file->length,
+               "cannot use IFS file '" + path + "': " +
+                   (first.line > 0 ? "line " + std::to_string(first.line) + ":" + std::to_string(first.column) + ": " : "") +
+                   first.message);
+      }
+      appendFileMaps(loaded.ifs, ifs, file->where);
+      // The file's step-0 figure, unless the block draws its own.
+      block.body.push_back(basePolygon(loaded.ifs.base, file->where));
+      block.fileBase = true;
+    }
+  } catch (const StatementError &) {
+    block.broken = true;
+    block.statement.body = std::move(ifs);
+    blocks_.push_back(std::move(block));
+    throw;
+  }
+  block.statement.body = std::move(ifs);
   blocks_.push_back(std::move(block));
 }
 

@@ -72,6 +72,7 @@ std::span<const Parser::StatementKind> Parser::statementKinds() {
       {"rotate", &Parser::parseRotate, P::Scene},
       {"scale", &Parser::parseScale, P::Scene},
       {"matrix", &Parser::parseMatrix, P::Scene},
+      {"shadow_matrix", &Parser::parseShadowMatrix, P::Scene},
       // Vertex attributes.
       {"color", &Parser::parseColor, P::Attribute},
       {"normal", &Parser::parseNormal, P::Attribute},
@@ -159,6 +160,7 @@ const char *Parser::blockName(BlockKind kind) {
 Parser::Parser(Diagnostics &diagnostics, const ParseOptions &options)
     : diagnostics_(diagnostics), options_(options) {
   program_.sources = std::make_shared<SourceSet>();
+  diagnostics_.keepSources(program_.sources);
   overrideUsed_.assign(options_.overrides.size(), false);
 }
 
@@ -239,14 +241,6 @@ void Parser::parseFile(const SourceFile &file) {
   if (diagnostics_.full()) return;
   // Blocks and pushes must close in the file that opened them.
   bool included = file.includedFrom().valid();
-  while (pushes_.size() > pushesBefore) {
-    const OpenPush &push = pushes_.back();
-    if (blocks_.size() == push.blockDepth) {
-      diagnostics_.error(push.where, std::string("'push' is never matched by a 'pop'") +
-                                         (included ? " in this included file" : ""), 4);
-    }
-    pushes_.pop_back();
-  }
   while (blocks_.size() > blocksBefore) {
     const OpenBlock &block = blocks_.back();
     diagnostics_.error(block.where, std::string("'") + blockName(block.kind) +
@@ -256,6 +250,11 @@ void Parser::parseFile(const SourceFile &file) {
     if (block.kind == BlockKind::Define) definitionIndex_.erase(block.definition.name);
     blocks_.pop_back();
   }
+  for (std::size_t i = pushesBefore; i < pushes_.size(); ++i) {
+    diagnostics_.error(pushes_[i].where, std::string("'push' is never matched by a 'pop'") +
+                                             (included ? " in this included file" : ""), 4);
+  }
+  pushes_.resize(pushesBefore);
 }
 
 void Parser::report(const StatementError &error) {
@@ -405,6 +404,7 @@ void Parser::closeBlock(StatementReader &r) {
   }
   OpenBlock block = std::move(blocks_.back());
   blocks_.pop_back();
+  if (block.broken) return; // its mistake was reported where the block opened
   switch (block.kind) {
   case BlockKind::Begin: {
     Begin &begin = std::get<Begin>(block.statement.body);
@@ -430,25 +430,32 @@ void Parser::closeBlock(StatementReader &r) {
 }
 
 void Parser::parseDefine(StatementReader &r) {
-  const Token &nameToken = r.peek();
-  std::string name = r.identifier("a name for the definition");
-  r.end();
-  if (auto it = definitionIndex_.find(name); it != definitionIndex_.end()) {
-    throw StatementError{nameToken.where, nameToken.length, "'" + name + "' is already defined",
-                         {{program_.definitions[static_cast<std::size_t>(it->second)].where,
-                           "first defined here"}}};
-  }
-  definitionIndex_[name] = static_cast<int>(program_.definitions.size());
-  Definition placeholder;
-  placeholder.name = name;
-  placeholder.where = r.statementToken().where;
-  program_.definitions.push_back(placeholder);
   OpenBlock block;
   block.kind = BlockKind::Define;
-  block.definition = placeholder;
   block.where = r.statementToken().where;
   block.length = r.statementToken().length;
   block.pushDepth = pushes_.size();
+  // A mistake on the `define` line still opens the block, so that its `end` finds it.
+  try {
+    const Token &nameToken = r.peek();
+    std::string name = r.identifier("a name for the definition");
+    r.end();
+    if (auto it = definitionIndex_.find(name); it != definitionIndex_.end()) {
+      throw StatementError{nameToken.where, nameToken.length, "'" + name + "' is already defined",
+                           {{program_.definitions[static_cast<std::size_t>(it->second)].where,
+                             "first defined here"}}};
+    }
+    definitionIndex_[name] = static_cast<int>(program_.definitions.size());
+    Definition placeholder;
+    placeholder.name = name;
+    placeholder.where = r.statementToken().where;
+    program_.definitions.push_back(placeholder);
+    block.definition = placeholder;
+  } catch (const StatementError &) {
+    block.broken = true;
+    blocks_.push_back(std::move(block));
+    throw;
+  }
   blocks_.push_back(std::move(block));
 }
 

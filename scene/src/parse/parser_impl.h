@@ -51,6 +51,7 @@ private:
     int length = 1;
     std::size_t pushDepth = 0; // open pushes when the block was opened
     bool fileBase = false;     // ifs: the body starts with the base polygon of an IFS file
+    bool broken = false;       // its first line had a mistake: closed quietly, not used
   };
   struct OpenPush {
     SourceLocation where;
@@ -109,6 +110,7 @@ private:
   void parseRotate(StatementReader &r);
   void parseScale(StatementReader &r);
   void parseMatrix(StatementReader &r);
+  void parseShadowMatrix(StatementReader &r);
 
   // Vertex attributes and GL state (parse_state.cpp).
   void parseColor(StatementReader &r);

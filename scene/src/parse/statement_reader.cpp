@@ -15,21 +15,22 @@ std::string withMeaning(std::string_view what) {
   return what.empty() ? std::string() : " (" + std::string(what) + ")";
 }
 
-// Levenshtein distance, for suggestions.
+// Edit distance with transpositions (optimal string alignment), for suggestions: a swapped
+// pair of letters ("sclae") counts as one slip, like a missing or a wrong letter.
 std::size_t editDistance(std::string_view a, std::string_view b) {
-  std::vector<std::size_t> row(b.size() + 1);
-  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  std::vector<std::vector<std::size_t>> d(a.size() + 1, std::vector<std::size_t>(b.size() + 1));
+  for (std::size_t i = 0; i <= a.size(); ++i) d[i][0] = i;
+  for (std::size_t j = 0; j <= b.size(); ++j) d[0][j] = j;
   for (std::size_t i = 1; i <= a.size(); ++i) {
-    std::size_t diagonal = row[0];
-    row[0] = i;
     for (std::size_t j = 1; j <= b.size(); ++j) {
-      std::size_t above = row[j];
       std::size_t cost = a[i - 1] == b[j - 1] ? 0 : 1;
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + cost});
-      diagonal = above;
+      d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + cost});
+      if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1]) {
+        d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
+      }
     }
   }
-  return row[b.size()];
+  return d[a.size()][b.size()];
 }
 
 } // namespace
@@ -87,12 +88,9 @@ bool StatementReader::atEnd() const {
 }
 
 bool StatementReader::peekIsNumber() const {
-  const Token &token = peek();
-  if (token.kind == TokenKind::Number) return true;
-  if (token.kind != TokenKind::Reference) return false;
-  int index = 0;
-  Parameter *parameter = scope_.findParameter(token.text, index);
-  return parameter == nullptr || parameter->kind == Parameter::Kind::Numbers;
+  // A reference counts as a number here; appendNumbers says so when it names a rotation.
+  TokenKind kind = peek().kind;
+  return kind == TokenKind::Number || kind == TokenKind::Reference;
 }
 
 bool StatementReader::peekIsWord(std::string_view word) const {
@@ -146,7 +144,10 @@ Number StatementReader::number(std::string_view what) {
   return values[0];
 }
 
-Numbers StatementReader::numbers(std::string_view what, int min, int max) {
+Numbers StatementReader::numbers(std::string_view what, int min, int max, std::string_view subject) {
+  std::string owner(1, '\'');
+  owner += subject.empty() ? std::string_view(statementName()) : subject;
+  owner += '\'';
   Numbers values;
   while (peekIsNumber()) {
     const Token &token = take();
@@ -154,9 +155,8 @@ Numbers StatementReader::numbers(std::string_view what, int min, int max) {
     appendNumbers(token, values, what);
     if (static_cast<int>(values.size()) > max) {
       if (before == static_cast<std::size_t>(max) || token.kind == TokenKind::Number) {
-        fail(token, "too many numbers for '" + statementName() + "': it takes " +
-                        (min == max ? std::to_string(max) : "at most " + std::to_string(max)) +
-                        withMeaning(what));
+        fail(token, "too many numbers for " + owner + ": it takes " +
+                        (min == max ? std::to_string(max) : "at most " + std::to_string(max)) + withMeaning(what));
       }
       fail(token, "'$" + token.text + "' gives " +
                       plural(static_cast<long long>(values.size() - before), "number") +
@@ -165,9 +165,10 @@ Numbers StatementReader::numbers(std::string_view what, int min, int max) {
   }
   if (static_cast<int>(values.size()) < min) {
     std::string needed = min == max ? std::to_string(min) : "at least " + std::to_string(min);
-    fail(peek(), "'" + statementName() + "' needs " + needed + " number" + (min == 1 ? "" : "s") +
-                     withMeaning(what) + ", found " +
-                     (values.empty() ? describeToken(peek()) : "only " + std::to_string(values.size())));
+    std::string found = values.empty() ? "found " + describeToken(peek())
+                        : atEnd()      ? "found only " + std::to_string(values.size())
+                                       : "found " + describeToken(peek()) + " after " + std::to_string(values.size());
+    fail(peek(), owner + " needs " + needed + " number" + (min == 1 ? "" : "s") + withMeaning(what) + ", " + found);
   }
   return values;
 }
@@ -348,8 +349,8 @@ NamedParams NamedParams::read(StatementReader &reader, std::span<const ParamSpec
     std::string what(spec->meaning.empty() ? spec->name : spec->meaning);
     switch (spec->kind) {
     case ParamKind::Numbers:
-      value.numbers = reader.numbers(std::string(spec->name) + withMeaning(spec->meaning),
-                                     static_cast<int>(spec->min), static_cast<int>(spec->max));
+      value.numbers = reader.numbers(spec->meaning, static_cast<int>(spec->min), static_cast<int>(spec->max),
+                                     spec->name);
       break;
     case ParamKind::Constant: value.constant = reader.constant(spec->name); break;
     case ParamKind::Integer: value.integer = reader.integer(spec->name, spec->min, spec->max); break;

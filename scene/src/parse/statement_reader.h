@@ -70,7 +70,8 @@ public:
   // One number; `what` names it in messages ("angle").
   Number number(std::string_view what);
   // A run of min..max numbers (a `$name` counts for as many numbers as the parameter holds).
-  Numbers numbers(std::string_view what, int min, int max);
+  // Messages name the statement, or `subject` (a named parameter) when given.
+  Numbers numbers(std::string_view what, int min, int max, std::string_view subject = {});
   // A number whose value must be known while parsing (a constant, or an unanimated parameter).
   double constant(std::string_view what);
   int integer(std::string_view what, long long min, long long max);

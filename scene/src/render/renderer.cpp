@@ -58,9 +58,10 @@ bool renderFrame(const Program &program, int frame, const RenderOptions &options
   }
 
   VertexTracer tracer(options.traceVertex);
-  tracer.setPixelScale(factor);
+  tracer.setPixelScale(factor); // window coordinates in pixels of the output picture
   InterpreterOptions interpreterOptions;
-  interpreterOptions.pixelScale = factor;
+  interpreterOptions.scaleX = static_cast<double>(w) / program.width;
+  interpreterOptions.scaleY = static_cast<double>(h) / program.height;
   interpreterOptions.wireframe = options.view == View::Wireframe;
   interpreterOptions.countOverdraw = options.view == View::Overdraw;
   interpreterOptions.tracer = options.traceVertex >= 0 ? &tracer : nullptr;

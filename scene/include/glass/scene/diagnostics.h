@@ -6,6 +6,7 @@
 #include "glass/scene/source.h"
 
 #include <iosfwd>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -32,6 +33,9 @@ public:
   Diagnostic &warning(SourceLocation at, std::string message, int length = 1);
   // Adds a message made elsewhere (the lexer's, moved over in source order).
   void add(Diagnostic diagnostic);
+  // Keeps the files that messages point into alive as long as the messages are, even when the
+  // parsed program is gone (the parser hands over its SourceSet here).
+  void keepSources(std::shared_ptr<const SourceSet> sources) { sources_.push_back(std::move(sources)); }
 
   int errorCount() const { return errorCount_; }
   bool hasErrors() const { return errorCount_ > 0; }
@@ -50,6 +54,7 @@ private:
   int errorLimit_;
   int errorCount_ = 0;
   std::vector<Diagnostic> list_;
+  std::vector<std::shared_ptr<const SourceSet>> sources_;
 };
 
 // One message with its source line and caret, as the command line prints it.

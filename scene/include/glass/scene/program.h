@@ -75,6 +75,7 @@ struct RotateQuaternion { Numbers wxyz; };               // glMultMatrix of the 
 struct RotateByParameter { int parameter = -1; };        // glRotate of a (possibly slerped) rotation
 struct Scale { Numbers v; };
 struct MultMatrix { Numbers rowMajor; };                 // 16 values, or 6 for a 2D affine map
+struct ShadowMatrix { Numbers plane, light; };           // glMultMatrixd of a planar projection
 struct Push { };                                         // glPushMatrix + glPushAttrib(all)
 struct Pop { };                                          // glPopAttrib + glPopMatrix
 
@@ -203,7 +204,7 @@ struct Statement {
   int length = 1; // columns of the statement name, for carets
   std::variant<Viewport, ClearColor, ClearDepth, ClearStencil, Clear, Perspective, Frustum, Ortho,
                LookAt, LoadIdentity, Translate, Rotate, RotateQuaternion, RotateByParameter, Scale,
-               MultMatrix, Push, Pop, Color, Normal, TexCoord, Vertex, EdgeFlag, Enable,
+               MultMatrix, ShadowMatrix, Push, Pop, Color, Normal, TexCoord, Vertex, EdgeFlag, Enable,
                ShadeModel, Light, LightModel, Material, ColorMaterial, Fog, BlendFunc, AlphaFunc,
                DepthFunc, DepthMask, DepthRange, ColorMask, StencilFunc, StencilOp, StencilMask,
                CullFace, FrontFace, PolygonMode, PolygonOffset, ClipPlane, LineWidth, PointSize,

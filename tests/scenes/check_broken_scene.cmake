@@ -1,0 +1,21 @@
+# One broken scene: `glass render` must exit with status 1, print the first message of EXPECTED
+# (the file's name, line, column and text) and leave no OUTPUT behind.
+file(REMOVE "${OUTPUT}")
+execute_process(COMMAND "${GLASS}" render "${SCENE}" -o "${OUTPUT}" RESULT_VARIABLE status
+                ERROR_VARIABLE messages OUTPUT_VARIABLE printed)
+if(NOT status EQUAL 1)
+  message(FATAL_ERROR "expected exit status 1 for ${SCENE}, got '${status}':\n${messages}")
+endif()
+if(EXISTS "${OUTPUT}")
+  message(FATAL_ERROR "${SCENE} is broken but ${OUTPUT} was written")
+endif()
+file(GLOB leftovers "${OUTPUT}.*")
+if(leftovers)
+  message(FATAL_ERROR "temporary files left behind: ${leftovers}")
+endif()
+file(STRINGS "${EXPECTED}" expected_lines)
+list(GET expected_lines 0 first)
+string(FIND "${messages}" "${first}" at)
+if(at EQUAL -1)
+  message(FATAL_ERROR "expected the message\n  ${first}\nbut glass printed\n${messages}")
+endif()
