@@ -11,6 +11,7 @@
 #include <GL/freeglut.h>
 #include <doctest/doctest.h>
 
+#include <array>
 #include <cmath>
 #include <cstdarg>
 #include <cstdio>
@@ -190,4 +191,28 @@ TEST_CASE("GLUT shapes: counts freeglut cannot build give nothing") {
   CHECK(shapes::sphereMesh(1.0f, 0, 8, true).draws.empty());
   CHECK(shapes::coneMesh(1.0f, 1.0f, 8, 0, false).draws.empty());
   CHECK(shapes::torusMesh(0.2f, 1.0f, 1, 8, false).draws.empty());
+}
+
+TEST_CASE("freeglut's rhombic dodecahedron and Sierpinski sponge match freeglut") {
+  for (bool wire : {false, true}) {
+    INFO("wire " << wire);
+    checkSame(freeglut([&] {
+                wire ? glutWireRhombicDodecahedron() : glutSolidRhombicDodecahedron();
+              }),
+              expand(shapes::rhombicDodecahedronMesh(wire)), 2e-7f);
+    for (int levels : {0, 1, 3}) {
+      double offset[3] = {0.25, -0.5, 1.0};
+      const double scale = 1.5;
+      INFO("sponge " << levels);
+      checkSame(freeglut([&] {
+                  wire ? glutWireSierpinskiSponge(levels, offset, scale)
+                       : glutSolidSierpinskiSponge(levels, offset, scale);
+                }),
+                expand(shapes::sierpinskiSpongeMesh(levels, offset, static_cast<float>(scale),
+                                                    wire)),
+                4e-7f);
+    }
+  }
+  CHECK(shapes::sierpinskiSpongeMesh(-1, std::array<double, 3>{}.data(), 1.0f, false)
+            .draws.empty());
 }

@@ -35,6 +35,13 @@ GLAPI void GLAPIENTRY glutSolidDodecahedron(void);
 GLAPI void GLAPIENTRY glutWireDodecahedron(void);
 GLAPI void GLAPIENTRY glutSolidIcosahedron(void);
 GLAPI void GLAPIENTRY glutWireIcosahedron(void);
+/* freeglut's additions: the rhombic dodecahedron (corners at distance 1 on the axes) and the
+ * Sierpinski sponge (num_levels subdivisions of a tetrahedron of circumradius `scale` at
+ * `offset`). */
+GLAPI void GLAPIENTRY glutSolidRhombicDodecahedron(void);
+GLAPI void GLAPIENTRY glutWireRhombicDodecahedron(void);
+GLAPI void GLAPIENTRY glutSolidSierpinskiSponge(int num_levels, double offset[3], double scale);
+GLAPI void GLAPIENTRY glutWireSierpinskiSponge(int num_levels, double offset[3], double scale);
 /* The Utah teapot, about 1.575 size tall and centred on the origin, y up, spout towards +x,
  * tessellated exactly as freeglut 3 does it (32 bicubic patches on 8 x 8 points solid, as
  * triangles with texture coordinates; 10 x 10 wire, as line strips). */

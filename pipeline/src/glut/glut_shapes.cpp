@@ -1,5 +1,5 @@
 // The GLUT geometry entry points (GLUT 3.7 specification, chapter 11, and freeglut's
-// glutSolidCylinder). Sizes arrive as double and are used in float, as freeglut does.
+// cylinder, rhombic dodecahedron and Sierpinski sponge). Sizes arrive as double and are used in float, as freeglut does.
 #include <GL/glut.h>
 
 #include "glut/shape_mesh.h"
@@ -47,5 +47,15 @@ void glutSolidDodecahedron(void) { drawShapeMesh(shapes::dodecahedronMesh(false)
 void glutWireDodecahedron(void) { drawShapeMesh(shapes::dodecahedronMesh(true)); }
 void glutSolidIcosahedron(void) { drawShapeMesh(shapes::icosahedronMesh(false)); }
 void glutWireIcosahedron(void) { drawShapeMesh(shapes::icosahedronMesh(true)); }
+void glutSolidRhombicDodecahedron(void) {
+  drawShapeMesh(shapes::rhombicDodecahedronMesh(false));
+}
+void glutWireRhombicDodecahedron(void) { drawShapeMesh(shapes::rhombicDodecahedronMesh(true)); }
+void glutSolidSierpinskiSponge(int levels, double offset[3], GLdouble scale) {
+  if (offset) drawShapeMesh(shapes::sierpinskiSpongeMesh(levels, offset, toFloat(scale), false));
+}
+void glutWireSierpinskiSponge(int levels, double offset[3], GLdouble scale) {
+  if (offset) drawShapeMesh(shapes::sierpinskiSpongeMesh(levels, offset, toFloat(scale), true));
+}
 
 }  // extern "C"

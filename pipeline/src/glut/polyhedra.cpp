@@ -150,4 +150,69 @@ ShapeMesh icosahedronMesh(bool wire) {
   return polyhedron(corners, faces, normals, 20, 3, 1.0f, wire, {0, 1, 2});
 }
 
+// freeglut's rhombic dodecahedron: the twelve rhombi around the corners (0, 0, +-1),
+// (+-s, 0, +-1/2), (0, +-s, +-1/2) and (+-s, +-s, 0) with s = sqrt(2) / 2. The eight slanted faces
+// carry freeglut's normals (+-sqrt(2)/4, +-sqrt(2)/4, +-1/2), which are not unit length.
+ShapeMesh rhombicDodecahedronMesh(bool wire) {
+  const double s = std::sqrt(2.0) / 2.0, a = std::sqrt(2.0) / 4.0;
+  const Point corners[14] = {
+      floatPoint(0, 0, 1),    floatPoint(s, 0, 0.5),   floatPoint(0, s, 0.5),
+      floatPoint(-s, 0, 0.5), floatPoint(0, -s, 0.5),  floatPoint(s, s, 0),
+      floatPoint(-s, s, 0),   floatPoint(-s, -s, 0),   floatPoint(s, -s, 0),
+      floatPoint(s, 0, -0.5), floatPoint(0, s, -0.5),  floatPoint(-s, 0, -0.5),
+      floatPoint(0, -s, -0.5), floatPoint(0, 0, -1)};
+  const int faces[12 * 4] = {0, 1, 5,  2,  0, 2,  6,  3,  0, 3,  7,  4,  0, 4,  8,  1,
+                             5, 10, 6, 2,  6, 11, 7,  3,  7, 12, 8,  4,  8, 9,  5,  1,
+                             5, 9, 13, 10, 6, 10, 13, 11, 7, 11, 13, 12, 8, 12, 13, 9};
+  const Point normals[12] = {
+      floatPoint(a, a, 0.5),  floatPoint(-a, a, 0.5),  floatPoint(-a, -a, 0.5),
+      floatPoint(a, -a, 0.5), {0, 1, 0},               {-1, 0, 0},
+      {0, -1, 0},             {1, 0, 0},               floatPoint(a, a, -0.5),
+      floatPoint(-a, a, -0.5), floatPoint(-a, -a, -0.5), floatPoint(a, -a, -0.5)};
+  return polyhedron(corners, faces, normals, 12, 4, 1.0f, wire, {0, 1, 2, 0, 2, 3});
+}
+
+// freeglut's Sierpinski sponge: at level 0 the tetrahedron of glutSolidTetrahedron scaled by
+// `scale` and moved by `offset`; each further level replaces it by four tetrahedra of half the
+// scale, one at each corner (offset + scale / 2 * corner), in the order of the corners. As in
+// freeglut, offsets add up in double and each vertex is offset + scale * corner in float.
+ShapeMesh sierpinskiSpongeMesh(int levels, const double offset[3], float scale, bool wire) {
+  ShapeMesh mesh;
+  if (levels < 0) return mesh;
+  const ShapeMesh unit = tetrahedronMesh(false);  // 4 faces x 3 corners, in face order
+  const double s2 = std::sqrt(2.0), s6 = std::sqrt(6.0);
+  const Point corners[4] = {floatPoint(1, 0, 0), floatPoint(-1.0 / 3, 2 * s2 / 3, 0),
+                            floatPoint(-1.0 / 3, -s2 / 3, s6 / 3),
+                            floatPoint(-1.0 / 3, -s2 / 3, -s6 / 3)};
+  auto emit = [&](auto&& self, int level, const double at[3], float size) -> void {
+    if (level == 0) {
+      for (int k = 0; k < unit.vertexCount(); ++k) {
+        const float* p = &unit.positions[3 * k];
+        const float* n = &unit.normals[3 * k];
+        mesh.addVertex(static_cast<float>(at[0]) + size * p[0],
+                       static_cast<float>(at[1]) + size * p[1],
+                       static_cast<float>(at[2]) + size * p[2], n[0], n[1], n[2]);
+      }
+      return;
+    }
+    const float half = size / 2.0f;
+    for (const Point& c : corners) {
+      const double next[3] = {at[0] + half * c.x, at[1] + half * c.y, at[2] + half * c.z};
+      self(self, level - 1, next, half);
+    }
+  };
+  emit(emit, levels, offset, scale);
+  const int vertices = mesh.vertexCount();
+  if (wire) {
+    for (int first = 0; first < vertices; first += 3) {
+      mesh.draws.push_back({GL_LINE_LOOP, {first, first + 1, first + 2}});
+    }
+  } else {
+    ShapeMesh::Draw all{GL_TRIANGLES, {}};
+    for (int k = 0; k < vertices; ++k) all.indices.push_back(k);
+    mesh.draws.push_back(all);
+  }
+  return mesh;
+}
+
 }  // namespace glass::gl::glut

@@ -35,6 +35,10 @@ ShapeMesh tetrahedronMesh(bool wire);               // circumradius 1
 ShapeMesh octahedronMesh(bool wire);                // circumradius 1
 ShapeMesh dodecahedronMesh(bool wire);              // circumradius sqrt(3)
 ShapeMesh icosahedronMesh(bool wire);               // circumradius 1
+// freeglut's additions: the rhombic dodecahedron (corners at distance 1 on the axes) and the
+// Sierpinski sponge (`levels` times four half-size tetrahedra at the corners of the last).
+ShapeMesh rhombicDodecahedronMesh(bool wire);
+ShapeMesh sierpinskiSpongeMesh(int levels, const double offset[3], float scale, bool wire);
 
 // The round shapes, built from sine/cosine tables of float angles as freeglut builds them. The
 // solids are triangle strips; the wireframes line strips or loops along both directions.
