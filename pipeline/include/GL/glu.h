@@ -288,6 +288,37 @@ GLAPI void GLAPIENTRY gluEndPolygon(GLUtesselator *tess);
 #define GLU_MAP1_TRIM_2                    100210
 #define GLU_MAP1_TRIM_3                    100211
 
+/* NURBS curves and surfaces, trimmed or not, split into Bezier pieces and drawn through the GL
+ * evaluators (GLU_NURBS_RENDERER) or reported through the callbacks (GLU_NURBS_TESSELLATOR).
+ * Sampling follows GLU's methods, though on a uniform grid per surface rather than SGI's
+ * adaptive one (glu/nurbs_rendering.cpp). */
+typedef struct GLUnurbs GLUnurbs;
+typedef struct GLUnurbs GLUnurbsObj;
+
+GLAPI GLUnurbs *GLAPIENTRY gluNewNurbsRenderer(void);
+GLAPI void GLAPIENTRY gluDeleteNurbsRenderer(GLUnurbs *nurb);
+GLAPI void GLAPIENTRY gluNurbsProperty(GLUnurbs *nurb, GLenum property, GLfloat value);
+GLAPI void GLAPIENTRY gluGetNurbsProperty(GLUnurbs *nurb, GLenum property, GLfloat *data);
+GLAPI void GLAPIENTRY gluLoadSamplingMatrices(GLUnurbs *nurb, const GLfloat *model,
+                                              const GLfloat *perspective, const GLint *view);
+GLAPI void GLAPIENTRY gluNurbsCallback(GLUnurbs *nurb, GLenum which, _GLUfuncptr CallBackFunc);
+GLAPI void GLAPIENTRY gluNurbsCallbackData(GLUnurbs *nurb, GLvoid *userData);
+GLAPI void GLAPIENTRY gluNurbsCallbackDataEXT(GLUnurbs *nurb, GLvoid *userData);
+GLAPI void GLAPIENTRY gluBeginCurve(GLUnurbs *nurb);
+GLAPI void GLAPIENTRY gluEndCurve(GLUnurbs *nurb);
+GLAPI void GLAPIENTRY gluNurbsCurve(GLUnurbs *nurb, GLint knotCount, GLfloat *knots, GLint stride,
+                                    GLfloat *control, GLint order, GLenum type);
+GLAPI void GLAPIENTRY gluBeginSurface(GLUnurbs *nurb);
+GLAPI void GLAPIENTRY gluEndSurface(GLUnurbs *nurb);
+GLAPI void GLAPIENTRY gluNurbsSurface(GLUnurbs *nurb, GLint sKnotCount, GLfloat *sKnots,
+                                      GLint tKnotCount, GLfloat *tKnots, GLint sStride,
+                                      GLint tStride, GLfloat *control, GLint sOrder,
+                                      GLint tOrder, GLenum type);
+GLAPI void GLAPIENTRY gluBeginTrim(GLUnurbs *nurb);
+GLAPI void GLAPIENTRY gluEndTrim(GLUnurbs *nurb);
+GLAPI void GLAPIENTRY gluPwlCurve(GLUnurbs *nurb, GLint count, GLfloat *data, GLint stride,
+                                  GLenum type);
+
 #ifdef __cplusplus
 }
 #endif
