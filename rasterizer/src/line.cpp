@@ -90,7 +90,7 @@ void rasterizeLine(const WindowVertex& a, const WindowVertex& b, const LineSetti
       !isRasterizableCoordinate(b.x) || !isRasterizableCoordinate(b.y))
     return;
   LineQuad quad;
-  if (!makeLineQuad(a.x, a.y, b.x, b.y, settings.width, quad)) return;
+  if (!makeLineQuad(a.x, a.y, b.x, b.y, settings.width, settings.framebufferHeight, quad)) return;
   LineFragmentWriter writer(a, b, settings, quad.xMajor, sink);
 
   const bool stippled = settings.stippleFactor > 0;

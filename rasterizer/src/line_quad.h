@@ -15,7 +15,11 @@ struct LineQuad {
 };
 
 // Builds the quadrilateral of the segment from (xa, ya) to (xb, yb) (window coordinates) with the
-// width rounded to an integer (at least 1). Returns false for a zero-length segment.
-bool makeLineQuad(float xa, float ya, float xb, float yb, float width, LineQuad& quad);
+// width rounded to an integer (at least 1). framebufferHeight is the height of the framebuffer
+// drawn into: the construction follows Mesa's, which numbers rows downwards from the top of the
+// framebuffer and whose float arithmetic rounds according to the size of those numbers (0 numbers
+// them downwards from y = 0). Returns false for a zero-length segment.
+bool makeLineQuad(float xa, float ya, float xb, float yb, float width, int framebufferHeight,
+                  LineQuad& quad);
 
 }  // namespace glass::raster

@@ -52,11 +52,13 @@ void walkLineQuad(const LineQuad& quad, bool increasing, Visit&& visit) {
                         (quad.x[2] - quad.x[0]) * (quad.y[1] - quad.y[0]) +
                         (quad.x[2] - quad.x[0]) * (quad.y[3] - quad.y[0]) -
                         (quad.x[3] - quad.x[0]) * (quad.y[2] - quad.y[0]);
-  if (area2 == 0) return;
-  for (int i = 0; i < 4; ++i) {  // counter-clockwise order
-    const int k = area2 > 0 ? i : 3 - i;
-    X[i] = quad.x[k];
-    Y[i] = quad.y[k];
+  // makeLineQuad gives the corners counter-clockwise. When the moves of the ends cross over (a
+  // segment shorter than a pixel), the quad is turned inside out: its edge functions, as Mesa
+  // evaluates them, then have no pixel centre inside all four, and nothing is drawn.
+  if (area2 <= 0) return;
+  for (int i = 0; i < 4; ++i) {
+    X[i] = quad.x[i];
+    Y[i] = quad.y[i];
   }
   // Edge i: A x + B y + C + bias >= 0 inside, bias = 0 on an owning edge and -1 otherwise.
   int64_t A[4], B[4], C[4];

@@ -36,8 +36,9 @@ std::vector<GridPixel> drawnInOrder(const WindowVertex& a, const WindowVertex& b
 TEST_CASE("GL lines: width 1 between pixel centres is the diamond-exit rule but for exact ties") {
   // Between pixel centres glass's rule and the exact rule choose the same pixels, except where the
   // line passes exactly halfway between two centres: there glass follows Mesa, whose choice
-  // depends on float rounding of the slope. Check every segment of a 16x16 grid: the pixel sets
-  // may differ only in such tie columns (rows), and then by one pixel across the major axis.
+  // depends on the rounding of a corner moved along the segment (line_quad.cpp, rule 4). Check
+  // every segment of a 16x16 grid: the pixel sets may differ only in such tie columns (rows), and
+  // then by one pixel across the major axis.
   int ties = 0;
   for (int x0 = 0; x0 < 16; ++x0)
     for (int y0 = 0; y0 < 16; ++y0)
@@ -58,7 +59,9 @@ TEST_CASE("GL lines: width 1 between pixel centres is the diamond-exit rule but 
             ++ties;
           }
         }
-  CHECK(ties < 65536 / 20);
+  // On this grid glass draws exactly Mesa's pixels (all 65536 segments compared with Mesa 22.3's
+  // llvmpipe); Mesa departs from the exact rule at 3808 of the grid's 34496 tie steps.
+  CHECK(ties == 3808);
 }
 
 TEST_CASE("GL lines: endpoints on pixel centres and on pixel borders") {
@@ -82,6 +85,60 @@ TEST_CASE("GL lines: endpoints on pixel centres and on pixel borders") {
   for (const GridPixel& p : vertical) CHECK(p.x == 15);
   // Zero length: nothing.
   CHECK(drawnInOrder(windowVertex(5.25f, 5.25f), windowVertex(5.25f, 5.25f), lineSettings()).empty());
+}
+
+// The cases below are pictures Mesa (llvmpipe, 22.3) draws in a 256 x 256 framebuffer; each would
+// come out differently without the step of Mesa's construction it names (line_quad.cpp).
+TEST_CASE("GL lines: ties follow the direction of travel, as Mesa's moved and rounded corner decides") {
+  LineSettings s = lineSettings(rect(0, 0, 256, 256));
+  s.framebufferHeight = 256;
+  // At x = 107.5 the segment passes through y = 177.0, halfway between rows 176 and 177, and so at
+  // columns 125, 143, 161 and 179. Drawn from the left, the end lies on a column of centres, so
+  // Mesa moves it half a pixel back (rule 4) and rounds the moved corner 0.11/256 pixel up the
+  // screen, which tilts the band up: the upper row at every tie. Drawn from the right, both ends
+  // are moved (rule 3) and both corners round 0.11/256 pixel down the screen: the lower row.
+  const int ties[5][2] = {{107, 177}, {125, 160}, {143, 143}, {161, 126}, {179, 109}};
+  auto rowAt = [](const std::vector<GridPixel>& pixels, int x) {
+    for (const GridPixel& p : pixels)
+      if (p.x == x) return p.y;
+    return -1;
+  };
+  const auto forwards = drawnInOrder(windowVertex(98.5f, 185.5f), windowVertex(188.5f, 100.5f), s);
+  const auto backwards = drawnInOrder(windowVertex(188.5f, 100.5f), windowVertex(98.5f, 185.5f), s);
+  for (const auto& [x, y] : ties) {
+    CHECK(rowAt(forwards, x) == y);
+    CHECK(rowAt(backwards, x) == y - 1);
+  }
+  // A y-major segment travelling up with its end on a row of centres: the same move, in x.
+  const auto up = drawnInOrder(windowVertex(47.5f, 114.5f), windowVertex(34.5f, 190.5f), s);
+  CHECK(std::count(up.begin(), up.end(), GridPixel{41, 152}) == 1);
+}
+
+TEST_CASE("GL lines: Mesa's rounding to 1/256 pixel, in rows numbered from the top") {
+  LineSettings s = lineSettings(rect(0, 0, 256, 256));
+  s.framebufferHeight = 256;
+  // The end corner lands exactly halfway between two 1/256 steps; rounded half away from zero (as
+  // Mesa does, not to even) the band takes pixel (15, 15).
+  CHECK(drawnInOrder(windowVertex(15.5f, 16.0f), windowVertex(16.5f, 16.75390625f), s) ==
+        std::vector<GridPixel>{{15, 15}});
+  // The start corner, moved half a pixel back, is y = 143.2558... in Mesa's downward rows, where a
+  // float keeps 16 bits of fraction: the rounding makes it exactly halfway between two 1/256 steps
+  // and it rounds up, which puts the first pixel in row 112. Numbered from y = 0 the same corner
+  // keeps more bits, rounds down, and the first pixel would be in row 113.
+  const auto fromTop = drawnInOrder(windowVertex(97.5f, 113.0f), windowVertex(172.25f, 151.25f), s);
+  REQUIRE(!fromTop.empty());
+  CHECK(fromTop.front() == GridPixel{97, 112});
+  s.framebufferHeight = 0;
+  CHECK(drawnInOrder(windowVertex(97.5f, 113.0f), windowVertex(172.25f, 151.25f), s).front() ==
+        GridPixel{97, 113});
+}
+
+TEST_CASE("GL lines: a segment shorter than a pixel whose moved ends cross draws nothing") {
+  // Both ends are moved half a pixel along the segment (rule 3), past each other: Mesa's edge
+  // functions then enclose no pixel centre.
+  LineSettings s = lineSettings(rect(0, 0, 256, 256));
+  s.framebufferHeight = 256;
+  CHECK(drawnInOrder(windowVertex(109.25f, 54.75f), windowVertex(109.0f, 54.5f), s).empty());
 }
 
 TEST_CASE("GL lines: every octant gives one pixel per column or row, 8-connected") {
@@ -163,6 +220,12 @@ TEST_CASE("GL lines: wide lines are runs of w pixels across the major axis") {
     CHECK(ySink.fragments.size() == size_t(10 * width));
     for (const Fragment& f : ySink.fragments) CHECK(std::abs(f.x - 30) <= width / 2);
   }
+  // A width halfway between two integers is rounded up (away from zero), as Mesa rounds it.
+  LineSettings s = lineSettings();
+  s.width = 2.5f;
+  RecordingSink sink;
+  rasterizeLine(windowVertex(30.5f, 2.5f), windowVertex(30.5f, 12.5f), s, sink);
+  CHECK(sink.fragments.size() == 30u);
 }
 
 TEST_CASE("GL lines: stipple pattern, repeat factor, and a counter carried across segments") {

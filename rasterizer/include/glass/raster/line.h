@@ -21,6 +21,12 @@ struct LineSettings {
   int* stippleCounter = nullptr;
   // For GL_LINE_STRIP/LOOP the shared vertex of consecutive segments is drawn once: the last
   // pixel of a segment is never drawn by the diamond-exit rule, so no special case is needed.
+  // The height of the framebuffer drawn into. Which pixel a line takes where it passes exactly
+  // between two (a tie) depends on float rounding in Mesa's line setup, which numbers rows
+  // downwards from the framebuffer's top; glass does the same arithmetic on the same numbers when
+  // it knows the height (0: rows numbered downwards from y = 0, which differs from Mesa in rare
+  // rounding cases). See rasterizer/src/line_quad.cpp.
+  int framebufferHeight = 0;
 };
 
 void rasterizeLine(const WindowVertex& a, const WindowVertex& b, const LineSettings& settings,
