@@ -1431,7 +1431,51 @@ typedef void (APIENTRYP PFNGLMULTITEXCOORD4IVARBPROC)(GLenum target, const GLint
 typedef void (APIENTRYP PFNGLMULTITEXCOORD4SARBPROC)(GLenum target, GLshort s, GLshort t, GLshort r, GLshort q);
 typedef void (APIENTRYP PFNGLMULTITEXCOORD4SVARBPROC)(GLenum target, const GLshort *v);
 
-/* GLASS-SECTION: OpenGL 1.4 */
+/* GLASS-SECTION: OpenGL 1.4 (glBlendFuncSeparate, glWindowPos and the blend colour and
+ * equation are declared above): multi-draws, fog coordinates, secondary colours, point
+ * parameters (<GL/glext.h> declares these too, with the same prototypes). */
+#define GL_POINT_SIZE_MIN                        0x8126
+#define GL_POINT_SIZE_MAX                        0x8127
+#define GL_POINT_FADE_THRESHOLD_SIZE             0x8128
+#define GL_POINT_DISTANCE_ATTENUATION            0x8129
+#define GL_CURRENT_FOG_COORDINATE                0x8453
+#define GL_FOG_COORDINATE_ARRAY_TYPE             0x8454
+#define GL_FOG_COORDINATE_ARRAY_STRIDE           0x8455
+#define GL_FOG_COORDINATE_ARRAY_POINTER          0x8456
+#define GL_FOG_COORDINATE_ARRAY                  0x8457
+#define GL_COLOR_SUM                             0x8458
+#define GL_CURRENT_SECONDARY_COLOR               0x8459
+#define GL_SECONDARY_COLOR_ARRAY_SIZE            0x845A
+#define GL_SECONDARY_COLOR_ARRAY_TYPE            0x845B
+#define GL_SECONDARY_COLOR_ARRAY_STRIDE          0x845C
+#define GL_SECONDARY_COLOR_ARRAY_POINTER         0x845D
+#define GL_SECONDARY_COLOR_ARRAY                 0x845E
+GLAPI void GLAPIENTRY glFogCoordf(GLfloat coord);
+GLAPI void GLAPIENTRY glFogCoordfv(const GLfloat *coord);
+GLAPI void GLAPIENTRY glFogCoordd(GLdouble coord);
+GLAPI void GLAPIENTRY glFogCoorddv(const GLdouble *coord);
+GLAPI void GLAPIENTRY glFogCoordPointer(GLenum type, GLsizei stride, const void *pointer);
+GLAPI void GLAPIENTRY glSecondaryColor3b(GLbyte red, GLbyte green, GLbyte blue);
+GLAPI void GLAPIENTRY glSecondaryColor3bv(const GLbyte *v);
+GLAPI void GLAPIENTRY glSecondaryColor3d(GLdouble red, GLdouble green, GLdouble blue);
+GLAPI void GLAPIENTRY glSecondaryColor3dv(const GLdouble *v);
+GLAPI void GLAPIENTRY glSecondaryColor3f(GLfloat red, GLfloat green, GLfloat blue);
+GLAPI void GLAPIENTRY glSecondaryColor3fv(const GLfloat *v);
+GLAPI void GLAPIENTRY glSecondaryColor3i(GLint red, GLint green, GLint blue);
+GLAPI void GLAPIENTRY glSecondaryColor3iv(const GLint *v);
+GLAPI void GLAPIENTRY glSecondaryColor3s(GLshort red, GLshort green, GLshort blue);
+GLAPI void GLAPIENTRY glSecondaryColor3sv(const GLshort *v);
+GLAPI void GLAPIENTRY glSecondaryColor3ub(GLubyte red, GLubyte green, GLubyte blue);
+GLAPI void GLAPIENTRY glSecondaryColor3ubv(const GLubyte *v);
+GLAPI void GLAPIENTRY glSecondaryColor3ui(GLuint red, GLuint green, GLuint blue);
+GLAPI void GLAPIENTRY glSecondaryColor3uiv(const GLuint *v);
+GLAPI void GLAPIENTRY glSecondaryColor3us(GLushort red, GLushort green, GLushort blue);
+GLAPI void GLAPIENTRY glSecondaryColor3usv(const GLushort *v);
+GLAPI void GLAPIENTRY glSecondaryColorPointer(GLint size, GLenum type, GLsizei stride, const void *pointer);
+GLAPI void GLAPIENTRY glPointParameterf(GLenum pname, GLfloat param);
+GLAPI void GLAPIENTRY glPointParameterfv(GLenum pname, const GLfloat *params);
+GLAPI void GLAPIENTRY glPointParameteri(GLenum pname, GLint param);
+GLAPI void GLAPIENTRY glPointParameteriv(GLenum pname, const GLint *params);
 GLAPI void GLAPIENTRY glMultiDrawArrays(GLenum mode, const GLint *first, const GLsizei *count, GLsizei drawcount);
 GLAPI void GLAPIENTRY glMultiDrawElements(GLenum mode, const GLsizei *count, GLenum type, const void *const *indices, GLsizei drawcount);
 

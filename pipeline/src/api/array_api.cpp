@@ -27,6 +27,8 @@ ClientArray* clientArray(Context& ctx, GLenum array) {
     case GL_TEXTURE_COORD_ARRAY: return &ctx.arrays.texCoord;
     case GL_EDGE_FLAG_ARRAY: return &ctx.arrays.edgeFlag;
     case GL_INDEX_ARRAY: return &ctx.arrays.index;  // accepted, never drawn (core/color_index.h)
+    case GL_FOG_COORDINATE_ARRAY: return &ctx.arrays.fogCoord;
+    case GL_SECONDARY_COLOR_ARRAY: return &ctx.arrays.secondaryColor;
     default: return nullptr;
   }
 }
@@ -121,6 +123,8 @@ void glGetPointerv(GLenum pname, GLvoid** params) {
       case GL_TEXTURE_COORD_ARRAY_POINTER: a = &ctx.arrays.texCoord; break;
       case GL_EDGE_FLAG_ARRAY_POINTER: a = &ctx.arrays.edgeFlag; break;
       case GL_INDEX_ARRAY_POINTER: a = &ctx.arrays.index; break;
+      case GL_FOG_COORDINATE_ARRAY_POINTER: a = &ctx.arrays.fogCoord; break;
+      case GL_SECONDARY_COLOR_ARRAY_POINTER: a = &ctx.arrays.secondaryColor; break;
       default: {
         void* buffer = nullptr;  // the selection and feedback buffers (select/)
         if (!glass::gl::queryRenderModePointer(ctx, pname, &buffer)) return recordError(ctx, GL_INVALID_ENUM);

@@ -38,7 +38,8 @@ constexpr GLenum kEnableCapabilities[] = {
     GL_POLYGON_OFFSET_FILL, GL_POLYGON_OFFSET_LINE, GL_POLYGON_OFFSET_POINT, GL_POLYGON_SMOOTH,
     GL_POLYGON_STIPPLE, GL_RESCALE_NORMAL, GL_SCISSOR_TEST, GL_STENCIL_TEST, GL_TEXTURE_1D,
     GL_TEXTURE_2D, GL_TEXTURE_GEN_S, GL_TEXTURE_GEN_T, GL_TEXTURE_GEN_R, GL_TEXTURE_GEN_Q,
-    GL_MULTISAMPLE, GL_SAMPLE_ALPHA_TO_COVERAGE, GL_SAMPLE_ALPHA_TO_ONE, GL_SAMPLE_COVERAGE};
+    GL_MULTISAMPLE, GL_SAMPLE_ALPHA_TO_COVERAGE, GL_SAMPLE_ALPHA_TO_ONE, GL_SAMPLE_COVERAGE,
+    GL_COLOR_SUM};
 constexpr int kEnableCount = sizeof(kEnableCapabilities) / sizeof(kEnableCapabilities[0]);
 
 // The texture state GL_TEXTURE_BIT saves: enables, bindings (by name), the bound objects'
@@ -208,6 +209,11 @@ void restoreAttributes(Context& ctx, const AttribEntry& e) {
   if (mask & GL_POINT_BIT) {
     r.pointSize = e.raster.pointSize;
     r.pointSmooth = e.raster.pointSmooth;
+    r.pointSizeMin = e.raster.pointSizeMin;
+    r.pointSizeMax = e.raster.pointSizeMax;
+    r.pointFadeThreshold = e.raster.pointFadeThreshold;
+    std::memcpy(r.pointDistanceAttenuation, e.raster.pointDistanceAttenuation,
+                sizeof r.pointDistanceAttenuation);
   }
   if (mask & GL_LINE_BIT) {
     r.lineWidth = e.raster.lineWidth;

@@ -52,6 +52,8 @@ const ClientArray* clientArray(const Context& ctx, GLenum cap) {
     case GL_TEXTURE_COORD_ARRAY: return &a.texCoord;
     case GL_EDGE_FLAG_ARRAY: return &a.edgeFlag;
     case GL_INDEX_ARRAY: return &a.index;
+    case GL_FOG_COORDINATE_ARRAY: return &a.fogCoord;
+    case GL_SECONDARY_COLOR_ARRAY: return &a.secondaryColor;
     default: return nullptr;
   }
 }

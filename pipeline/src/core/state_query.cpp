@@ -11,10 +11,12 @@
 #include "fragment/multisample.h"
 #include "lighting/lighting_hooks.h"
 #include "pixels/pixel_queries.h"
+#include "primitive/point_parameters.h"
 #include "select/render_mode_query.h"
 #include "texture/compressed_textures.h"
 #include "texture/texture_hooks.h"
 #include "texture/texture_units.h"
+#include "vertex/secondary_attributes.h"
 
 namespace glass::gl {
 
@@ -205,7 +207,9 @@ bool queryState(const Context& ctx, GLenum pname, StateValue& value) {
       queryEvaluatorState(ctx, pname, value) || queryPixelState(ctx, pname, value) ||
       queryAccumulationState(ctx, pname, value) || queryRenderModeState(ctx, pname, value) ||
       queryColorIndexState(ctx, pname, value) || queryMultisampleState(ctx, pname, value) ||
-      queryTextureUnitState(ctx, pname, value) || queryCompressedTextureState(ctx, pname, value)) {
+      queryTextureUnitState(ctx, pname, value) || queryCompressedTextureState(ctx, pname, value) ||
+      queryPointParameterState(ctx, pname, value) ||
+      querySecondaryAttributeState(ctx, pname, value)) {
     return true;
   }
   bool enabled = false;

@@ -42,10 +42,15 @@ void setFog(Context& ctx, GLenum pname, const float* v, bool vectorForm) {
       if (!vectorForm) break;
       for (int i = 0; i < 4; ++i) fog.color[i] = clamp01(v[i]);
       return;
-    case GL_FOG_COORDINATE_SOURCE:
-      // Only the fragment depth is a fog coordinate source here (no glFogCoord).
-      if (v[0] != static_cast<float>(GL_FRAGMENT_DEPTH)) break;
+    case GL_FOG_COORDINATE_SOURCE: {
+      const GLenum source = static_cast<GLenum>(v[0]);
+      if (static_cast<float>(source) != v[0] ||
+          (source != GL_FRAGMENT_DEPTH && source != GL_FOG_COORDINATE)) {
+        break;
+      }
+      fog.coordinateSource = source;
       return;
+    }
     default: break;
   }
   recordError(ctx, GL_INVALID_ENUM);

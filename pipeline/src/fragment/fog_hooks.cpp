@@ -22,12 +22,20 @@
 namespace glass::gl {
 
 bool setFogCapability(Context& ctx, GLenum cap, bool enabled) {
+  if (cap == GL_COLOR_SUM) {
+    ctx.fog.colorSum = enabled;
+    return true;
+  }
   if (cap != GL_FOG) return false;
   ctx.fog.enabled = enabled;
   return true;
 }
 
 bool getFogCapability(const Context& ctx, GLenum cap, bool& enabled) {
+  if (cap == GL_COLOR_SUM) {
+    enabled = ctx.fog.colorSum;
+    return true;
+  }
   if (cap != GL_FOG) return false;
   enabled = ctx.fog.enabled;
   return true;
@@ -42,14 +50,17 @@ bool queryFogState(const Context& ctx, GLenum pname, StateValue& value) {
     case GL_FOG_END: value.setFloats({f.end}); return true;
     case GL_FOG_INDEX: value.setFloats({f.index}); return true;
     case GL_FOG_COLOR: value.setColors(f.color, 4); return true;
-    case GL_FOG_COORDINATE_SOURCE: value.setIntegers({double(GL_FRAGMENT_DEPTH)}); return true;
+    case GL_FOG_COORDINATE_SOURCE: value.setIntegers({double(f.coordinateSource)}); return true;
     default: return false;
   }
 }
 
 bool fogEnabled(const Context& ctx) { return ctx.fog.enabled; }
 
-float fogCoordinate(const Context&, const float eyePosition[4]) {
+// With GL_FOG_COORDINATE as the source, the vertex's glFogCoord value instead; its magnitude,
+// as Mesa takes it (a fog coordinate of -5 fogs like 5).
+float fogCoordinate(const Context& ctx, const float eyePosition[4]) {
+  if (ctx.fog.coordinateSource == GL_FOG_COORDINATE) return std::fabs(ctx.current.fogCoord);
   return std::fabs(eyePosition[2]);
 }
 

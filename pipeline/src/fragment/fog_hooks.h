@@ -11,7 +11,8 @@ namespace glass::gl {
 struct Context;
 struct StateValue;
 
-// glEnable/glDisable/glIsEnabled of GL_FOG. False when cap is not GL_FOG.
+// glEnable/glDisable/glIsEnabled of GL_FOG and GL_COLOR_SUM (whose attribute group is the fog's).
+// False when cap is neither.
 bool setFogCapability(Context& ctx, GLenum cap, bool enabled);
 bool getFogCapability(const Context& ctx, GLenum cap, bool& enabled);
 // glGet of fog state (GL_FOG_MODE, GL_FOG_COLOR, ...). False when pname is not fog state.

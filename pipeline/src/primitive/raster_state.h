@@ -14,6 +14,11 @@ inline constexpr float kMaxLineWidth = 255.0f;
 
 struct RasterState {
   float pointSize = 1.0f;
+  // glPointParameter (OpenGL 1.4, primitive/point_parameters.h).
+  float pointSizeMin = 0.0f;
+  float pointSizeMax = kMaxPointSize;
+  float pointFadeThreshold = 1.0f;
+  float pointDistanceAttenuation[3] = {1.0f, 0.0f, 0.0f};
   float lineWidth = 1.0f;
   bool lineStipple = false;          // GL_LINE_STIPPLE
   int lineStippleFactor = 1;         // [1, 256]

@@ -16,6 +16,7 @@ struct Context;
 // Which arrays an element reads: the enabled ones with a pointer.
 struct ArrayElementLayout {
   bool edgeFlag = false, texCoord = false, normal = false, color = false, vertex = false;
+  bool fogCoord = false, secondaryColor = false;
 };
 
 // The values of one array element, as floats (colours and normals normalized).
@@ -25,6 +26,8 @@ struct ArrayElementValues {
   float normal[3] = {0.0f, 0.0f, 1.0f};
   float texCoord[4] = {0.0f, 0.0f, 0.0f, 1.0f};
   bool edgeFlag = true;
+  float fogCoord = 0.0f;
+  float secondaryColor[3] = {0.0f, 0.0f, 0.0f};
 };
 
 struct CompiledArrayDraw {

@@ -10,6 +10,8 @@ struct CurrentState {
   float texCoord[4] = {0.0f, 0.0f, 0.0f, 1.0f};
   bool edgeFlag = true;
   float index = 1.0f;  // glIndex: kept and queried, no effect in RGBA mode (core/color_index.h)
+  float fogCoord = 0.0f;                                 // glFogCoord (OpenGL 1.4)
+  float secondaryColor[4] = {0.0f, 0.0f, 0.0f, 1.0f};   // glSecondaryColor (OpenGL 1.4)
 };
 
 }  // namespace glass::gl

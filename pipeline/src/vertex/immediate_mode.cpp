@@ -53,6 +53,16 @@ void texCoordCommand(Context& ctx, float s, float t, float r, float q) {
 
 void edgeFlagCommand(Context& ctx, bool flag) { ctx.current.edgeFlag = flag; }
 
+void secondaryColorCommand(Context& ctx, float r, float g, float b) {
+  float* c = ctx.current.secondaryColor;
+  c[0] = r;
+  c[1] = g;
+  c[2] = b;
+  c[3] = 1.0f;
+}
+
+void fogCoordCommand(Context& ctx, float c) { ctx.current.fogCoord = c; }
+
 void rectCommand(Context& ctx, float x1, float y1, float x2, float y2) {
   if (ctx.assembly.active) return recordError(ctx, GL_INVALID_OPERATION);
   beginPrimitive(ctx, GL_POLYGON);

@@ -18,6 +18,9 @@ void colorCommand(Context& ctx, float r, float g, float b, float a);
 void normalCommand(Context& ctx, float x, float y, float z);
 void texCoordCommand(Context& ctx, float s, float t, float r, float q);
 void edgeFlagCommand(Context& ctx, bool flag);
+// OpenGL 1.4: glSecondaryColor (alpha stays 1, spec 2.7) and glFogCoord.
+void secondaryColorCommand(Context& ctx, float r, float g, float b);
+void fogCoordCommand(Context& ctx, float c);
 
 // glRect: Begin(POLYGON), the four corners counter-clockwise from (x1, y1), End (spec 2.10).
 void rectCommand(Context& ctx, float x1, float y1, float x2, float y2);

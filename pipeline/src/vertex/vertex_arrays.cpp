@@ -88,6 +88,8 @@ ArrayElementLayout currentElementLayout(const ArrayState& arrays) {
   layout.normal = arrays.normal.enabled && arrays.normal.pointer;
   layout.color = arrays.color.enabled && arrays.color.pointer;
   layout.vertex = arrays.vertex.enabled && arrays.vertex.pointer;
+  layout.fogCoord = arrays.fogCoord.enabled && arrays.fogCoord.pointer;
+  layout.secondaryColor = arrays.secondaryColor.enabled && arrays.secondaryColor.pointer;
   return layout;
 }
 
@@ -99,6 +101,10 @@ void readElement(const ArrayState& arrays, const ArrayElementLayout& layout, int
   if (layout.texCoord) readArray(arrays.texCoord, index, false, kPointDefaults, 4, out.texCoord);
   if (layout.normal) readArray(arrays.normal, index, true, kPointDefaults, 3, out.normal);
   if (layout.color) readArray(arrays.color, index, true, kColorDefaults, 4, out.color);
+  if (layout.secondaryColor) {
+    readArray(arrays.secondaryColor, index, true, kColorDefaults, 3, out.secondaryColor);
+  }
+  if (layout.fogCoord) readArray(arrays.fogCoord, index, false, kPointDefaults, 1, &out.fogCoord);
   if (layout.vertex) readArray(arrays.vertex, index, false, kPointDefaults, 4, out.vertex);
 }
 
@@ -107,6 +113,10 @@ void applyElement(Context& ctx, const ArrayElementLayout& layout, const ArrayEle
   if (layout.texCoord) texCoordCommand(ctx, v.texCoord[0], v.texCoord[1], v.texCoord[2], v.texCoord[3]);
   if (layout.normal) normalCommand(ctx, v.normal[0], v.normal[1], v.normal[2]);
   if (layout.color) colorCommand(ctx, v.color[0], v.color[1], v.color[2], v.color[3]);
+  if (layout.secondaryColor) {
+    secondaryColorCommand(ctx, v.secondaryColor[0], v.secondaryColor[1], v.secondaryColor[2]);
+  }
+  if (layout.fogCoord) fogCoordCommand(ctx, v.fogCoord);
   if (layout.vertex) vertexCommand(ctx, v.vertex[0], v.vertex[1], v.vertex[2], v.vertex[3]);
 }
 

@@ -22,6 +22,8 @@ struct ArrayState {
   ClientArray texCoord;                       // size 4, GL_FLOAT
   ClientArray edgeFlag{false, 1, GL_UNSIGNED_BYTE, 0, nullptr};
   ClientArray index{false, 1, GL_FLOAT, 0, nullptr};  // glIndexPointer: never read in RGBA mode
+  ClientArray fogCoord{false, 1, GL_FLOAT, 0, nullptr};        // glFogCoordPointer (1.4)
+  ClientArray secondaryColor{false, 3, GL_FLOAT, 0, nullptr};  // glSecondaryColorPointer (1.4)
 };
 
 struct Context;

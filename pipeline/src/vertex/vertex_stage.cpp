@@ -52,7 +52,11 @@ void prepareVertexStage(const Context& ctx, VertexStageSetup& s) {
   }
 
   int count = varying::kCountPrimary;
-  if (lighting && separateSpecularColor(ctx)) count = varying::kCountSecondary;
+  // OpenGL 1.4: without lighting, GL_COLOR_SUM adds glSecondaryColor (spec 2.14, 3.9).
+  s.secondaryColor = !lighting && ctx.fog.colorSum;
+  if ((lighting && separateSpecularColor(ctx)) || s.secondaryColor) {
+    count = varying::kCountSecondary;
+  }
   if (s.fog) count = varying::kCountFog;
   if (s.texturing) count = varying::kCountTexture;
   if (s.phong) count = varying::kCountPhong;
@@ -102,6 +106,12 @@ void processVertex(const Context& ctx, const VertexStageSetup& s, const float ob
     // colour material in the per-fragment lighting.
     copy4Clamped(ctx.current.color, varyings + varying::kPrimaryColor);
     for (int i = 0; i < 4; ++i) varyings[varying::kSecondaryColor + i] = 0.0f;
+    if (s.secondaryColor) {
+      // The sum adds R, G and B only; the secondary alpha is 0 (spec 2.14.6).
+      for (int i = 0; i < 3; ++i) {
+        varyings[varying::kSecondaryColor + i] = clamp01(ctx.current.secondaryColor[i]);
+      }
+    }
   }
 
   if (s.fog) varyings[varying::kFogCoordinate] = fogCoordinate(ctx, eye);

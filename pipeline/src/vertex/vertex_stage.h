@@ -27,6 +27,7 @@ struct VertexStageSetup {
   bool twoSided = false;         // back colours are computed
   bool texturing = false;
   bool fog = false;
+  bool secondaryColor = false;  // unlit with GL_COLOR_SUM: glSecondaryColor goes to the varyings
   bool normalize = false;
   bool rescaleNormal = false;
 
