@@ -6,11 +6,16 @@
 // x (x-major) or a row of w per y (y-major), as 3.4.2 asks.
 //
 // Attributes: t is measured along the major axis, t = (x_r - x_a) / (x_b - x_a) for an x-major
-// segment (y for y-major), clamped to [0, 1]. This is the interpolation 3.4.2 gives wide lines
-// (every fragment of a column shares its values), used for every width as Mesa does; for width 1
-// it differs from equation 3.6's projection onto the segment by less than 1 / (2 |p_b - p_a|).
+// segment (y for y-major). This is the interpolation 3.4.2 gives wide lines (every fragment of a
+// column shares its values), used for every width as Mesa does; for width 1 it differs from
+// equation 3.6's projection onto the segment by less than 1 / (2 |p_b - p_a|).
 //   z = (1 - t) z_a + t z_b                                   (depth: linear in window space)
 //   f = ((1 - t) f_a / w_a + t f_b / w_b) / ((1 - t) / w_a + t / w_b)   (varyings, eq. 3.6)
+// t is not clamped to [0, 1]: the centre of an end fragment may lie beyond p_a or p_b along the
+// major axis, and its values are then extrapolated, as equation 3.6 gives them and as Mesa does;
+// colours are clamped later, depth when it is converted. Only where the extrapolation would make
+// the perspective denominator zero or negative (a segment much shorter than a pixel between very
+// different w) is t clamped.
 //
 // Stipple (3.4.1): a counter s advances by one for each fragment of a width-1 line (each column
 // or row of a wide one); the fragment is kept when bit floor(s / factor) mod 16 of the pattern is
@@ -47,13 +52,17 @@ class LineFragmentWriter {
     const PixelRect& r = settings_.bounds;
     if (x < r.x0 || x >= r.x1 || y < r.y0 || y >= r.y1) return;
     const double centre = (xMajor_ ? x : y) + 0.5;
-    const double t = std::clamp((centre - start_) / length_, 0.0, 1.0);
+    double t = (centre - start_) / length_;
+    // The weights of the two ends, (1 - t) q_a / q and t q_b / q, sum to one.
+    double wa = (1.0 - t) * qa_, wb = t * qb_, q = wa + wb;
+    if (!(q > 0.0)) {
+      t = std::clamp(t, 0.0, 1.0);
+      wa = (1.0 - t) * qa_, wb = t * qb_, q = wa + wb;
+    }
     Fragment& f = fragments_[count_++];
     f.x = x;
     f.y = y;
     f.depth = depthValue((1.0 - t) * a_.z + t * b_.z + settings_.depthBias);
-    // The weights of the two ends, (1 - t) q_a / q and t q_b / q, sum to one.
-    const double wa = (1.0 - t) * qa_, wb = t * qb_, q = wa + wb;
     const double weightA = wa / q, weightB = wb / q;
     for (int k = 0; k < varyingCount_; ++k)
       f.varyings[k] = static_cast<float>(weightA * a_.varyings[k] + weightB * b_.varyings[k]);

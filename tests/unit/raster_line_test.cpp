@@ -190,6 +190,16 @@ TEST_CASE("GL lines: depth linear and varyings perspective-correct along the seg
     const double expected = (t * 1.0 * 0.25) / ((1 - t) * 1.0 + t * 0.25);
     CHECK(f.varyings[0] == doctest::Approx(expected).epsilon(1e-6));
   }
+  // The first fragment's centre (10.5) lies before the start (10.8): its values are extrapolated
+  // (t = -0.03), as equation 3.6 and Mesa give them, not clamped to the start's.
+  WindowVertex c = windowVertex(10.8f, 5.5f, 0.5f), d = windowVertex(20.8f, 5.5f, 0.5f);
+  c.varyings[0] = 0.0f;
+  d.varyings[0] = 1.0f;
+  RecordingSink early;
+  rasterizeLine(c, d, s, early);
+  REQUIRE(!early.fragments.empty());
+  CHECK(early.fragments.front().x == 10);
+  CHECK(early.fragments.front().varyings[0] == doctest::Approx(-0.03).epsilon(1e-5));
   // Without perspective correction the varying follows t itself.
   s.perspectiveCorrect = false;
   RecordingSink affine;
