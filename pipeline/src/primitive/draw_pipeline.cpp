@@ -37,6 +37,7 @@ void DrawPipeline::prepare() {
 
   lineSettings_ = raster::LineSettings{};
   lineSettings_.bounds = bounds;
+  lineSettings_.framebufferHeight = ctx.framebuffer.height();  // rows as Mesa numbers them
   lineSettings_.varyingCount = vertex_.varyingCount;
   lineSettings_.width = std::min(r.lineWidth, kMaxLineWidth);  // GL_ALIASED_LINE_WIDTH_RANGE
   lineSettings_.perspectiveCorrect = perspective;
