@@ -200,6 +200,8 @@ GLAPI void GLAPIENTRY gluNextContour(GLUtesselator *tess, GLenum type);
 GLAPI void GLAPIENTRY gluEndPolygon(GLUtesselator *tess);
 
 /* GLASS-SECTION: NURBS (GLU 1.3, chapter 7) */
+#define GLU_EXT_nurbs_tessellator          1
+#define GLU_EXT_object_space_tess          1
 #define GLU_OUTLINE_POLYGON                100240
 #define GLU_OUTLINE_PATCH                  100241
 #define GLU_NURBS_ERROR                    100103
