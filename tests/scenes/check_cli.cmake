@@ -93,6 +93,11 @@ run(1 text render "${scenes}/lighting.scene" -o "${WORK}/x.png" --set spot_angel
 expect_text("declares no parameter 'spot_angel'" "${text}" "--set of an unknown name")
 run(1 text render "${scenes}/lighting.scene" -o "${WORK}/x.png" --set spot_angle=8,9)
 expect_no_file("${WORK}/x.png")
+# A bad value is one error at the declaration, not one more at every use of the parameter.
+run(1 text render "${scenes}/animation.scene" -o "${WORK}/x.png" --set height=abc)
+expect_text("animation.scene:7:7: error: --set height=abc: the value must be numbers" "${text}" "--set of a bad value")
+expect_text("\n1 error" "${text}" "--set of a bad value, reported once")
+expect_no_file("${WORK}/x.png")
 
 # The teaching views.
 run(0 text render "${scenes}/room.scene" -o "${WORK}/depth.png" --view depth --size 160x120)

@@ -81,23 +81,26 @@ void Parser::parseParam(StatementReader &r) {
   if (parameter.value.size() > 16) r.fail(r.peek(), "a parameter holds at most 16 numbers");
   count = parameter.value.size();
   r.end();
+  // The parameter is declared whatever --set says, so that a bad --set value is one error
+  // rather than one more at every use.
+  program_.parameters.push_back(parameter);
+  Parameter &declared = program_.parameters.back();
   // --set replaces the declared value.
   for (std::size_t i = 0; i < options_.overrides.size(); ++i) {
-    if (options_.overrides[i].first != parameter.name) continue;
+    if (options_.overrides[i].first != declared.name) continue;
     overrideUsed_[i] = true;
     std::vector<double> value;
     const std::string &text = options_.overrides[i].second;
     if (!parseOverrideValue(text, value)) {
-      r.fail(nameToken, "--set " + parameter.name + "=" + text + ": the value must be numbers separated by commas");
+      r.fail(nameToken, "--set " + declared.name + "=" + text + ": the value must be numbers separated by commas");
     }
     if (value.size() != count) {
-      r.fail(nameToken, "--set " + parameter.name + "=" + text + ": '" + parameter.name + "' holds " +
+      r.fail(nameToken, "--set " + declared.name + "=" + text + ": '" + declared.name + "' holds " +
                             std::to_string(count) + (count == 1 ? " number" : " numbers") + ", the value gives " +
                             std::to_string(value.size()));
     }
-    parameter.value = value;
+    declared.value = value;
   }
-  program_.parameters.push_back(std::move(parameter));
 }
 
 void Parser::parseAnimate(StatementReader &r) {
