@@ -496,3 +496,29 @@ TEST_CASE("pixels read: glReadPixels goes through the transfer operations") {
   CHECK(bits == 0xF0);
   CHECK(glGetError() == GL_NO_ERROR);
 }
+
+TEST_CASE("pixels draw: glCopyPixels reads only the part of its rectangle inside the framebuffer") {
+  ScopedContext context(16, 16);
+  glWindowPos2i(0, 0);
+  glDrawPixels(2, 2, GL_RGBA, GL_UNSIGNED_BYTE, kQuad);
+  // The source starts 3 pixels left of and 1 below the framebuffer: its pixel (3, 1) is the
+  // framebuffer's (0, 0), and lands 3 columns and 1 row from the destination's corner, zoomed.
+  glWindowPos2i(4, 6);
+  glPixelZoom(2.0f, 3.0f);
+  glCopyPixels(-3, -1, 5, 3, GL_COLOR);
+  CHECK(pixelAt(4 + 6, 6 + 3) == Rgba{255, 0, 0, 255});
+  CHECK(pixelAt(4 + 7, 6 + 5) == Rgba{255, 0, 0, 255});
+  CHECK(pixelAt(4 + 8, 6 + 3) == Rgba{0, 255, 0, 255});
+  CHECK(pixelAt(4 + 6, 6 + 6) == Rgba{0, 0, 255, 255});
+  // Nothing is drawn for the part outside the framebuffer (undefined in GL).
+  CHECK(pixelAt(4, 6) == Rgba{0, 0, 0, 0});
+  CHECK(pixelAt(4 + 5, 6 + 2) == Rgba{0, 0, 0, 0});
+  // A huge rectangle costs no more than the framebuffer, and is no error.
+  glPixelZoom(1.0f, 1.0f);
+  glWindowPos2i(8, 0);
+  glCopyPixels(0, 0, 1 << 30, 1 << 30, GL_COLOR);
+  CHECK(pixelAt(8, 0) == Rgba{255, 0, 0, 255});
+  CHECK(pixelAt(9, 1) == Rgba{255, 255, 255, 255});
+  glCopyPixels(-(1 << 30), -(1 << 30), 1 << 30, 1 << 30, GL_DEPTH);
+  CHECK(glGetError() == GL_NO_ERROR);
+}

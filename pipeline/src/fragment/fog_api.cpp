@@ -8,6 +8,7 @@
 #include "core/errors.h"
 #include "lists/command_recording.h"
 #include "texture/integer_colors.h"
+#include "core/float_to_int.h"
 
 namespace glass::gl {
 namespace {
@@ -20,7 +21,7 @@ void setFog(Context& ctx, GLenum pname, const float* v, bool vectorForm) {
   FogState& fog = ctx.fog;
   switch (pname) {
     case GL_FOG_MODE: {
-      const GLenum mode = static_cast<GLenum>(v[0]);
+      const GLenum mode = static_cast<GLenum>(enumFromFloat(v[0]));
       if (static_cast<float>(mode) != v[0] ||
           (mode != GL_LINEAR && mode != GL_EXP && mode != GL_EXP2)) {
         break;
@@ -43,7 +44,7 @@ void setFog(Context& ctx, GLenum pname, const float* v, bool vectorForm) {
       for (int i = 0; i < 4; ++i) fog.color[i] = clamp01(v[i]);
       return;
     case GL_FOG_COORDINATE_SOURCE: {
-      const GLenum source = static_cast<GLenum>(v[0]);
+      const GLenum source = static_cast<GLenum>(enumFromFloat(v[0]));
       if (static_cast<float>(source) != v[0] ||
           (source != GL_FRAGMENT_DEPTH && source != GL_FOG_COORDINATE)) {
         break;

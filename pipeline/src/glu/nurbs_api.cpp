@@ -8,6 +8,7 @@
 
 #include "glass/geometry/nurbs.h"
 #include "glu/nurbs_object.h"
+#include "core/float_to_int.h"
 
 using State = GLUnurbs::State;
 using glass::geometry::KnotVectorError;
@@ -85,7 +86,7 @@ void gluNurbsProperty(GLUnurbs* nurb, GLenum property, GLfloat value) {
       nurb->parametricTolerance = value;
       return;
     case GLU_SAMPLING_METHOD: {
-      const GLenum method = static_cast<GLenum>(value);
+      const GLenum method = static_cast<GLenum>(glass::gl::enumFromFloat(value));
       if (method != GLU_PATH_LENGTH && method != GLU_PARAMETRIC_ERROR &&
           method != GLU_DOMAIN_DISTANCE && method != GLU_OBJECT_PATH_LENGTH &&
           method != GLU_OBJECT_PARAMETRIC_ERROR) {
@@ -103,7 +104,7 @@ void gluNurbsProperty(GLUnurbs* nurb, GLenum property, GLfloat value) {
       nurb->vStep = value;
       return;
     case GLU_DISPLAY_MODE: {
-      const GLenum mode = static_cast<GLenum>(value);
+      const GLenum mode = static_cast<GLenum>(glass::gl::enumFromFloat(value));
       if (mode != GLU_FILL && mode != GLU_OUTLINE_POLYGON && mode != GLU_OUTLINE_PATCH) break;
       nurb->displayMode = mode;
       return;
@@ -111,7 +112,7 @@ void gluNurbsProperty(GLUnurbs* nurb, GLenum property, GLfloat value) {
     case GLU_CULLING: nurb->culling = value != 0.0f; return;
     case GLU_AUTO_LOAD_MATRIX: nurb->autoLoadMatrix = value != 0.0f; return;
     case GLU_NURBS_MODE: {
-      const GLenum mode = static_cast<GLenum>(value);
+      const GLenum mode = static_cast<GLenum>(glass::gl::enumFromFloat(value));
       if (mode != GLU_NURBS_RENDERER && mode != GLU_NURBS_TESSELLATOR) break;
       nurb->mode = mode;
       return;

@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "glu/tessellator_object.h"
+#include "core/float_to_int.h"
 
 using State = GLUtesselator::State;
 
@@ -109,7 +110,7 @@ void gluTessProperty(GLUtesselator* tess, GLenum which, GLdouble value) {
   if (!tess) return;
   switch (which) {
     case GLU_TESS_WINDING_RULE: {
-      const GLenum rule = static_cast<GLenum>(value);
+      const GLenum rule = static_cast<GLenum>(glass::gl::enumFromFloat(value));
       const bool known = rule >= GLU_TESS_WINDING_ODD && rule <= GLU_TESS_WINDING_ABS_GEQ_TWO;
       if (static_cast<GLdouble>(rule) != value || !known) break;
       tess->windingRule = rule;

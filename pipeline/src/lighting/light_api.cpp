@@ -11,6 +11,7 @@
 #include "core/matrix.h"
 #include "lists/command_recording.h"
 #include "texture/integer_colors.h"
+#include "core/float_to_int.h"
 
 namespace glass::gl {
 namespace {
@@ -171,7 +172,7 @@ void setLightModel(Context& ctx, GLenum pname, const float* v, bool vectorForm) 
     case GL_LIGHT_MODEL_LOCAL_VIEWER: m.localViewer = v[0] != 0.0f; return;
     case GL_LIGHT_MODEL_TWO_SIDE: m.twoSide = v[0] != 0.0f; return;
     case GL_LIGHT_MODEL_COLOR_CONTROL: {
-      const GLenum mode = static_cast<GLenum>(v[0]);
+      const GLenum mode = static_cast<GLenum>(enumFromFloat(v[0]));
       if (static_cast<float>(mode) != v[0] ||
           (mode != GL_SINGLE_COLOR && mode != GL_SEPARATE_SPECULAR_COLOR)) {
         break;

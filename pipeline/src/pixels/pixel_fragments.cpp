@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/context.h"
+#include "core/float_to_int.h"
 #include "fragment/fragment_processor.h"
 #include "glass/raster/fragment.h"
 #include "vertex/varyings.h"
@@ -40,8 +41,9 @@ struct ZoomedAxis {
   int count;
   int first = 0, end = 0;  // window pixels [first, end) that show some image pixel
 
-  ZoomedAxis(int corner, float z, int n, int lo, int hi) : origin(corner), zoom(z), count(n) {
-    if (zoom == 0.0 || count <= 0) return;
+  ZoomedAxis(double corner, float z, int n, int lo, int hi) : origin(corner), zoom(z), count(n) {
+    // A zero, infinite or NaN zoom (glPixelZoom accepts any float) draws nothing.
+    if (zoom == 0.0 || !std::isfinite(zoom) || !std::isfinite(origin) || count <= 0) return;
     // Window pixel i shows image pixel floor((i + 1/2 - origin) / zoom) when that is in
     // [0, count): i + 1/2 in [origin, origin + count zoom) (or the reverse for zoom < 0).
     const double a = origin, b = origin + count * zoom;
@@ -58,7 +60,7 @@ struct ZoomedAxis {
 };
 
 // The raster position rounded to the nearest pixel corner (halves upward), as Mesa does.
-int roundedCorner(float coordinate) { return static_cast<int>(std::floor(coordinate + 0.5f)); }
+int roundedCorner(float coordinate) { return floorToPixel(double(coordinate + 0.5f)); }
 
 // Collects fragments with the raster position's data and hands them to the fragment stage in
 // batches.
@@ -107,14 +109,25 @@ class FragmentEmitter {
   int count_ = 0;
 };
 
+// The image's two axes on the window: from the raster position's pixel corner, moved by the
+// zoomed size of the pixels before the image's first column and row.
+ZoomedAxis columnsOf(const Context& ctx, const FragmentImage& image, const raster::PixelRect& bounds) {
+  const float zoom = ctx.pixelTransfer.zoomX;
+  return ZoomedAxis(roundedCorner(ctx.rasterPosition.window[0]) + double(zoom) * image.column0, zoom,
+                    image.width, bounds.x0, bounds.x1);
+}
+ZoomedAxis rowsOf(const Context& ctx, const FragmentImage& image, const raster::PixelRect& bounds) {
+  const float zoom = ctx.pixelTransfer.zoomY;
+  return ZoomedAxis(roundedCorner(ctx.rasterPosition.window[1]) + double(zoom) * image.row0, zoom,
+                    image.height, bounds.y0, bounds.y1);
+}
+
 }  // namespace
 
 void drawImageFragments(Context& ctx, const FragmentImage& image) {
   const raster::PixelRect bounds = writableRect(ctx);
-  const PixelTransferState& t = ctx.pixelTransfer;
-  const RasterPositionState& r = ctx.rasterPosition;
-  const ZoomedAxis xs(roundedCorner(r.window[0]), t.zoomX, image.width, bounds.x0, bounds.x1);
-  const ZoomedAxis ys(roundedCorner(r.window[1]), t.zoomY, image.height, bounds.y0, bounds.y1);
+  const ZoomedAxis xs = columnsOf(ctx, image, bounds);
+  const ZoomedAxis ys = rowsOf(ctx, image, bounds);
   if (xs.first >= xs.end || ys.first >= ys.end) return;
 
   FragmentEmitter emitter(ctx);
@@ -131,12 +144,12 @@ void drawImageFragments(Context& ctx, const FragmentImage& image) {
   }
 }
 
-void drawStencilImage(Context& ctx, int width, int height, const int32_t* indices) {
+void drawStencilImage(Context& ctx, const FragmentImage& image) {
   const raster::PixelRect bounds = writableRect(ctx);
-  const PixelTransferState& t = ctx.pixelTransfer;
-  const RasterPositionState& r = ctx.rasterPosition;
-  const ZoomedAxis xs(roundedCorner(r.window[0]), t.zoomX, width, bounds.x0, bounds.x1);
-  const ZoomedAxis ys(roundedCorner(r.window[1]), t.zoomY, height, bounds.y0, bounds.y1);
+  const ZoomedAxis xs = columnsOf(ctx, image, bounds);
+  const ZoomedAxis ys = rowsOf(ctx, image, bounds);
+  const int width = image.width;
+  const int32_t* indices = image.stencil;
   // Spec 4.3.1: the index's low bits (as many as the stencil buffer has) are written through the
   // stencil write mask.
   const unsigned writeMask = ctx.fragment.stencilWriteMask & 0xFFu;

@@ -27,8 +27,13 @@ struct Context;
 // raster depth.
 struct FragmentImage {
   int width = 0, height = 0;
+  // Where pixel (0, 0) of these pixels lies in the rectangle the command drew, in image pixels:
+  // glCopyPixels reads only the part of its rectangle inside the framebuffer (the specification
+  // leaves the rest undefined) and draws that part where it belongs.
+  int column0 = 0, row0 = 0;
   const float* colors = nullptr;
   const float* depths = nullptr;
+  const int32_t* stencil = nullptr;  // for drawStencilImage
 };
 
 // Draws the image at the current raster position with the current zoom. The caller checked
@@ -37,7 +42,7 @@ void drawImageFragments(Context& ctx, const FragmentImage& image);
 
 // Writes stencil indices at the raster position with the zoom: only the scissor test, the
 // pixel ownership test and the stencil write mask apply (spec 4.3.1).
-void drawStencilImage(Context& ctx, int width, int height, const int32_t* indices);
+void drawStencilImage(Context& ctx, const FragmentImage& image);
 
 // glBitmap's fragments (spec 3.7): one for each set bit (bits: width * height values, 0 or 1,
 // row 0 at the bottom), at (x_ll + i, y_ll + j), with the raster colour, depth and texture

@@ -1,8 +1,10 @@
 #include "pixels/pixel_image.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/context.h"
+#include "core/float_to_int.h"
 #include "pixels/pixel_fragments.h"
 #include "pixels/pixel_transfer.h"
 #include "select/render_mode.h"
@@ -25,28 +27,42 @@ bool shouldRasterize(Context& ctx, GLenum feedbackToken) {
   return false;
 }
 
-// Colours, depths or stencil indices after the transfer operations, drawn at the raster position.
-void drawColors(Context& ctx, int width, int height, std::vector<float> rgba) {
-  transferColors(ctx.pixelTransfer, rgba.data(), static_cast<int>(pixelCount(width, height)));
+// A block of pixels to draw at the raster position: its size and, for glCopyPixels clipped to
+// the framebuffer, its place in the rectangle the command names.
+struct PixelBlock {
+  int width = 0, height = 0;
+  int column0 = 0, row0 = 0;
+};
+
+FragmentImage fragmentImageOf(const PixelBlock& block) {
   FragmentImage image;
-  image.width = width;
-  image.height = height;
+  image.width = block.width;
+  image.height = block.height;
+  image.column0 = block.column0;
+  image.row0 = block.row0;
+  return image;
+}
+
+// Colours, depths or stencil indices after the transfer operations, drawn at the raster position.
+void drawColors(Context& ctx, const PixelBlock& block, std::vector<float> rgba) {
+  transferColors(ctx.pixelTransfer, rgba.data(), static_cast<int>(pixelCount(block.width, block.height)));
+  FragmentImage image = fragmentImageOf(block);
   image.colors = rgba.data();
   drawImageFragments(ctx, image);
 }
 
-void drawDepths(Context& ctx, int width, int height, std::vector<float> depth) {
-  transferDepths(ctx.pixelTransfer, depth.data(), static_cast<int>(pixelCount(width, height)));
-  FragmentImage image;
-  image.width = width;
-  image.height = height;
+void drawDepths(Context& ctx, const PixelBlock& block, std::vector<float> depth) {
+  transferDepths(ctx.pixelTransfer, depth.data(), static_cast<int>(pixelCount(block.width, block.height)));
+  FragmentImage image = fragmentImageOf(block);
   image.depths = depth.data();
   drawImageFragments(ctx, image);
 }
 
-void drawStencil(Context& ctx, int width, int height, std::vector<int32_t> indices) {
-  transferStencilIndices(ctx.pixelTransfer, indices.data(), static_cast<int>(pixelCount(width, height)));
-  drawStencilImage(ctx, width, height, indices.data());
+void drawStencil(Context& ctx, const PixelBlock& block, std::vector<int32_t> indices) {
+  transferStencilIndices(ctx.pixelTransfer, indices.data(), static_cast<int>(pixelCount(block.width, block.height)));
+  FragmentImage image = fragmentImageOf(block);
+  image.stencil = indices.data();
+  drawStencilImage(ctx, image);
 }
 
 }  // namespace
@@ -90,7 +106,7 @@ void drawPixels(Context& ctx, const UnpackedImage& image) {
   if (image.width == 0 || image.height == 0) return;
   switch (image.kind) {
     case PixelKind::Color:
-      drawColors(ctx, image.width, image.height, image.values);
+      drawColors(ctx, PixelBlock{image.width, image.height}, image.values);
       break;
     case PixelKind::ColorIndex: {
       std::vector<float> rgba(pixelCount(image.width, image.height) * 4);
@@ -104,10 +120,10 @@ void drawPixels(Context& ctx, const UnpackedImage& image) {
       break;
     }
     case PixelKind::Depth:
-      drawDepths(ctx, image.width, image.height, image.values);
+      drawDepths(ctx, PixelBlock{image.width, image.height}, image.values);
       break;
     case PixelKind::Stencil:
-      drawStencil(ctx, image.width, image.height, image.indices);
+      drawStencil(ctx, PixelBlock{image.width, image.height}, image.indices);
       break;
   }
 }
@@ -115,43 +131,49 @@ void drawPixels(Context& ctx, const UnpackedImage& image) {
 void copyPixels(Context& ctx, int x, int y, int width, int height, GLenum type) {
   if (!shouldRasterize(ctx, GL_COPY_PIXEL_TOKEN)) return;
   if (width == 0 || height == 0) return;
-  // The whole source is read before anything is drawn, so that overlapping source and
-  // destination rectangles copy the original pixels (spec 4.3.3: as if read, then drawn).
+  // Only the part of the rectangle inside the framebuffer is read and drawn: the specification
+  // leaves copies from outside the window undefined, and so a huge rectangle costs no more than
+  // the framebuffer. The whole part is read before anything is drawn, so that overlapping source
+  // and destination rectangles copy the original pixels (spec 4.3.3: as if read, then drawn).
   const raster::Framebuffer& fb = ctx.framebuffer;
-  const size_t count = pixelCount(width, height);
-  auto inside = [&](int i, int j) {
-    const long long fx = static_cast<long long>(x) + i, fy = static_cast<long long>(y) + j;
-    return fx >= 0 && fy >= 0 && fx < fb.width() && fy < fb.height();
-  };
+  const long long left = std::max<long long>(x, 0), bottom = std::max<long long>(y, 0);
+  const long long right = std::min<long long>(static_cast<long long>(x) + width, fb.width());
+  const long long top = std::min<long long>(static_cast<long long>(y) + height, fb.height());
+  if (left >= right || bottom >= top) return;
+  PixelBlock block;
+  block.width = static_cast<int>(right - left);
+  block.height = static_cast<int>(top - bottom);
+  block.column0 = static_cast<int>(left - x);
+  block.row0 = static_cast<int>(bottom - y);
+  const int x0 = static_cast<int>(left), y0 = static_cast<int>(bottom);
+  const size_t count = pixelCount(block.width, block.height);
   if (type == GL_COLOR) {
-    std::vector<float> rgba(count * 4, 0.0f);
-    for (int j = 0; j < height; ++j) {
-      for (int i = 0; i < width; ++i) {
-        if (!inside(i, j)) continue;
-        const uint8_t* c = fb.colorAt(x + i, y + j);
-        float* out = &rgba[(static_cast<size_t>(j) * width + i) * 4];
+    std::vector<float> rgba(count * 4);
+    for (int j = 0; j < block.height; ++j) {
+      for (int i = 0; i < block.width; ++i) {
+        const uint8_t* c = fb.colorAt(x0 + i, y0 + j);
+        float* out = &rgba[(static_cast<size_t>(j) * block.width + i) * 4];
         for (int k = 0; k < 4; ++k) out[k] = static_cast<float>(c[k]) / 255.0f;
       }
     }
-    drawColors(ctx, width, height, std::move(rgba));
+    drawColors(ctx, block, std::move(rgba));
   } else if (type == GL_DEPTH) {
-    std::vector<float> depth(count, 0.0f);
-    for (int j = 0; j < height; ++j) {
-      for (int i = 0; i < width; ++i) {
-        if (!inside(i, j)) continue;
-        depth[static_cast<size_t>(j) * width + i] =
-            static_cast<float>(static_cast<double>(*fb.depthAt(x + i, y + j)) / raster::kDepthMax);
+    std::vector<float> depth(count);
+    for (int j = 0; j < block.height; ++j) {
+      for (int i = 0; i < block.width; ++i) {
+        depth[static_cast<size_t>(j) * block.width + i] =
+            static_cast<float>(static_cast<double>(*fb.depthAt(x0 + i, y0 + j)) / raster::kDepthMax);
       }
     }
-    drawDepths(ctx, width, height, std::move(depth));
+    drawDepths(ctx, block, std::move(depth));
   } else {
-    std::vector<int32_t> indices(count, 0);
-    for (int j = 0; j < height; ++j) {
-      for (int i = 0; i < width; ++i) {
-        if (inside(i, j)) indices[static_cast<size_t>(j) * width + i] = *fb.stencilAt(x + i, y + j);
+    std::vector<int32_t> indices(count);
+    for (int j = 0; j < block.height; ++j) {
+      for (int i = 0; i < block.width; ++i) {
+        indices[static_cast<size_t>(j) * block.width + i] = *fb.stencilAt(x0 + i, y0 + j);
       }
     }
-    drawStencil(ctx, width, height, std::move(indices));
+    drawStencil(ctx, block, std::move(indices));
   }
 }
 
@@ -165,8 +187,8 @@ void drawBitmap(Context& ctx, int width, int height, float xorig, float yorig, f
       // Like Mesa (and SGI's implementation), a raster position 1e-4 below an integer counts as
       // that integer, so that positions computed as whole pixels with a rounding error stay put.
       const float epsilon = 0.0001f;
-      const int xll = static_cast<int>(std::floor(r.window[0] + epsilon - xorig));
-      const int yll = static_cast<int>(std::floor(r.window[1] + epsilon - yorig));
+      const int xll = floorToPixel(double(r.window[0] + epsilon - xorig));
+      const int yll = floorToPixel(double(r.window[1] + epsilon - yorig));
       drawBitmapFragments(ctx, xll, yll, width, height, bits.data());
     }
   } else {

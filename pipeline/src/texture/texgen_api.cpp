@@ -8,6 +8,7 @@
 #include "core/context.h"
 #include "core/errors.h"
 #include "lists/command_recording.h"
+#include "core/float_to_int.h"
 
 namespace glass::gl {
 namespace {
@@ -40,7 +41,7 @@ void texGen(Context& ctx, GLenum coord, GLenum pname, const std::array<double, 4
   TexGenCoordinate& g = ctx.texture.texGen[index];
   switch (pname) {
     case GL_TEXTURE_GEN_MODE: {
-      const GLenum mode = static_cast<GLenum>(static_cast<GLint>(v[0]));
+      const GLenum mode = static_cast<GLenum>(enumFromFloat(v[0]));
       // SPHERE_MAP defines s and t only.
       const bool valid = mode == GL_OBJECT_LINEAR || mode == GL_EYE_LINEAR || (mode == GL_SPHERE_MAP && index < 2);
       if (!valid) return recordError(ctx, GL_INVALID_ENUM);

@@ -11,6 +11,7 @@
 #include "core/errors.h"
 #include "lists/command_recording.h"
 #include "texture/integer_colors.h"
+#include "core/float_to_int.h"
 
 namespace glass::gl {
 namespace {
@@ -39,7 +40,7 @@ void texEnv(Context& ctx, GLenum target, GLenum pname, const std::array<double, 
   TextureState& t = ctx.texture;
   switch (pname) {
     case GL_TEXTURE_ENV_MODE: {
-      const GLenum mode = static_cast<GLenum>(static_cast<GLint>(v[0]));
+      const GLenum mode = static_cast<GLenum>(enumFromFloat(v[0]));
       if (!isEnvMode(mode)) return recordError(ctx, GL_INVALID_ENUM);
       t.envMode = mode;
       break;

@@ -11,6 +11,7 @@
 #include "lists/command_recording.h"
 #include "texture/integer_colors.h"
 #include "texture/texture_commands.h"
+#include "core/float_to_int.h"
 
 namespace glass::gl {
 namespace {
@@ -53,7 +54,7 @@ void texParameter(Context& ctx, GLenum target, GLenum pname, const std::array<do
   const int size = parameterSize(pname);
   if (size == 0 || (size > 1 && !vector)) return recordError(ctx, GL_INVALID_ENUM);
   SamplerParameters& p = texture->params;
-  const GLenum e = static_cast<GLenum>(static_cast<GLint>(v[0]));
+  const GLenum e = static_cast<GLenum>(enumFromFloat(v[0]));
   switch (pname) {
     case GL_TEXTURE_MIN_FILTER:
       if (!isMinFilter(e)) return recordError(ctx, GL_INVALID_ENUM);
