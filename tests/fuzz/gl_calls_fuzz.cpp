@@ -22,6 +22,7 @@
 #include <cstdint>
 #include <cstring>
 #include <limits>
+#include <tuple>
 #include <vector>
 
 namespace {
@@ -33,8 +34,14 @@ public:
 
   bool done() const { return at_ >= size_; }
   std::uint8_t byte() { return at_ < size_ ? data_[at_++] : 0; }
-  std::uint16_t u16() { return static_cast<std::uint16_t>(byte() | (byte() << 8)); }
-  std::uint32_t u32() { return u16() | (static_cast<std::uint32_t>(u16()) << 16); }
+  std::uint16_t u16() {
+    const std::uint16_t low = byte();
+    return static_cast<std::uint16_t>(low | (byte() << 8));
+  }
+  std::uint32_t u32() {
+    const std::uint32_t low = u16();
+    return low | (static_cast<std::uint32_t>(u16()) << 16);
+  }
 
   // A small integer in [0, n).
   int below(int n) { return n <= 0 ? 0 : byte() % n; }
@@ -189,6 +196,11 @@ constexpr int kMaxTextureSideForRead = 64;
 
 Memory *memory = nullptr;
 
+// Calls f with arguments read in order. In a call's parentheses C++ leaves the order of the
+// arguments' evaluation open (gcc and clang differ), in a braced list it is left to right: so an
+// input replays the same GL calls whichever compiler built the program.
+#define CALL(f, ...) std::apply(f, std::tuple{__VA_ARGS__})
+
 void GLAPIENTRY tessBegin(GLenum mode) { glBegin(mode); }
 void GLAPIENTRY tessVertex(void *data) { glVertex3dv(static_cast<const GLdouble *>(data)); }
 void GLAPIENTRY tessEnd() { glEnd(); }
@@ -230,14 +242,14 @@ void drawImmediate(ByteReader &in) {
   const int vertices = in.below(12);
   for (int i = 0; i < vertices; ++i) {
     switch (in.below(6)) {
-    case 0: glColor4f(in.real(), in.real(), in.real(), in.real()); break;
-    case 1: glNormal3f(in.real(), in.real(), in.real()); break;
-    case 2: glTexCoord4f(in.real(), in.real(), in.real(), in.real()); break;
+    case 0: CALL(glColor4f, in.real(), in.real(), in.real(), in.real()); break;
+    case 1: CALL(glNormal3f, in.real(), in.real(), in.real()); break;
+    case 2: CALL(glTexCoord4f, in.real(), in.real(), in.real(), in.real()); break;
     case 3: glEdgeFlag(in.byte() & 1); break;
-    case 4: glMaterialf(in.enumFrom(kEnums, kEnumCount), in.enumFrom(kEnums, kEnumCount), in.real()); break;
+    case 4: CALL(glMaterialf, in.enumFrom(kEnums, kEnumCount), in.enumFrom(kEnums, kEnumCount), in.real()); break;
     default: break;
     }
-    glVertex4f(in.real(), in.real(), in.real(), in.byte() < 200 ? 1.0f : in.real());
+    CALL(glVertex4f, in.real(), in.real(), in.real(), in.byte() < 200 ? 1.0f : in.real());
   }
   if (in.byte() < 240) glEnd();
 }
@@ -289,7 +301,7 @@ void drawArrays(ByteReader &in) {
     if (in.byte() & 1)
       glDrawElements(mode, n, type, indices);
     else
-      glDrawRangeElements(mode, in.below(kMaxArrayVertices), in.below(kMaxArrayVertices), n, type, indices);
+      CALL(glDrawRangeElements, mode, in.below(kMaxArrayVertices), in.below(kMaxArrayVertices), n, type, indices);
     break;
   }
   default: glArrayElement(in.below(kMaxArrayVertices)); break;
@@ -320,23 +332,23 @@ void textureCall(ByteReader &in) {
     const GLsizei w = withData ? clientImageSide(in) : in.size();
     const GLsizei h = withData ? clientImageSide(in) : in.size();
     for (int i = 0; i < 64; ++i) memory->pixels[i] = in.byte();
-    glTexImage2D(target, level, static_cast<GLint>(in.enumFrom(kEnums, kEnumCount)), w, h, in.below(3) == 0,
+    CALL(glTexImage2D, target, level, static_cast<GLint>(in.enumFrom(kEnums, kEnumCount)), w, h, in.below(3) == 0,
                  format, type, withData ? memory->pixels.data() : nullptr);
     break;
   }
   case 3:
-    glTexImage1D(target, level, static_cast<GLint>(in.enumFrom(kEnums, kEnumCount)), clientImageSide(in),
+    CALL(glTexImage1D, target, level, static_cast<GLint>(in.enumFrom(kEnums, kEnumCount)), clientImageSide(in),
                  in.below(3) == 0, format, type, memory->pixels.data());
     break;
   case 4:
-    glTexSubImage2D(target, level, in.size(), in.size(), clientImageSide(in), clientImageSide(in), format, type,
+    CALL(glTexSubImage2D, target, level, in.size(), in.size(), clientImageSide(in), clientImageSide(in), format, type,
                     memory->pixels.data());
     break;
   case 5:
-    glCopyTexImage2D(target, level, in.enumFrom(kEnums, kEnumCount), in.size(), in.size(), in.size() % 70,
+    CALL(glCopyTexImage2D, target, level, in.enumFrom(kEnums, kEnumCount), in.size(), in.size(), in.size() % 70,
                      in.size() % 70, in.below(3) == 0);
     break;
-  case 6: glCopyTexSubImage2D(target, level, in.size(), in.size(), in.size(), in.size(), in.size(), in.size()); break;
+  case 6: CALL(glCopyTexSubImage2D, target, level, in.size(), in.size(), in.size(), in.size(), in.size(), in.size()); break;
   case 7: {
     // glGetTexImage writes the level whole: only levels small enough for the buffer.
     GLint w = 0, h = 0;
@@ -370,18 +382,18 @@ void pixelCall(ByteReader &in) {
   }
   case 1:
     for (int i = 0; i < 256; ++i) memory->pixels[i] = in.byte();
-    glDrawPixels(clientImageSide(in), clientImageSide(in), format, type, memory->pixels.data());
+    CALL(glDrawPixels, clientImageSide(in), clientImageSide(in), format, type, memory->pixels.data());
     break;
-  case 2: glReadPixels(in.size(), in.size(), clientImageSide(in), clientImageSide(in), format, type,
+  case 2: CALL(glReadPixels, in.size(), in.size(), clientImageSide(in), clientImageSide(in), format, type,
                        memory->readback.data());
     break;
-  case 3: glCopyPixels(in.size(), in.size(), in.size(), in.size(), in.enumFrom(kEnums, kEnumCount)); break;
+  case 3: CALL(glCopyPixels, in.size(), in.size(), in.size(), in.size(), in.enumFrom(kEnums, kEnumCount)); break;
   case 4:
-    glBitmap(clientImageSide(in), clientImageSide(in), in.real(), in.real(), in.real(), in.real(),
+    CALL(glBitmap, clientImageSide(in), clientImageSide(in), in.real(), in.real(), in.real(), in.real(),
              memory->pixels.data());
     break;
-  case 5: glPixelZoom(in.real(), in.real()); break;
-  case 6: glPixelTransferf(in.enumFrom(kEnums, kEnumCount), in.real()); break;
+  case 5: CALL(glPixelZoom, in.real(), in.real()); break;
+  case 6: CALL(glPixelTransferf, in.enumFrom(kEnums, kEnumCount), in.real()); break;
   case 7: {
     float values[16];
     fill(in, values, 16);
@@ -389,7 +401,7 @@ void pixelCall(ByteReader &in) {
     glPixelMapfv(in.enumFrom(kEnums, kEnumCount), size > 16 ? 16 : size, values);
     break;
   }
-  default: glRasterPos4f(in.real(), in.real(), in.real(), in.byte() < 200 ? 1.0f : in.real()); break;
+  default: CALL(glRasterPos4f, in.real(), in.real(), in.real(), in.byte() < 200 ? 1.0f : in.real()); break;
   }
 }
 
@@ -401,26 +413,26 @@ void stateCall(ByteReader &in) {
   case 2: glMatrixMode(in.enumFrom(kEnums, kEnumCount)); break;
   case 3: glPushMatrix(); break;
   case 4: glPopMatrix(); break;
-  case 5: glRotatef(in.real(), in.real(), in.real(), in.real()); break;
-  case 6: glTranslatef(in.real(), in.real(), in.real()); break;
-  case 7: glScalef(in.real(), in.real(), in.real()); break;
-  case 8: glFrustum(in.real(), in.real(), in.real(), in.real(), in.real(), in.real()); break;
-  case 9: glOrtho(in.real(), in.real(), in.real(), in.real(), in.real(), in.real()); break;
+  case 5: CALL(glRotatef, in.real(), in.real(), in.real(), in.real()); break;
+  case 6: CALL(glTranslatef, in.real(), in.real(), in.real()); break;
+  case 7: CALL(glScalef, in.real(), in.real(), in.real()); break;
+  case 8: CALL(glFrustum, in.real(), in.real(), in.real(), in.real(), in.real(), in.real()); break;
+  case 9: CALL(glOrtho, in.real(), in.real(), in.real(), in.real(), in.real(), in.real()); break;
   case 10:
     fill(in, v, 16);
     glMultMatrixf(v);
     break;
-  case 11: glViewport(in.size(), in.size(), in.size(), in.size()); break;
-  case 12: glScissor(in.size(), in.size(), in.size(), in.size()); break;
+  case 11: CALL(glViewport, in.size(), in.size(), in.size(), in.size()); break;
+  case 12: CALL(glScissor, in.size(), in.size(), in.size(), in.size()); break;
   case 13: glClear(kClearMasks[in.below(7)]); break;
-  case 14: glDepthRange(in.real(), in.real()); break;
+  case 14: CALL(glDepthRange, in.real(), in.real()); break;
   case 15:
     fill(in, v, 4);
-    glLightfv(in.enumFrom(kEnums, kEnumCount), in.enumFrom(kEnums, kEnumCount), v);
+    CALL(glLightfv, in.enumFrom(kEnums, kEnumCount), in.enumFrom(kEnums, kEnumCount), v);
     break;
   case 16:
     fill(in, v, 4);
-    glMaterialfv(in.enumFrom(kEnums, kEnumCount), in.enumFrom(kEnums, kEnumCount), v);
+    CALL(glMaterialfv, in.enumFrom(kEnums, kEnumCount), in.enumFrom(kEnums, kEnumCount), v);
     break;
   case 17:
     fill(in, v, 4);
@@ -432,16 +444,16 @@ void stateCall(ByteReader &in) {
     break;
   case 19:
     fill(in, v, 4);
-    glTexEnvfv(in.enumFrom(kEnums, kEnumCount), in.enumFrom(kEnums, kEnumCount), v);
+    CALL(glTexEnvfv, in.enumFrom(kEnums, kEnumCount), in.enumFrom(kEnums, kEnumCount), v);
     break;
   case 20:
     fill(in, v, 4);
-    glTexGenfv(in.enumFrom(kEnums, kEnumCount), in.enumFrom(kEnums, kEnumCount), v);
+    CALL(glTexGenfv, in.enumFrom(kEnums, kEnumCount), in.enumFrom(kEnums, kEnumCount), v);
     break;
-  case 21: glBlendFunc(in.enumFrom(kEnums, kEnumCount), in.enumFrom(kEnums, kEnumCount)); break;
-  case 22: glStencilFunc(in.enumFrom(kEnums, kEnumCount), in.size(), in.u32()); break;
+  case 21: CALL(glBlendFunc, in.enumFrom(kEnums, kEnumCount), in.enumFrom(kEnums, kEnumCount)); break;
+  case 22: CALL(glStencilFunc, in.enumFrom(kEnums, kEnumCount), in.size(), in.u32()); break;
   case 23:
-    glStencilOp(in.enumFrom(kEnums, kEnumCount), in.enumFrom(kEnums, kEnumCount), in.enumFrom(kEnums, kEnumCount));
+    CALL(glStencilOp, in.enumFrom(kEnums, kEnumCount), in.enumFrom(kEnums, kEnumCount), in.enumFrom(kEnums, kEnumCount));
     break;
   case 24: {
     const GLenum which = in.enumFrom(kEnums, kEnumCount);
@@ -463,9 +475,9 @@ void stateCall(ByteReader &in) {
     switch (in.below(6)) {
     case 0: glLineWidth(in.real()); break;
     case 1: glPointSize(in.real()); break;
-    case 2: glPolygonOffset(in.real(), in.real()); break;
-    case 3: glLineStipple(in.size(), in.u16()); break;
-    case 4: glColorMask(in.byte() & 1, in.byte() & 1, in.byte() & 1, in.byte() & 1); break;
+    case 2: CALL(glPolygonOffset, in.real(), in.real()); break;
+    case 3: CALL(glLineStipple, in.size(), in.u16()); break;
+    case 4: CALL(glColorMask, in.byte() & 1, in.byte() & 1, in.byte() & 1, in.byte() & 1); break;
     default: glDepthMask(in.byte() & 1); break;
     }
     break;
@@ -514,10 +526,10 @@ int callableLists() {
 
 void listAndModeCall(ByteReader &in) {
   switch (in.below(12)) {
-  case 0: glNewList(in.below(8), in.enumFrom(kEnums, kEnumCount)); break;
+  case 0: CALL(glNewList, in.below(8), in.enumFrom(kEnums, kEnumCount)); break;
   case 1: glEndList(); break;
   case 2: glCallList(in.below(callableLists())); break;
-  case 3: glDeleteLists(in.below(8), in.size()); break;
+  case 3: CALL(glDeleteLists, in.below(8), in.size()); break;
   case 4: glGenLists(in.size() % 8); break;
   case 5: {
     // At most 3 names a call keeps a chain of 7 lists below 3^7 calls.
@@ -546,24 +558,25 @@ void listAndModeCall(ByteReader &in) {
     default: glLoadName(in.u32()); break;
     }
     break;
-  case 8: glAccum(in.enumFrom(kEnums, kEnumCount), in.real()); break;
+  case 8: CALL(glAccum, in.enumFrom(kEnums, kEnumCount), in.real()); break;
   case 9: {
     // Evaluators: orders at most 5 and 4 with strides 4 and 16 reach float 67 at most.
     float points[96];
     fill(in, points, 96);
-    const GLint order = in.below(5) + (in.byte() < 250 ? 1 : -1);
+    const GLint lowOrder = in.below(5);
+    const GLint order = in.byte() < 250 ? lowOrder + 1 : lowOrder - 1;
     if (in.byte() & 1) {
-      glMap1f(in.enumFrom(kEnums, kEnumCount), in.real(), in.real(), 4, order, points);
-      glMapGrid1f(in.size(), in.real(), in.real());
-      glEvalMesh1(in.enumFrom(kEnums, kEnumCount), in.size() % 30, in.size() % 30);
+      CALL(glMap1f, in.enumFrom(kEnums, kEnumCount), in.real(), in.real(), 4, order, points);
+      CALL(glMapGrid1f, in.size(), in.real(), in.real());
+      CALL(glEvalMesh1, in.enumFrom(kEnums, kEnumCount), in.size() % 30, in.size() % 30);
     } else {
-      glMap2f(in.enumFrom(kEnums, kEnumCount), in.real(), in.real(), 4, order, in.real(), in.real(), 16,
+      CALL(glMap2f, in.enumFrom(kEnums, kEnumCount), in.real(), in.real(), 4, order, in.real(), in.real(), 16,
               order > 4 ? 4 : order, points);
-      glMapGrid2f(in.size() % 30, in.real(), in.real(), in.size() % 30, in.real(), in.real());
-      glEvalMesh2(in.enumFrom(kEnums, kEnumCount), in.size() % 30, in.size() % 30, in.size() % 30,
+      CALL(glMapGrid2f, in.size() % 30, in.real(), in.real(), in.size() % 30, in.real(), in.real());
+      CALL(glEvalMesh2, in.enumFrom(kEnums, kEnumCount), in.size() % 30, in.size() % 30, in.size() % 30,
                   in.size() % 30);
     }
-    glEvalCoord2f(in.real(), in.real());
+    CALL(glEvalCoord2f, in.real(), in.real());
     break;
   }
   case 10: glActiveTexture(in.enumFrom(kEnums, kEnumCount)); break;
@@ -584,20 +597,20 @@ void gluAndGlutCall(ByteReader &in) {
     gluQuadricTexture(quadric, in.byte() & 1);
     switch (in.below(4)) {
     case 0: gluSphere(quadric, in.real(), slices, stacks); break;
-    case 1: gluCylinder(quadric, in.real(), in.real(), in.real(), slices, stacks); break;
-    case 2: gluDisk(quadric, in.real(), in.real(), slices, stacks); break;
-    default: gluPartialDisk(quadric, in.real(), in.real(), slices, stacks, in.real(), in.real()); break;
+    case 1: CALL(gluCylinder, quadric, in.real(), in.real(), in.real(), slices, stacks); break;
+    case 2: CALL(gluDisk, quadric, in.real(), in.real(), slices, stacks); break;
+    default: CALL(gluPartialDisk, quadric, in.real(), in.real(), slices, stacks, in.real(), in.real()); break;
     }
     gluDeleteQuadric(quadric);
     break;
   }
-  case 1: gluPerspective(in.real(), in.real(), in.real(), in.real()); break;
-  case 2: gluLookAt(in.real(), in.real(), in.real(), in.real(), in.real(), in.real(), in.real(), in.real(), in.real());
+  case 1: CALL(gluPerspective, in.real(), in.real(), in.real(), in.real()); break;
+  case 2: CALL(gluLookAt, in.real(), in.real(), in.real(), in.real(), in.real(), in.real(), in.real(), in.real(), in.real());
     break;
   case 3: {
     // gluBuild2DMipmaps reads width x height client pixels.
     for (int i = 0; i < 256; ++i) memory->pixels[i] = in.byte();
-    gluBuild2DMipmaps(in.enumFrom(kEnums, kEnumCount), static_cast<GLint>(in.enumFrom(kEnums, kEnumCount)),
+    CALL(gluBuild2DMipmaps, in.enumFrom(kEnums, kEnumCount), static_cast<GLint>(in.enumFrom(kEnums, kEnumCount)),
                       clientImageSide(in), clientImageSide(in), in.enumFrom(kEnums, kEnumCount),
                       in.enumFrom(kEnums, kEnumCount), memory->pixels.data());
     break;
@@ -608,8 +621,8 @@ void gluAndGlutCall(ByteReader &in) {
     gluTessCallback(tess, GLU_TESS_VERTEX, reinterpret_cast<_GLUfuncptr>(tessVertex));
     gluTessCallback(tess, GLU_TESS_END, reinterpret_cast<_GLUfuncptr>(tessEnd));
     if (in.byte() & 1) gluTessCallback(tess, GLU_TESS_COMBINE, reinterpret_cast<_GLUfuncptr>(tessCombine));
-    gluTessProperty(tess, in.enumFrom(kEnums, kEnumCount), in.enumFrom(kEnums, kEnumCount));
-    if (in.byte() & 1) gluTessNormal(tess, in.real(), in.real(), in.real());
+    CALL(gluTessProperty, tess, in.enumFrom(kEnums, kEnumCount), in.enumFrom(kEnums, kEnumCount));
+    if (in.byte() & 1) CALL(gluTessNormal, tess, in.real(), in.real(), in.real());
     // Vertices on a small integer grid so that edges often cross, overlap and coincide.
     for (std::size_t i = 0; i < memory->tessVertices.size(); ++i)
       memory->tessVertices[i] = (i % 3 == 2) ? 0.0 : static_cast<double>(in.below(9)) - 4.0;
@@ -632,15 +645,15 @@ void gluAndGlutCall(ByteReader &in) {
     if (in.byte() & 1)
       glutSolidSphere(in.real(), slices, stacks);
     else
-      glutWireTorus(in.real(), in.real(), slices, stacks);
+      CALL(glutWireTorus, in.real(), in.real(), slices, stacks);
     break;
   case 6:
     switch (in.below(4)) {
     case 0: glutSolidTeapot(in.real()); break;
-    case 1: glutSolidCone(in.real(), in.real(), slices, stacks); break;
+    case 1: CALL(glutSolidCone, in.real(), in.real(), slices, stacks); break;
     case 2: {
       GLdouble offset[3] = {in.real(), in.real(), in.real()};
-      glutSolidSierpinskiSponge(in.below(6), offset, in.real());
+      CALL(glutSolidSierpinskiSponge, in.below(6), offset, in.real());
       break;
     }
     default: glutWireCube(in.real()); break;
@@ -649,7 +662,7 @@ void gluAndGlutCall(ByteReader &in) {
   default: {
     // A second context: switch to it, draw, switch back; creation refuses bad sizes.
     GlassContext *current = glassGetCurrentContext();
-    GlassContext *other = glassCreateContext(in.size() % 70, in.size() % 70);
+    GlassContext *other = CALL(glassCreateContext, in.size() % 70, in.size() % 70);
     if (other != nullptr && glassMakeCurrent(other)) {
       glClear(GL_COLOR_BUFFER_BIT);
       drawImmediate(in);

@@ -7,6 +7,8 @@
 #include <glass/context.h>
 
 #include <climits>
+#include <cmath>
+#include <limits>
 
 namespace {
 
@@ -281,5 +283,28 @@ TEST_CASE("lighting commands are compiled into display lists") {
   CHECK(v[0] == 7.0f);
   glGetFloatv(GL_FOG_DENSITY, v);
   CHECK(v[0] == 0.25f);
+  CHECK(glGetError() == GL_NO_ERROR);
+}
+
+TEST_CASE("enums given as floats: values no enum has, NaN and infinities are GL_INVALID_ENUM") {
+  ScopedContext scope;
+  const float bad[] = {-3.5f, 1e30f, -1e30f, std::numeric_limits<float>::infinity(), std::nanf(""),
+                       static_cast<float>(GL_SEPARATE_SPECULAR_COLOR) + 0.5f};
+  for (const float value : bad) {
+    CAPTURE(value);
+    glLightModelf(GL_LIGHT_MODEL_COLOR_CONTROL, value);
+    CHECK(glGetError() == GL_INVALID_ENUM);
+    glFogf(GL_FOG_MODE, value);
+    CHECK(glGetError() == GL_INVALID_ENUM);
+    glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, value);
+    CHECK(glGetError() == GL_INVALID_ENUM);
+    glTexEnvf(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, value);
+    CHECK(glGetError() == GL_INVALID_ENUM);
+    glTexGenf(GL_S, GL_TEXTURE_GEN_MODE, value);
+    CHECK(glGetError() == GL_INVALID_ENUM);
+  }
+  glLightModelf(GL_LIGHT_MODEL_COLOR_CONTROL, static_cast<float>(GL_SEPARATE_SPECULAR_COLOR));
+  glFogf(GL_FOG_MODE, static_cast<float>(GL_LINEAR));
+  glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, static_cast<float>(GL_NEAREST));
   CHECK(glGetError() == GL_NO_ERROR);
 }

@@ -4,7 +4,9 @@
 #include <doctest/doctest.h>
 
 #include <cstdint>
+#include <cmath>
 #include <cstring>
+#include <limits>
 
 #include "pipeline_test_support.h"
 
@@ -193,4 +195,29 @@ TEST_CASE("pixels stipple: glGetPolygonStipple, the unpack and pack state, displ
   glPolygonStipple(pattern);
   glEnd();
   CHECK(glGetError() == GL_INVALID_OPERATION);
+}
+
+TEST_CASE("pixels bitmap: a raster position moved to infinity or a NaN zoom draws nothing and is no error") {
+  ScopedContext context(16, 16);
+  const GLubyte bits[8] = {0xFF, 0, 0, 0, 0xFF, 0, 0, 0};  // rows 4-byte aligned
+  glWindowPos2i(2, 2);
+  glBitmap(8, 2, 0.0f, 0.0f, 1e38f, 0.0f, bits);
+  glBitmap(8, 2, 0.0f, 0.0f, 1e38f, 0.0f, bits);  // the position is now infinite
+  glBitmap(8, 2, 0.0f, 0.0f, 0.0f, 0.0f, bits);
+  CHECK(glGetError() == GL_NO_ERROR);
+  int drawn = 0;
+  for (int y = 0; y < 16; ++y)
+    for (int x = 0; x < 16; ++x) drawn += lit(x, y) ? 1 : 0;
+  CHECK(drawn == 16);  // only the first bitmap
+  const GLubyte white[4] = {255, 255, 255, 255};
+  glClear(GL_COLOR_BUFFER_BIT);
+  glWindowPos2i(4, 4);
+  const float nan = std::nanf("");
+  glPixelZoom(nan, 1.0f);
+  glDrawPixels(1, 1, GL_RGBA, GL_UNSIGNED_BYTE, white);
+  glPixelZoom(1.0f, -std::numeric_limits<float>::infinity());
+  glDrawPixels(1, 1, GL_RGBA, GL_UNSIGNED_BYTE, white);
+  CHECK(glGetError() == GL_NO_ERROR);
+  CHECK_FALSE(lit(4, 4));
+  CHECK_FALSE(lit(4, 3));
 }
