@@ -6,8 +6,10 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <string>
 #include <vector>
 
+#include "glut/font_glyphs.h"
 #include "pipeline_test_support.h"
 
 using glass::test::ScopedContext;
@@ -66,6 +68,31 @@ const int kHeights[] = {16, 14, 14, 29, 14, 16, 23};
 const int kDescents[] = {4, 3, 4, 7, 3, 4, 5};
 
 }  // namespace
+
+TEST_CASE("glut fonts: glass's glyphs are 94 different letters, descending only where they should") {
+  using glass::gl::glut::glyphRows;
+  using glass::gl::glut::kGlyphRows;
+  const std::string descenders = "gjpqy,;_";
+  for (int a = 33; a < 127; ++a) {
+    CAPTURE(static_cast<char>(a));
+    const std::uint8_t* rows = glyphRows(a);
+    bool inked = false;
+    for (int r = 0; r < kGlyphRows; ++r) {
+      CHECK(rows[r] < 32);  // 5 columns
+      inked = inked || rows[r] != 0;
+    }
+    CHECK(inked);
+    const bool descends = rows[7] != 0 || rows[8] != 0;
+    CHECK(descends == (descenders.find(static_cast<char>(a)) != std::string::npos));
+    for (int b = a + 1; b < 127; ++b)
+      CHECK_FALSE(std::equal(rows, rows + kGlyphRows, glyphRows(b)));
+  }
+  // Outside printable ASCII: the space's blank glyph.
+  for (int c : {0, 31, 127, 200, 255}) {
+    const std::uint8_t* rows = glyphRows(c);
+    CHECK(std::all_of(rows, rows + kGlyphRows, [](std::uint8_t r) { return r == 0; }));
+  }
+}
 
 TEST_CASE("glut fonts: the handles are nine distinct addresses, as in freeglut on Unix") {
   void* const handles[] = {GLUT_STROKE_ROMAN,          GLUT_STROKE_MONO_ROMAN,
