@@ -1,6 +1,6 @@
 // Commands of OpenGL 1.2 to 1.4 that glass implements by definition through older ones, or
 // accepts with the errors of a feature it lacks: glDrawRangeElements, glMultiDrawArrays,
-// glMultiDrawElements, glLoadTransposeMatrix, glMultTransposeMatrix, the single texture unit,
+// glMultiDrawElements, glLoadTransposeMatrix, glMultTransposeMatrix, the texture unit commands,
 // glSampleCoverage, compressed and 3D textures, and the imaging subset.
 #include <doctest/doctest.h>
 
@@ -129,19 +129,20 @@ TEST_CASE("glLoadTransposeMatrix and glMultTransposeMatrix take the matrix row b
   CHECK(glGetError() == GL_NO_ERROR);
 }
 
-TEST_CASE("One texture unit: GL_TEXTURE0 is accepted, others are errors or ignored") {
+TEST_CASE("Eight texture units: GL_TEXTURE0..7 are accepted, others are errors or ignored") {
   ScopedContext context;
-  CHECK(integerState(GL_MAX_TEXTURE_UNITS) == 1);
+  CHECK(integerState(GL_MAX_TEXTURE_UNITS) == 8);
   CHECK(integerState(GL_ACTIVE_TEXTURE) == GL_TEXTURE0);
   CHECK(integerState(GL_CLIENT_ACTIVE_TEXTURE) == GL_TEXTURE0);
   glActiveTexture(GL_TEXTURE0);
   glClientActiveTexture(GL_TEXTURE0);
   glActiveTextureARB(GL_TEXTURE0_ARB);
   CHECK(glGetError() == GL_NO_ERROR);
-  glActiveTexture(GL_TEXTURE1);
+  glActiveTexture(GL_TEXTURE8);
   CHECK(glGetError() == GL_INVALID_ENUM);
-  glClientActiveTexture(GL_TEXTURE1);
+  glClientActiveTexture(GL_TEXTURE8);
   CHECK(glGetError() == GL_INVALID_ENUM);
+  CHECK(integerState(GL_ACTIVE_TEXTURE) == GL_TEXTURE0);
 
   GLfloat tc[4];
   glMultiTexCoord2f(GL_TEXTURE0, 0.25f, 0.5f);
@@ -159,7 +160,8 @@ TEST_CASE("One texture unit: GL_TEXTURE0 is accepted, others are errors or ignor
   CHECK(tc[0] == 0.75f);
   CHECK(tc[1] == 0.0f);
   CHECK(tc[3] == 1.0f);
-  // Coordinates for a unit glass does not have change nothing.
+  // Coordinates for a unit glass does not have change nothing, and another unit's leave unit 0's.
+  glMultiTexCoord2f(GL_TEXTURE8, 9.0f, 9.0f);
   glMultiTexCoord2f(GL_TEXTURE3, 9.0f, 9.0f);
   glGetFloatv(GL_CURRENT_TEXTURE_COORDS, tc);
   CHECK(tc[0] == 0.75f);

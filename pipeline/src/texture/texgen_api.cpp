@@ -37,7 +37,7 @@ void texGen(Context& ctx, GLenum coord, GLenum pname, const std::array<double, 4
   const int index = coordinateIndex(coord);
   const int size = texGenParameterSize(pname);
   if (index < 0 || size == 0 || (size > 1 && !vector)) return recordError(ctx, GL_INVALID_ENUM);
-  TexGenCoordinate& g = ctx.texture.texGen[index];
+  TexGenCoordinate& g = ctx.texture.unit().texGen[index];
   switch (pname) {
     case GL_TEXTURE_GEN_MODE: {
       const GLenum mode = static_cast<GLenum>(static_cast<GLint>(v[0]));
@@ -69,7 +69,7 @@ bool getTexGen(Context& ctx, GLenum coord, GLenum pname, double out[4], int* cou
     recordError(ctx, GL_INVALID_ENUM);
     return false;
   }
-  const TexGenCoordinate& g = ctx.texture.texGen[index];
+  const TexGenCoordinate& g = ctx.texture.unit().texGen[index];
   switch (pname) {
     case GL_TEXTURE_GEN_MODE: out[0] = g.mode; break;
     case GL_OBJECT_PLANE: for (int k = 0; k < 4; ++k) out[k] = g.objectPlane[k]; break;

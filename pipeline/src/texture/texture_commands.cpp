@@ -85,14 +85,14 @@ void readFramebufferPixel(const Context& ctx, int x, int y, float rgba[4]) {
 }  // namespace
 
 TextureObject* boundTexture(Context& ctx, GLenum target) {
-  if (target == GL_TEXTURE_1D) return ctx.texture.bound1D;
-  if (target == GL_TEXTURE_2D) return ctx.texture.bound2D;
+  if (target == GL_TEXTURE_1D) return ctx.texture.unit().bound1D;
+  if (target == GL_TEXTURE_2D) return ctx.texture.unit().bound2D;
   return nullptr;
 }
 
 const TextureObject* boundTexture(const Context& ctx, GLenum target) {
-  if (target == GL_TEXTURE_1D) return ctx.texture.bound1D;
-  if (target == GL_TEXTURE_2D) return ctx.texture.bound2D;
+  if (target == GL_TEXTURE_1D) return ctx.texture.unit().bound1D;
+  if (target == GL_TEXTURE_2D) return ctx.texture.unit().bound2D;
   return nullptr;
 }
 

@@ -71,8 +71,8 @@ void getTexImage(Context& ctx, GLenum target, GLint level, GLenum format, GLenum
 // The image glGetTexLevelParameter describes: a level of the bound texture or of a proxy.
 const TextureImage* levelImage(const Context& ctx, GLenum target, GLint level) {
   switch (target) {
-    case GL_TEXTURE_1D: return &ctx.texture.bound1D->levels[level];
-    case GL_TEXTURE_2D: return &ctx.texture.bound2D->levels[level];
+    case GL_TEXTURE_1D: return &ctx.texture.unit().bound1D->levels[level];
+    case GL_TEXTURE_2D: return &ctx.texture.unit().bound2D->levels[level];
     case GL_PROXY_TEXTURE_1D: return &ctx.texture.proxy1D[level];
     case GL_PROXY_TEXTURE_2D: return &ctx.texture.proxy2D[level];
     default: return nullptr;

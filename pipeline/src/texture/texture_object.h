@@ -19,6 +19,7 @@ struct SamplerParameters {
   float borderColor[4] = {0.0f, 0.0f, 0.0f, 0.0f};
   float minLod = -1000.0f;
   float maxLod = 1000.0f;
+  float lodBias = 0.0f;  // GL_TEXTURE_LOD_BIAS of the object (OpenGL 1.4)
   int baseLevel = 0;
   int maxLevel = 1000;
   bool generateMipmap = false;

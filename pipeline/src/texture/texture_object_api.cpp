@@ -21,7 +21,7 @@ void bindTexture(Context& ctx, GLenum target, GLuint name) {
   if (rejectInsideBeginEnd(ctx)) return;
   TextureState& t = ctx.texture;
   if (target != GL_TEXTURE_1D && target != GL_TEXTURE_2D) return recordError(ctx, GL_INVALID_ENUM);
-  TextureObject*& binding = target == GL_TEXTURE_1D ? t.bound1D : t.bound2D;
+  TextureObject*& binding = target == GL_TEXTURE_1D ? t.unit().bound1D : t.unit().bound2D;
   if (name == 0) {
     binding = target == GL_TEXTURE_1D ? &t.default1D : &t.default2D;
     return;
@@ -48,9 +48,12 @@ void deleteTextures(Context& ctx, const std::vector<GLuint>& names) {
     t.reservedNames.erase(name);
     auto it = t.objects.find(name);
     if (it == t.objects.end()) continue;
-    // Spec 3.8.12: deleting a bound texture binds the default texture in its place.
-    if (t.bound1D == it->second.get()) t.bound1D = &t.default1D;
-    if (t.bound2D == it->second.get()) t.bound2D = &t.default2D;
+    // Spec 3.8.12: deleting a bound texture binds the default texture in its place, in every
+    // texture unit it is bound to.
+    for (TextureUnit& u : t.units) {
+      if (u.bound1D == it->second.get()) u.bound1D = &t.default1D;
+      if (u.bound2D == it->second.get()) u.bound2D = &t.default2D;
+    }
     t.objects.erase(it);
   }
 }

@@ -35,6 +35,7 @@ int parameterSize(GLenum pname) {
     case GL_TEXTURE_PRIORITY:
     case GL_TEXTURE_MIN_LOD:
     case GL_TEXTURE_MAX_LOD:
+    case GL_TEXTURE_LOD_BIAS:
     case GL_TEXTURE_BASE_LEVEL:
     case GL_TEXTURE_MAX_LEVEL:
     case GL_GENERATE_MIPMAP: return 1;
@@ -77,6 +78,7 @@ void texParameter(Context& ctx, GLenum target, GLenum pname, const std::array<do
       break;
     case GL_TEXTURE_MIN_LOD: p.minLod = static_cast<float>(v[0]); break;
     case GL_TEXTURE_MAX_LOD: p.maxLod = static_cast<float>(v[0]); break;
+    case GL_TEXTURE_LOD_BIAS: p.lodBias = static_cast<float>(v[0]); break;
     case GL_TEXTURE_BASE_LEVEL:
     case GL_TEXTURE_MAX_LEVEL: {
       // Spec 3.8.4: negative levels are an INVALID_VALUE error. Integral values are expected;
@@ -122,6 +124,7 @@ bool getTexParameter(Context& ctx, GLenum target, GLenum pname, double out[4], i
     case GL_TEXTURE_RESIDENT: out[0] = GL_TRUE; return true;
     case GL_TEXTURE_MIN_LOD: out[0] = p.minLod; return true;
     case GL_TEXTURE_MAX_LOD: out[0] = p.maxLod; return true;
+    case GL_TEXTURE_LOD_BIAS: out[0] = p.lodBias; return true;
     case GL_TEXTURE_BASE_LEVEL: out[0] = p.baseLevel; return true;
     case GL_TEXTURE_MAX_LEVEL: out[0] = p.maxLevel; return true;
     case GL_GENERATE_MIPMAP: out[0] = p.generateMipmap ? GL_TRUE : GL_FALSE; return true;

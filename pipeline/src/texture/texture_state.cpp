@@ -5,10 +5,14 @@ namespace glass::gl {
 TextureState::TextureState() {
   default1D.target = GL_TEXTURE_1D;
   default2D.target = GL_TEXTURE_2D;
-  setDefaultTexGenPlanes(texGen);
+  for (TextureUnit& u : units) {
+    u.bound1D = &default1D;
+    u.bound2D = &default2D;
+    setDefaultTexGenPlanes(u.texGen);
+  }
 }
 
-const TextureObject* TextureState::activeTexture() const {
+const TextureObject* TextureUnit::activeTexture() const {
   const TextureObject* texture = enabled2D ? bound2D : enabled1D ? bound1D : nullptr;
   return texture != nullptr && texture->complete ? texture : nullptr;
 }
