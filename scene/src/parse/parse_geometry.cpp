@@ -139,7 +139,8 @@ void Parser::parseModel(StatementReader &r) {
       {"materials", ParamKind::Boolean, 1, 1, {}, ""},
   };
   const Token &pathToken = r.peek();
-  std::string path = resolvePath(r.string("the OBJ file"), pathToken.where);
+  const std::string written = r.string("the OBJ file");
+  std::string path = resolvePath(written, pathToken.where);
   NamedParams params = NamedParams::read(r, specs);
   DrawModel draw;
   draw.useMaterials = params.booleanOr("materials", true);
@@ -152,7 +153,7 @@ void Parser::parseModel(StatementReader &r) {
     std::string reason;
     std::vector<TextureDefinition> textures;
     if (!loadObjModel(path, model, program_.textures, reason)) {
-      r.fail(pathToken, "cannot load model '" + path + "': " + reason);
+      r.fail(pathToken, "cannot load model '" + written + "': " + reason);
     }
     draw.model = static_cast<int>(program_.models.size());
     program_.models.push_back(std::move(model));
