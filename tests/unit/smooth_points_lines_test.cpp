@@ -5,12 +5,14 @@
 #include <GL/gl.h>
 
 #include <cmath>
+#include <utility>
 #include <vector>
 
 #include "pipeline_test_support.h"
 #include "primitive/point_parameters.h"
 #include "primitive/raster_state.h"
 #include "primitive/smooth_coverage.h"
+#include "primitive/stipple_dashes.h"
 
 using glass::gl::SmoothLineShape;
 using glass::gl::SmoothPointShape;
@@ -103,6 +105,26 @@ TEST_CASE("Smooth line rectangle: widened by h each side and extended by half a 
   CHECK(yMax == 21.0f);
   CHECK(smoothLine(0, 0, 10, 0, 4.0f).halfWidth == 2.5f);  // w/2 + 1/2
   CHECK(smoothLine(0, 0, 10, 0, 0.5f).halfWidth == 1.0f);  // at least 1
+}
+
+TEST_CASE("Stippled smooth lines: dashes of whole steps along the Euclidean length") {
+  std::vector<std::pair<float, float>> dashes;
+  auto record = [&](float t0, float t1) { dashes.emplace_back(t0, t1); };
+  // 0x00FF: steps 0-7 on, 8-15 off, 16-19 on.
+  CHECK(glass::gl::forEachStippleDash(20.0f, 0, 0x00FF, 1, record) == 20);
+  REQUIRE(dashes.size() == 2);
+  CHECK(dashes[0] == std::pair(0.0f, 0.4f));
+  CHECK(dashes[1] == std::pair(0.8f, 1.0f));
+  // Carried on from counter 4, factor 2, 0x00F0: steps 0-5 are counters 4-9, bits 2, 2, 3, 3, 4,
+  // 4, so the dash starts at step 4 and runs to the end; the counter advances by ceil(5.5).
+  dashes.clear();
+  CHECK(glass::gl::forEachStippleDash(5.5f, 4, 0x00F0, 2, record) == 10);
+  REQUIRE(dashes.size() == 1);
+  CHECK(dashes[0].first == doctest::Approx(4.0f / 5.5f));
+  CHECK(dashes[0].second == 1.0f);
+  dashes.clear();
+  CHECK(glass::gl::forEachStippleDash(0.0f, 3, 0xFFFF, 1, record) == 3);
+  CHECK(dashes.empty());
 }
 
 TEST_CASE("Smooth points: radius 1 up to size 2, size / 2 above; discs with discarded corners") {

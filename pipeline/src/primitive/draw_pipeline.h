@@ -71,6 +71,8 @@ class DrawPipeline {
   // smooth_stage.cpp: antialiased segments and points (primitive/smooth_coverage.h).
   void rasterizeSmoothSegment(const raster::WindowVertex& a, const raster::WindowVertex& b,
                               double depthBias);
+  void rasterizeSmoothDash(const raster::WindowVertex& a, const raster::WindowVertex& b,
+                           double depthBias);
   void rasterizeSmoothPoint(const raster::WindowVertex& v, float size, double depthBias);
   // Clips a triangle to a polygon in window coordinates; returns its vertex count (0: nothing
   // visible). polygon_fill.cpp

@@ -2,7 +2,8 @@
  * over a striped background with GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA: smooth points of sizes 1
  * to 10 at whole, half and arbitrary sub-pixel positions; fans of smooth lines of widths 1 to 5,
  * fractional widths among them, at 24 angles each; short segments (under a pixel to a few
- * pixels); and smooth-shaded smooth lines. The coverage is the implementation's choice (spec
+ * pixels); smooth-shaded smooth lines; and stippled smooth lines, whose dashes are drawn as
+ * smooth segments of their own. The coverage is the implementation's choice (spec
  * 3.3.2, 3.4.3); this measures how far glass's is from Mesa's. */
 #include <GL/gl.h>
 #include <GL/glu.h>
@@ -110,6 +111,28 @@ static void draw(void)
     glVertex2f(130.0f + 24.0f * (float)i, 30.0f + 12.0f * (float)(i % 2) + 0.2f * (float)i);
   }
   glEnd();
+
+  /* Stippled: a strip (the pattern carries on across its segments) and separate lines. */
+  glEnable(GL_LINE_STIPPLE);
+  glLineStipple(2, 0x0F0F);
+  glLineWidth(2.0f);
+  glColor3f(0.9f, 0.9f, 1.0f);
+  glBegin(GL_LINE_STRIP);
+  glVertex2f(100.0f, 130.0f);
+  glVertex2f(180.0f, 135.5f);
+  glVertex2f(250.0f, 105.0f);
+  glVertex2f(390.0f, 128.0f);
+  glEnd();
+  glLineStipple(1, 0x33FF);
+  glLineWidth(1.0f);
+  glBegin(GL_LINES);
+  for (i = 0; i < 6; ++i) {
+    glColor3f(1.0f, 0.5f + 0.1f * (float)i, 0.3f);
+    glVertex2f(110.0f + 45.0f * (float)i, 75.0f);
+    glVertex2f(140.0f + 45.0f * (float)i + 3.0f * (float)i, 98.0f - 4.0f * (float)i);
+  }
+  glEnd();
+  glDisable(GL_LINE_STIPPLE);
 
   glDisable(GL_BLEND);
   glDisable(GL_LINE_SMOOTH);
