@@ -172,7 +172,7 @@ void Interpreter::Executor::run(const Pop &) {
 // pop; enabling GL_COLOR_MATERIAL again sets the tracked material to the current colour (section
 // 2.13.3), which the restored material already is.
 // While a definition is being compiled glGet would read the values of compile time, not those of
-// the instance, so nothing is saved or sent there.
+// the instance, so nothing is saved or sent there (and Mesa's display lists restore them right).
 void Interpreter::Executor::saveCurrentValues() {
   if (compilingDefinition_ > 0) return;
   CurrentValues saved;
