@@ -66,13 +66,13 @@ TextureImage reduceImageByBoxFilter(const TextureImage& source) {
   return out;
 }
 
-void generateMipmaps(TextureObject& texture) {
+void generateMipmaps(TextureObject& texture, int face) {
   const int base = texture.params.baseLevel;
-  if (base < 0 || base >= kMaxTextureLevels || !texture.levels[base].defined()) return;
-  const TextureImage& b = texture.levels[base];
+  if (base < 0 || base >= kMaxTextureLevels || !texture.image(face, base).defined()) return;
+  const TextureImage& b = texture.image(face, base);
   const int q = std::min(lastMipmapLevel(base, b.width, b.height), texture.params.maxLevel);
   for (int level = base + 1; level <= q; ++level)
-    texture.levels[level] = reduceImageByBoxFilter(texture.levels[level - 1]);
+    texture.image(face, level) = reduceImageByBoxFilter(texture.image(face, level - 1));
   texture.updateCompleteness();
 }
 

@@ -41,8 +41,10 @@ void texGen(Context& ctx, GLenum coord, GLenum pname, const std::array<double, 4
   switch (pname) {
     case GL_TEXTURE_GEN_MODE: {
       const GLenum mode = static_cast<GLenum>(static_cast<GLint>(v[0]));
-      // SPHERE_MAP defines s and t only.
-      const bool valid = mode == GL_OBJECT_LINEAR || mode == GL_EYE_LINEAR || (mode == GL_SPHERE_MAP && index < 2);
+      // SPHERE_MAP defines s and t only, REFLECTION_MAP and NORMAL_MAP s, t and r (spec 2.11.4).
+      const bool valid = mode == GL_OBJECT_LINEAR || mode == GL_EYE_LINEAR ||
+                         (mode == GL_SPHERE_MAP && index < 2) ||
+                         ((mode == GL_REFLECTION_MAP || mode == GL_NORMAL_MAP) && index < 3);
       if (!valid) return recordError(ctx, GL_INVALID_ENUM);
       g.mode = mode;
       break;

@@ -74,11 +74,13 @@ void applyCombine(const TextureEnvironment& env, const CombineSources& sources, 
     const float d = dot3(rgb[0], rgb[1]);
     for (int k = 0; k < 3; ++k) result[k] = d;
   } else {
-    for (int k = 0; k < 3; ++k) result[k] = combine(env.combineRGB, rgb[0][k], rgb[1][k], rgb[2][k]);
+    for (int k = 0; k < 3; ++k)
+      result[k] = combine(env.combineRGB, rgb[0][k], rgb[1][k], rgb[2][k]);
   }
   // DOT3_RGBA puts the dot product in alpha too, and the alpha function is not used.
-  result[3] = env.combineRGB == GL_DOT3_RGBA ? result[0]
-                                              : combine(env.combineAlpha, alpha[0], alpha[1], alpha[2]);
+  result[3] = env.combineRGB == GL_DOT3_RGBA
+                  ? result[0]
+                  : combine(env.combineAlpha, alpha[0], alpha[1], alpha[2]);
   for (int k = 0; k < 3; ++k) color[k] = clamp01(result[k] * env.rgbScale);
   // The alpha of DOT3_RGBA too is scaled by GL_ALPHA_SCALE, as Mesa does.
   color[3] = clamp01(result[3] * env.alphaScale);

@@ -21,17 +21,33 @@ PixelLayout layoutFrom(const PixelPacking& p) {
   return l;
 }
 
-bool isProxyTarget(GLenum target) {
-  return target == GL_PROXY_TEXTURE_1D || target == GL_PROXY_TEXTURE_2D;
+// The images targets of the given dimensionality name: GL_TEXTURE_1D; GL_TEXTURE_2D and the six
+// cube map faces (OpenGL 1.3, section 3.8.1).
+bool isImageTarget(int dimensions, GLenum target) {
+  return dimensions == 1 ? target == GL_TEXTURE_1D
+                         : target == GL_TEXTURE_2D || cubeFaceOf(target) >= 0;
 }
 
-// The targets glTexImage of the given dimensionality accepts.
+// The targets glTexImage of the given dimensionality accepts: the images and the proxies.
 bool isTexImageTarget(int dimensions, GLenum target) {
-  return dimensions == 1 ? (target == GL_TEXTURE_1D || target == GL_PROXY_TEXTURE_1D)
-                         : (target == GL_TEXTURE_2D || target == GL_PROXY_TEXTURE_2D);
+  if (isImageTarget(dimensions, target)) return true;
+  return dimensions == 1 ? target == GL_PROXY_TEXTURE_1D
+                         : target == GL_PROXY_TEXTURE_2D || target == GL_PROXY_TEXTURE_CUBE_MAP;
 }
 
-GLenum nonProxyTarget(int dimensions) { return dimensions == 1 ? GL_TEXTURE_1D : GL_TEXTURE_2D; }
+// The proxy images of each level of a proxy target.
+TextureImage* proxyLevels(Context& ctx, GLenum target) {
+  switch (target) {
+    case GL_PROXY_TEXTURE_1D: return ctx.texture.proxy1D;
+    case GL_PROXY_TEXTURE_2D: return ctx.texture.proxy2D;
+    default: return ctx.texture.proxyCube;
+  }
+}
+
+// Cube map faces are square (spec 3.8.1: otherwise GL_INVALID_VALUE).
+bool isCubeMapTarget(GLenum target) {
+  return cubeFaceOf(target) >= 0 || target == GL_PROXY_TEXTURE_CUBE_MAP;
+}
 
 // The image size checks common to glTexImage and glCopyTexImage (spec 3.8.1): border 0 or 1,
 // width and height at least twice the border. The size of the image without its border is
@@ -65,8 +81,9 @@ void copyInsideBorder(const std::vector<uint8_t>& full, int fullWidth, int borde
   }
 }
 
-void afterBaseLevelChange(TextureObject& texture, GLint level) {
-  if (level == texture.params.baseLevel && texture.params.generateMipmap) generateMipmaps(texture);
+void afterBaseLevelChange(TextureObject& texture, int face, GLint level) {
+  if (level == texture.params.baseLevel && texture.params.generateMipmap)
+    generateMipmaps(texture, face);
   texture.updateCompleteness();
 }
 
@@ -87,13 +104,18 @@ void readFramebufferPixel(const Context& ctx, int x, int y, float rgba[4]) {
 TextureObject* boundTexture(Context& ctx, GLenum target) {
   if (target == GL_TEXTURE_1D) return ctx.texture.unit().bound1D;
   if (target == GL_TEXTURE_2D) return ctx.texture.unit().bound2D;
+  if (target == GL_TEXTURE_CUBE_MAP) return ctx.texture.unit().boundCube;
   return nullptr;
 }
 
 const TextureObject* boundTexture(const Context& ctx, GLenum target) {
-  if (target == GL_TEXTURE_1D) return ctx.texture.unit().bound1D;
-  if (target == GL_TEXTURE_2D) return ctx.texture.unit().bound2D;
-  return nullptr;
+  return boundTexture(const_cast<Context&>(ctx), target);
+}
+
+ImageTarget imageTarget(Context& ctx, GLenum target) {
+  const int face = cubeFaceOf(target);
+  if (face >= 0) return {ctx.texture.unit().boundCube, face};
+  return {boundTexture(ctx, target), 0};
 }
 
 PixelLayout unpackLayout(const Context& ctx) { return layoutFrom(ctx.pixelStore.unpack); }
@@ -102,7 +124,7 @@ PixelLayout packLayout(const Context& ctx) { return layoutFrom(ctx.pixelStore.pa
 UnpackedTexels unpackForDisplayList(const Context& ctx, const TexImageArguments& a, const void* pixels) {
   BaseFormat base;
   int w, h;
-  if (pixels == nullptr || isProxyTarget(a.target) || !isTexImageTarget(a.dimensions, a.target) ||
+  if (pixels == nullptr || !isImageTarget(a.dimensions, a.target) ||
       !baseFormatOfInternalFormat(a.internalFormat, &base) ||
       checkImageSize(a.dimensions, a.width, a.height, a.border, &w, &h) != GL_NO_ERROR ||
       a.level < 0 || a.level >= kMaxTextureLevels || !fitsLevel(a.level, w, h) ||
@@ -128,11 +150,12 @@ void texImage(Context& ctx, const TexImageArguments& a, const void* pixels, cons
   if (GLenum e = checkImageSize(a.dimensions, a.width, a.height, a.border, &w, &h); e != GL_NO_ERROR)
     return recordError(ctx, e);
   if (GLenum e = checkTexelFormatAndType(a.format, a.type); e != GL_NO_ERROR) return recordError(ctx, e);
+  if (isCubeMapTarget(a.target) && w != h) return recordError(ctx, GL_INVALID_VALUE);
 
-  if (isProxyTarget(a.target)) {
+  if (!isImageTarget(a.dimensions, a.target)) {
     // Spec 3.8.11: a proxy query succeeds (the level state is set) when the image would fit, and
     // leaves every level parameter zero otherwise; no error either way.
-    TextureImage& proxy = (a.dimensions == 1 ? ctx.texture.proxy1D : ctx.texture.proxy2D)[a.level];
+    TextureImage& proxy = proxyLevels(ctx, a.target)[a.level];
     proxy.clear();
     if (fitsLevel(a.level, w, h)) {
       proxy.width = w;
@@ -147,7 +170,9 @@ void texImage(Context& ctx, const TexImageArguments& a, const void* pixels, cons
   }
   if (!fitsLevel(a.level, w, h)) return recordError(ctx, GL_INVALID_VALUE);
 
-  TextureObject& texture = *boundTexture(ctx, a.target);
+  const ImageTarget target = imageTarget(ctx, a.target);
+  TextureObject& texture = *target.texture;
+  TextureImage& slot = texture.image(target.face, a.level);
   try {
     TextureImage image;
     image.internalFormat = a.internalFormat;
@@ -170,24 +195,24 @@ void texImage(Context& ctx, const TexImageArguments& a, const void* pixels, cons
         }
       }
     }
-    texture.levels[a.level] = std::move(image);
-    afterBaseLevelChange(texture, a.level);
+    slot = std::move(image);
+    afterBaseLevelChange(texture, target.face, a.level);
   } catch (const std::bad_alloc&) {
-    texture.levels[a.level].clear();
+    slot.clear();
     texture.updateCompleteness();
     recordError(ctx, GL_OUT_OF_MEMORY);
   }
 }
 
 UnpackedTexels unpackForDisplayList(const Context& ctx, const TexSubImageArguments& a, const void* pixels) {
-  const TextureObject* texture = boundTexture(ctx, a.target);
-  if (pixels == nullptr || texture == nullptr || a.target != nonProxyTarget(a.dimensions) ||
-      a.level < 0 || a.level >= kMaxTextureLevels || a.width < 0 || a.height < 0 ||
+  if (pixels == nullptr || !isImageTarget(a.dimensions, a.target) || a.level < 0 ||
+      a.level >= kMaxTextureLevels || a.width < 0 || a.height < 0 ||
       checkTexelFormatAndType(a.format, a.type) != GL_NO_ERROR)
     return nullptr;
+  const ImageTarget target = imageTarget(const_cast<Context&>(ctx), a.target);
   // The base format decides which components are kept; it is the one of the image when the list
   // is compiled (an image defined later with another format is rare enough to accept this).
-  const TextureImage& image = texture->levels[a.level];
+  const TextureImage& image = target.texture->image(target.face, a.level);
   try {
     auto texels = std::make_shared<std::vector<uint8_t>>();
     unpackTexels(pixels, a.width, a.dimensions == 2 ? a.height : 1, a.format, a.type,
@@ -200,11 +225,12 @@ UnpackedTexels unpackForDisplayList(const Context& ctx, const TexSubImageArgumen
 
 void texSubImage(Context& ctx, const TexSubImageArguments& a, const void* pixels, const UnpackedTexels& unpacked) {
   if (rejectInsideBeginEnd(ctx)) return;
-  if (a.target != nonProxyTarget(a.dimensions)) return recordError(ctx, GL_INVALID_ENUM);
+  if (!isImageTarget(a.dimensions, a.target)) return recordError(ctx, GL_INVALID_ENUM);
   if (a.level < 0 || a.level >= kMaxTextureLevels) return recordError(ctx, GL_INVALID_VALUE);
   if (GLenum e = checkTexelFormatAndType(a.format, a.type); e != GL_NO_ERROR) return recordError(ctx, e);
-  TextureObject& texture = *boundTexture(ctx, a.target);
-  TextureImage& image = texture.levels[a.level];
+  const ImageTarget target = imageTarget(ctx, a.target);
+  TextureObject& texture = *target.texture;
+  TextureImage& image = texture.image(target.face, a.level);
   if (!image.defined()) return recordError(ctx, GL_INVALID_OPERATION);
   const int height = a.dimensions == 2 ? a.height : 1;
   const int yoffset = a.dimensions == 2 ? a.yoffset : 0;
@@ -232,7 +258,7 @@ void texSubImage(Context& ctx, const TexSubImageArguments& a, const void* pixels
         std::memcpy(image.texel(x, y), &(*texels)[(static_cast<size_t>(j) * static_cast<size_t>(a.width) + static_cast<size_t>(i)) * 4], 4);
       }
     }
-    afterBaseLevelChange(texture, a.level);
+    afterBaseLevelChange(texture, target.face, a.level);
   } catch (const std::bad_alloc&) {
     recordError(ctx, GL_OUT_OF_MEMORY);
   }
@@ -241,7 +267,7 @@ void texSubImage(Context& ctx, const TexSubImageArguments& a, const void* pixels
 void copyTexImage(Context& ctx, int dimensions, GLenum target, GLint level, GLenum internalFormat,
                   GLint x, GLint y, GLsizei width, GLsizei height, GLint border) {
   if (rejectInsideBeginEnd(ctx)) return;
-  if (target != nonProxyTarget(dimensions)) return recordError(ctx, GL_INVALID_ENUM);
+  if (!isImageTarget(dimensions, target)) return recordError(ctx, GL_INVALID_ENUM);
   if (level < 0 || level >= kMaxTextureLevels) return recordError(ctx, GL_INVALID_VALUE);
   BaseFormat base;
   // Spec 3.8.2: the component counts 1 to 4 are not internal formats of glCopyTexImage.
@@ -253,8 +279,11 @@ void copyTexImage(Context& ctx, int dimensions, GLenum target, GLint level, GLen
   if (GLenum e = checkImageSize(dimensions, width, height, border, &w, &h); e != GL_NO_ERROR)
     return recordError(ctx, e);
   if (!fitsLevel(level, w, h)) return recordError(ctx, GL_INVALID_VALUE);
+  if (isCubeMapTarget(target) && w != h) return recordError(ctx, GL_INVALID_VALUE);
 
-  TextureObject& texture = *boundTexture(ctx, target);
+  const ImageTarget named = imageTarget(ctx, target);
+  TextureObject& texture = *named.texture;
+  TextureImage& slot = texture.image(named.face, level);
   try {
     TextureImage image;
     image.internalFormat = format;
@@ -273,10 +302,10 @@ void copyTexImage(Context& ctx, int dimensions, GLenum target, GLint level, GLen
         }
       }
     }
-    texture.levels[level] = std::move(image);
-    afterBaseLevelChange(texture, level);
+    slot = std::move(image);
+    afterBaseLevelChange(texture, named.face, level);
   } catch (const std::bad_alloc&) {
-    texture.levels[level].clear();
+    slot.clear();
     texture.updateCompleteness();
     recordError(ctx, GL_OUT_OF_MEMORY);
   }
@@ -285,10 +314,11 @@ void copyTexImage(Context& ctx, int dimensions, GLenum target, GLint level, GLen
 void copyTexSubImage(Context& ctx, int dimensions, GLenum target, GLint level, GLint xoffset,
                      GLint yoffset, GLint x, GLint y, GLsizei width, GLsizei height) {
   if (rejectInsideBeginEnd(ctx)) return;
-  if (target != nonProxyTarget(dimensions)) return recordError(ctx, GL_INVALID_ENUM);
+  if (!isImageTarget(dimensions, target)) return recordError(ctx, GL_INVALID_ENUM);
   if (level < 0 || level >= kMaxTextureLevels) return recordError(ctx, GL_INVALID_VALUE);
-  TextureObject& texture = *boundTexture(ctx, target);
-  TextureImage& image = texture.levels[level];
+  const ImageTarget named = imageTarget(ctx, target);
+  TextureObject& texture = *named.texture;
+  TextureImage& image = texture.image(named.face, level);
   if (!image.defined()) return recordError(ctx, GL_INVALID_OPERATION);
   if (dimensions == 1) {
     height = 1;
@@ -310,7 +340,7 @@ void copyTexSubImage(Context& ctx, int dimensions, GLenum target, GLint level, G
       storeTexel(image.base, rgba, image.texel(tx, ty));
     }
   }
-  afterBaseLevelChange(texture, level);
+  afterBaseLevelChange(texture, named.face, level);
 }
 
 }  // namespace glass::gl

@@ -16,9 +16,19 @@ namespace glass::gl {
 
 struct Context;
 
-// The texture object bound to GL_TEXTURE_1D or GL_TEXTURE_2D; null for any other target.
+// The texture object of the active unit bound to GL_TEXTURE_1D, GL_TEXTURE_2D or
+// GL_TEXTURE_CUBE_MAP; null for any other target.
 TextureObject* boundTexture(Context& ctx, GLenum target);
 const TextureObject* boundTexture(const Context& ctx, GLenum target);
+
+// The texture and face whose images an image target names: GL_TEXTURE_1D and GL_TEXTURE_2D
+// (face 0), GL_TEXTURE_CUBE_MAP_POSITIVE_X .. NEGATIVE_Z (the cube map's faces 0..5); the
+// texture is null for any other target.
+struct ImageTarget {
+  TextureObject* texture = nullptr;
+  int face = 0;
+};
+ImageTarget imageTarget(Context& ctx, GLenum target);
 
 PixelLayout unpackLayout(const Context& ctx);
 PixelLayout packLayout(const Context& ctx);

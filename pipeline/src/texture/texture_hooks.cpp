@@ -8,6 +8,7 @@
 #include "core/context.h"
 #include "core/state_value.h"
 #include "texture/bump_mapping.h"
+#include "texture/cube_map.h"
 #include "texture/texture_combine.h"
 #include "texture/texture_environment.h"
 #include "texture/texture_lod.h"
@@ -21,6 +22,7 @@ bool setTextureCapability(Context& ctx, GLenum cap, bool enabled) {
   switch (cap) {
     case GL_TEXTURE_1D: u.enabled1D = enabled; return true;
     case GL_TEXTURE_2D: u.enabled2D = enabled; return true;
+    case GL_TEXTURE_CUBE_MAP: u.enabledCube = enabled; return true;
     case GL_TEXTURE_GEN_S:
     case GL_TEXTURE_GEN_T:
     case GL_TEXTURE_GEN_R:
@@ -35,6 +37,7 @@ bool getTextureCapability(const Context& ctx, GLenum cap, bool& enabled) {
   switch (cap) {
     case GL_TEXTURE_1D: enabled = u.enabled1D; return true;
     case GL_TEXTURE_2D: enabled = u.enabled2D; return true;
+    case GL_TEXTURE_CUBE_MAP: enabled = u.enabledCube; return true;
     case GL_TEXTURE_GEN_S:
     case GL_TEXTURE_GEN_T:
     case GL_TEXTURE_GEN_R:
@@ -54,7 +57,9 @@ bool queryTextureState(const Context& ctx, GLenum pname, StateValue& value) {
   switch (pname) {
     case GL_TEXTURE_BINDING_1D: value.setIntegers({double(u.bound1D->name)}); return true;
     case GL_TEXTURE_BINDING_2D: value.setIntegers({double(u.bound2D->name)}); return true;
-    case GL_MAX_TEXTURE_SIZE: value.setIntegers({static_cast<double>(kMaxTextureSize)}); return true;
+    case GL_TEXTURE_BINDING_CUBE_MAP: value.setIntegers({double(u.boundCube->name)}); return true;
+    case GL_MAX_TEXTURE_SIZE:
+    case GL_MAX_CUBE_MAP_TEXTURE_SIZE: value.setIntegers({double(kMaxTextureSize)}); return true;
     case GL_MAX_TEXTURE_LOD_BIAS: value.setFloats(&kMaxTextureLodBias, 1); return true;
     default: return false;
   }
@@ -82,13 +87,14 @@ void unitTexCoords(const Context& ctx, int unit, const float objectPosition[4],
   const TextureUnit& u = ctx.texture.units[unit];
   float coords[4];
   for (int i = 0; i < 4; ++i) coords[i] = ctx.current.texCoord[unit][i];
-  bool anySphereMap = false;
-  for (const TexGenCoordinate& g : u.texGen) anySphereMap |= g.enabled && g.mode == GL_SPHERE_MAP;
-  float sphereMap[2] = {0.0f, 0.0f};
-  if (anySphereMap) sphereMapCoordinates(eyePosition, eyeNormal, &sphereMap[0], &sphereMap[1]);
+  bool anyEyeVectors = false;
+  for (const TexGenCoordinate& g : u.texGen)
+    anyEyeVectors |= g.enabled && isEyeSpaceVectorMode(g.mode);
+  EyeSpaceVectors vectors;
+  if (anyEyeVectors) vectors = eyeSpaceVectors(eyePosition, eyeNormal);
   for (int i = 0; i < 4; ++i) {
     if (u.texGen[i].enabled)
-      coords[i] = generateTexCoordinate(u.texGen[i], i, objectPosition, eyePosition, sphereMap);
+      coords[i] = generateTexCoordinate(u.texGen[i], i, objectPosition, eyePosition, vectors);
   }
   transformVector4(ctx.transform.texture[unit].top(), coords, out);
 }
@@ -144,10 +150,59 @@ const TextureObject* bumpHeightMap(const Context& ctx) {
 
 namespace {
 
+// The unit's bias and the texture's, their sum clamped (OpenGL 1.4, 3.8.8).
+float lodBias(float unitBias, const SamplerParameters& p) {
+  return std::clamp(unitBias + p.lodBias, -kMaxTextureLodBias, kMaxTextureLodBias);
+}
+
+// A cube map's filtered texel (section 3.8.6): the face the fragment's (s, t, r) points at. For
+// the level of detail, the directions at the quad's pixels are projected on that face, and their
+// differences times the face size stand in for the derivatives of u and v.
+void sampleCubeMap(const Context& ctx, const TextureObject& texture, int slot, float unitBias,
+                   const raster::FragmentBatch& batch, const raster::Fragment& f, float texel[4]) {
+  const float* tc = f.varyings + slot;
+  const CubeFaceCoordinates c = cubeFaceCoordinates(tc[0], tc[1], tc[2]);
+  const SamplerParameters& p = texture.params;
+  const bool needLambda = isMipmapFilter(p.minFilter) || p.minFilter != p.magFilter;
+  if (!needLambda || batch.planes == nullptr) {
+    sampleTextureMagnified(texture, c.s, c.t, texel, c.face);
+    return;
+  }
+  const raster::AttributePlanes& planes = *batch.planes;
+  const PixelQuad quad = pixelQuadOf(f.x, f.y, ctx.framebuffer.height());
+  // The direction at a pixel centre: (s/w, t/w, r/w) from the planes; the positive 1/w does not
+  // change the face projection.
+  auto projected = [&](double x, double y, float* s, float* t) {
+    float r[3];
+    for (int k = 0; k < 3; ++k) {
+      const int v = slot + k;
+      r[k] = static_cast<float>(planes.a0[v] + planes.dx[v] * x + planes.dy[v] * y);
+    }
+    cubeFaceProjection(c.face, r[0], r[1], r[2], s, t);
+  };
+  const double left = quad.left + 0.5, top = quad.top + 0.5;
+  float sUL, tUL, sUR, tUR, sLL, tLL;
+  projected(left, top, &sUL, &tUL);
+  projected(left + 1.0, top, &sUR, &tUR);
+  projected(left, top - 1.0, &sLL, &tLL);
+  TexCoordDerivatives d;
+  d.dsdx = sUR - sUL;
+  d.dtdx = tUR - tUL;
+  d.dsdy = sUL - sLL;
+  d.dtdy = tUL - tLL;
+  const TextureImage& base = texture.baseImage();
+  const double rhoSquared = textureScaleFactorSquared(d, base.width, base.height);
+  const float lambda =
+      levelOfDetailFromSquaredScale(rhoSquared, p.minLod, p.maxLod, lodBias(unitBias, p));
+  sampleTexture(texture, c.s, c.t, lambda, texel, c.face);
+}
+
 // The filtered texel of `texture` for a fragment, with the texture coordinates in the fragment's
 // varyings from `slot` and the level-of-detail bias `unitBias` of the unit (spec 3.8.8).
 void sampleUnit(const Context& ctx, const TextureObject& texture, int slot, float unitBias,
                 const raster::FragmentBatch& batch, const raster::Fragment& f, float texel[4]) {
+  if (texture.target == GL_TEXTURE_CUBE_MAP)
+    return sampleCubeMap(ctx, texture, slot, unitBias, batch, f, texel);
   const float* tc = f.varyings + slot;
   const float q = tc[3];
   const float s = tc[0] / q, t = tc[1] / q;
@@ -167,9 +222,8 @@ void sampleUnit(const Context& ctx, const TextureObject& texture, int slot, floa
       quadTexCoordDifferences(*batch.planes, slot, slot + 1, slot + 3, quad, twoD);
   const TextureImage& base = texture.baseImage();
   const double rhoSquared = textureScaleFactorSquared(d, base.width, twoD ? base.height : 0);
-  // OpenGL 1.4, 3.8.8: the unit's and the texture's biases, their sum clamped.
-  const float bias = std::clamp(unitBias + p.lodBias, -kMaxTextureLodBias, kMaxTextureLodBias);
-  const float lambda = levelOfDetailFromSquaredScale(rhoSquared, p.minLod, p.maxLod, bias);
+  const float lambda =
+      levelOfDetailFromSquaredScale(rhoSquared, p.minLod, p.maxLod, lodBias(unitBias, p));
   sampleTexture(texture, s, t, lambda, texel);
 }
 

@@ -18,7 +18,8 @@ namespace {
 void submitTexImage(const TexImageArguments& args, const void* pixels) {
   Context* ctx = currentContext();
   if (ctx == nullptr) return;
-  const bool proxy = args.target == GL_PROXY_TEXTURE_1D || args.target == GL_PROXY_TEXTURE_2D;
+  const bool proxy = args.target == GL_PROXY_TEXTURE_1D || args.target == GL_PROXY_TEXTURE_2D ||
+                     args.target == GL_PROXY_TEXTURE_CUBE_MAP;
   if (proxy || !ctx->lists.isCompiling()) {
     texImage(*ctx, args, pixels, nullptr);
     return;
@@ -54,11 +55,14 @@ void texelToGetRGBA(BaseFormat base, const uint8_t* texel, float rgba[4]) {
 
 void getTexImage(Context& ctx, GLenum target, GLint level, GLenum format, GLenum type, GLvoid* pixels) {
   if (rejectInsideBeginEnd(ctx)) return;
-  const TextureObject* texture = boundTexture(ctx, target);
-  if (texture == nullptr) return recordError(ctx, GL_INVALID_ENUM);
+  // glGetTexImage reads a 1D or 2D texture or a cube map face; GL_TEXTURE_CUBE_MAP itself names
+  // no image (spec 6.1.4).
+  const ImageTarget named = imageTarget(ctx, target);
+  if (named.texture == nullptr || target == GL_TEXTURE_CUBE_MAP)
+    return recordError(ctx, GL_INVALID_ENUM);
   if (level < 0 || level >= kMaxTextureLevels) return recordError(ctx, GL_INVALID_VALUE);
   if (GLenum e = checkTexelFormatAndType(format, type); e != GL_NO_ERROR) return recordError(ctx, e);
-  const TextureImage& image = texture->levels[level];
+  const TextureImage& image = named.texture->image(named.face, level);
   if (!image.defined() || pixels == nullptr) return;
   const PixelLayout layout = packLayout(ctx);
   std::vector<float> row(static_cast<size_t>(image.width) * 4);
@@ -73,9 +77,13 @@ const TextureImage* levelImage(const Context& ctx, GLenum target, GLint level) {
   switch (target) {
     case GL_TEXTURE_1D: return &ctx.texture.unit().bound1D->levels[level];
     case GL_TEXTURE_2D: return &ctx.texture.unit().bound2D->levels[level];
+    case GL_PROXY_TEXTURE_CUBE_MAP: return &ctx.texture.proxyCube[level];
     case GL_PROXY_TEXTURE_1D: return &ctx.texture.proxy1D[level];
     case GL_PROXY_TEXTURE_2D: return &ctx.texture.proxy2D[level];
-    default: return nullptr;
+    default: {
+      const int face = cubeFaceOf(target);
+      return face >= 0 ? &ctx.texture.unit().boundCube->image(face, level) : nullptr;
+    }
   }
 }
 
@@ -92,7 +100,8 @@ bool texLevelParameter(Context& ctx, GLenum target, GLint level, GLenum pname, d
   }
   const TextureImage& image = *levelImage(ctx, target, level);
   const bool defined = image.defined();
-  const int rowBorder = (target == GL_TEXTURE_2D || target == GL_PROXY_TEXTURE_2D) ? image.border : 0;
+  const bool oneD = target == GL_TEXTURE_1D || target == GL_PROXY_TEXTURE_1D;
+  const int rowBorder = oneD ? 0 : image.border;
   switch (pname) {
     // Widths and heights include the border (spec 6.1.3: TEXTURE_WIDTH is w_s).
     case GL_TEXTURE_WIDTH: *value = defined ? image.width + 2 * image.border : 0; return true;

@@ -29,6 +29,14 @@ void TextureObject::updateCompleteness() {
   if (base < 0 || base >= kMaxTextureLevels) return;
   const TextureImage& b = levels[base];
   if (!b.defined()) return;
+  // Spec 3.8.10, "cube complete": the six base images are defined, square, of one size, one
+  // internal format and one border.
+  for (int face = 1; face < faceCount(); ++face) {
+    const TextureImage& f = image(face, base);
+    if (!f.defined() || f.width != b.width || f.height != b.height ||
+        f.internalFormat != b.internalFormat || f.border != b.border)
+      return;
+  }
   borderTexel(*this, sampling.border);
   for (float& c : sampling.border) c *= 255.0f;
   sampling.switchOverPoint = magnificationSwitchOverPoint(params.minFilter, params.magFilter);
@@ -38,14 +46,16 @@ void TextureObject::updateCompleteness() {
   }
   if (params.maxLevel < base) return;
   const int q = std::min(lastMipmapLevel(base, b.width, b.height), params.maxLevel);
-  for (int i = base + 1; i <= q; ++i) {
-    const TextureImage& level = levels[i];
-    const int shift = i - base;
-    const int w = std::max(1, b.width >> shift);
-    const int h = std::max(1, b.height >> shift);
-    if (level.width != w || level.height != h || level.internalFormat != b.internalFormat ||
-        level.border != b.border)
-      return;
+  for (int face = 0; face < faceCount(); ++face) {
+    for (int i = base + 1; i <= q; ++i) {
+      const TextureImage& level = image(face, i);
+      const int shift = i - base;
+      const int w = std::max(1, b.width >> shift);
+      const int h = std::max(1, b.height >> shift);
+      if (level.width != w || level.height != h || level.internalFormat != b.internalFormat ||
+          level.border != b.border)
+        return;
+    }
   }
   lastLevel = q;
   complete = true;

@@ -135,8 +135,9 @@ void sampleLinear(const LevelLookup& l, float s, float t, float out[4]) {
     out[c] = (w00 * t00[c] + w10 * t10[c] + w01 * t01[c] + w11 * t11[c]) * (1.0f / 255.0f);
 }
 
-void sampleLevel(const TextureObject& texture, int level, bool linear, float s, float t, float out[4]) {
-  const LevelLookup l{&texture.levels[level], texture.params.wrapS, texture.params.wrapT,
+void sampleLevel(const TextureObject& texture, int face, int level, bool linear, float s, float t,
+                 float out[4]) {
+  const LevelLookup l{&texture.image(face, level), texture.params.wrapS, texture.params.wrapT,
                       texture.target != GL_TEXTURE_1D, texture.sampling.border};
   if (linear) {
     sampleLinear(l, s, t, out);
@@ -161,32 +162,35 @@ void borderTexel(const TextureObject& texture, float out[4]) {
   }
 }
 
-void sampleTextureMagnified(const TextureObject& texture, float s, float t, float out[4]) {
-  sampleLevel(texture, texture.params.baseLevel, texture.params.magFilter == GL_LINEAR, s, t, out);
+void sampleTextureMagnified(const TextureObject& texture, float s, float t, float out[4],
+                            int face) {
+  sampleLevel(texture, face, texture.params.baseLevel, texture.params.magFilter == GL_LINEAR, s, t,
+              out);
 }
 
-void sampleTexture(const TextureObject& texture, float s, float t, float lambda, float out[4]) {
+void sampleTexture(const TextureObject& texture, float s, float t, float lambda, float out[4],
+                   int face) {
   const SamplerParameters& p = texture.params;
   if (lambda <= texture.sampling.switchOverPoint) {
-    sampleTextureMagnified(texture, s, t, out);
+    sampleTextureMagnified(texture, s, t, out, face);
     return;
   }
   switch (p.minFilter) {
     case GL_NEAREST:
-      sampleLevel(texture, p.baseLevel, false, s, t, out);
+      sampleLevel(texture, face, p.baseLevel, false, s, t, out);
       return;
     case GL_LINEAR:
-      sampleLevel(texture, p.baseLevel, true, s, t, out);
+      sampleLevel(texture, face, p.baseLevel, true, s, t, out);
       return;
     default:
       break;
   }
   const bool linearWithinLevel = p.minFilter == GL_LINEAR_MIPMAP_NEAREST || p.minFilter == GL_LINEAR_MIPMAP_LINEAR;
   const MipmapLevels m = selectMipmapLevels(lambda, p.minFilter, p.baseLevel, texture.lastLevel);
-  sampleLevel(texture, m.level1, linearWithinLevel, s, t, out);
+  sampleLevel(texture, face, m.level1, linearWithinLevel, s, t, out);
   if (m.level2 == m.level1 || m.weight2 == 0.0f) return;
   float second[4];
-  sampleLevel(texture, m.level2, linearWithinLevel, s, t, second);
+  sampleLevel(texture, face, m.level2, linearWithinLevel, s, t, second);
   for (int c = 0; c < 4; ++c) out[c] = (1.0f - m.weight2) * out[c] + m.weight2 * second[c];
 }
 

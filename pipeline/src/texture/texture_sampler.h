@@ -28,11 +28,13 @@ void borderTexel(const TextureObject& texture, float out[4]);
 // Looks up a complete texture at (s, t) (already divided by q; t is ignored for a 1D texture)
 // with level of detail lambda: magnification (the TEXTURE_MAG_FILTER on the base level) when
 // lambda <= c, minification otherwise. Writes the filtered texel (RGBA in [0, 1], in the layout
-// of texture_image.h).
-void sampleTexture(const TextureObject& texture, float s, float t, float lambda, float out[4]);
+// of texture_image.h). For a cube map, (s, t) are on face `face` (cube_map.h).
+void sampleTexture(const TextureObject& texture, float s, float t, float lambda, float out[4],
+                   int face = 0);
 
 // The same lookup with the magnification filter, for primitives without derivatives (points
 // and lines) and for the base level (spec 3.8.9).
-void sampleTextureMagnified(const TextureObject& texture, float s, float t, float out[4]);
+void sampleTextureMagnified(const TextureObject& texture, float s, float t, float out[4],
+                            int face = 0);
 
 }  // namespace glass::gl

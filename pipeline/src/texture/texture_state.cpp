@@ -5,15 +5,20 @@ namespace glass::gl {
 TextureState::TextureState() {
   default1D.target = GL_TEXTURE_1D;
   default2D.target = GL_TEXTURE_2D;
+  defaultCube.target = GL_TEXTURE_CUBE_MAP;
   for (TextureUnit& u : units) {
     u.bound1D = &default1D;
     u.bound2D = &default2D;
+    u.boundCube = &defaultCube;
     setDefaultTexGenPlanes(u.texGen);
   }
 }
 
 const TextureObject* TextureUnit::activeTexture() const {
-  const TextureObject* texture = enabled2D ? bound2D : enabled1D ? bound1D : nullptr;
+  const TextureObject* texture = enabledCube ? boundCube
+                                : enabled2D   ? bound2D
+                                : enabled1D   ? bound1D
+                                              : nullptr;
   return texture != nullptr && texture->complete ? texture : nullptr;
 }
 

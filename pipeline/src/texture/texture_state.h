@@ -23,15 +23,18 @@ namespace glass::gl {
 struct TextureUnit {
   bool enabled1D = false;  // glEnable(GL_TEXTURE_1D)
   bool enabled2D = false;  // glEnable(GL_TEXTURE_2D)
+  bool enabledCube = false;  // glEnable(GL_TEXTURE_CUBE_MAP)
   TextureObject* bound1D = nullptr;  // never null once TextureState is constructed
   TextureObject* bound2D = nullptr;
+  TextureObject* boundCube = nullptr;
   TextureEnvironment env;             // glTexEnv (section 3.8.13)
   TexGenCoordinate texGen[4];         // glTexGen for s, t, r, q (section 2.11.4)
 
-  bool anyTargetEnabled() const { return enabled1D || enabled2D; }
-  // The texture the unit samples: the 2D texture if GL_TEXTURE_2D is enabled, else the 1D
-  // texture if GL_TEXTURE_1D is; null when neither is enabled or the texture of the highest
-  // enabled dimension is incomplete (spec 3.8.15: the unit is then off).
+  bool anyTargetEnabled() const { return enabled1D || enabled2D || enabledCube; }
+  // The texture the unit samples: the cube map if GL_TEXTURE_CUBE_MAP is enabled, else the 2D
+  // texture if GL_TEXTURE_2D is, else the 1D texture if GL_TEXTURE_1D is; null when none is
+  // enabled or the texture of the target that takes precedence is incomplete (spec 3.8.15: the
+  // unit is then off).
   const TextureObject* activeTexture() const;
 };
 
@@ -44,6 +47,7 @@ struct TextureState {
   // the units.
   TextureObject default1D;
   TextureObject default2D;
+  TextureObject defaultCube;
   // Named objects (glBindTexture creates them); pointers stay valid until glDeleteTextures.
   std::unordered_map<GLuint, std::unique_ptr<TextureObject>> objects;
   // Names returned by glGenTextures and not yet bound: in use, but not yet textures (glIsTexture
@@ -54,6 +58,7 @@ struct TextureState {
   // Proxy textures (spec 3.8.11): only the size and format of each level are kept.
   TextureImage proxy1D[kMaxTextureLevels];
   TextureImage proxy2D[kMaxTextureLevels];
+  TextureImage proxyCube[kMaxTextureLevels];
 
   TextureUnit units[kTextureUnitCount];
   int activeUnit = 0;  // glActiveTexture: GL_TEXTURE0 + activeUnit
