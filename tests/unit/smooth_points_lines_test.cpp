@@ -285,3 +285,31 @@ TEST_CASE("glDrawBuffer(GL_NONE) writes no colour; glReadBuffer(GL_NONE) refuses
   glReadPixels(0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
   CHECK(takeError() == GL_NO_ERROR);
 }
+
+TEST_CASE("Smooth points and lines at extreme sizes and positions draw without harm") {
+  ScopedContext context(16, 16);
+  pixelProjection(16, 16);
+  glEnable(GL_POINT_SMOOTH);
+  glEnable(GL_LINE_SMOOTH);
+  glEnable(GL_LINE_STIPPLE);
+  glLineStipple(1, 0x0F0F);
+  glPointSize(1000.0f);  // clamped to 255
+  glLineWidth(1000.0f);
+  glBegin(GL_POINTS);
+  glVertex2f(8.0f, 8.0f);
+  glVertex2f(1e30f, 8.0f);
+  glEnd();
+  CHECK(pixelAt(0, 0) == Rgba{255, 255, 255, 255});
+  glBegin(GL_LINES);
+  glVertex2f(8.0f, 8.0f);
+  glVertex2f(8.0f, 8.0f);  // zero length: nothing
+  glVertex2f(-1e6f, 3.0f);
+  glVertex2f(1e6f, 4.0f);  // clipped to the view volume first
+  glEnd();
+  const GLfloat attenuation[3] = {0.0f, 0.0f, 0.0f};  // 1 / 0: size clamped to the maximum
+  glPointParameterfv(GL_POINT_DISTANCE_ATTENUATION, attenuation);
+  glBegin(GL_POINTS);
+  glVertex2f(8.0f, 8.0f);
+  glEnd();
+  CHECK(takeError() == GL_NO_ERROR);
+}

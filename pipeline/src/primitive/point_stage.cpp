@@ -21,7 +21,9 @@ float DrawPipeline::pointSizeAt(const raster::ClipVertex& v) const {
   float eye[4] = {0.0f, 0.0f, 0.0f, 1.0f};
   if (pointDistanceAttenuated_) transformVector4(projectionInverse_, v.clip, eye);
   const float d = std::sqrt(eye[0] * eye[0] + eye[1] * eye[1] + eye[2] * eye[2]);
-  return std::min(derivedPointSize(r, d), kMaxPointSize);  // GL_ALIASED_POINT_SIZE_RANGE
+  const float size = derivedPointSize(r, d);
+  if (!(size >= 0.0f)) return 0.0f;  // a distance that is not a number: the smallest point
+  return std::min(size, kMaxPointSize);  // GL_ALIASED_POINT_SIZE_RANGE
 }
 
 void DrawPipeline::rasterizeVertexPoint(const raster::ClipVertex& v, double depthBias) {

@@ -62,7 +62,7 @@ void DrawPipeline::rasterizeSmoothDash(const raster::WindowVertex& a,
                                        const raster::WindowVertex& b, double depthBias) {
   SmoothLineShape shape;
   // GL_SMOOTH_LINE_WIDTH_RANGE is GL_LINE_WIDTH_RANGE, 1 to kMaxLineWidth.
-  const float width = std::min(ctx_.raster.lineWidth, kMaxLineWidth);
+  const float width = std::fmin(std::fmax(ctx_.raster.lineWidth, 1.0f), kMaxLineWidth);
   if (!makeSmoothLine(a, b, width, ctx_.framebuffer.height(), vertex_.varyingCount, shape)) return;
   fillShape(shape, triangleSettings_, depthBias, fragments_);
 }
