@@ -1,5 +1,5 @@
 // Antialiased points and lines (GL_POINT_SMOOTH, GL_LINE_SMOOTH), point parameters, the colour sum
-// without lighting, and glDrawBuffer / glReadBuffer(GL_NONE).
+// without lighting, and glDrawBuffer / glReadBuffer(GL_NONE) (drawing, reading, copying, glAccum).
 #include <doctest/doctest.h>
 
 #include <GL/gl.h>
@@ -311,5 +311,28 @@ TEST_CASE("Smooth points and lines at extreme sizes and positions draw without h
   glBegin(GL_POINTS);
   glVertex2f(8.0f, 8.0f);
   glEnd();
+  CHECK(takeError() == GL_NO_ERROR);
+}
+
+TEST_CASE("glAccum: GL_LOAD without a read buffer and GL_RETURN without a draw buffer do nothing") {
+  ScopedContext context(4, 4);
+  glClearAccum(0.0f, 0.0f, 0.0f, 0.0f);
+  glClear(GL_ACCUM_BUFFER_BIT);
+  glClearColor(1.0f, 0.0f, 0.0f, 1.0f);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glReadBuffer(GL_NONE);
+  glAccum(GL_LOAD, 1.0f);  // reads nothing: the accumulation buffer stays 0
+  glReadBuffer(GL_FRONT);
+  glAccum(GL_RETURN, 1.0f);
+  CHECK(pixelAt(1, 1) == Rgba{0, 0, 0, 0});
+  glClearColor(0.0f, 1.0f, 0.0f, 1.0f);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glAccum(GL_LOAD, 1.0f);
+  glClearColor(1.0f, 1.0f, 0.0f, 1.0f);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glDrawBuffer(GL_NONE);
+  glAccum(GL_RETURN, 1.0f);  // writes nothing
+  glDrawBuffer(GL_FRONT);
+  CHECK(pixelAt(1, 1) == Rgba{255, 255, 0, 255});
   CHECK(takeError() == GL_NO_ERROR);
 }
