@@ -1,7 +1,7 @@
 // Commands of OpenGL 1.2 to 1.4 that glass implements by definition through older ones, or
 // accepts with the errors of a feature it lacks: glDrawRangeElements, glMultiDrawArrays,
 // glMultiDrawElements, glLoadTransposeMatrix, glMultTransposeMatrix, the texture unit commands,
-// glSampleCoverage, compressed and 3D textures, and the imaging subset.
+// glSampleCoverage, compressed textures, and the imaging subset.
 #include <doctest/doctest.h>
 
 #include <GL/gl.h>
@@ -205,7 +205,7 @@ TEST_CASE("glSampleCoverage and the multisample enables are state, saved by GL_M
   CHECK(glGetError() == GL_NO_ERROR);
 }
 
-TEST_CASE("Compressed and 3D texture commands fail with the errors of unsupported formats") {
+TEST_CASE("Compressed texture commands fail with the errors of unsupported formats") {
   ScopedContext context;
   const GLubyte data[64] = {};
   CHECK(integerState(GL_NUM_COMPRESSED_TEXTURE_FORMATS) == 0);
@@ -219,12 +219,6 @@ TEST_CASE("Compressed and 3D texture commands fail with the errors of unsupporte
   glGetCompressedTexImage(GL_TEXTURE_2D, -1, out);
   CHECK(glGetError() == GL_INVALID_VALUE);
 
-  glTexImage3D(GL_TEXTURE_3D, 0, GL_RGBA, 1, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, data);
-  CHECK(glGetError() == GL_INVALID_ENUM);
-  glCopyTexSubImage3D(GL_TEXTURE_3D, 0, 0, 0, 0, 0, 0, 1, 1);
-  CHECK(glGetError() == GL_INVALID_ENUM);
-  glEnable(GL_TEXTURE_3D);
-  CHECK(glGetError() == GL_INVALID_ENUM);
 }
 
 TEST_CASE("The imaging subset's commands set GL_INVALID_OPERATION, also from a list") {

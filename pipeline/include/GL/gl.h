@@ -1224,8 +1224,8 @@ GLAPI void GLAPIENTRY glIndexPointer(GLenum type, GLsizei stride, const GLvoid *
 GLAPI void GLAPIENTRY glDrawBuffer(GLenum mode);
 GLAPI void GLAPIENTRY glReadBuffer(GLenum mode);
 
-/* GLASS-SECTION: OpenGL 1.2. 3D textures are not implemented: glTexImage3D, glTexSubImage3D
- * and glCopyTexSubImage3D set GL_INVALID_ENUM. */
+/* GLASS-SECTION: OpenGL 1.2: glDrawRangeElements and 3D textures (glTexImage3D,
+ * glTexSubImage3D, glCopyTexSubImage3D). */
 GLAPI void GLAPIENTRY glDrawRangeElements(GLenum mode, GLuint start, GLuint end, GLsizei count, GLenum type, const GLvoid *indices);
 GLAPI void GLAPIENTRY glTexImage3D(GLenum target, GLint level, GLint internalFormat, GLsizei width, GLsizei height, GLsizei depth, GLint border, GLenum format, GLenum type, const GLvoid *pixels);
 GLAPI void GLAPIENTRY glTexSubImage3D(GLenum target, GLint level, GLint xoffset, GLint yoffset, GLint zoffset, GLsizei width, GLsizei height, GLsizei depth, GLenum format, GLenum type, const GLvoid *pixels);

@@ -44,7 +44,7 @@ constexpr int kEnableCount = sizeof(kEnableCapabilities) / sizeof(kEnableCapabil
 // The texture enables of one unit, which GL_ENABLE_BIT saves for every unit (GL_TEXTURE_1D,
 // GL_TEXTURE_2D, GL_TEXTURE_GEN_S/T/R/Q are per-unit state, spec 3.8.17 and table 6.19).
 struct TextureUnitEnables {
-  bool enabled1D, enabled2D, enabledCube;
+  bool enabled1D, enabled2D, enabled3D, enabledCube;
   bool texGen[4];
 };
 
@@ -52,8 +52,8 @@ struct TextureUnitEnables {
 // objects' parameters, the environment and texture coordinate generation.
 struct TextureUnitAttributes {
   TextureUnitEnables enables;
-  GLuint bound1D, bound2D, boundCube;
-  SamplerParameters params1D, params2D, paramsCube;
+  GLuint bound1D, bound2D, bound3D, boundCube;
+  SamplerParameters params1D, params2D, params3D, paramsCube;
   TextureEnvironment env;
   TexGenCoordinate texGen[4];
 };
@@ -104,6 +104,7 @@ namespace {
 TextureObject* boundObject(TextureState& t, GLenum target, GLuint name) {
   TextureObject* fallback = target == GL_TEXTURE_1D   ? &t.default1D
                             : target == GL_TEXTURE_2D ? &t.default2D
+                            : target == GL_TEXTURE_3D ? &t.default3D
                                                       : &t.defaultCube;
   if (name == 0) return fallback;
   auto found = t.objects.find(name);
@@ -116,6 +117,7 @@ TextureUnitEnables saveTextureEnables(const TextureUnit& u) {
   TextureUnitEnables e{};
   e.enabled1D = u.enabled1D;
   e.enabled2D = u.enabled2D;
+  e.enabled3D = u.enabled3D;
   e.enabledCube = u.enabledCube;
   for (int i = 0; i < 4; ++i) e.texGen[i] = u.texGen[i].enabled;
   return e;
@@ -124,6 +126,7 @@ TextureUnitEnables saveTextureEnables(const TextureUnit& u) {
 void restoreTextureEnables(TextureUnit& u, const TextureUnitEnables& e) {
   u.enabled1D = e.enabled1D;
   u.enabled2D = e.enabled2D;
+  u.enabled3D = e.enabled3D;
   u.enabledCube = e.enabledCube;
   for (int i = 0; i < 4; ++i) u.texGen[i].enabled = e.texGen[i];
 }
@@ -138,6 +141,8 @@ TextureAttributes saveTexture(const TextureState& t) {
     s.bound2D = u.bound2D->name;
     s.params1D = u.bound1D->params;
     s.params2D = u.bound2D->params;
+    s.bound3D = u.bound3D->name;
+    s.params3D = u.bound3D->params;
     s.boundCube = u.boundCube->name;
     s.paramsCube = u.boundCube->params;
     s.env = u.env;
@@ -163,6 +168,11 @@ void restoreTexture(TextureState& t, const TextureAttributes& a) {
     if (u.bound2D->name == s.bound2D) {
       u.bound2D->params = s.params2D;
       u.bound2D->updateCompleteness();
+    }
+    u.bound3D = boundObject(t, GL_TEXTURE_3D, s.bound3D);
+    if (u.bound3D->name == s.bound3D) {
+      u.bound3D->params = s.params3D;
+      u.bound3D->updateCompleteness();
     }
     u.boundCube = boundObject(t, GL_TEXTURE_CUBE_MAP, s.boundCube);
     if (u.boundCube->name == s.boundCube) {

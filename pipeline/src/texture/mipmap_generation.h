@@ -11,7 +11,8 @@
 
 namespace glass::gl {
 
-// One derived image: `source` reduced to max(1, w / 2) x max(1, h / 2) by the box filter above.
+// One derived image: `source` reduced to max(1, w / 2) x max(1, h / 2) (x max(1, d / 2) for a 3D
+// image) by the box filter above.
 // The result has the internal format, base format and border of `source`.
 TextureImage reduceImageByBoxFilter(const TextureImage& source);
 

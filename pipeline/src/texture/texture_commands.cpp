@@ -18,12 +18,15 @@ PixelLayout layoutFrom(const PixelPacking& p) {
   l.skipRows = p.skipRows;
   l.skipPixels = p.skipPixels;
   l.swapBytes = p.swapBytes;
+  l.imageHeight = p.imageHeight;  // 3D images (spec 3.8.1)
+  l.skipImages = p.skipImages;
   return l;
 }
 
 // The images targets of the given dimensionality name: GL_TEXTURE_1D; GL_TEXTURE_2D and the six
 // cube map faces (OpenGL 1.3, section 3.8.1).
 bool isImageTarget(int dimensions, GLenum target) {
+  if (dimensions == 3) return target == GL_TEXTURE_3D;
   return dimensions == 1 ? target == GL_TEXTURE_1D
                          : target == GL_TEXTURE_2D || cubeFaceOf(target) >= 0;
 }
@@ -31,6 +34,7 @@ bool isImageTarget(int dimensions, GLenum target) {
 // The targets glTexImage of the given dimensionality accepts: the images and the proxies.
 bool isTexImageTarget(int dimensions, GLenum target) {
   if (isImageTarget(dimensions, target)) return true;
+  if (dimensions == 3) return target == GL_PROXY_TEXTURE_3D;
   return dimensions == 1 ? target == GL_PROXY_TEXTURE_1D
                          : target == GL_PROXY_TEXTURE_2D || target == GL_PROXY_TEXTURE_CUBE_MAP;
 }
@@ -40,6 +44,7 @@ TextureImage* proxyLevels(Context& ctx, GLenum target) {
   switch (target) {
     case GL_PROXY_TEXTURE_1D: return ctx.texture.proxy1D;
     case GL_PROXY_TEXTURE_2D: return ctx.texture.proxy2D;
+    case GL_PROXY_TEXTURE_3D: return ctx.texture.proxy3D;
     default: return ctx.texture.proxyCube;
   }
 }
@@ -50,34 +55,64 @@ bool isCubeMapTarget(GLenum target) {
 }
 
 // The image size checks common to glTexImage and glCopyTexImage (spec 3.8.1): border 0 or 1,
-// width and height at least twice the border. The size of the image without its border is
-// written to innerWidth/innerHeight (height 1 for 1D images, which have no vertical border).
-GLenum checkImageSize(int dimensions, GLsizei width, GLsizei height, GLint border, int* innerWidth,
-                      int* innerHeight) {
+// width, height and depth at least twice the border. The size of the image without its border
+// is written to innerWidth/innerHeight/innerDepth (height 1 for 1D images, depth 1 for 1D and 2D
+// images, which have no border there).
+GLenum checkImageSize(int dimensions, GLsizei width, GLsizei height, GLsizei depth, GLint border,
+                      int* innerWidth, int* innerHeight, int* innerDepth) {
   if (border != 0 && border != 1) return GL_INVALID_VALUE;
   if (width < 2 * border) return GL_INVALID_VALUE;
-  if (dimensions == 2 && height < 2 * border) return GL_INVALID_VALUE;
+  if (dimensions >= 2 && height < 2 * border) return GL_INVALID_VALUE;
+  if (dimensions == 3 && depth < 2 * border) return GL_INVALID_VALUE;
   *innerWidth = width - 2 * border;
-  *innerHeight = dimensions == 2 ? height - 2 * border : 1;
+  *innerHeight = dimensions >= 2 ? height - 2 * border : 1;
+  *innerDepth = dimensions == 3 ? depth - 2 * border : 1;
   return GL_NO_ERROR;
 }
 
-// Whether glass can hold a level-`level` image of this size (GL_MAX_TEXTURE_SIZE >> level).
-bool fitsLevel(int level, int innerWidth, int innerHeight) {
-  const int max = kMaxTextureSize >> level;
-  return innerWidth <= max && innerHeight <= max;
+// Whether glass can hold a level-`level` image of this size (GL_MAX_TEXTURE_SIZE >> level, or
+// GL_MAX_3D_TEXTURE_SIZE >> level for a 3D image).
+bool fitsLevel(int level, int innerWidth, int innerHeight, int innerDepth = 1,
+               int dimensions = 2) {
+  const int max = (dimensions == 3 ? kMax3DTextureSize : kMaxTextureSize) >> level;
+  return innerWidth <= max && innerHeight <= max && innerDepth <= max;
 }
 
-// Copies the texels inside the border of a full image (width x height texels, border included)
-// into `image`, whose width/height are the inner size.
-void copyInsideBorder(const std::vector<uint8_t>& full, int fullWidth, int border, int dimensions,
-                      TextureImage& image) {
-  const int rowBorder = dimensions == 2 ? border : 0;
+// Unpacks a width x height x depth block of client texels (spec 3.8.1: a 3D image is `depth`
+// 2D images, each GL_UNPACK_IMAGE_HEIGHT rows apart, or `height` when that is 0, after
+// GL_UNPACK_SKIP_IMAGES images). 1D and 2D images are one slice, without the image skip.
+void unpackBlock(const void* pixels, int dimensions, int width, int height, int depth,
+                 GLenum format, GLenum type, const PixelLayout& layout, BaseFormat base,
+                 std::vector<uint8_t>& out) {
+  if (dimensions < 3) {
+    unpackTexels(pixels, width, height, format, type, layout, base, out);
+    return;
+  }
+  const int imageRows = layout.imageHeight > 0 ? layout.imageHeight : height;
+  out.clear();
+  std::vector<uint8_t> slice;
+  for (int k = 0; k < depth; ++k) {
+    PixelLayout sliceLayout = layout;
+    sliceLayout.skipRows = layout.skipRows + (layout.skipImages + k) * imageRows;
+    unpackTexels(pixels, width, height, format, type, sliceLayout, base, slice);
+    out.insert(out.end(), slice.begin(), slice.end());
+  }
+}
+
+// Copies the texels inside the border of a full image (fullWidth x fullHeight x depth texels,
+// border included) into `image`, whose width/height/depth are the inner size.
+void copyInsideBorder(const std::vector<uint8_t>& full, int fullWidth, int fullHeight, int border,
+                      int dimensions, TextureImage& image) {
+  const int rowBorder = dimensions >= 2 ? border : 0;
+  const int sliceBorder = dimensions == 3 ? border : 0;
   const size_t rowBytes = static_cast<size_t>(image.width) * 4;
-  for (int j = 0; j < image.height; ++j) {
-    const size_t from = (static_cast<size_t>(j + rowBorder) * static_cast<size_t>(fullWidth) +
-                         static_cast<size_t>(border)) * 4;
-    std::memcpy(image.texel(0, j), &full[from], rowBytes);
+  for (int k = 0; k < image.depth; ++k) {
+    for (int j = 0; j < image.height; ++j) {
+      const size_t row = static_cast<size_t>(k + sliceBorder) * static_cast<size_t>(fullHeight) +
+                         static_cast<size_t>(j + rowBorder);
+      const size_t from = (row * static_cast<size_t>(fullWidth) + static_cast<size_t>(border)) * 4;
+      std::memcpy(image.texel(0, j, k), &full[from], rowBytes);
+    }
   }
 }
 
@@ -104,6 +139,7 @@ void readFramebufferPixel(const Context& ctx, int x, int y, float rgba[4]) {
 TextureObject* boundTexture(Context& ctx, GLenum target) {
   if (target == GL_TEXTURE_1D) return ctx.texture.unit().bound1D;
   if (target == GL_TEXTURE_2D) return ctx.texture.unit().bound2D;
+  if (target == GL_TEXTURE_3D) return ctx.texture.unit().bound3D;
   if (target == GL_TEXTURE_CUBE_MAP) return ctx.texture.unit().boundCube;
   return nullptr;
 }
@@ -123,17 +159,19 @@ PixelLayout packLayout(const Context& ctx) { return layoutFrom(ctx.pixelStore.pa
 
 UnpackedTexels unpackForDisplayList(const Context& ctx, const TexImageArguments& a, const void* pixels) {
   BaseFormat base;
-  int w, h;
+  int w, h, d;
   if (pixels == nullptr || !isImageTarget(a.dimensions, a.target) ||
       !baseFormatOfInternalFormat(a.internalFormat, &base) ||
-      checkImageSize(a.dimensions, a.width, a.height, a.border, &w, &h) != GL_NO_ERROR ||
-      a.level < 0 || a.level >= kMaxTextureLevels || !fitsLevel(a.level, w, h) ||
+      checkImageSize(a.dimensions, a.width, a.height, a.depth, a.border, &w, &h, &d) !=
+          GL_NO_ERROR ||
+      a.level < 0 || a.level >= kMaxTextureLevels || !fitsLevel(a.level, w, h, d, a.dimensions) ||
       checkTexelFormatAndType(a.format, a.type) != GL_NO_ERROR)
     return nullptr;
   try {
     auto texels = std::make_shared<std::vector<uint8_t>>();
-    unpackTexels(pixels, a.width, a.dimensions == 2 ? a.height : 1, a.format, a.type,
-                 unpackLayout(ctx), base, *texels);
+    unpackBlock(pixels, a.dimensions, a.width, a.dimensions >= 2 ? a.height : 1,
+                a.dimensions == 3 ? a.depth : 1, a.format, a.type, unpackLayout(ctx), base,
+                *texels);
     return texels;
   } catch (const std::bad_alloc&) {
     return nullptr;
@@ -146,8 +184,9 @@ void texImage(Context& ctx, const TexImageArguments& a, const void* pixels, cons
   if (a.level < 0 || a.level >= kMaxTextureLevels) return recordError(ctx, GL_INVALID_VALUE);
   BaseFormat base;
   if (!baseFormatOfInternalFormat(a.internalFormat, &base)) return recordError(ctx, GL_INVALID_VALUE);
-  int w = 0, h = 0;
-  if (GLenum e = checkImageSize(a.dimensions, a.width, a.height, a.border, &w, &h); e != GL_NO_ERROR)
+  int w = 0, h = 0, d = 0;
+  if (GLenum e = checkImageSize(a.dimensions, a.width, a.height, a.depth, a.border, &w, &h, &d);
+      e != GL_NO_ERROR)
     return recordError(ctx, e);
   if (GLenum e = checkTexelFormatAndType(a.format, a.type); e != GL_NO_ERROR) return recordError(ctx, e);
   if (isCubeMapTarget(a.target) && w != h) return recordError(ctx, GL_INVALID_VALUE);
@@ -157,9 +196,10 @@ void texImage(Context& ctx, const TexImageArguments& a, const void* pixels, cons
     // leaves every level parameter zero otherwise; no error either way.
     TextureImage& proxy = proxyLevels(ctx, a.target)[a.level];
     proxy.clear();
-    if (fitsLevel(a.level, w, h)) {
+    if (fitsLevel(a.level, w, h, d, a.dimensions)) {
       proxy.width = w;
       proxy.height = h;
+      proxy.depth = d;
       proxy.border = a.border;
       proxy.internalFormat = a.internalFormat;
       proxy.base = base;
@@ -168,7 +208,7 @@ void texImage(Context& ctx, const TexImageArguments& a, const void* pixels, cons
     }
     return;
   }
-  if (!fitsLevel(a.level, w, h)) return recordError(ctx, GL_INVALID_VALUE);
+  if (!fitsLevel(a.level, w, h, d, a.dimensions)) return recordError(ctx, GL_INVALID_VALUE);
 
   const ImageTarget target = imageTarget(ctx, a.target);
   TextureObject& texture = *target.texture;
@@ -178,20 +218,25 @@ void texImage(Context& ctx, const TexImageArguments& a, const void* pixels, cons
     image.internalFormat = a.internalFormat;
     image.base = base;
     image.border = a.border;
-    if (w > 0 && h > 0) {
+    if (w > 0 && h > 0 && d > 0) {
       image.width = w;
       image.height = h;
-      image.texels.assign(static_cast<size_t>(w) * static_cast<size_t>(h) * 4, 0);
-      const int fullHeight = a.dimensions == 2 ? a.height : 1;
+      image.depth = d;
+      image.texels.assign(
+          static_cast<size_t>(w) * static_cast<size_t>(h) * static_cast<size_t>(d) * 4, 0);
+      const int fullHeight = a.dimensions >= 2 ? a.height : 1;
+      const int fullDepth = a.dimensions == 3 ? a.depth : 1;
       if (unpacked) {
-        copyInsideBorder(*unpacked, a.width, a.border, a.dimensions, image);
+        copyInsideBorder(*unpacked, a.width, fullHeight, a.border, a.dimensions, image);
       } else if (pixels != nullptr) {
         if (a.border == 0) {
-          unpackTexels(pixels, w, h, a.format, a.type, unpackLayout(ctx), base, image.texels);
+          unpackBlock(pixels, a.dimensions, w, h, d, a.format, a.type, unpackLayout(ctx), base,
+                      image.texels);
         } else {
           std::vector<uint8_t> full;
-          unpackTexels(pixels, a.width, fullHeight, a.format, a.type, unpackLayout(ctx), base, full);
-          copyInsideBorder(full, a.width, a.border, a.dimensions, image);
+          unpackBlock(pixels, a.dimensions, a.width, fullHeight, fullDepth, a.format, a.type,
+                      unpackLayout(ctx), base, full);
+          copyInsideBorder(full, a.width, fullHeight, a.border, a.dimensions, image);
         }
       }
     }
@@ -215,8 +260,9 @@ UnpackedTexels unpackForDisplayList(const Context& ctx, const TexSubImageArgumen
   const TextureImage& image = target.texture->image(target.face, a.level);
   try {
     auto texels = std::make_shared<std::vector<uint8_t>>();
-    unpackTexels(pixels, a.width, a.dimensions == 2 ? a.height : 1, a.format, a.type,
-                 unpackLayout(ctx), image.base, *texels);
+    unpackBlock(pixels, a.dimensions, a.width, a.dimensions >= 2 ? a.height : 1,
+                a.dimensions == 3 ? a.depth : 1, a.format, a.type, unpackLayout(ctx), image.base,
+                *texels);
     return texels;
   } catch (const std::bad_alloc&) {
     return nullptr;
@@ -232,30 +278,43 @@ void texSubImage(Context& ctx, const TexSubImageArguments& a, const void* pixels
   TextureObject& texture = *target.texture;
   TextureImage& image = texture.image(target.face, a.level);
   if (!image.defined()) return recordError(ctx, GL_INVALID_OPERATION);
-  const int height = a.dimensions == 2 ? a.height : 1;
-  const int yoffset = a.dimensions == 2 ? a.yoffset : 0;
+  const int height = a.dimensions >= 2 ? a.height : 1;
+  const int yoffset = a.dimensions >= 2 ? a.yoffset : 0;
+  const int depth = a.dimensions == 3 ? a.depth : 1;
+  const int zoffset = a.dimensions == 3 ? a.zoffset : 0;
   const int b = image.border;
-  const int rowBorder = a.dimensions == 2 ? b : 0;
-  // Spec 3.8.2: the rectangle must lie inside the image, border included.
-  if (a.width < 0 || height < 0 || a.xoffset < -b || a.xoffset + a.width > image.width + b ||
-      yoffset < -rowBorder || yoffset + height > image.height + rowBorder)
+  const int rowBorder = a.dimensions >= 2 ? b : 0;
+  const int sliceBorder = a.dimensions == 3 ? b : 0;
+  // Spec 3.8.2: the box must lie inside the image, border included.
+  if (a.width < 0 || height < 0 || depth < 0 || a.xoffset < -b ||
+      a.xoffset + a.width > image.width + b || yoffset < -rowBorder ||
+      yoffset + height > image.height + rowBorder || zoffset < -sliceBorder ||
+      zoffset + depth > image.depth + sliceBorder)
     return recordError(ctx, GL_INVALID_VALUE);
-  if (a.width == 0 || height == 0) return;
+  if (a.width == 0 || height == 0 || depth == 0) return;
   if (!unpacked && pixels == nullptr) return;
   try {
     std::vector<uint8_t> local;
     const std::vector<uint8_t>* texels = unpacked.get();
     if (texels == nullptr) {
-      unpackTexels(pixels, a.width, height, a.format, a.type, unpackLayout(ctx), image.base, local);
+      unpackBlock(pixels, a.dimensions, a.width, height, depth, a.format, a.type,
+                  unpackLayout(ctx), image.base, local);
       texels = &local;
     }
-    for (int j = 0; j < height; ++j) {
-      const int y = yoffset + j;
-      if (y < 0 || y >= image.height) continue;  // a border row: not stored
-      for (int i = 0; i < a.width; ++i) {
-        const int x = a.xoffset + i;
-        if (x < 0 || x >= image.width) continue;
-        std::memcpy(image.texel(x, y), &(*texels)[(static_cast<size_t>(j) * static_cast<size_t>(a.width) + static_cast<size_t>(i)) * 4], 4);
+    for (int k = 0; k < depth; ++k) {
+      const int z = zoffset + k;
+      if (z < 0 || z >= image.depth) continue;  // a border slice: not stored
+      for (int j = 0; j < height; ++j) {
+        const int y = yoffset + j;
+        if (y < 0 || y >= image.height) continue;  // a border row: not stored
+        for (int i = 0; i < a.width; ++i) {
+          const int x = a.xoffset + i;
+          if (x < 0 || x >= image.width) continue;
+          const size_t from = (static_cast<size_t>(k) * static_cast<size_t>(height) +
+                               static_cast<size_t>(j)) * static_cast<size_t>(a.width) +
+                              static_cast<size_t>(i);
+          std::memcpy(image.texel(x, y, z), &(*texels)[from * 4], 4);
+        }
       }
     }
     afterBaseLevelChange(texture, target.face, a.level);
@@ -275,8 +334,8 @@ void copyTexImage(Context& ctx, int dimensions, GLenum target, GLint level, GLen
   if (format >= 1 && format <= 4) return recordError(ctx, GL_INVALID_VALUE);
   if (!baseFormatOfInternalFormat(format, &base)) return recordError(ctx, GL_INVALID_VALUE);
   if (dimensions == 1) height = 1;
-  int w = 0, h = 0;
-  if (GLenum e = checkImageSize(dimensions, width, height, border, &w, &h); e != GL_NO_ERROR)
+  int w = 0, h = 0, d = 0;
+  if (GLenum e = checkImageSize(dimensions, width, height, 1, border, &w, &h, &d); e != GL_NO_ERROR)
     return recordError(ctx, e);
   if (!fitsLevel(level, w, h)) return recordError(ctx, GL_INVALID_VALUE);
   if (isCubeMapTarget(target) && w != h) return recordError(ctx, GL_INVALID_VALUE);
@@ -312,7 +371,8 @@ void copyTexImage(Context& ctx, int dimensions, GLenum target, GLint level, GLen
 }
 
 void copyTexSubImage(Context& ctx, int dimensions, GLenum target, GLint level, GLint xoffset,
-                     GLint yoffset, GLint x, GLint y, GLsizei width, GLsizei height) {
+                     GLint yoffset, GLint x, GLint y, GLsizei width, GLsizei height,
+                     GLint zoffset) {
   if (rejectInsideBeginEnd(ctx)) return;
   if (!isImageTarget(dimensions, target)) return recordError(ctx, GL_INVALID_ENUM);
   if (level < 0 || level >= kMaxTextureLevels) return recordError(ctx, GL_INVALID_VALUE);
@@ -325,10 +385,15 @@ void copyTexSubImage(Context& ctx, int dimensions, GLenum target, GLint level, G
     yoffset = 0;
   }
   const int b = image.border;
-  const int rowBorder = dimensions == 2 ? b : 0;
+  const int rowBorder = dimensions >= 2 ? b : 0;
+  const int sliceBorder = dimensions == 3 ? b : 0;
+  if (dimensions < 3) zoffset = 0;
   if (width < 0 || height < 0 || xoffset < -b || xoffset + width > image.width + b ||
-      yoffset < -rowBorder || yoffset + height > image.height + rowBorder)
+      yoffset < -rowBorder || yoffset + height > image.height + rowBorder ||
+      zoffset < -sliceBorder || zoffset >= image.depth + sliceBorder)
     return recordError(ctx, GL_INVALID_VALUE);
+  // A border slice of a 3D image is not stored.
+  if (zoffset < 0 || zoffset >= image.depth) return;
   for (int j = 0; j < height; ++j) {
     const int ty = yoffset + j;
     if (ty < 0 || ty >= image.height) continue;
@@ -337,7 +402,7 @@ void copyTexSubImage(Context& ctx, int dimensions, GLenum target, GLint level, G
       if (tx < 0 || tx >= image.width) continue;
       float rgba[4];
       readFramebufferPixel(ctx, x + i, y + j, rgba);
-      storeTexel(image.base, rgba, image.texel(tx, ty));
+      storeTexel(image.base, rgba, image.texel(tx, ty, zoffset));
     }
   }
   afterBaseLevelChange(texture, named.face, level);

@@ -22,6 +22,7 @@ bool setTextureCapability(Context& ctx, GLenum cap, bool enabled) {
   switch (cap) {
     case GL_TEXTURE_1D: u.enabled1D = enabled; return true;
     case GL_TEXTURE_2D: u.enabled2D = enabled; return true;
+    case GL_TEXTURE_3D: u.enabled3D = enabled; return true;
     case GL_TEXTURE_CUBE_MAP: u.enabledCube = enabled; return true;
     case GL_TEXTURE_GEN_S:
     case GL_TEXTURE_GEN_T:
@@ -37,6 +38,7 @@ bool getTextureCapability(const Context& ctx, GLenum cap, bool& enabled) {
   switch (cap) {
     case GL_TEXTURE_1D: enabled = u.enabled1D; return true;
     case GL_TEXTURE_2D: enabled = u.enabled2D; return true;
+    case GL_TEXTURE_3D: enabled = u.enabled3D; return true;
     case GL_TEXTURE_CUBE_MAP: enabled = u.enabledCube; return true;
     case GL_TEXTURE_GEN_S:
     case GL_TEXTURE_GEN_T:
@@ -57,7 +59,9 @@ bool queryTextureState(const Context& ctx, GLenum pname, StateValue& value) {
   switch (pname) {
     case GL_TEXTURE_BINDING_1D: value.setIntegers({double(u.bound1D->name)}); return true;
     case GL_TEXTURE_BINDING_2D: value.setIntegers({double(u.bound2D->name)}); return true;
+    case GL_TEXTURE_BINDING_3D: value.setIntegers({double(u.bound3D->name)}); return true;
     case GL_TEXTURE_BINDING_CUBE_MAP: value.setIntegers({double(u.boundCube->name)}); return true;
+    case GL_MAX_3D_TEXTURE_SIZE: value.setIntegers({double(kMax3DTextureSize)}); return true;
     case GL_MAX_TEXTURE_SIZE:
     case GL_MAX_CUBE_MAP_TEXTURE_SIZE: value.setIntegers({double(kMaxTextureSize)}); return true;
     case GL_MAX_TEXTURE_LOD_BIAS: value.setFloats(&kMaxTextureLodBias, 1); return true;
@@ -205,14 +209,15 @@ void sampleUnit(const Context& ctx, const TextureObject& texture, int slot, floa
     return sampleCubeMap(ctx, texture, slot, unitBias, batch, f, texel);
   const float* tc = f.varyings + slot;
   const float q = tc[3];
-  const float s = tc[0] / q, t = tc[1] / q;
-  const bool twoD = texture.target == GL_TEXTURE_2D;
+  const float s = tc[0] / q, t = tc[1] / q, r = tc[2] / q;
+  const bool threeD = texture.target == GL_TEXTURE_3D;
+  const bool twoD = texture.target == GL_TEXTURE_2D || threeD;
   const SamplerParameters& p = texture.params;
   // Lambda only matters when the minification and magnification lookups differ.
   const bool needLambda = isMipmapFilter(p.minFilter) || p.minFilter != p.magFilter;
   if (!needLambda || batch.planes == nullptr) {
     // Points and lines carry no derivatives: the base level, magnified (spec 3.8.9).
-    sampleTextureMagnified(texture, s, t, texel);
+    sampleTextureMagnified(texture, s, t, texel, 0, r);
     return;
   }
   // One lambda per 2x2 pixel quad (texture_lod.h): every fragment of the quad computes the
@@ -221,10 +226,20 @@ void sampleUnit(const Context& ctx, const TextureObject& texture, int slot, floa
   const TexCoordDerivatives d =
       quadTexCoordDifferences(*batch.planes, slot, slot + 1, slot + 3, quad, twoD);
   const TextureImage& base = texture.baseImage();
-  const double rhoSquared = textureScaleFactorSquared(d, base.width, twoD ? base.height : 0);
+  double rhoSquared = textureScaleFactorSquared(d, base.width, twoD ? base.height : 0);
+  if (threeD) {
+    // Equation 3.21 with the w terms: the differences of r/q, times the depth, join u's and v's.
+    const TexCoordDerivatives dr =
+        quadTexCoordDifferences(*batch.planes, slot + 2, slot + 1, slot + 3, quad, false);
+    const double dwdx = dr.dsdx * base.depth, dwdy = dr.dsdy * base.depth;
+    const double u2x = d.dsdx * base.width, v2x = d.dtdx * base.height;
+    const double u2y = d.dsdy * base.width, v2y = d.dtdy * base.height;
+    rhoSquared =
+        std::max(u2x * u2x + v2x * v2x + dwdx * dwdx, u2y * u2y + v2y * v2y + dwdy * dwdy);
+  }
   const float lambda =
       levelOfDetailFromSquaredScale(rhoSquared, p.minLod, p.maxLod, lodBias(unitBias, p));
-  sampleTexture(texture, s, t, lambda, texel);
+  sampleTexture(texture, s, t, lambda, texel, 0, r);
 }
 
 }  // namespace

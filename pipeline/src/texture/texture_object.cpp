@@ -12,8 +12,8 @@ bool isMipmapFilter(GLenum minFilter) {
          minFilter == GL_NEAREST_MIPMAP_LINEAR || minFilter == GL_LINEAR_MIPMAP_LINEAR;
 }
 
-int lastMipmapLevel(int base, int width, int height) {
-  int size = std::max(width, height);
+int lastMipmapLevel(int base, int width, int height, int depth) {
+  int size = std::max({width, height, depth});
   int p = base;
   while (size > 1) {
     size /= 2;
@@ -45,14 +45,16 @@ void TextureObject::updateCompleteness() {
     return;
   }
   if (params.maxLevel < base) return;
-  const int q = std::min(lastMipmapLevel(base, b.width, b.height), params.maxLevel);
+  const int q = std::min(lastMipmapLevel(base, b.width, b.height, b.depth), params.maxLevel);
   for (int face = 0; face < faceCount(); ++face) {
     for (int i = base + 1; i <= q; ++i) {
       const TextureImage& level = image(face, i);
       const int shift = i - base;
       const int w = std::max(1, b.width >> shift);
       const int h = std::max(1, b.height >> shift);
-      if (level.width != w || level.height != h || level.internalFormat != b.internalFormat ||
+      const int d = std::max(1, b.depth >> shift);
+      if (level.width != w || level.height != h || level.depth != d ||
+          level.internalFormat != b.internalFormat ||
           level.border != b.border)
         return;
     }

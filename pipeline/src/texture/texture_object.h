@@ -41,7 +41,7 @@ inline int cubeFaceOf(GLenum target) {
 
 struct TextureObject {
   GLuint name = 0;
-  // GL_TEXTURE_1D, GL_TEXTURE_2D or GL_TEXTURE_CUBE_MAP once the object was first bound; 0
+  // GL_TEXTURE_1D, GL_TEXTURE_2D, GL_TEXTURE_3D or GL_TEXTURE_CUBE_MAP once first bound; 0
   // before (spec 3.8.12: a name becomes a texture of the target it is first bound to).
   GLenum target = 0;
   TextureImage levels[kMaxTextureLevels];  // a 1D or 2D texture's images; face 0 of a cube map
@@ -81,7 +81,7 @@ struct TextureObject {
 };
 
 // The last level index of a full mipmap chain starting at base with a base image of the given
-// size: base + floor(log2(max(width, height))), clamped to the levels glass stores.
-int lastMipmapLevel(int base, int width, int height);
+// size: base + floor(log2(max(width, height, depth))), clamped to the levels glass stores.
+int lastMipmapLevel(int base, int width, int height, int depth = 1);
 
 }  // namespace glass::gl

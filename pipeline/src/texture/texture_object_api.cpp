@@ -23,12 +23,14 @@ void bindTexture(Context& ctx, GLenum target, GLuint name) {
   TextureUnit& u = t.unit();
   TextureObject** binding = target == GL_TEXTURE_1D         ? &u.bound1D
                             : target == GL_TEXTURE_2D       ? &u.bound2D
+                            : target == GL_TEXTURE_3D       ? &u.bound3D
                             : target == GL_TEXTURE_CUBE_MAP ? &u.boundCube
                                                             : nullptr;
   if (binding == nullptr) return recordError(ctx, GL_INVALID_ENUM);
   if (name == 0) {
     *binding = target == GL_TEXTURE_1D   ? &t.default1D
                : target == GL_TEXTURE_2D ? &t.default2D
+               : target == GL_TEXTURE_3D ? &t.default3D
                                          : &t.defaultCube;
     return;
   }
@@ -59,6 +61,7 @@ void deleteTextures(Context& ctx, const std::vector<GLuint>& names) {
     for (TextureUnit& u : t.units) {
       if (u.bound1D == it->second.get()) u.bound1D = &t.default1D;
       if (u.bound2D == it->second.get()) u.bound2D = &t.default2D;
+      if (u.bound3D == it->second.get()) u.bound3D = &t.default3D;
       if (u.boundCube == it->second.get()) u.boundCube = &t.defaultCube;
     }
     t.objects.erase(it);

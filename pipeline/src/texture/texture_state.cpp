@@ -5,10 +5,12 @@ namespace glass::gl {
 TextureState::TextureState() {
   default1D.target = GL_TEXTURE_1D;
   default2D.target = GL_TEXTURE_2D;
+  default3D.target = GL_TEXTURE_3D;
   defaultCube.target = GL_TEXTURE_CUBE_MAP;
   for (TextureUnit& u : units) {
     u.bound1D = &default1D;
     u.bound2D = &default2D;
+    u.bound3D = &default3D;
     u.boundCube = &defaultCube;
     setDefaultTexGenPlanes(u.texGen);
   }
@@ -16,6 +18,7 @@ TextureState::TextureState() {
 
 const TextureObject* TextureUnit::activeTexture() const {
   const TextureObject* texture = enabledCube ? boundCube
+                                : enabled3D   ? bound3D
                                 : enabled2D   ? bound2D
                                 : enabled1D   ? bound1D
                                               : nullptr;

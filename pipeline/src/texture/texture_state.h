@@ -23,16 +23,18 @@ namespace glass::gl {
 struct TextureUnit {
   bool enabled1D = false;  // glEnable(GL_TEXTURE_1D)
   bool enabled2D = false;  // glEnable(GL_TEXTURE_2D)
+  bool enabled3D = false;  // glEnable(GL_TEXTURE_3D)
   bool enabledCube = false;  // glEnable(GL_TEXTURE_CUBE_MAP)
   TextureObject* bound1D = nullptr;  // never null once TextureState is constructed
   TextureObject* bound2D = nullptr;
+  TextureObject* bound3D = nullptr;
   TextureObject* boundCube = nullptr;
   TextureEnvironment env;             // glTexEnv (section 3.8.13)
   TexGenCoordinate texGen[4];         // glTexGen for s, t, r, q (section 2.11.4)
 
-  bool anyTargetEnabled() const { return enabled1D || enabled2D || enabledCube; }
-  // The texture the unit samples: the cube map if GL_TEXTURE_CUBE_MAP is enabled, else the 2D
-  // texture if GL_TEXTURE_2D is, else the 1D texture if GL_TEXTURE_1D is; null when none is
+  bool anyTargetEnabled() const { return enabled1D || enabled2D || enabled3D || enabledCube; }
+  // The texture the unit samples: the cube map if GL_TEXTURE_CUBE_MAP is enabled, else the 3D,
+  // 2D or 1D texture, the first of them whose target is enabled; null when none is
   // enabled or the texture of the target that takes precedence is incomplete (spec 3.8.15: the
   // unit is then off).
   const TextureObject* activeTexture() const;
@@ -47,6 +49,7 @@ struct TextureState {
   // the units.
   TextureObject default1D;
   TextureObject default2D;
+  TextureObject default3D;
   TextureObject defaultCube;
   // Named objects (glBindTexture creates them); pointers stay valid until glDeleteTextures.
   std::unordered_map<GLuint, std::unique_ptr<TextureObject>> objects;
@@ -58,6 +61,7 @@ struct TextureState {
   // Proxy textures (spec 3.8.11): only the size and format of each level are kept.
   TextureImage proxy1D[kMaxTextureLevels];
   TextureImage proxy2D[kMaxTextureLevels];
+  TextureImage proxy3D[kMaxTextureLevels];
   TextureImage proxyCube[kMaxTextureLevels];
 
   TextureUnit units[kTextureUnitCount];
