@@ -281,6 +281,18 @@ TEST_CASE("glDrawBuffer(GL_NONE) writes no colour; glReadBuffer(GL_NONE) refuses
   CHECK(takeError() == GL_INVALID_OPERATION);
   glCopyPixels(0, 0, 2, 2, GL_DEPTH);
   CHECK(takeError() == GL_NO_ERROR);
+  GLuint texture = 0;
+  glGenTextures(1, &texture);
+  glBindTexture(GL_TEXTURE_2D, texture);
+  glCopyTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 0, 0, 2, 2, 0);
+  CHECK(takeError() == GL_INVALID_OPERATION);
+  glReadBuffer(GL_FRONT);
+  glCopyTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 0, 0, 2, 2, 0);
+  CHECK(takeError() == GL_NO_ERROR);
+  glReadBuffer(GL_NONE);
+  glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 0, 0, 1, 1);
+  CHECK(takeError() == GL_INVALID_OPERATION);
+  glDeleteTextures(1, &texture);
   glReadBuffer(GL_FRONT);
   glReadPixels(0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
   CHECK(takeError() == GL_NO_ERROR);

@@ -6,6 +6,7 @@
 
 #include "core/context.h"
 #include "core/errors.h"
+#include "fragment/buffer_selection.h"
 #include "texture/mipmap_generation.h"
 
 namespace glass::gl {
@@ -339,6 +340,8 @@ void copyTexImage(Context& ctx, int dimensions, GLenum target, GLint level, GLen
     return recordError(ctx, e);
   if (!fitsLevel(level, w, h)) return recordError(ctx, GL_INVALID_VALUE);
   if (isCubeMapTarget(target) && w != h) return recordError(ctx, GL_INVALID_VALUE);
+  // No colour buffer to read from after glReadBuffer(GL_NONE), as for glReadPixels (Mesa too).
+  if (!readsColor(ctx.pixelTransfer.readBuffer)) return recordError(ctx, GL_INVALID_OPERATION);
 
   const ImageTarget named = imageTarget(ctx, target);
   TextureObject& texture = *named.texture;
@@ -392,6 +395,7 @@ void copyTexSubImage(Context& ctx, int dimensions, GLenum target, GLint level, G
       yoffset < -rowBorder || yoffset + height > image.height + rowBorder ||
       zoffset < -sliceBorder || zoffset >= image.depth + sliceBorder)
     return recordError(ctx, GL_INVALID_VALUE);
+  if (!readsColor(ctx.pixelTransfer.readBuffer)) return recordError(ctx, GL_INVALID_OPERATION);
   // A border slice of a 3D image is not stored.
   if (zoffset < 0 || zoffset >= image.depth) return;
   for (int j = 0; j < height; ++j) {
