@@ -1,5 +1,6 @@
 #!/bin/sh
-# Renders the reference picture of every scene in scenes/ into reference_images/scenes/<name>.png
+# Renders the reference picture of every scene in scenes/ and tests/scenes/images/ (scenes that
+# test the language rather than show it off) into reference_images/scenes/<name>.png
 # and records in reference_images/README.md how each was made.
 #
 # tests/scenes/tolerances.txt says where each reference comes from: `mesa` scenes use only GL 1.x
@@ -27,7 +28,7 @@ package=$(dpkg-query -W -f='${Version}' libosmesa6 2>/dev/null || echo unknown)
 mkdir -p reference_images/scenes
 rows=$(mktemp)
 trap 'rm -f "$rows"' EXIT
-for scene in scenes/*.scene; do
+for scene in scenes/*.scene tests/scenes/images/*.scene; do
   name=$(basename "$scene" .scene)
   source=$(awk -v n="$name" '$1 == n { print $2 }' tests/scenes/tolerances.txt)
   case "$source" in

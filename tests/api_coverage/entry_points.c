@@ -2,7 +2,7 @@
  * this program fails to link. The lists are those of the OpenGL 1.1-1.3 headers (the 1.1
  * specification's 336 commands, OpenGL 1.2 with the imaging subset, OpenGL 1.3 and
  * GL_ARB_multitexture), OpenGL 1.4 (as <GL/glext.h> declares it), GLU 1.3, and GLUT's geometry
- * (GLUT 3.7 and freeglut's additions). The README says which of them glass implements fully and
+ * and fonts (GLUT 3.7 and freeglut's additions). The README says which of them glass implements fully and
  * what the others do.
  *
  * The program also checks that no address is null and prints the count per list. */
@@ -615,6 +615,19 @@ static const struct Entry entries[] = {
   ENTRY(glutWireRhombicDodecahedron),
   ENTRY(glutSolidSierpinskiSponge),
   ENTRY(glutWireSierpinskiSponge),
+  /* GLUT's fonts, with freeglut's strings and float metrics (12) */
+  ENTRY(glutBitmapCharacter),
+  ENTRY(glutBitmapWidth),
+  ENTRY(glutBitmapLength),
+  ENTRY(glutBitmapHeight),
+  ENTRY(glutBitmapString),
+  ENTRY(glutStrokeCharacter),
+  ENTRY(glutStrokeWidth),
+  ENTRY(glutStrokeWidthf),
+  ENTRY(glutStrokeLength),
+  ENTRY(glutStrokeLengthf),
+  ENTRY(glutStrokeHeight),
+  ENTRY(glutStrokeString),
 };
 
 int main(void)

@@ -161,6 +161,23 @@ TEST_CASE("scene parser: warnings do not stop a scene") {
   CHECK(program.statements.size() == 2);
 }
 
+TEST_CASE("scene parser: a mesh whose vertices (or indices) do not make whole primitives is a warning") {
+  Diagnostics diagnostics;
+  Program program = parseSceneText("m.scene",
+                                    "mesh triangles positions [ 0 0 0  1 0 0 ]\n"
+                                    "mesh quads positions [ 0 0  1 0  1 1  0 1 ] position_size 2 indices [ 0 1 2 3 0 1 ]\n"
+                                    "mesh quads positions [ 0 0  1 0  1 1  0 1 ] position_size 2\n",
+                                    diagnostics);
+  CHECK_FALSE(diagnostics.hasErrors());
+  std::string messages = diagnostics.format();
+  std::size_t warnings = 0;
+  for (std::size_t at = messages.find("warning:"); at != std::string::npos; at = messages.find("warning:", at + 1)) ++warnings;
+  CHECK(warnings == 2);
+  CHECK(messages.find("m.scene:1:1: warning: 'mesh triangles' sends 2 vertices: GL draws 0 triangles and ignores the last 2") != std::string::npos);
+  CHECK(messages.find("m.scene:2:1: warning: 'mesh quads' sends 6 vertices: GL draws 1 quad and ignores the last 2") != std::string::npos);
+  CHECK(program.statements.size() == 3);
+}
+
 TEST_CASE("scene animation: numbers interpolate linearly, rotations by slerp") {
   Diagnostics diagnostics;
   Program program = parseSceneText(

@@ -63,7 +63,7 @@ TEST_CASE("texture errors: objects, images and sub-images") {
   checkErrors({
       {"glGenTextures(-1)", [&] { glGenTextures(-1, names); }, GL_INVALID_VALUE},
       {"glDeleteTextures(-1)", [&] { glDeleteTextures(-1, names); }, GL_INVALID_VALUE},
-      {"glBindTexture(bad target)", [&] { glBindTexture(GL_TEXTURE_3D, names[1]); }, GL_INVALID_ENUM},
+      {"glBindTexture(bad target)", [&] { glBindTexture(GL_PROXY_TEXTURE_2D, names[1]); }, GL_INVALID_ENUM},
       {"glBindTexture(1D name as 2D)", [&] { glBindTexture(GL_TEXTURE_2D, names[0]); }, GL_INVALID_OPERATION},
       {"glTexImage2D(bad target)",
        [] { glTexImage2D(GL_TEXTURE_1D, 0, GL_RGBA, 4, 4, 0, GL_RGBA, GL_UNSIGNED_BYTE, kTexels); },
@@ -120,7 +120,7 @@ TEST_CASE("texture errors: objects, images and sub-images") {
        [] { GLubyte b[64]; glGetTexImage(GL_TEXTURE_2D, -1, GL_RGBA, GL_UNSIGNED_BYTE, b); },
        GL_INVALID_VALUE},
       {"glGetTexLevelParameteriv(bad target)",
-       [] { GLint v; glGetTexLevelParameteriv(GL_TEXTURE_3D, 0, GL_TEXTURE_WIDTH, &v); }, GL_INVALID_ENUM},
+       [] { GLint v; glGetTexLevelParameteriv(GL_TEXTURE_CUBE_MAP, 0, GL_TEXTURE_WIDTH, &v); }, GL_INVALID_ENUM},
       {"glGetTexLevelParameteriv(bad pname)",
        [] { GLint v; glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_MIN_FILTER, &v); }, GL_INVALID_ENUM},
   });
@@ -130,7 +130,7 @@ TEST_CASE("texture errors: parameters, environment, generation, begin/end") {
   ScopedContext context;
   const GLfloat color[4] = {0.5f, 0.5f, 0.5f, 1.0f};
   checkErrors({
-      {"glTexParameteri(bad target)", [] { glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MIN_FILTER, GL_LINEAR); },
+      {"glTexParameteri(bad target)", [] { glTexParameteri(GL_PROXY_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR); },
        GL_INVALID_ENUM},
       {"glTexParameteri(bad pname)", [] { glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_ENV_MODE, GL_LINEAR); },
        GL_INVALID_ENUM},

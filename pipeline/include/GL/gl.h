@@ -722,6 +722,9 @@ typedef double GLclampd;
 #define GL_FRAGMENT_DEPTH                        0x8452
 #define GL_ALIASED_POINT_SIZE_RANGE              0x846D
 #define GL_ALIASED_LINE_WIDTH_RANGE              0x846E
+#define GL_MAX_TEXTURE_LOD_BIAS                  0x84FD
+#define GL_TEXTURE_FILTER_CONTROL                0x8500
+#define GL_TEXTURE_LOD_BIAS                      0x8501
 #define GL_TEXTURE0                              0x84C0
 #define GL_TEXTURE1                              0x84C1
 #define GL_TEXTURE2                              0x84C2
@@ -1221,8 +1224,8 @@ GLAPI void GLAPIENTRY glIndexPointer(GLenum type, GLsizei stride, const GLvoid *
 GLAPI void GLAPIENTRY glDrawBuffer(GLenum mode);
 GLAPI void GLAPIENTRY glReadBuffer(GLenum mode);
 
-/* GLASS-SECTION: OpenGL 1.2. 3D textures are not implemented: glTexImage3D, glTexSubImage3D
- * and glCopyTexSubImage3D set GL_INVALID_ENUM. */
+/* GLASS-SECTION: OpenGL 1.2: glDrawRangeElements and 3D textures (glTexImage3D,
+ * glTexSubImage3D, glCopyTexSubImage3D). */
 GLAPI void GLAPIENTRY glDrawRangeElements(GLenum mode, GLuint start, GLuint end, GLsizei count, GLenum type, const GLvoid *indices);
 GLAPI void GLAPIENTRY glTexImage3D(GLenum target, GLint level, GLint internalFormat, GLsizei width, GLsizei height, GLsizei depth, GLint border, GLenum format, GLenum type, const GLvoid *pixels);
 GLAPI void GLAPIENTRY glTexSubImage3D(GLenum target, GLint level, GLint xoffset, GLint yoffset, GLint zoffset, GLsizei width, GLsizei height, GLsizei depth, GLenum format, GLenum type, const GLvoid *pixels);
@@ -1267,7 +1270,7 @@ GLAPI void GLAPIENTRY glGetConvolutionParameteriv(GLenum target, GLenum pname, G
 GLAPI void GLAPIENTRY glSeparableFilter2D(GLenum target, GLenum internalformat, GLsizei width, GLsizei height, GLenum format, GLenum type, const GLvoid *row, const GLvoid *column);
 GLAPI void GLAPIENTRY glGetSeparableFilter(GLenum target, GLenum format, GLenum type, GLvoid *row, GLvoid *column, GLvoid *span);
 
-/* GLASS-SECTION: OpenGL 1.3. One texture unit (GL_MAX_TEXTURE_UNITS is 1); no compressed
+/* GLASS-SECTION: OpenGL 1.3. Eight texture units (GL_MAX_TEXTURE_UNITS is 8); no compressed
  * formats (glCompressedTexImage* set GL_INVALID_ENUM); no multisample buffer. */
 GLAPI void GLAPIENTRY glActiveTexture(GLenum texture);
 GLAPI void GLAPIENTRY glClientActiveTexture(GLenum texture);

@@ -5,6 +5,7 @@
 #include <new>
 
 #include "core/context.h"
+#include "fragment/buffer_selection.h"
 #include "core/state_value.h"
 
 namespace glass::gl {
@@ -72,6 +73,11 @@ void accumulate(Context& ctx, GLenum op, float value) {
   if (ctx.renderMode.mode != GL_RENDER) return;
   if ((op == GL_ACCUM || op == GL_ADD) && value == 0.0f) return;
   if (op == GL_MULT && value == 1.0f) return;
+  // GL_LOAD and GL_ACCUM read the read buffer and GL_RETURN writes the draw buffers (spec 4.2.4):
+  // after glReadBuffer(GL_NONE) or glDrawBuffer(GL_NONE) there is none, and they do nothing, as
+  // in Mesa.
+  if ((op == GL_LOAD || op == GL_ACCUM) && !readsColor(ctx.pixelTransfer.readBuffer)) return;
+  if (op == GL_RETURN && !drawsColor(ctx.fragment.drawBuffer)) return;
   int16_t* buffer = accumulationBuffer(ctx);
   if (!buffer) return recordError(ctx, GL_OUT_OF_MEMORY);
 

@@ -24,7 +24,7 @@ ClientArray* clientArray(Context& ctx, GLenum array) {
     case GL_VERTEX_ARRAY: return &ctx.arrays.vertex;
     case GL_COLOR_ARRAY: return &ctx.arrays.color;
     case GL_NORMAL_ARRAY: return &ctx.arrays.normal;
-    case GL_TEXTURE_COORD_ARRAY: return &ctx.arrays.texCoord;
+    case GL_TEXTURE_COORD_ARRAY: return &ctx.arrays.texCoord[ctx.arrays.clientActiveUnit];
     case GL_EDGE_FLAG_ARRAY: return &ctx.arrays.edgeFlag;
     case GL_INDEX_ARRAY: return &ctx.arrays.index;  // accepted, never drawn (core/color_index.h)
     case GL_FOG_COORDINATE_ARRAY: return &ctx.arrays.fogCoord;
@@ -120,7 +120,9 @@ void glGetPointerv(GLenum pname, GLvoid** params) {
       case GL_VERTEX_ARRAY_POINTER: a = &ctx.arrays.vertex; break;
       case GL_COLOR_ARRAY_POINTER: a = &ctx.arrays.color; break;
       case GL_NORMAL_ARRAY_POINTER: a = &ctx.arrays.normal; break;
-      case GL_TEXTURE_COORD_ARRAY_POINTER: a = &ctx.arrays.texCoord; break;
+      case GL_TEXTURE_COORD_ARRAY_POINTER:
+        a = &ctx.arrays.texCoord[ctx.arrays.clientActiveUnit];
+        break;
       case GL_EDGE_FLAG_ARRAY_POINTER: a = &ctx.arrays.edgeFlag; break;
       case GL_INDEX_ARRAY_POINTER: a = &ctx.arrays.index; break;
       case GL_FOG_COORDINATE_ARRAY_POINTER: a = &ctx.arrays.fogCoord; break;

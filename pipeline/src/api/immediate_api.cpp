@@ -60,7 +60,9 @@ void normalv(const T* v) {
 
 // glTexCoord1/2/3 leave t = 0, r = 0, q = 1 (spec 2.7).
 void texCoord(float s, float t, float r, float q) {
-  compileOrExecute([=](Context& ctx) { glass::gl::texCoordCommand(ctx, s, t, r, q); });
+  // glTexCoord is glMultiTexCoord for GL_TEXTURE0 (spec 2.7).
+  const float coords[4] = {s, t, r, q};
+  compileOrExecute([=](Context& ctx) { glass::gl::texCoordCommand(ctx, 0, coords); });
 }
 template <class T>
 void texCoordv(const T* v, int n) {

@@ -17,12 +17,17 @@ using glass::gl::rejectInsideBeginEnd;
 
 namespace {
 
+// The stack glMatrixMode selects; GL_TEXTURE's is the active texture unit's (spec 2.11.2).
+glass::gl::MatrixStack& currentMatrixStack(Context& ctx) {
+  return ctx.transform.currentStack(ctx.texture.activeUnit);
+}
+
 // Every matrix command is compiled into display lists and is not allowed inside glBegin/glEnd.
 template <class Update>
 void matrixCommand(Update update) {
   compileOrExecute([=](Context& ctx) {
     if (rejectInsideBeginEnd(ctx)) return;
-    update(ctx, ctx.transform.currentStack().top());
+    update(ctx, currentMatrixStack(ctx).top());
   });
 }
 
@@ -50,7 +55,7 @@ void ortho(double l, double r, double b, double t, double n, double f) {
   compileOrExecute([=](Context& ctx) {
     if (rejectInsideBeginEnd(ctx)) return;
     if (l == r || b == t || n == f) return recordError(ctx, GL_INVALID_VALUE);
-    Matrix4& top = ctx.transform.currentStack().top();
+    Matrix4& top = currentMatrixStack(ctx).top();
     top = glass::gl::multiply(top, glass::gl::orthoMatrix(l, r, b, t, n, f));
   });
 }
@@ -61,7 +66,7 @@ void frustum(double l, double r, double b, double t, double n, double f) {
     if (n <= 0.0 || f <= 0.0 || l == r || b == t || n == f) {
       return recordError(ctx, GL_INVALID_VALUE);
     }
-    Matrix4& top = ctx.transform.currentStack().top();
+    Matrix4& top = currentMatrixStack(ctx).top();
     top = glass::gl::multiply(top, glass::gl::frustumMatrix(l, r, b, t, n, f));
   });
 }
@@ -107,14 +112,14 @@ void glMultMatrixd(const GLdouble* m) {
 void glPushMatrix(void) {
   compileOrExecute([](Context& ctx) {
     if (rejectInsideBeginEnd(ctx)) return;
-    if (!ctx.transform.currentStack().push()) recordError(ctx, GL_STACK_OVERFLOW);
+    if (!currentMatrixStack(ctx).push()) recordError(ctx, GL_STACK_OVERFLOW);
   });
 }
 
 void glPopMatrix(void) {
   compileOrExecute([](Context& ctx) {
     if (rejectInsideBeginEnd(ctx)) return;
-    if (!ctx.transform.currentStack().pop()) recordError(ctx, GL_STACK_UNDERFLOW);
+    if (!currentMatrixStack(ctx).pop()) recordError(ctx, GL_STACK_UNDERFLOW);
   });
 }
 

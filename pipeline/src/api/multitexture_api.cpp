@@ -1,6 +1,6 @@
-// OpenGL 1.3 multitexture commands (spec 2.7, 2.8) and their GL_ARB_multitexture names, on
-// glass's single texture unit (texture/texture_units.h): glActiveTexture, glClientActiveTexture
-// and glMultiTexCoord in all its forms.
+// OpenGL 1.3 multitexture commands (spec 2.7, 2.8) and their GL_ARB_multitexture names
+// (texture/texture_units.h): glActiveTexture, glClientActiveTexture and glMultiTexCoord in all
+// its forms.
 #include <GL/gl.h>
 
 #include "core/context.h"
@@ -17,7 +17,10 @@ namespace {
 // glTexCoord's conversion: plain numbers; t = 0, r = 0, q = 1 where not given (spec 2.7).
 void multiTexCoord(GLenum unit, float s, float t, float r, float q) {
   if (!isTextureUnit(unit)) return;
-  glass::gl::compileOrExecute([=](Context& ctx) { glass::gl::texCoordCommand(ctx, s, t, r, q); });
+  const float coords[4] = {s, t, r, q};
+  const int index = static_cast<int>(unit - GL_TEXTURE0);
+  glass::gl::compileOrExecute(
+      [=](Context& ctx) { glass::gl::texCoordCommand(ctx, index, coords); });
 }
 
 template <class T>
@@ -35,14 +38,16 @@ extern "C" {
 void glActiveTexture(GLenum texture) {
   glass::gl::compileOrExecute([=](Context& ctx) {
     if (glass::gl::rejectInsideBeginEnd(ctx)) return;
-    if (!isTextureUnit(texture)) recordError(ctx, GL_INVALID_ENUM);
+    if (!isTextureUnit(texture)) return recordError(ctx, GL_INVALID_ENUM);
+    ctx.texture.activeUnit = static_cast<int>(texture - GL_TEXTURE0);
   });
 }
 
 void glClientActiveTexture(GLenum texture) {
   glass::gl::executeNow([=](Context& ctx) {
     if (glass::gl::rejectInsideBeginEnd(ctx)) return;
-    if (!isTextureUnit(texture)) recordError(ctx, GL_INVALID_ENUM);
+    if (!isTextureUnit(texture)) return recordError(ctx, GL_INVALID_ENUM);
+    ctx.arrays.clientActiveUnit = static_cast<int>(texture - GL_TEXTURE0);
   });
 }
 

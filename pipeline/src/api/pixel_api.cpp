@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/context.h"
+#include "fragment/buffer_selection.h"
 #include "fragment/read_pixels.h"
 #include "lists/command_recording.h"
 
@@ -60,6 +61,11 @@ void glReadPixels(GLint x, GLint y, GLsizei width, GLsizei height, GLenum format
     if (width < 0 || height < 0) return recordError(ctx, GL_INVALID_VALUE);
     if (const GLenum error = glass::gl::checkReadPixelsFormatAndType(format, type); error != GL_NO_ERROR) {
       return recordError(ctx, error);
+    }
+    // Colour formats need a colour read buffer: none after glReadBuffer(GL_NONE).
+    if (format != GL_DEPTH_COMPONENT && format != GL_STENCIL_INDEX &&
+        !glass::gl::readsColor(ctx.pixelTransfer.readBuffer)) {
+      return recordError(ctx, GL_INVALID_OPERATION);
     }
     if (!pixels) return;
     glass::gl::readPixels(ctx, x, y, width, height, format, type, pixels);

@@ -36,21 +36,32 @@ constexpr GLenum kEnableCapabilities[] = {
     GL_MAP2_NORMAL, GL_MAP2_TEXTURE_COORD_1, GL_MAP2_TEXTURE_COORD_2, GL_MAP2_TEXTURE_COORD_3,
     GL_MAP2_TEXTURE_COORD_4, GL_MAP2_VERTEX_3, GL_MAP2_VERTEX_4, GL_NORMALIZE, GL_POINT_SMOOTH,
     GL_POLYGON_OFFSET_FILL, GL_POLYGON_OFFSET_LINE, GL_POLYGON_OFFSET_POINT, GL_POLYGON_SMOOTH,
-    GL_POLYGON_STIPPLE, GL_RESCALE_NORMAL, GL_SCISSOR_TEST, GL_STENCIL_TEST, GL_TEXTURE_1D,
-    GL_TEXTURE_2D, GL_TEXTURE_GEN_S, GL_TEXTURE_GEN_T, GL_TEXTURE_GEN_R, GL_TEXTURE_GEN_Q,
+    GL_POLYGON_STIPPLE, GL_RESCALE_NORMAL, GL_SCISSOR_TEST, GL_STENCIL_TEST,
     GL_MULTISAMPLE, GL_SAMPLE_ALPHA_TO_COVERAGE, GL_SAMPLE_ALPHA_TO_ONE, GL_SAMPLE_COVERAGE,
     GL_COLOR_SUM};
 constexpr int kEnableCount = sizeof(kEnableCapabilities) / sizeof(kEnableCapabilities[0]);
 
-// The texture state GL_TEXTURE_BIT saves: enables, bindings (by name), the bound objects'
-// parameters, the environment and texture coordinate generation.
-struct TextureAttributes {
-  bool enabled1D, enabled2D;
-  GLuint bound1D, bound2D;
-  SamplerParameters params1D, params2D;
-  GLenum envMode;
-  float envColor[4];
+// The texture enables of one unit, which GL_ENABLE_BIT saves for every unit (GL_TEXTURE_1D,
+// GL_TEXTURE_2D, GL_TEXTURE_GEN_S/T/R/Q are per-unit state, spec 3.8.17 and table 6.19).
+struct TextureUnitEnables {
+  bool enabled1D, enabled2D, enabled3D, enabledCube;
+  bool texGen[4];
+};
+
+// The texture state GL_TEXTURE_BIT saves for one unit: enables, bindings (by name), the bound
+// objects' parameters, the environment and texture coordinate generation.
+struct TextureUnitAttributes {
+  TextureUnitEnables enables;
+  GLuint bound1D, bound2D, bound3D, boundCube;
+  SamplerParameters params1D, params2D, params3D, paramsCube;
+  TextureEnvironment env;
   TexGenCoordinate texGen[4];
+};
+
+// GL_TEXTURE_BIT: every unit, the active unit and the bump-mapping parameters.
+struct TextureAttributes {
+  TextureUnitAttributes units[kTextureUnitCount];
+  int activeUnit;
   BumpMapState bumpMap;
 };
 
@@ -79,6 +90,7 @@ struct AttribEntry {
   float accumulationClear[4] = {};     // GL_ACCUM_BUFFER_BIT
   bool enableKnown[kEnableCount] = {};
   bool enabled[kEnableCount] = {};
+  TextureUnitEnables textureEnables[kTextureUnitCount] = {};  // GL_ENABLE_BIT
 };
 
 struct ClientAttribEntry {
@@ -90,7 +102,10 @@ struct ClientAttribEntry {
 namespace {
 
 TextureObject* boundObject(TextureState& t, GLenum target, GLuint name) {
-  TextureObject* fallback = target == GL_TEXTURE_1D ? &t.default1D : &t.default2D;
+  TextureObject* fallback = target == GL_TEXTURE_1D   ? &t.default1D
+                            : target == GL_TEXTURE_2D ? &t.default2D
+                            : target == GL_TEXTURE_3D ? &t.default3D
+                                                      : &t.defaultCube;
   if (name == 0) return fallback;
   auto found = t.objects.find(name);
   // A texture deleted since the push is no longer there: the binding falls back to the default.
@@ -98,37 +113,75 @@ TextureObject* boundObject(TextureState& t, GLenum target, GLuint name) {
   return found->second.get();
 }
 
+TextureUnitEnables saveTextureEnables(const TextureUnit& u) {
+  TextureUnitEnables e{};
+  e.enabled1D = u.enabled1D;
+  e.enabled2D = u.enabled2D;
+  e.enabled3D = u.enabled3D;
+  e.enabledCube = u.enabledCube;
+  for (int i = 0; i < 4; ++i) e.texGen[i] = u.texGen[i].enabled;
+  return e;
+}
+
+void restoreTextureEnables(TextureUnit& u, const TextureUnitEnables& e) {
+  u.enabled1D = e.enabled1D;
+  u.enabled2D = e.enabled2D;
+  u.enabled3D = e.enabled3D;
+  u.enabledCube = e.enabledCube;
+  for (int i = 0; i < 4; ++i) u.texGen[i].enabled = e.texGen[i];
+}
+
 TextureAttributes saveTexture(const TextureState& t) {
   TextureAttributes a{};
-  a.enabled1D = t.enabled1D;
-  a.enabled2D = t.enabled2D;
-  a.bound1D = t.bound1D->name;
-  a.bound2D = t.bound2D->name;
-  a.params1D = t.bound1D->params;
-  a.params2D = t.bound2D->params;
-  a.envMode = t.envMode;
-  std::memcpy(a.envColor, t.envColor, sizeof a.envColor);
-  for (int i = 0; i < 4; ++i) a.texGen[i] = t.texGen[i];
+  for (int n = 0; n < kTextureUnitCount; ++n) {
+    const TextureUnit& u = t.units[n];
+    TextureUnitAttributes& s = a.units[n];
+    s.enables = saveTextureEnables(u);
+    s.bound1D = u.bound1D->name;
+    s.bound2D = u.bound2D->name;
+    s.params1D = u.bound1D->params;
+    s.params2D = u.bound2D->params;
+    s.bound3D = u.bound3D->name;
+    s.params3D = u.bound3D->params;
+    s.boundCube = u.boundCube->name;
+    s.paramsCube = u.boundCube->params;
+    s.env = u.env;
+    for (int i = 0; i < 4; ++i) s.texGen[i] = u.texGen[i];
+  }
+  a.activeUnit = t.activeUnit;
   a.bumpMap = t.bumpMap;
   return a;
 }
 
 void restoreTexture(TextureState& t, const TextureAttributes& a) {
-  t.enabled1D = a.enabled1D;
-  t.enabled2D = a.enabled2D;
-  t.bound1D = boundObject(t, GL_TEXTURE_1D, a.bound1D);
-  t.bound2D = boundObject(t, GL_TEXTURE_2D, a.bound2D);
-  if (t.bound1D->name == a.bound1D) {
-    t.bound1D->params = a.params1D;
-    t.bound1D->updateCompleteness();
+  for (int n = 0; n < kTextureUnitCount; ++n) {
+    TextureUnit& u = t.units[n];
+    const TextureUnitAttributes& s = a.units[n];
+    for (int i = 0; i < 4; ++i) u.texGen[i] = s.texGen[i];
+    restoreTextureEnables(u, s.enables);
+    u.bound1D = boundObject(t, GL_TEXTURE_1D, s.bound1D);
+    u.bound2D = boundObject(t, GL_TEXTURE_2D, s.bound2D);
+    if (u.bound1D->name == s.bound1D) {
+      u.bound1D->params = s.params1D;
+      u.bound1D->updateCompleteness();
+    }
+    if (u.bound2D->name == s.bound2D) {
+      u.bound2D->params = s.params2D;
+      u.bound2D->updateCompleteness();
+    }
+    u.bound3D = boundObject(t, GL_TEXTURE_3D, s.bound3D);
+    if (u.bound3D->name == s.bound3D) {
+      u.bound3D->params = s.params3D;
+      u.bound3D->updateCompleteness();
+    }
+    u.boundCube = boundObject(t, GL_TEXTURE_CUBE_MAP, s.boundCube);
+    if (u.boundCube->name == s.boundCube) {
+      u.boundCube->params = s.paramsCube;
+      u.boundCube->updateCompleteness();
+    }
+    u.env = s.env;
   }
-  if (t.bound2D->name == a.bound2D) {
-    t.bound2D->params = a.params2D;
-    t.bound2D->updateCompleteness();
-  }
-  t.envMode = a.envMode;
-  std::memcpy(t.envColor, a.envColor, sizeof a.envColor);
-  for (int i = 0; i < 4; ++i) t.texGen[i] = a.texGen[i];
+  t.activeUnit = a.activeUnit;
   t.bumpMap = a.bumpMap;
 }
 
@@ -179,6 +232,8 @@ std::shared_ptr<const AttribEntry> saveAttributes(const Context& ctx, GLbitfield
       e->enableKnown[i] = getCapability(ctx, kEnableCapabilities[i], on);
       e->enabled[i] = on;
     }
+    for (int n = 0; n < kTextureUnitCount; ++n)
+      e->textureEnables[n] = saveTextureEnables(ctx.texture.units[n]);
   }
   return e;
 }
@@ -191,6 +246,8 @@ void restoreAttributes(Context& ctx, const AttribEntry& e) {
     for (int i = 0; i < kEnableCount; ++i) {
       if (e.enableKnown[i]) setCapability(ctx, kEnableCapabilities[i], e.enabled[i]);
     }
+    for (int n = 0; n < kTextureUnitCount; ++n)
+      restoreTextureEnables(ctx.texture.units[n], e.textureEnables[n]);
   }
   if (mask & GL_CURRENT_BIT) {
     ctx.current = e.current;

@@ -49,7 +49,7 @@ const ClientArray* clientArray(const Context& ctx, GLenum cap) {
     case GL_VERTEX_ARRAY: return &a.vertex;
     case GL_COLOR_ARRAY: return &a.color;
     case GL_NORMAL_ARRAY: return &a.normal;
-    case GL_TEXTURE_COORD_ARRAY: return &a.texCoord;
+    case GL_TEXTURE_COORD_ARRAY: return &a.texCoord[a.clientActiveUnit];
     case GL_EDGE_FLAG_ARRAY: return &a.edgeFlag;
     case GL_INDEX_ARRAY: return &a.index;
     case GL_FOG_COORDINATE_ARRAY: return &a.fogCoord;

@@ -67,22 +67,24 @@ bool queryCoreState(const Context& ctx, GLenum pname, StateValue& v) {
   const DisplayListState& lists = ctx.lists;
   const ArrayState& arrays = ctx.arrays;
   const PixelStoreState& pixels = ctx.pixelStore;
+  // The texture matrix and current coordinates of the active unit (spec 2.7, 2.11.2).
+  const MatrixStack& textureStack = t.texture[ctx.texture.activeUnit];
 
   switch (pname) {
     // Transformation (table 6.7, 6.8)
     case GL_MATRIX_MODE: v.setIntegers({double(t.matrixMode)}); return true;
     case GL_MODELVIEW_MATRIX: setMatrix(v, t.modelview.top()); return true;
     case GL_PROJECTION_MATRIX: setMatrix(v, t.projection.top()); return true;
-    case GL_TEXTURE_MATRIX: setMatrix(v, t.texture.top()); return true;
+    case GL_TEXTURE_MATRIX: setMatrix(v, textureStack.top()); return true;
     case GL_TRANSPOSE_MODELVIEW_MATRIX: setTransposedMatrix(v, t.modelview.top()); return true;
     case GL_TRANSPOSE_PROJECTION_MATRIX: setTransposedMatrix(v, t.projection.top()); return true;
-    case GL_TRANSPOSE_TEXTURE_MATRIX: setTransposedMatrix(v, t.texture.top()); return true;
+    case GL_TRANSPOSE_TEXTURE_MATRIX: setTransposedMatrix(v, textureStack.top()); return true;
     case GL_MODELVIEW_STACK_DEPTH: v.setIntegers({double(t.modelview.depth())}); return true;
     case GL_PROJECTION_STACK_DEPTH: v.setIntegers({double(t.projection.depth())}); return true;
-    case GL_TEXTURE_STACK_DEPTH: v.setIntegers({double(t.texture.depth())}); return true;
+    case GL_TEXTURE_STACK_DEPTH: v.setIntegers({double(textureStack.depth())}); return true;
     case GL_MAX_MODELVIEW_STACK_DEPTH: v.setIntegers({double(t.modelview.maxDepth())}); return true;
     case GL_MAX_PROJECTION_STACK_DEPTH: v.setIntegers({double(t.projection.maxDepth())}); return true;
-    case GL_MAX_TEXTURE_STACK_DEPTH: v.setIntegers({double(t.texture.maxDepth())}); return true;
+    case GL_MAX_TEXTURE_STACK_DEPTH: v.setIntegers({double(textureStack.maxDepth())}); return true;
     case GL_VIEWPORT:
       v.setIntegers({double(t.viewport.x), double(t.viewport.y), double(t.viewport.width),
                      double(t.viewport.height)});
@@ -94,7 +96,9 @@ bool queryCoreState(const Context& ctx, GLenum pname, StateValue& v) {
     // Current values (table 6.5)
     case GL_CURRENT_COLOR: v.setColors(cur.color, 4); return true;
     case GL_CURRENT_NORMAL: v.setColors(cur.normal, 3); return true;
-    case GL_CURRENT_TEXTURE_COORDS: v.setFloats(cur.texCoord, 4); return true;
+    case GL_CURRENT_TEXTURE_COORDS:
+      v.setFloats(cur.texCoord[ctx.texture.activeUnit], 4);
+      return true;
     case GL_EDGE_FLAG: v.setBooleans({cur.edgeFlag}); return true;
 
     // Rasterization (tables 6.12, 6.13)
@@ -191,8 +195,9 @@ bool queryCoreState(const Context& ctx, GLenum pname, StateValue& v) {
          queryArrayState(arrays.color, pname, GL_COLOR_ARRAY_SIZE, GL_COLOR_ARRAY_TYPE,
                          GL_COLOR_ARRAY_STRIDE, v) ||
          queryArrayState(arrays.normal, pname, 0, GL_NORMAL_ARRAY_TYPE, GL_NORMAL_ARRAY_STRIDE, v) ||
-         queryArrayState(arrays.texCoord, pname, GL_TEXTURE_COORD_ARRAY_SIZE,
-                         GL_TEXTURE_COORD_ARRAY_TYPE, GL_TEXTURE_COORD_ARRAY_STRIDE, v) ||
+         queryArrayState(arrays.texCoord[arrays.clientActiveUnit], pname,
+                         GL_TEXTURE_COORD_ARRAY_SIZE, GL_TEXTURE_COORD_ARRAY_TYPE,
+                         GL_TEXTURE_COORD_ARRAY_STRIDE, v) ||
          queryArrayState(arrays.edgeFlag, pname, 0, 0, GL_EDGE_FLAG_ARRAY_STRIDE, v) ||
          queryPixelStore(pixels.pack, pname, GL_PACK_SWAP_BYTES, v) ||
          queryPixelStore(pixels.unpack, pname, GL_UNPACK_SWAP_BYTES, v);

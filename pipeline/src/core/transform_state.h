@@ -6,6 +6,7 @@
 
 #include "core/matrix_stack.h"
 #include "glass/raster/vertex.h"
+#include "texture/texture_units.h"
 
 namespace glass::gl {
 
@@ -24,7 +25,12 @@ struct TransformState {
   GLenum matrixMode = GL_MODELVIEW;
   MatrixStack modelview{kModelviewStackDepth};
   MatrixStack projection{kProjectionStackDepth};
-  MatrixStack texture{kTextureStackDepth};
+  // One texture matrix stack per texture unit (spec 2.11.2); GL_ACTIVE_TEXTURE selects one.
+  MatrixStack texture[kTextureUnitCount] = {
+      MatrixStack{kTextureStackDepth}, MatrixStack{kTextureStackDepth},
+      MatrixStack{kTextureStackDepth}, MatrixStack{kTextureStackDepth},
+      MatrixStack{kTextureStackDepth}, MatrixStack{kTextureStackDepth},
+      MatrixStack{kTextureStackDepth}, MatrixStack{kTextureStackDepth}};
 
   Viewport viewport;          // set to the framebuffer size when the context is created
   double depthNear = 0.0;     // glDepthRange, clamped to [0, 1]
@@ -38,8 +44,11 @@ struct TransformState {
   bool normalize = false;      // GL_NORMALIZE
   bool rescaleNormal = false;  // GL_RESCALE_NORMAL
 
-  MatrixStack& currentStack() {
-    return matrixMode == GL_PROJECTION ? projection : matrixMode == GL_TEXTURE ? texture : modelview;
+  // The stack glMatrixMode selects; for GL_TEXTURE, that of the active texture unit.
+  MatrixStack& currentStack(int activeTextureUnit) {
+    return matrixMode == GL_PROJECTION ? projection
+           : matrixMode == GL_TEXTURE  ? texture[activeTextureUnit]
+                                       : modelview;
   }
 };
 

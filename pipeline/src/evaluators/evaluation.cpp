@@ -55,7 +55,9 @@ class EvaluatedAttributes {
     if (vertex.hasNormal)
       for (int i = 0; i < 3; ++i) ctx.current.normal[i] = static_cast<float>(vertex.normal[i]);
     if (vertex.hasTexCoord)
-      for (int i = 0; i < 4; ++i) ctx.current.texCoord[i] = static_cast<float>(vertex.texCoord[i]);
+      // Evaluated texture coordinates are unit 0's, as glTexCoord's are.
+      for (int i = 0; i < 4; ++i)
+        ctx.current.texCoord[0][i] = static_cast<float>(vertex.texCoord[i]);
     colorChanged_ = vertex.hasColor;
   }
   ~EvaluatedAttributes() {

@@ -4,6 +4,7 @@
 
 #include "accum/accumulation.h"
 #include "core/context.h"
+#include "fragment/buffer_selection.h"
 #include "fragment/color_conversion.h"
 #include "glass/raster/fragment.h"
 
@@ -23,7 +24,7 @@ void clearBuffers(Context& ctx, GLbitfield mask) {
   }
   if (x0 >= x1 || y0 >= y1) return;
 
-  if (mask & GL_COLOR_BUFFER_BIT) {
+  if ((mask & GL_COLOR_BUFFER_BIT) && drawsColor(f.drawBuffer)) {
     uint8_t color[4];
     for (int c = 0; c < 4; ++c) color[c] = floatToColorByte(f.clearColor[c]);
     const bool all = f.colorMask[0] && f.colorMask[1] && f.colorMask[2] && f.colorMask[3];

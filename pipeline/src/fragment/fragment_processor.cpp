@@ -3,6 +3,7 @@
 #include <cstring>
 
 #include "core/context.h"
+#include "fragment/buffer_selection.h"
 #include "fragment/color_conversion.h"
 #include "fragment/color_sum.h"
 #include "fragment/comparison.h"
@@ -23,7 +24,9 @@ void FragmentProcessor::prepare(Context& ctx, bool phong) {
   phong_ = phong;
   texturing_ = texturingEnabled(ctx);
   bumpMapping_ = phong && bumpMappingActive(ctx);
-  colorSum_ = lighting && separateSpecularColor(ctx);
+  // Spec 3.9: the secondary colour is added when lighting with GL_SEPARATE_SPECULAR_COLOR or,
+  // without lighting, when GL_COLOR_SUM is enabled (the vertex stage then passes glSecondaryColor).
+  colorSum_ = lighting ? separateSpecularColor(ctx) : ctx.fog.colorSum;
   secondaryVarying_ = colorSum_ && !phong;
   fog_ = fogEnabled(ctx);
 
@@ -57,11 +60,17 @@ void FragmentProcessor::prepare(Context& ctx, bool phong) {
     blendSettings_.constant[i] = floatToColorByte(f.blendColor[i]);
     colorMask_[i] = f.colorMask[i];
   }
-  writesColor_ = colorMask_[0] || colorMask_[1] || colorMask_[2] || colorMask_[3];
+  writesColor_ = drawsColor(f.drawBuffer) &&
+                 (colorMask_[0] || colorMask_[1] || colorMask_[2] || colorMask_[3]);
   allChannels_ = colorMask_[0] && colorMask_[1] && colorMask_[2] && colorMask_[3];
 }
 
 void FragmentProcessor::processFragments(const raster::FragmentBatch& batch) {
+  processFragments(batch, nullptr);
+}
+
+void FragmentProcessor::processFragments(const raster::FragmentBatch& batch,
+                                         const float* coverage) {
   const Context& ctx = *ctx_;
   raster::Framebuffer& fb = ctx_->framebuffer;
 
@@ -83,6 +92,7 @@ void FragmentProcessor::processFragments(const raster::FragmentBatch& batch) {
     if (texturing_) applyTexturing(ctx, batch, i, color);
     if (colorSum_) applyColorSum(secondary, color);
     if (fog_) applyFog(ctx, fragment, color);
+    if (coverage) color[3] *= coverage[i];
 
     // Chapter 4.1: the tests, in order. The scissor test was the rasterizer's bounds.
     if (alphaTest_ && !passesComparison(alphaFunc_, color[3], alphaRef_)) continue;

@@ -1,9 +1,9 @@
-// gluBuild3DMipmaps and gluBuild3DMipmapLevels (GLU 1.3, section 3.2). glass has no 3D textures
-// (api/texture_3d_api.cpp), so no level can be loaded: the arguments are checked as GLU checks
-// them (GLU_INVALID_VALUE for a size below 1 or levels out of order, GLU_INVALID_ENUM for a
-// target other than GL_TEXTURE_3D or an unknown format or type), then level 0 goes to
-// glTexImage3D, which sets the GL error (GL_INVALID_ENUM) that tells the program the texture
-// does not exist, and GLU reports success, as it does whenever glTexImage accepts its call.
+// gluBuild3DMipmaps and gluBuild3DMipmapLevels (GLU 1.3, section 3.2). The arguments are checked
+// as GLU checks them (GLU_INVALID_VALUE for a size below 1 or levels out of order,
+// GLU_INVALID_ENUM for a target other than GL_TEXTURE_3D or an unknown format or type), then
+// level 0 goes to glTexImage3D as given; the smaller levels are not built (GLU's scaling to
+// powers of two and its 3D box filter are not implemented), so a program that wants mipmaps of
+// a 3D texture sets GL_GENERATE_MIPMAP first.
 #include <GL/gl.h>
 #include <GL/glu.h>
 

@@ -73,7 +73,10 @@ class FragmentEmitter {
     for (float& v : prototype_.varyings) v = 0.0f;
     for (int k = 0; k < 4; ++k) {
       prototype_.varyings[varying::kPrimaryColor + k] = r.color[k];
-      prototype_.varyings[varying::kTexCoord + k] = r.texCoord[k];
+    }
+    for (int u = 0; u < kTextureUnitCount; ++u) {
+      for (int k = 0; k < 4; ++k)
+        prototype_.varyings[varying::texCoordSlot(u) + k] = r.texCoord[u][k];
     }
     prototype_.varyings[varying::kFogCoordinate] = r.distance;
   }
@@ -98,7 +101,7 @@ class FragmentEmitter {
     raster::FragmentBatch batch;
     batch.fragments = fragments_;
     batch.count = count_;
-    batch.varyingCount = varying::kCountTexture;
+    batch.varyingCount = varying::countForTextureUnits(kTextureUnitCount);
     processor_.processFragments(batch);
     count_ = 0;
   }

@@ -18,7 +18,9 @@ bool queryPixelState(const Context& ctx, GLenum pname, StateValue& v) {
     case GL_CURRENT_RASTER_DISTANCE: v.setFloats({r.distance}); return true;
     case GL_CURRENT_RASTER_COLOR: v.setColors(r.color, 4); return true;
     case GL_CURRENT_RASTER_INDEX: v.setFloats({r.index}); return true;
-    case GL_CURRENT_RASTER_TEXTURE_COORDS: v.setFloats(r.texCoord, 4); return true;
+    case GL_CURRENT_RASTER_TEXTURE_COORDS:
+      v.setFloats(r.texCoord[ctx.texture.activeUnit], 4);
+      return true;
 
     case GL_MAP_COLOR: v.setBooleans({t.mapColor}); return true;
     case GL_MAP_STENCIL: v.setBooleans({t.mapStencil}); return true;

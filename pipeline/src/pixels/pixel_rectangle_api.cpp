@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/context.h"
+#include "fragment/buffer_selection.h"
 #include "lists/command_recording.h"
 #include "pixels/pixel_image.h"
 #include "texture/client_pixels.h"
@@ -57,6 +58,10 @@ void glCopyPixels(GLint x, GLint y, GLsizei width, GLsizei height, GLenum type) 
     if (type != GL_COLOR && type != GL_DEPTH && type != GL_STENCIL) error = GL_INVALID_ENUM;
     else if (width < 0 || height < 0) error = GL_INVALID_VALUE;
     pixelCommand(ctx, error, [=](Context& c) {
+      // Copying colour needs a colour read buffer: none after glReadBuffer(GL_NONE).
+      if (type == GL_COLOR && !glass::gl::readsColor(c.pixelTransfer.readBuffer)) {
+        return recordError(c, GL_INVALID_OPERATION);
+      }
       try {
         glass::gl::copyPixels(c, x, y, width, height, type);
       } catch (const std::bad_alloc&) {

@@ -37,6 +37,7 @@ void setRasterPosition(Context& ctx, const float object[4]) {
   setup.phong = false;
   setup.twoSided = false;
   setup.texturing = true;
+  setup.textureUnits = kTextureUnitCount;  // every unit's raster texture coordinates (spec 2.13)
   setup.needEyePosition = true;
   if (!setup.needEyeNormal) {
     // The normal is needed for sphere-map texture generation.
@@ -47,7 +48,8 @@ void setRasterPosition(Context& ctx, const float object[4]) {
     setup.rescaleFactor = lengthSquared > 0.0f ? 1.0f / std::sqrt(lengthSquared) : 1.0f;
     setup.needEyeNormal = true;
   }
-  setup.varyingCount = std::max(setup.varyingCount, varying::kCountTexture);
+  setup.varyingCount =
+      std::max(setup.varyingCount, varying::countForTextureUnits(kTextureUnitCount));
 
   PipelineVertex vertex{};
   processVertex(ctx, setup, object, vertex);
@@ -85,7 +87,9 @@ void setRasterPosition(Context& ctx, const float object[4]) {
   for (int k = 0; k < 4; ++k) {
     r.color[k] = varyings[varying::kPrimaryColor + k];
     r.secondaryColor[k] = varyings[varying::kSecondaryColor + k];
-    r.texCoord[k] = varyings[varying::kTexCoord + k];
+  }
+  for (int u = 0; u < kTextureUnitCount; ++u) {
+    for (int k = 0; k < 4; ++k) r.texCoord[u][k] = varyings[varying::texCoordSlot(u) + k];
   }
 
   if (ctx.renderMode.mode == GL_SELECT) recordHit(ctx, r.window[2]);
@@ -102,7 +106,9 @@ void setWindowPosition(Context& ctx, float x, float y, float z) {
   r.distance = 0.0f;
   for (int k = 0; k < 4; ++k) {
     r.color[k] = std::clamp(ctx.current.color[k], 0.0f, 1.0f);
-    r.texCoord[k] = ctx.current.texCoord[k];
+  }
+  for (int u = 0; u < kTextureUnitCount; ++u) {
+    for (int k = 0; k < 4; ++k) r.texCoord[u][k] = ctx.current.texCoord[u][k];
   }
   r.secondaryColor[0] = r.secondaryColor[1] = r.secondaryColor[2] = 0.0f;
   r.secondaryColor[3] = 1.0f;

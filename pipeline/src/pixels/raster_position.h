@@ -9,6 +9,8 @@
 // enabled. glWindowPos (GL 1.4, section 2.13) gives window coordinates directly.
 #pragma once
 
+#include "texture/texture_units.h"
+
 namespace glass::gl {
 
 struct Context;
@@ -19,7 +21,11 @@ struct RasterPositionState {
   float distance = 0.0f;                       // Euclidean distance from the eye (spec 2.13)
   float color[4] = {1.0f, 1.0f, 1.0f, 1.0f};
   float secondaryColor[4] = {0.0f, 0.0f, 0.0f, 1.0f};
-  float texCoord[4] = {0.0f, 0.0f, 0.0f, 1.0f};
+  // Per texture unit (spec 2.13: the current raster texture coordinates of each unit).
+  float texCoord[kTextureUnitCount][4] = {{0.0f, 0.0f, 0.0f, 1.0f}, {0.0f, 0.0f, 0.0f, 1.0f},
+                                          {0.0f, 0.0f, 0.0f, 1.0f}, {0.0f, 0.0f, 0.0f, 1.0f},
+                                          {0.0f, 0.0f, 0.0f, 1.0f}, {0.0f, 0.0f, 0.0f, 1.0f},
+                                          {0.0f, 0.0f, 0.0f, 1.0f}, {0.0f, 0.0f, 0.0f, 1.0f}};
   float index = 1.0f;                          // colour index mode only; reported as 1
 };
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "core/context.h"
+#include "primitive/point_parameters.h"
 
 namespace glass::gl {
 
@@ -49,6 +50,15 @@ void DrawPipeline::prepare() {
   pointSettings_.bounds = bounds;
   pointSettings_.varyingCount = vertex_.varyingCount;
   pointSettings_.size = std::min(r.pointSize, kMaxPointSize);  // GL_ALIASED_POINT_SIZE_RANGE
+  smoothLines_ = r.lineSmooth;
+  smoothPoints_ = r.pointSmooth;
+  pointSizeAttenuated_ = pointSizeAttenuated(r);
+  const float* attenuation = r.pointDistanceAttenuation;
+  pointDistanceAttenuated_ =
+      attenuation[0] != 1.0f || attenuation[1] != 0.0f || attenuation[2] != 0.0f;
+  if (pointDistanceAttenuated_ && !invert(ctx.transform.projection.top(), projectionInverse_)) {
+    projectionInverse_ = Matrix4{};  // a singular projection: every distance taken as 0
+  }
 
   flat_ = r.shadeModel == GL_FLAT;
   stippleCounter_ = 0;

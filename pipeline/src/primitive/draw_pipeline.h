@@ -5,8 +5,10 @@
 //     and flat shading (vertex_colors.h) -> polygon mode per face: GL_FILL (polygon_fill.cpp),
 //     GL_LINE or GL_POINT (unfilled_polygon.cpp) with edge flags -> polygon offset
 //     (polygon_offset.h)
-//   lines (line_stage.cpp):           flat shading -> clipping -> viewport -> rasterizeLine
-//   points (point_stage.cpp):         clipping -> viewport -> rasterizePoint
+//   lines (line_stage.cpp):           flat shading -> clipping -> viewport -> rasterizeLine, or
+//     for GL_LINE_SMOOTH a rectangle of two triangles with coverage (smooth_stage.cpp)
+//   points (point_stage.cpp):         clipping -> size (point parameters) -> viewport ->
+//     rasterizePoint, or for GL_POINT_SMOOTH a disc with coverage (smooth_stage.cpp)
 //
 // Clipping uses the rasterizer's clipPolygon, clipLine and pointInside with the enabled user
 // planes; perspective division and the viewport are in viewport_transform.h. Every fragment goes
@@ -63,6 +65,15 @@ class DrawPipeline {
   // line_stage.cpp, point_stage.cpp: clip, viewport, rasterize.
   void rasterizeSegment(raster::ClipVertex a, raster::ClipVertex b, double depthBias);
   void rasterizeVertexPoint(const raster::ClipVertex& v, double depthBias);
+  // The size of a point at clip position v: glPointSize, or the derived size of the point
+  // parameters (point_stage.cpp).
+  float pointSizeAt(const raster::ClipVertex& v) const;
+  // smooth_stage.cpp: antialiased segments and points (primitive/smooth_coverage.h).
+  void rasterizeSmoothSegment(const raster::WindowVertex& a, const raster::WindowVertex& b,
+                              double depthBias);
+  void rasterizeSmoothDash(const raster::WindowVertex& a, const raster::WindowVertex& b,
+                           double depthBias);
+  void rasterizeSmoothPoint(const raster::WindowVertex& v, float size, double depthBias);
   // Clips a triangle to a polygon in window coordinates; returns its vertex count (0: nothing
   // visible). polygon_fill.cpp
   int clipToWindow(const raster::ClipVertex (&v)[3], raster::WindowVertex* out);
@@ -75,6 +86,11 @@ class DrawPipeline {
   raster::TriangleSettings triangleSettings_;
   raster::LineSettings lineSettings_;
   raster::PointSettings pointSettings_;
+  bool smoothLines_ = false;         // GL_LINE_SMOOTH
+  bool smoothPoints_ = false;        // GL_POINT_SMOOTH
+  bool pointSizeAttenuated_ = false; // the point parameters change sizes
+  bool pointDistanceAttenuated_ = false;  // ... by distance, not only by GL_POINT_SIZE_MIN/MAX
+  Matrix4 projectionInverse_;        // eye = P^-1 clip, for the points' eye distance
   bool flat_ = false;
   int stippleCounter_ = 0;
   PolygonStippleFilter polygonStipple_;

@@ -1,4 +1,5 @@
-// Lines: flat shading, clipping, perspective division and viewport, then rasterizeLine.
+// Lines: flat shading, clipping, perspective division and viewport, then rasterizeLine, or the
+// smooth segment of smooth_stage.cpp.
 #include "core/context.h"
 #include "primitive/draw_pipeline.h"
 #include "primitive/vertex_colors.h"
@@ -31,6 +32,7 @@ void DrawPipeline::rasterizeSegment(raster::ClipVertex a, raster::ClipVertex b, 
     lineReset_ = false;
     return;
   }
+  if (smoothLines_) return rasterizeSmoothSegment(wa, wb, depthBias);
   lineSettings_.depthBias = depthBias;
   raster::rasterizeLine(wa, wb, lineSettings_, fragments_);
 }

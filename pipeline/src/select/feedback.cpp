@@ -35,7 +35,7 @@ void recordPixelCommand(Context& ctx, GLenum token) {
   if (ctx.renderMode.mode != GL_FEEDBACK) return;
   const RasterPositionState& r = ctx.rasterPosition;
   writeFeedbackValue(ctx, static_cast<float>(token));
-  writeFeedbackVertex(ctx, r.window, r.color, r.texCoord);
+  writeFeedbackVertex(ctx, r.window, r.color, r.texCoord[0]);
 }
 
 }  // namespace glass::gl

@@ -20,7 +20,7 @@ void PrimitiveRecorder::vertex(const raster::WindowVertex& v) {
   // Spec 5.3: window coordinates, and w the clip coordinate w_c = 1 / (1 / w_c).
   const float window[4] = {v.x, v.y, v.z, 1.0f / v.invW};
   const float* texCoord =
-      texCoordVaryings_ ? v.varyings + varying::kTexCoord : ctx_->current.texCoord;
+      texCoordVaryings_ ? v.varyings + varying::kTexCoord : ctx_->current.texCoord[0];
   writeFeedbackVertex(*ctx_, window, v.varyings + varying::kPrimaryColor, texCoord);
 }
 

@@ -37,42 +37,54 @@ TextureImage reduceImageByBoxFilter(const TextureImage& source) {
   TextureImage out;
   out.width = std::max(1, source.width / 2);
   out.height = std::max(1, source.height / 2);
+  out.depth = std::max(1, source.depth / 2);
   out.border = source.border;
   out.internalFormat = source.internalFormat;
   out.base = source.base;
-  out.texels.resize(static_cast<size_t>(out.width) * static_cast<size_t>(out.height) * 4);
+  out.texels.resize(static_cast<size_t>(out.width) * static_cast<size_t>(out.height) *
+                    static_cast<size_t>(out.depth) * 4);
 
   const std::vector<AxisFootprint> fx = axisFootprints(source.width, out.width);
   const std::vector<AxisFootprint> fy = axisFootprints(source.height, out.height);
-  // Total weight of a destination texel: n_x * n_y (each axis's weights sum to n).
-  const long total = static_cast<long>(source.width) * static_cast<long>(source.height);
-  for (int j = 0; j < out.height; ++j) {
-    const AxisFootprint& ry = fy[static_cast<size_t>(j)];
-    for (int i = 0; i < out.width; ++i) {
-      const AxisFootprint& rx = fx[static_cast<size_t>(i)];
-      long sum[4] = {0, 0, 0, 0};
-      for (size_t b = 0; b < ry.weights.size(); ++b) {
-        for (size_t a = 0; a < rx.weights.size(); ++a) {
-          const long w = static_cast<long>(ry.weights[b]) * rx.weights[a];
-          const uint8_t* t = source.texel(rx.first + static_cast<int>(a), ry.first + static_cast<int>(b));
-          for (int c = 0; c < 4; ++c) sum[c] += w * t[c];
+  const std::vector<AxisFootprint> fz = axisFootprints(source.depth, out.depth);
+  // Total weight of a destination texel: n_x * n_y * n_z (each axis's weights sum to n).
+  const long total = static_cast<long>(source.width) * static_cast<long>(source.height) *
+                     static_cast<long>(source.depth);
+  for (int k = 0; k < out.depth; ++k) {
+    const AxisFootprint& rz = fz[static_cast<size_t>(k)];
+    for (int j = 0; j < out.height; ++j) {
+      const AxisFootprint& ry = fy[static_cast<size_t>(j)];
+      for (int i = 0; i < out.width; ++i) {
+        const AxisFootprint& rx = fx[static_cast<size_t>(i)];
+        long sum[4] = {0, 0, 0, 0};
+        for (size_t e = 0; e < rz.weights.size(); ++e) {
+          for (size_t b = 0; b < ry.weights.size(); ++b) {
+            for (size_t a = 0; a < rx.weights.size(); ++a) {
+              const long w = static_cast<long>(rz.weights[e]) * ry.weights[b] * rx.weights[a];
+              const uint8_t* t = source.texel(rx.first + static_cast<int>(a),
+                                              ry.first + static_cast<int>(b),
+                                              rz.first + static_cast<int>(e));
+              for (int c = 0; c < 4; ++c) sum[c] += w * t[c];
+            }
+          }
         }
+        uint8_t* d = out.texel(i, j, k);
+        // Round to nearest, halves up: (sum + total / 2) / total.
+        for (int c = 0; c < 4; ++c) d[c] = static_cast<uint8_t>((2 * sum[c] + total) / (2 * total));
       }
-      uint8_t* d = out.texel(i, j);
-      // Round to nearest, halves up: (sum + total / 2) / total.
-      for (int c = 0; c < 4; ++c) d[c] = static_cast<uint8_t>((2 * sum[c] + total) / (2 * total));
     }
   }
   return out;
 }
 
-void generateMipmaps(TextureObject& texture) {
+void generateMipmaps(TextureObject& texture, int face) {
   const int base = texture.params.baseLevel;
-  if (base < 0 || base >= kMaxTextureLevels || !texture.levels[base].defined()) return;
-  const TextureImage& b = texture.levels[base];
-  const int q = std::min(lastMipmapLevel(base, b.width, b.height), texture.params.maxLevel);
+  if (base < 0 || base >= kMaxTextureLevels || !texture.image(face, base).defined()) return;
+  const TextureImage& b = texture.image(face, base);
+  const int q =
+      std::min(lastMipmapLevel(base, b.width, b.height, b.depth), texture.params.maxLevel);
   for (int level = base + 1; level <= q; ++level)
-    texture.levels[level] = reduceImageByBoxFilter(texture.levels[level - 1]);
+    texture.image(face, level) = reduceImageByBoxFilter(texture.image(face, level - 1));
   texture.updateCompleteness();
 }
 

@@ -11,12 +11,14 @@
 
 namespace glass::gl {
 
-// One derived image: `source` reduced to max(1, w / 2) x max(1, h / 2) by the box filter above.
+// One derived image: `source` reduced to max(1, w / 2) x max(1, h / 2) (x max(1, d / 2) for a 3D
+// image) by the box filter above.
 // The result has the internal format, base format and border of `source`.
 TextureImage reduceImageByBoxFilter(const TextureImage& source);
 
-// Replaces levels base + 1 .. q of `texture` with images derived from the base level
-// (q = min(p, TEXTURE_MAX_LEVEL) as in section 3.8.10), then updates its completeness.
-void generateMipmaps(TextureObject& texture);
+// Replaces levels base + 1 .. q of `texture` (of its cube map face `face`) with images derived
+// from the base level (q = min(p, TEXTURE_MAX_LEVEL) as in section 3.8.10), then updates its
+// completeness.
+void generateMipmaps(TextureObject& texture, int face = 0);
 
 }  // namespace glass::gl

@@ -16,7 +16,8 @@ void setDefaultTexGenPlanes(TexGenCoordinate coordinates[4]) {
   }
 }
 
-void sphereMapCoordinates(const float eyePosition[4], const float eyeNormal[3], float* s, float* t) {
+EyeSpaceVectors eyeSpaceVectors(const float eyePosition[4], const float eyeNormal[3]) {
+  EyeSpaceVectors v;
   // u: the direction from the eye (the origin of eye space) to the vertex. A vertex at the eye
   // has no direction; u = 0 then gives r = 0 and (s, t) = (1/2, 1/2).
   float u[3] = {eyePosition[0], eyePosition[1], eyePosition[2]};
@@ -24,23 +25,27 @@ void sphereMapCoordinates(const float eyePosition[4], const float eyeNormal[3], 
   if (length > 0.0f)
     for (float& c : u) c /= length;
   const float nDotU = eyeNormal[0] * u[0] + eyeNormal[1] * u[1] + eyeNormal[2] * u[2];
-  float r[3];
-  for (int k = 0; k < 3; ++k) r[k] = u[k] - 2.0f * eyeNormal[k] * nDotU;
+  float* r = v.reflection;
+  for (int k = 0; k < 3; ++k) {
+    r[k] = u[k] - 2.0f * eyeNormal[k] * nDotU;
+    v.normal[k] = eyeNormal[k];
+  }
   const float m = 2.0f * std::sqrt(r[0] * r[0] + r[1] * r[1] + (r[2] + 1.0f) * (r[2] + 1.0f));
   // m = 0 only for r = (0, 0, -1), the reflection straight away from the viewer: the edge of the
   // sphere map, where any point of the rim is right.
   if (m > 0.0f) {
-    *s = r[0] / m + 0.5f;
-    *t = r[1] / m + 0.5f;
+    v.sphereMap[0] = r[0] / m + 0.5f;
+    v.sphereMap[1] = r[1] / m + 0.5f;
   } else {
-    *s = 0.5f;
-    *t = 0.5f;
+    v.sphereMap[0] = 0.5f;
+    v.sphereMap[1] = 0.5f;
   }
+  return v;
 }
 
 float generateTexCoordinate(const TexGenCoordinate& coordinate, int index,
                             const float objectPosition[4], const float eyePosition[4],
-                            const float sphereMap[2]) {
+                            const EyeSpaceVectors& vectors) {
   switch (coordinate.mode) {
     case GL_OBJECT_LINEAR: {
       const float* p = coordinate.objectPlane;
@@ -53,7 +58,11 @@ float generateTexCoordinate(const TexGenCoordinate& coordinate, int index,
              p[3] * eyePosition[3];
     }
     case GL_SPHERE_MAP:
-      return index < 2 ? sphereMap[index] : 0.0f;
+      return index < 2 ? vectors.sphereMap[index] : 0.0f;
+    case GL_REFLECTION_MAP:
+      return index < 3 ? vectors.reflection[index] : 0.0f;
+    case GL_NORMAL_MAP:
+      return index < 3 ? vectors.normal[index] : 0.0f;
     default:
       return 0.0f;
   }

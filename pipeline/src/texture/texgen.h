@@ -6,6 +6,8 @@
 //   SPHERE_MAP     u = the unit vector from the eye to the vertex, n' = the eye-space normal,
 //                  r = u - 2 n' (n' . u), m = 2 sqrt(rx^2 + ry^2 + (rz + 1)^2),
 //                  s = rx / m + 1/2, t = ry / m + 1/2  (s and t only)
+//   REFLECTION_MAP (s, t, r) = (rx, ry, rz), the reflection vector above  (OpenGL 1.3; not q)
+//   NORMAL_MAP     (s, t, r) = n', the eye-space normal                     (OpenGL 1.3; not q)
 #pragma once
 
 #include <GL/gl.h>
@@ -23,14 +25,27 @@ struct TexGenCoordinate {
 // The spec's defaults: s planes (1, 0, 0, 0), t planes (0, 1, 0, 0), r and q zero.
 void setDefaultTexGenPlanes(TexGenCoordinate coordinates[4]);
 
-// The sphere-map coordinates (s, t) of a vertex.
-void sphereMapCoordinates(const float eyePosition[4], const float eyeNormal[3], float* s, float* t);
+// What the eye-space modes of a vertex generate: the sphere-map (s, t), the reflection vector
+// and the eye-space normal.
+struct EyeSpaceVectors {
+  float sphereMap[2] = {0.0f, 0.0f};
+  float reflection[3] = {0.0f, 0.0f, 0.0f};
+  float normal[3] = {0.0f, 0.0f, 0.0f};
+};
 
-// Generates coordinate `index` (0 = s .. 3 = q) for one vertex; sphereMap holds the vertex's
-// sphere-map (s, t) when any coordinate uses SPHERE_MAP.
+// The vectors of a vertex (u, r and m as above).
+EyeSpaceVectors eyeSpaceVectors(const float eyePosition[4], const float eyeNormal[3]);
+
+// Generates coordinate `index` (0 = s .. 3 = q) for one vertex; `vectors` holds the vertex's
+// eye-space vectors when any coordinate uses SPHERE_MAP, REFLECTION_MAP or NORMAL_MAP.
 float generateTexCoordinate(const TexGenCoordinate& coordinate, int index,
                             const float objectPosition[4], const float eyePosition[4],
-                            const float sphereMap[2]);
+                            const EyeSpaceVectors& vectors);
+
+// True for the modes computed from eye-space vectors.
+inline bool isEyeSpaceVectorMode(GLenum mode) {
+  return mode == GL_SPHERE_MAP || mode == GL_REFLECTION_MAP || mode == GL_NORMAL_MAP;
+}
 
 // The eye plane of glTexGen(GL_EYE_PLANE): p' = p M^-1, with M column-major as GL stores it.
 // A singular M leaves the plane as given.

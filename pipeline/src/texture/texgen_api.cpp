@@ -7,8 +7,8 @@
 
 #include "core/context.h"
 #include "core/errors.h"
-#include "lists/command_recording.h"
 #include "core/float_to_int.h"
+#include "lists/command_recording.h"
 
 namespace glass::gl {
 namespace {
@@ -38,12 +38,14 @@ void texGen(Context& ctx, GLenum coord, GLenum pname, const std::array<double, 4
   const int index = coordinateIndex(coord);
   const int size = texGenParameterSize(pname);
   if (index < 0 || size == 0 || (size > 1 && !vector)) return recordError(ctx, GL_INVALID_ENUM);
-  TexGenCoordinate& g = ctx.texture.texGen[index];
+  TexGenCoordinate& g = ctx.texture.unit().texGen[index];
   switch (pname) {
     case GL_TEXTURE_GEN_MODE: {
       const GLenum mode = static_cast<GLenum>(enumFromFloat(v[0]));
-      // SPHERE_MAP defines s and t only.
-      const bool valid = mode == GL_OBJECT_LINEAR || mode == GL_EYE_LINEAR || (mode == GL_SPHERE_MAP && index < 2);
+      // SPHERE_MAP defines s and t only, REFLECTION_MAP and NORMAL_MAP s, t and r (spec 2.11.4).
+      const bool valid = mode == GL_OBJECT_LINEAR || mode == GL_EYE_LINEAR ||
+                         (mode == GL_SPHERE_MAP && index < 2) ||
+                         ((mode == GL_REFLECTION_MAP || mode == GL_NORMAL_MAP) && index < 3);
       if (!valid) return recordError(ctx, GL_INVALID_ENUM);
       g.mode = mode;
       break;
@@ -70,7 +72,7 @@ bool getTexGen(Context& ctx, GLenum coord, GLenum pname, double out[4], int* cou
     recordError(ctx, GL_INVALID_ENUM);
     return false;
   }
-  const TexGenCoordinate& g = ctx.texture.texGen[index];
+  const TexGenCoordinate& g = ctx.texture.unit().texGen[index];
   switch (pname) {
     case GL_TEXTURE_GEN_MODE: out[0] = g.mode; break;
     case GL_OBJECT_PLANE: for (int k = 0; k < 4; ++k) out[k] = g.objectPlane[k]; break;

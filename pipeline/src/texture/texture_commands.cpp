@@ -6,6 +6,7 @@
 
 #include "core/context.h"
 #include "core/errors.h"
+#include "fragment/buffer_selection.h"
 #include "texture/mipmap_generation.h"
 
 namespace glass::gl {
@@ -18,55 +19,107 @@ PixelLayout layoutFrom(const PixelPacking& p) {
   l.skipRows = p.skipRows;
   l.skipPixels = p.skipPixels;
   l.swapBytes = p.swapBytes;
+  l.imageHeight = p.imageHeight;  // 3D images (spec 3.8.1)
+  l.skipImages = p.skipImages;
   return l;
 }
 
-bool isProxyTarget(GLenum target) {
-  return target == GL_PROXY_TEXTURE_1D || target == GL_PROXY_TEXTURE_2D;
+// The images targets of the given dimensionality name: GL_TEXTURE_1D; GL_TEXTURE_2D and the six
+// cube map faces (OpenGL 1.3, section 3.8.1).
+bool isImageTarget(int dimensions, GLenum target) {
+  if (dimensions == 3) return target == GL_TEXTURE_3D;
+  return dimensions == 1 ? target == GL_TEXTURE_1D
+                         : target == GL_TEXTURE_2D || cubeFaceOf(target) >= 0;
 }
 
-// The targets glTexImage of the given dimensionality accepts.
+// The targets glTexImage of the given dimensionality accepts: the images and the proxies.
 bool isTexImageTarget(int dimensions, GLenum target) {
-  return dimensions == 1 ? (target == GL_TEXTURE_1D || target == GL_PROXY_TEXTURE_1D)
-                         : (target == GL_TEXTURE_2D || target == GL_PROXY_TEXTURE_2D);
+  if (isImageTarget(dimensions, target)) return true;
+  if (dimensions == 3) return target == GL_PROXY_TEXTURE_3D;
+  return dimensions == 1 ? target == GL_PROXY_TEXTURE_1D
+                         : target == GL_PROXY_TEXTURE_2D || target == GL_PROXY_TEXTURE_CUBE_MAP;
 }
 
-GLenum nonProxyTarget(int dimensions) { return dimensions == 1 ? GL_TEXTURE_1D : GL_TEXTURE_2D; }
-
-// The image size checks common to glTexImage and glCopyTexImage (spec 3.8.1): border 0 or 1,
-// width and height at least twice the border. The size of the image without its border is
-// written to innerWidth/innerHeight (height 1 for 1D images, which have no vertical border).
-GLenum checkImageSize(int dimensions, GLsizei width, GLsizei height, GLint border, int* innerWidth,
-                      int* innerHeight) {
-  if (border != 0 && border != 1) return GL_INVALID_VALUE;
-  if (width < 2 * border) return GL_INVALID_VALUE;
-  if (dimensions == 2 && height < 2 * border) return GL_INVALID_VALUE;
-  *innerWidth = width - 2 * border;
-  *innerHeight = dimensions == 2 ? height - 2 * border : 1;
-  return GL_NO_ERROR;
-}
-
-// Whether glass can hold a level-`level` image of this size (GL_MAX_TEXTURE_SIZE >> level).
-bool fitsLevel(int level, int innerWidth, int innerHeight) {
-  const int max = kMaxTextureSize >> level;
-  return innerWidth <= max && innerHeight <= max;
-}
-
-// Copies the texels inside the border of a full image (width x height texels, border included)
-// into `image`, whose width/height are the inner size.
-void copyInsideBorder(const std::vector<uint8_t>& full, int fullWidth, int border, int dimensions,
-                      TextureImage& image) {
-  const int rowBorder = dimensions == 2 ? border : 0;
-  const size_t rowBytes = static_cast<size_t>(image.width) * 4;
-  for (int j = 0; j < image.height; ++j) {
-    const size_t from = (static_cast<size_t>(j + rowBorder) * static_cast<size_t>(fullWidth) +
-                         static_cast<size_t>(border)) * 4;
-    std::memcpy(image.texel(0, j), &full[from], rowBytes);
+// The proxy images of each level of a proxy target.
+TextureImage* proxyLevels(Context& ctx, GLenum target) {
+  switch (target) {
+    case GL_PROXY_TEXTURE_1D: return ctx.texture.proxy1D;
+    case GL_PROXY_TEXTURE_2D: return ctx.texture.proxy2D;
+    case GL_PROXY_TEXTURE_3D: return ctx.texture.proxy3D;
+    default: return ctx.texture.proxyCube;
   }
 }
 
-void afterBaseLevelChange(TextureObject& texture, GLint level) {
-  if (level == texture.params.baseLevel && texture.params.generateMipmap) generateMipmaps(texture);
+// Cube map faces are square (spec 3.8.1: otherwise GL_INVALID_VALUE).
+bool isCubeMapTarget(GLenum target) {
+  return cubeFaceOf(target) >= 0 || target == GL_PROXY_TEXTURE_CUBE_MAP;
+}
+
+// The image size checks common to glTexImage and glCopyTexImage (spec 3.8.1): border 0 or 1,
+// width, height and depth at least twice the border. The size of the image without its border
+// is written to innerWidth/innerHeight/innerDepth (height 1 for 1D images, depth 1 for 1D and 2D
+// images, which have no border there).
+GLenum checkImageSize(int dimensions, GLsizei width, GLsizei height, GLsizei depth, GLint border,
+                      int* innerWidth, int* innerHeight, int* innerDepth) {
+  if (border != 0 && border != 1) return GL_INVALID_VALUE;
+  if (width < 2 * border) return GL_INVALID_VALUE;
+  if (dimensions >= 2 && height < 2 * border) return GL_INVALID_VALUE;
+  if (dimensions == 3 && depth < 2 * border) return GL_INVALID_VALUE;
+  *innerWidth = width - 2 * border;
+  *innerHeight = dimensions >= 2 ? height - 2 * border : 1;
+  *innerDepth = dimensions == 3 ? depth - 2 * border : 1;
+  return GL_NO_ERROR;
+}
+
+// Whether glass can hold a level-`level` image of this size (GL_MAX_TEXTURE_SIZE >> level, or
+// GL_MAX_3D_TEXTURE_SIZE >> level for a 3D image).
+bool fitsLevel(int level, int innerWidth, int innerHeight, int innerDepth = 1,
+               int dimensions = 2) {
+  const int max = (dimensions == 3 ? kMax3DTextureSize : kMaxTextureSize) >> level;
+  return innerWidth <= max && innerHeight <= max && innerDepth <= max;
+}
+
+// Unpacks a width x height x depth block of client texels (spec 3.8.1: a 3D image is `depth`
+// 2D images, each GL_UNPACK_IMAGE_HEIGHT rows apart, or `height` when that is 0, after
+// GL_UNPACK_SKIP_IMAGES images). 1D and 2D images are one slice, without the image skip.
+void unpackBlock(const void* pixels, int dimensions, int width, int height, int depth,
+                 GLenum format, GLenum type, const PixelLayout& layout, BaseFormat base,
+                 std::vector<uint8_t>& out) {
+  if (dimensions < 3) {
+    unpackTexels(pixels, width, height, format, type, layout, base, out);
+    return;
+  }
+  const int imageRows = layout.imageHeight > 0 ? layout.imageHeight : height;
+  out.clear();
+  std::vector<uint8_t> slice;
+  for (int k = 0; k < depth; ++k) {
+    PixelLayout sliceLayout = layout;
+    sliceLayout.skipRows = layout.skipRows + (layout.skipImages + k) * imageRows;
+    unpackTexels(pixels, width, height, format, type, sliceLayout, base, slice);
+    out.insert(out.end(), slice.begin(), slice.end());
+  }
+}
+
+// Copies the texels inside the border of a full image (fullWidth x fullHeight x depth texels,
+// border included) into `image`, whose width/height/depth are the inner size.
+void copyInsideBorder(const std::vector<uint8_t>& full, int fullWidth, int fullHeight, int border,
+                      int dimensions, TextureImage& image) {
+  const int rowBorder = dimensions >= 2 ? border : 0;
+  const int sliceBorder = dimensions == 3 ? border : 0;
+  const size_t rowBytes = static_cast<size_t>(image.width) * 4;
+  for (int k = 0; k < image.depth; ++k) {
+    for (int j = 0; j < image.height; ++j) {
+      const size_t row = static_cast<size_t>(k + sliceBorder) * static_cast<size_t>(fullHeight) +
+                         static_cast<size_t>(j + rowBorder);
+      const size_t from = (row * static_cast<size_t>(fullWidth) + static_cast<size_t>(border)) * 4;
+      std::memcpy(image.texel(0, j, k), &full[from], rowBytes);
+    }
+  }
+}
+
+void afterBaseLevelChange(TextureObject& texture, int face, GLint level) {
+  if (level == texture.params.baseLevel && texture.params.generateMipmap)
+    generateMipmaps(texture, face);
   texture.updateCompleteness();
 }
 
@@ -85,15 +138,21 @@ void readFramebufferPixel(const Context& ctx, int x, int y, float rgba[4]) {
 }  // namespace
 
 TextureObject* boundTexture(Context& ctx, GLenum target) {
-  if (target == GL_TEXTURE_1D) return ctx.texture.bound1D;
-  if (target == GL_TEXTURE_2D) return ctx.texture.bound2D;
+  if (target == GL_TEXTURE_1D) return ctx.texture.unit().bound1D;
+  if (target == GL_TEXTURE_2D) return ctx.texture.unit().bound2D;
+  if (target == GL_TEXTURE_3D) return ctx.texture.unit().bound3D;
+  if (target == GL_TEXTURE_CUBE_MAP) return ctx.texture.unit().boundCube;
   return nullptr;
 }
 
 const TextureObject* boundTexture(const Context& ctx, GLenum target) {
-  if (target == GL_TEXTURE_1D) return ctx.texture.bound1D;
-  if (target == GL_TEXTURE_2D) return ctx.texture.bound2D;
-  return nullptr;
+  return boundTexture(const_cast<Context&>(ctx), target);
+}
+
+ImageTarget imageTarget(Context& ctx, GLenum target) {
+  const int face = cubeFaceOf(target);
+  if (face >= 0) return {ctx.texture.unit().boundCube, face};
+  return {boundTexture(ctx, target), 0};
 }
 
 PixelLayout unpackLayout(const Context& ctx) { return layoutFrom(ctx.pixelStore.unpack); }
@@ -101,17 +160,19 @@ PixelLayout packLayout(const Context& ctx) { return layoutFrom(ctx.pixelStore.pa
 
 UnpackedTexels unpackForDisplayList(const Context& ctx, const TexImageArguments& a, const void* pixels) {
   BaseFormat base;
-  int w, h;
-  if (pixels == nullptr || isProxyTarget(a.target) || !isTexImageTarget(a.dimensions, a.target) ||
+  int w, h, d;
+  if (pixels == nullptr || !isImageTarget(a.dimensions, a.target) ||
       !baseFormatOfInternalFormat(a.internalFormat, &base) ||
-      checkImageSize(a.dimensions, a.width, a.height, a.border, &w, &h) != GL_NO_ERROR ||
-      a.level < 0 || a.level >= kMaxTextureLevels || !fitsLevel(a.level, w, h) ||
+      checkImageSize(a.dimensions, a.width, a.height, a.depth, a.border, &w, &h, &d) !=
+          GL_NO_ERROR ||
+      a.level < 0 || a.level >= kMaxTextureLevels || !fitsLevel(a.level, w, h, d, a.dimensions) ||
       checkTexelFormatAndType(a.format, a.type) != GL_NO_ERROR)
     return nullptr;
   try {
     auto texels = std::make_shared<std::vector<uint8_t>>();
-    unpackTexels(pixels, a.width, a.dimensions == 2 ? a.height : 1, a.format, a.type,
-                 unpackLayout(ctx), base, *texels);
+    unpackBlock(pixels, a.dimensions, a.width, a.dimensions >= 2 ? a.height : 1,
+                a.dimensions == 3 ? a.depth : 1, a.format, a.type, unpackLayout(ctx), base,
+                *texels);
     return texels;
   } catch (const std::bad_alloc&) {
     return nullptr;
@@ -124,19 +185,22 @@ void texImage(Context& ctx, const TexImageArguments& a, const void* pixels, cons
   if (a.level < 0 || a.level >= kMaxTextureLevels) return recordError(ctx, GL_INVALID_VALUE);
   BaseFormat base;
   if (!baseFormatOfInternalFormat(a.internalFormat, &base)) return recordError(ctx, GL_INVALID_VALUE);
-  int w = 0, h = 0;
-  if (GLenum e = checkImageSize(a.dimensions, a.width, a.height, a.border, &w, &h); e != GL_NO_ERROR)
+  int w = 0, h = 0, d = 0;
+  if (GLenum e = checkImageSize(a.dimensions, a.width, a.height, a.depth, a.border, &w, &h, &d);
+      e != GL_NO_ERROR)
     return recordError(ctx, e);
   if (GLenum e = checkTexelFormatAndType(a.format, a.type); e != GL_NO_ERROR) return recordError(ctx, e);
+  if (isCubeMapTarget(a.target) && w != h) return recordError(ctx, GL_INVALID_VALUE);
 
-  if (isProxyTarget(a.target)) {
+  if (!isImageTarget(a.dimensions, a.target)) {
     // Spec 3.8.11: a proxy query succeeds (the level state is set) when the image would fit, and
     // leaves every level parameter zero otherwise; no error either way.
-    TextureImage& proxy = (a.dimensions == 1 ? ctx.texture.proxy1D : ctx.texture.proxy2D)[a.level];
+    TextureImage& proxy = proxyLevels(ctx, a.target)[a.level];
     proxy.clear();
-    if (fitsLevel(a.level, w, h)) {
+    if (fitsLevel(a.level, w, h, d, a.dimensions)) {
       proxy.width = w;
       proxy.height = h;
+      proxy.depth = d;
       proxy.border = a.border;
       proxy.internalFormat = a.internalFormat;
       proxy.base = base;
@@ -145,53 +209,61 @@ void texImage(Context& ctx, const TexImageArguments& a, const void* pixels, cons
     }
     return;
   }
-  if (!fitsLevel(a.level, w, h)) return recordError(ctx, GL_INVALID_VALUE);
+  if (!fitsLevel(a.level, w, h, d, a.dimensions)) return recordError(ctx, GL_INVALID_VALUE);
 
-  TextureObject& texture = *boundTexture(ctx, a.target);
+  const ImageTarget target = imageTarget(ctx, a.target);
+  TextureObject& texture = *target.texture;
+  TextureImage& slot = texture.image(target.face, a.level);
   try {
     TextureImage image;
     image.internalFormat = a.internalFormat;
     image.base = base;
     image.border = a.border;
-    if (w > 0 && h > 0) {
+    if (w > 0 && h > 0 && d > 0) {
       image.width = w;
       image.height = h;
-      image.texels.assign(static_cast<size_t>(w) * static_cast<size_t>(h) * 4, 0);
-      const int fullHeight = a.dimensions == 2 ? a.height : 1;
+      image.depth = d;
+      image.texels.assign(
+          static_cast<size_t>(w) * static_cast<size_t>(h) * static_cast<size_t>(d) * 4, 0);
+      const int fullHeight = a.dimensions >= 2 ? a.height : 1;
+      const int fullDepth = a.dimensions == 3 ? a.depth : 1;
       if (unpacked) {
-        copyInsideBorder(*unpacked, a.width, a.border, a.dimensions, image);
+        copyInsideBorder(*unpacked, a.width, fullHeight, a.border, a.dimensions, image);
       } else if (pixels != nullptr) {
         if (a.border == 0) {
-          unpackTexels(pixels, w, h, a.format, a.type, unpackLayout(ctx), base, image.texels);
+          unpackBlock(pixels, a.dimensions, w, h, d, a.format, a.type, unpackLayout(ctx), base,
+                      image.texels);
         } else {
           std::vector<uint8_t> full;
-          unpackTexels(pixels, a.width, fullHeight, a.format, a.type, unpackLayout(ctx), base, full);
-          copyInsideBorder(full, a.width, a.border, a.dimensions, image);
+          unpackBlock(pixels, a.dimensions, a.width, fullHeight, fullDepth, a.format, a.type,
+                      unpackLayout(ctx), base, full);
+          copyInsideBorder(full, a.width, fullHeight, a.border, a.dimensions, image);
         }
       }
     }
-    texture.levels[a.level] = std::move(image);
-    afterBaseLevelChange(texture, a.level);
+    slot = std::move(image);
+    afterBaseLevelChange(texture, target.face, a.level);
   } catch (const std::bad_alloc&) {
-    texture.levels[a.level].clear();
+    slot.clear();
     texture.updateCompleteness();
     recordError(ctx, GL_OUT_OF_MEMORY);
   }
 }
 
 UnpackedTexels unpackForDisplayList(const Context& ctx, const TexSubImageArguments& a, const void* pixels) {
-  const TextureObject* texture = boundTexture(ctx, a.target);
-  if (pixels == nullptr || texture == nullptr || a.target != nonProxyTarget(a.dimensions) ||
-      a.level < 0 || a.level >= kMaxTextureLevels || a.width < 0 || a.height < 0 ||
+  if (pixels == nullptr || !isImageTarget(a.dimensions, a.target) || a.level < 0 ||
+      a.level >= kMaxTextureLevels || a.width < 0 || a.height < 0 ||
       checkTexelFormatAndType(a.format, a.type) != GL_NO_ERROR)
     return nullptr;
+  const ImageTarget target = imageTarget(const_cast<Context&>(ctx), a.target);
   // The base format decides which components are kept; it is the one of the image when the list
   // is compiled (an image defined later with another format is rare enough to accept this).
-  const TextureImage& image = texture->levels[a.level];
+  const TextureImage& image = target.texture->image(target.face, a.level);
   try {
     auto texels = std::make_shared<std::vector<uint8_t>>();
-    unpackTexels(pixels, a.width, a.dimensions == 2 ? a.height : 1, a.format, a.type,
-                 unpackLayout(ctx), image.base, *texels);
+    unpackBlock(pixels, a.dimensions, a.width, a.dimensions >= 2 ? a.height : 1,
+                a.dimensions == 3 ? a.depth : 1, a.format, a.type, unpackLayout(ctx), image.base,
+                *texels);
     return texels;
   } catch (const std::bad_alloc&) {
     return nullptr;
@@ -200,39 +272,53 @@ UnpackedTexels unpackForDisplayList(const Context& ctx, const TexSubImageArgumen
 
 void texSubImage(Context& ctx, const TexSubImageArguments& a, const void* pixels, const UnpackedTexels& unpacked) {
   if (rejectInsideBeginEnd(ctx)) return;
-  if (a.target != nonProxyTarget(a.dimensions)) return recordError(ctx, GL_INVALID_ENUM);
+  if (!isImageTarget(a.dimensions, a.target)) return recordError(ctx, GL_INVALID_ENUM);
   if (a.level < 0 || a.level >= kMaxTextureLevels) return recordError(ctx, GL_INVALID_VALUE);
   if (GLenum e = checkTexelFormatAndType(a.format, a.type); e != GL_NO_ERROR) return recordError(ctx, e);
-  TextureObject& texture = *boundTexture(ctx, a.target);
-  TextureImage& image = texture.levels[a.level];
+  const ImageTarget target = imageTarget(ctx, a.target);
+  TextureObject& texture = *target.texture;
+  TextureImage& image = texture.image(target.face, a.level);
   if (!image.defined()) return recordError(ctx, GL_INVALID_OPERATION);
-  const int height = a.dimensions == 2 ? a.height : 1;
-  const int yoffset = a.dimensions == 2 ? a.yoffset : 0;
+  const int height = a.dimensions >= 2 ? a.height : 1;
+  const int yoffset = a.dimensions >= 2 ? a.yoffset : 0;
+  const int depth = a.dimensions == 3 ? a.depth : 1;
+  const int zoffset = a.dimensions == 3 ? a.zoffset : 0;
   const int b = image.border;
-  const int rowBorder = a.dimensions == 2 ? b : 0;
-  // Spec 3.8.2: the rectangle must lie inside the image, border included.
-  if (a.width < 0 || height < 0 || a.xoffset < -b || a.xoffset + a.width > image.width + b ||
-      yoffset < -rowBorder || yoffset + height > image.height + rowBorder)
+  const int rowBorder = a.dimensions >= 2 ? b : 0;
+  const int sliceBorder = a.dimensions == 3 ? b : 0;
+  // Spec 3.8.2: the box must lie inside the image, border included.
+  if (a.width < 0 || height < 0 || depth < 0 || a.xoffset < -b ||
+      a.xoffset + a.width > image.width + b || yoffset < -rowBorder ||
+      yoffset + height > image.height + rowBorder || zoffset < -sliceBorder ||
+      zoffset + depth > image.depth + sliceBorder)
     return recordError(ctx, GL_INVALID_VALUE);
-  if (a.width == 0 || height == 0) return;
+  if (a.width == 0 || height == 0 || depth == 0) return;
   if (!unpacked && pixels == nullptr) return;
   try {
     std::vector<uint8_t> local;
     const std::vector<uint8_t>* texels = unpacked.get();
     if (texels == nullptr) {
-      unpackTexels(pixels, a.width, height, a.format, a.type, unpackLayout(ctx), image.base, local);
+      unpackBlock(pixels, a.dimensions, a.width, height, depth, a.format, a.type,
+                  unpackLayout(ctx), image.base, local);
       texels = &local;
     }
-    for (int j = 0; j < height; ++j) {
-      const int y = yoffset + j;
-      if (y < 0 || y >= image.height) continue;  // a border row: not stored
-      for (int i = 0; i < a.width; ++i) {
-        const int x = a.xoffset + i;
-        if (x < 0 || x >= image.width) continue;
-        std::memcpy(image.texel(x, y), &(*texels)[(static_cast<size_t>(j) * static_cast<size_t>(a.width) + static_cast<size_t>(i)) * 4], 4);
+    for (int k = 0; k < depth; ++k) {
+      const int z = zoffset + k;
+      if (z < 0 || z >= image.depth) continue;  // a border slice: not stored
+      for (int j = 0; j < height; ++j) {
+        const int y = yoffset + j;
+        if (y < 0 || y >= image.height) continue;  // a border row: not stored
+        for (int i = 0; i < a.width; ++i) {
+          const int x = a.xoffset + i;
+          if (x < 0 || x >= image.width) continue;
+          const size_t from = (static_cast<size_t>(k) * static_cast<size_t>(height) +
+                               static_cast<size_t>(j)) * static_cast<size_t>(a.width) +
+                              static_cast<size_t>(i);
+          std::memcpy(image.texel(x, y, z), &(*texels)[from * 4], 4);
+        }
       }
     }
-    afterBaseLevelChange(texture, a.level);
+    afterBaseLevelChange(texture, target.face, a.level);
   } catch (const std::bad_alloc&) {
     recordError(ctx, GL_OUT_OF_MEMORY);
   }
@@ -241,7 +327,7 @@ void texSubImage(Context& ctx, const TexSubImageArguments& a, const void* pixels
 void copyTexImage(Context& ctx, int dimensions, GLenum target, GLint level, GLenum internalFormat,
                   GLint x, GLint y, GLsizei width, GLsizei height, GLint border) {
   if (rejectInsideBeginEnd(ctx)) return;
-  if (target != nonProxyTarget(dimensions)) return recordError(ctx, GL_INVALID_ENUM);
+  if (!isImageTarget(dimensions, target)) return recordError(ctx, GL_INVALID_ENUM);
   if (level < 0 || level >= kMaxTextureLevels) return recordError(ctx, GL_INVALID_VALUE);
   BaseFormat base;
   // Spec 3.8.2: the component counts 1 to 4 are not internal formats of glCopyTexImage.
@@ -249,12 +335,17 @@ void copyTexImage(Context& ctx, int dimensions, GLenum target, GLint level, GLen
   if (format >= 1 && format <= 4) return recordError(ctx, GL_INVALID_VALUE);
   if (!baseFormatOfInternalFormat(format, &base)) return recordError(ctx, GL_INVALID_VALUE);
   if (dimensions == 1) height = 1;
-  int w = 0, h = 0;
-  if (GLenum e = checkImageSize(dimensions, width, height, border, &w, &h); e != GL_NO_ERROR)
+  int w = 0, h = 0, d = 0;
+  if (GLenum e = checkImageSize(dimensions, width, height, 1, border, &w, &h, &d); e != GL_NO_ERROR)
     return recordError(ctx, e);
   if (!fitsLevel(level, w, h)) return recordError(ctx, GL_INVALID_VALUE);
+  if (isCubeMapTarget(target) && w != h) return recordError(ctx, GL_INVALID_VALUE);
+  // No colour buffer to read from after glReadBuffer(GL_NONE), as for glReadPixels (Mesa too).
+  if (!readsColor(ctx.pixelTransfer.readBuffer)) return recordError(ctx, GL_INVALID_OPERATION);
 
-  TextureObject& texture = *boundTexture(ctx, target);
+  const ImageTarget named = imageTarget(ctx, target);
+  TextureObject& texture = *named.texture;
+  TextureImage& slot = texture.image(named.face, level);
   try {
     TextureImage image;
     image.internalFormat = format;
@@ -273,32 +364,40 @@ void copyTexImage(Context& ctx, int dimensions, GLenum target, GLint level, GLen
         }
       }
     }
-    texture.levels[level] = std::move(image);
-    afterBaseLevelChange(texture, level);
+    slot = std::move(image);
+    afterBaseLevelChange(texture, named.face, level);
   } catch (const std::bad_alloc&) {
-    texture.levels[level].clear();
+    slot.clear();
     texture.updateCompleteness();
     recordError(ctx, GL_OUT_OF_MEMORY);
   }
 }
 
 void copyTexSubImage(Context& ctx, int dimensions, GLenum target, GLint level, GLint xoffset,
-                     GLint yoffset, GLint x, GLint y, GLsizei width, GLsizei height) {
+                     GLint yoffset, GLint x, GLint y, GLsizei width, GLsizei height,
+                     GLint zoffset) {
   if (rejectInsideBeginEnd(ctx)) return;
-  if (target != nonProxyTarget(dimensions)) return recordError(ctx, GL_INVALID_ENUM);
+  if (!isImageTarget(dimensions, target)) return recordError(ctx, GL_INVALID_ENUM);
   if (level < 0 || level >= kMaxTextureLevels) return recordError(ctx, GL_INVALID_VALUE);
-  TextureObject& texture = *boundTexture(ctx, target);
-  TextureImage& image = texture.levels[level];
+  const ImageTarget named = imageTarget(ctx, target);
+  TextureObject& texture = *named.texture;
+  TextureImage& image = texture.image(named.face, level);
   if (!image.defined()) return recordError(ctx, GL_INVALID_OPERATION);
   if (dimensions == 1) {
     height = 1;
     yoffset = 0;
   }
   const int b = image.border;
-  const int rowBorder = dimensions == 2 ? b : 0;
+  const int rowBorder = dimensions >= 2 ? b : 0;
+  const int sliceBorder = dimensions == 3 ? b : 0;
+  if (dimensions < 3) zoffset = 0;
   if (width < 0 || height < 0 || xoffset < -b || xoffset + width > image.width + b ||
-      yoffset < -rowBorder || yoffset + height > image.height + rowBorder)
+      yoffset < -rowBorder || yoffset + height > image.height + rowBorder ||
+      zoffset < -sliceBorder || zoffset >= image.depth + sliceBorder)
     return recordError(ctx, GL_INVALID_VALUE);
+  if (!readsColor(ctx.pixelTransfer.readBuffer)) return recordError(ctx, GL_INVALID_OPERATION);
+  // A border slice of a 3D image is not stored.
+  if (zoffset < 0 || zoffset >= image.depth) return;
   for (int j = 0; j < height; ++j) {
     const int ty = yoffset + j;
     if (ty < 0 || ty >= image.height) continue;
@@ -307,10 +406,10 @@ void copyTexSubImage(Context& ctx, int dimensions, GLenum target, GLint level, G
       if (tx < 0 || tx >= image.width) continue;
       float rgba[4];
       readFramebufferPixel(ctx, x + i, y + j, rgba);
-      storeTexel(image.base, rgba, image.texel(tx, ty));
+      storeTexel(image.base, rgba, image.texel(tx, ty, zoffset));
     }
   }
-  afterBaseLevelChange(texture, level);
+  afterBaseLevelChange(texture, named.face, level);
 }
 
 }  // namespace glass::gl

@@ -16,9 +16,19 @@ namespace glass::gl {
 
 struct Context;
 
-// The texture object bound to GL_TEXTURE_1D or GL_TEXTURE_2D; null for any other target.
+// The texture object of the active unit bound to GL_TEXTURE_1D, GL_TEXTURE_2D, GL_TEXTURE_3D or
+// GL_TEXTURE_CUBE_MAP; null for any other target.
 TextureObject* boundTexture(Context& ctx, GLenum target);
 const TextureObject* boundTexture(const Context& ctx, GLenum target);
+
+// The texture and face whose images an image target names: GL_TEXTURE_1D, GL_TEXTURE_2D and
+// GL_TEXTURE_3D (face 0), GL_TEXTURE_CUBE_MAP_POSITIVE_X .. NEGATIVE_Z (the cube map's faces
+// 0..5); the texture is null for any other target.
+struct ImageTarget {
+  TextureObject* texture = nullptr;
+  int face = 0;
+};
+ImageTarget imageTarget(Context& ctx, GLenum target);
 
 PixelLayout unpackLayout(const Context& ctx);
 PixelLayout packLayout(const Context& ctx);
@@ -29,7 +39,7 @@ struct TexImageArguments {
   GLenum target = GL_TEXTURE_2D;
   GLint level = 0;
   GLint internalFormat = GL_RGBA;
-  GLsizei width = 0, height = 1;
+  GLsizei width = 0, height = 1, depth = 1;
   GLint border = 0;
   GLenum format = GL_RGBA;
   GLenum type = GL_UNSIGNED_BYTE;
@@ -51,8 +61,8 @@ struct TexSubImageArguments {
   int dimensions = 2;
   GLenum target = GL_TEXTURE_2D;
   GLint level = 0;
-  GLint xoffset = 0, yoffset = 0;
-  GLsizei width = 0, height = 1;
+  GLint xoffset = 0, yoffset = 0, zoffset = 0;
+  GLsizei width = 0, height = 1, depth = 1;
   GLenum format = GL_RGBA;
   GLenum type = GL_UNSIGNED_BYTE;
 };
@@ -62,7 +72,9 @@ void texSubImage(Context& ctx, const TexSubImageArguments& args, const void* pix
 // glCopyTexImage1D/2D and glCopyTexSubImage1D/2D: the texels come from the colour buffer.
 void copyTexImage(Context& ctx, int dimensions, GLenum target, GLint level, GLenum internalFormat,
                   GLint x, GLint y, GLsizei width, GLsizei height, GLint border);
+// glCopyTexSubImage3D copies into slice zoffset of a 3D image.
 void copyTexSubImage(Context& ctx, int dimensions, GLenum target, GLint level, GLint xoffset,
-                     GLint yoffset, GLint x, GLint y, GLsizei width, GLsizei height);
+                     GLint yoffset, GLint x, GLint y, GLsizei width, GLsizei height,
+                     GLint zoffset = 0);
 
 }  // namespace glass::gl

@@ -1,7 +1,8 @@
-// The texture environment: how the filtered texel combines with the incoming fragment colour
-// (OpenGL 1.5 specification, section 3.8.13, tables 3.22 and 3.23).
+// The texture environment of one texture unit: how the unit's filtered texel combines with the
+// colour the previous unit passed on (OpenGL 1.5 specification, section 3.8.13, tables 3.22 to
+// 3.25).
 //
-// With Cf, Af the fragment colour, Ct, At (or Lt, It) the texel, Cc, Ac the environment colour:
+// With Cf, Af the incoming colour, Ct, At (or Lt, It) the texel, Cc, Ac the environment colour:
 //   base format      REPLACE        MODULATE            DECAL                      BLEND                          ADD
 //   ALPHA            Cf, At         Cf, Af At           (Cf, Af)                   Cf, Af At                      Cf, Af At
 //   LUMINANCE        Lt, Af         Cf Lt, Af           (Cf, Af)                   Cf(1-Lt)+Cc Lt, Af             Cf+Lt, Af
@@ -10,7 +11,7 @@
 //   RGB              Ct, Af         Cf Ct, Af           Ct, Af                     Cf(1-Ct)+Cc Ct, Af             Cf+Ct, Af
 //   RGBA             Ct, At         Cf Ct, Af At        Cf(1-At)+Ct At, Af         Cf(1-Ct)+Cc Ct, Af At          Cf+Ct, Af At
 // DECAL is undefined for the first four base formats; glass leaves the fragment unchanged there,
-// as Mesa does. ADD results are clamped to [0, 1].
+// as Mesa does. ADD results are clamped to [0, 1]. GL_COMBINE is texture_combine.h.
 #pragma once
 
 #include <GL/gl.h>
@@ -19,8 +20,26 @@
 
 namespace glass::gl {
 
-// Combines `texel` (in the layout of texture_image.h) into `color` (the fragment colour, RGBA
-// in [0, 1]) in place.
+// glTexEnv state of one unit (table 6.19 and its defaults), and the unit's level-of-detail bias
+// (GL_TEXTURE_FILTER_CONTROL, OpenGL 1.4).
+struct TextureEnvironment {
+  GLenum mode = GL_MODULATE;
+  float color[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+  // GL_COMBINE (OpenGL 1.3 and 1.4, section 3.8.13): functions, three sources and operands each
+  // for RGB and alpha, and the scales (1, 2 or 4).
+  GLenum combineRGB = GL_MODULATE;
+  GLenum combineAlpha = GL_MODULATE;
+  GLenum sourceRGB[3] = {GL_TEXTURE, GL_PREVIOUS, GL_CONSTANT};
+  GLenum sourceAlpha[3] = {GL_TEXTURE, GL_PREVIOUS, GL_CONSTANT};
+  GLenum operandRGB[3] = {GL_SRC_COLOR, GL_SRC_COLOR, GL_SRC_ALPHA};
+  GLenum operandAlpha[3] = {GL_SRC_ALPHA, GL_SRC_ALPHA, GL_SRC_ALPHA};
+  float rgbScale = 1.0f;
+  float alphaScale = 1.0f;
+  float lodBias = 0.0f;  // glTexEnv(GL_TEXTURE_FILTER_CONTROL, GL_TEXTURE_LOD_BIAS)
+};
+
+// Combines `texel` (in the layout of texture_image.h) into `color` (the incoming colour, RGBA in
+// [0, 1]) in place, for the modes REPLACE, MODULATE, DECAL, BLEND and ADD.
 void applyTextureEnvironment(GLenum mode, BaseFormat base, const float texel[4],
                              const float envColor[4], float color[4]);
 

@@ -1,10 +1,15 @@
 // The texturing stage as the pipeline sees it (texture_hooks.h): texture coordinates per vertex,
 // the textured colour per fragment, and the enables and glGet values of texturing state.
+// Texture unit 0's coordinates are also those of bump mapping.
 #include "texture/texture_hooks.h"
+
+#include <algorithm>
 
 #include "core/context.h"
 #include "core/state_value.h"
 #include "texture/bump_mapping.h"
+#include "texture/cube_map.h"
+#include "texture/texture_combine.h"
 #include "texture/texture_environment.h"
 #include "texture/texture_lod.h"
 #include "texture/texture_sampler.h"
@@ -13,29 +18,33 @@
 namespace glass::gl {
 
 bool setTextureCapability(Context& ctx, GLenum cap, bool enabled) {
-  TextureState& t = ctx.texture;
+  TextureUnit& u = ctx.texture.unit();
   switch (cap) {
-    case GL_TEXTURE_1D: t.enabled1D = enabled; return true;
-    case GL_TEXTURE_2D: t.enabled2D = enabled; return true;
+    case GL_TEXTURE_1D: u.enabled1D = enabled; return true;
+    case GL_TEXTURE_2D: u.enabled2D = enabled; return true;
+    case GL_TEXTURE_3D: u.enabled3D = enabled; return true;
+    case GL_TEXTURE_CUBE_MAP: u.enabledCube = enabled; return true;
     case GL_TEXTURE_GEN_S:
     case GL_TEXTURE_GEN_T:
     case GL_TEXTURE_GEN_R:
-    case GL_TEXTURE_GEN_Q: t.texGen[cap - GL_TEXTURE_GEN_S].enabled = enabled; return true;
-    case GL_BUMP_MAP_GLASS: t.bumpMap.enabled = enabled; return true;
+    case GL_TEXTURE_GEN_Q: u.texGen[cap - GL_TEXTURE_GEN_S].enabled = enabled; return true;
+    case GL_BUMP_MAP_GLASS: ctx.texture.bumpMap.enabled = enabled; return true;
     default: return false;
   }
 }
 
 bool getTextureCapability(const Context& ctx, GLenum cap, bool& enabled) {
-  const TextureState& t = ctx.texture;
+  const TextureUnit& u = ctx.texture.unit();
   switch (cap) {
-    case GL_TEXTURE_1D: enabled = t.enabled1D; return true;
-    case GL_TEXTURE_2D: enabled = t.enabled2D; return true;
+    case GL_TEXTURE_1D: enabled = u.enabled1D; return true;
+    case GL_TEXTURE_2D: enabled = u.enabled2D; return true;
+    case GL_TEXTURE_3D: enabled = u.enabled3D; return true;
+    case GL_TEXTURE_CUBE_MAP: enabled = u.enabledCube; return true;
     case GL_TEXTURE_GEN_S:
     case GL_TEXTURE_GEN_T:
     case GL_TEXTURE_GEN_R:
-    case GL_TEXTURE_GEN_Q: enabled = t.texGen[cap - GL_TEXTURE_GEN_S].enabled; return true;
-    case GL_BUMP_MAP_GLASS: enabled = t.bumpMap.enabled; return true;
+    case GL_TEXTURE_GEN_Q: enabled = u.texGen[cap - GL_TEXTURE_GEN_S].enabled; return true;
+    case GL_BUMP_MAP_GLASS: enabled = ctx.texture.bumpMap.enabled; return true;
     default: return false;
   }
 }
@@ -46,36 +55,62 @@ bool queryTextureState(const Context& ctx, GLenum pname, StateValue& value) {
     value.setBooleans({enabled});
     return true;
   }
-  const TextureState& t = ctx.texture;
+  const TextureUnit& u = ctx.texture.unit();
   switch (pname) {
-    case GL_TEXTURE_BINDING_1D: value.setIntegers({static_cast<double>(t.bound1D->name)}); return true;
-    case GL_TEXTURE_BINDING_2D: value.setIntegers({static_cast<double>(t.bound2D->name)}); return true;
-    case GL_MAX_TEXTURE_SIZE: value.setIntegers({static_cast<double>(kMaxTextureSize)}); return true;
-    case GL_MAX_TEXTURE_UNITS: value.setIntegers({1}); return true;
+    case GL_TEXTURE_BINDING_1D: value.setIntegers({double(u.bound1D->name)}); return true;
+    case GL_TEXTURE_BINDING_2D: value.setIntegers({double(u.bound2D->name)}); return true;
+    case GL_TEXTURE_BINDING_3D: value.setIntegers({double(u.bound3D->name)}); return true;
+    case GL_TEXTURE_BINDING_CUBE_MAP: value.setIntegers({double(u.boundCube->name)}); return true;
+    case GL_MAX_3D_TEXTURE_SIZE: value.setIntegers({double(kMax3DTextureSize)}); return true;
+    case GL_MAX_TEXTURE_SIZE:
+    case GL_MAX_CUBE_MAP_TEXTURE_SIZE: value.setIntegers({double(kMaxTextureSize)}); return true;
+    case GL_MAX_TEXTURE_LOD_BIAS: value.setFloats(&kMaxTextureLodBias, 1); return true;
     default: return false;
   }
 }
 
 bool texturingEnabled(const Context& ctx) {
-  const TextureState& t = ctx.texture;
-  return t.enabled1D || t.enabled2D || t.bumpMap.enabled;
+  return textureUnitsInUse(ctx) > 0;
 }
 
-void computeTexCoords(const Context& ctx, const float objectPosition[4], const float eyePosition[4],
-                      const float eyeNormal[3], float out[4]) {
+int textureUnitsInUse(const Context& ctx) {
   const TextureState& t = ctx.texture;
-  float coords[4];
-  for (int i = 0; i < 4; ++i) coords[i] = ctx.current.texCoord[i];
-  bool anySphereMap = false;
-  for (const TexGenCoordinate& g : t.texGen) anySphereMap |= g.enabled && g.mode == GL_SPHERE_MAP;
-  float sphereMap[2] = {0.0f, 0.0f};
-  if (anySphereMap) sphereMapCoordinates(eyePosition, eyeNormal, &sphereMap[0], &sphereMap[1]);
-  for (int i = 0; i < 4; ++i) {
-    if (t.texGen[i].enabled)
-      coords[i] = generateTexCoordinate(t.texGen[i], i, objectPosition, eyePosition, sphereMap);
+  for (int u = kTextureUnitCount - 1; u >= 0; --u) {
+    if (t.units[u].anyTargetEnabled()) return u + 1;
   }
-  // Spec 2.11.4 ends with the texture matrix: (s, t, r, q) is transformed as a column vector.
-  transformVector4(ctx.transform.texture.top(), coords, out);
+  // Bump mapping reads unit 0's coordinates.
+  return t.bumpMap.enabled ? 1 : 0;
+}
+
+namespace {
+
+// One unit's (s, t, r, q): generation where enabled, else the current coordinates, then the
+// unit's texture matrix (spec 2.11.4: transformed as a column vector).
+void unitTexCoords(const Context& ctx, int unit, const float objectPosition[4],
+                   const float eyePosition[4], const float eyeNormal[3], float out[4]) {
+  const TextureUnit& u = ctx.texture.units[unit];
+  float coords[4];
+  for (int i = 0; i < 4; ++i) coords[i] = ctx.current.texCoord[unit][i];
+  bool anyEyeVectors = false;
+  for (const TexGenCoordinate& g : u.texGen)
+    anyEyeVectors |= g.enabled && isEyeSpaceVectorMode(g.mode);
+  EyeSpaceVectors vectors;
+  if (anyEyeVectors) vectors = eyeSpaceVectors(eyePosition, eyeNormal);
+  for (int i = 0; i < 4; ++i) {
+    if (u.texGen[i].enabled)
+      coords[i] = generateTexCoordinate(u.texGen[i], i, objectPosition, eyePosition, vectors);
+  }
+  transformVector4(ctx.transform.texture[unit].top(), coords, out);
+}
+
+}  // namespace
+
+void computeTexCoords(const Context& ctx, int units, const float objectPosition[4],
+                      const float eyePosition[4], const float eyeNormal[3], float* varyings) {
+  for (int u = 0; u < units; ++u) {
+    unitTexCoords(ctx, u, objectPosition, eyePosition, eyeNormal,
+                  varyings + varying::texCoordSlot(u));
+  }
 }
 
 namespace {
@@ -117,37 +152,134 @@ const TextureObject* bumpHeightMap(const Context& ctx) {
 
 }  // namespace
 
-void applyTexturing(const Context& ctx, const raster::FragmentBatch& batch, int fragmentIndex,
-                    float color[4]) {
-  const TextureObject* texture = ctx.texture.activeTexture();
-  if (texture == nullptr) return;
-  const raster::Fragment& f = batch.fragments[fragmentIndex];
-  const float* tc = f.varyings + varying::kTexCoord;
-  const float q = tc[3];
-  const float s = tc[0] / q, t = tc[1] / q;
-  const bool twoD = texture->target == GL_TEXTURE_2D;
+namespace {
 
-  float texel[4];
-  const SamplerParameters& p = texture->params;
+// The unit's bias and the texture's, their sum clamped (OpenGL 1.4, 3.8.8).
+float lodBias(float unitBias, const SamplerParameters& p) {
+  return std::clamp(unitBias + p.lodBias, -kMaxTextureLodBias, kMaxTextureLodBias);
+}
+
+// A cube map's filtered texel (section 3.8.6): the face the fragment's (s, t, r) points at. For
+// the level of detail, the directions at the quad's pixels are projected on that face, and their
+// differences times the face size stand in for the derivatives of u and v.
+void sampleCubeMap(const Context& ctx, const TextureObject& texture, int slot, float unitBias,
+                   const raster::FragmentBatch& batch, const raster::Fragment& f, float texel[4]) {
+  const float* tc = f.varyings + slot;
+  const CubeFaceCoordinates c = cubeFaceCoordinates(tc[0], tc[1], tc[2]);
+  const SamplerParameters& p = texture.params;
+  const bool needLambda = isMipmapFilter(p.minFilter) || p.minFilter != p.magFilter;
+  if (!needLambda || batch.planes == nullptr) {
+    sampleTextureMagnified(texture, c.s, c.t, texel, c.face);
+    return;
+  }
+  const raster::AttributePlanes& planes = *batch.planes;
+  const PixelQuad quad = pixelQuadOf(f.x, f.y, ctx.framebuffer.height());
+  // The direction at a pixel centre: (s/w, t/w, r/w) from the planes; the positive 1/w does not
+  // change the face projection.
+  auto projected = [&](double x, double y, float* s, float* t) {
+    float r[3];
+    for (int k = 0; k < 3; ++k) {
+      const int v = slot + k;
+      r[k] = static_cast<float>(planes.a0[v] + planes.dx[v] * x + planes.dy[v] * y);
+    }
+    cubeFaceProjection(c.face, r[0], r[1], r[2], s, t);
+  };
+  const double left = quad.left + 0.5, top = quad.top + 0.5;
+  float sUL, tUL, sUR, tUR, sLL, tLL;
+  projected(left, top, &sUL, &tUL);
+  projected(left + 1.0, top, &sUR, &tUR);
+  projected(left, top - 1.0, &sLL, &tLL);
+  TexCoordDerivatives d;
+  d.dsdx = sUR - sUL;
+  d.dtdx = tUR - tUL;
+  d.dsdy = sUL - sLL;
+  d.dtdy = tUL - tLL;
+  const TextureImage& base = texture.baseImage();
+  const double rhoSquared = textureScaleFactorSquared(d, base.width, base.height);
+  const float lambda =
+      levelOfDetailFromSquaredScale(rhoSquared, p.minLod, p.maxLod, lodBias(unitBias, p));
+  sampleTexture(texture, c.s, c.t, lambda, texel, c.face);
+}
+
+// The filtered texel of `texture` for a fragment, with the texture coordinates in the fragment's
+// varyings from `slot` and the level-of-detail bias `unitBias` of the unit (spec 3.8.8).
+void sampleUnit(const Context& ctx, const TextureObject& texture, int slot, float unitBias,
+                const raster::FragmentBatch& batch, const raster::Fragment& f, float texel[4]) {
+  if (texture.target == GL_TEXTURE_CUBE_MAP)
+    return sampleCubeMap(ctx, texture, slot, unitBias, batch, f, texel);
+  const float* tc = f.varyings + slot;
+  const float q = tc[3];
+  const float s = tc[0] / q, t = tc[1] / q, r = tc[2] / q;
+  const bool threeD = texture.target == GL_TEXTURE_3D;
+  const bool twoD = texture.target == GL_TEXTURE_2D || threeD;
+  const SamplerParameters& p = texture.params;
   // Lambda only matters when the minification and magnification lookups differ.
   const bool needLambda = isMipmapFilter(p.minFilter) || p.minFilter != p.magFilter;
   if (!needLambda || batch.planes == nullptr) {
     // Points and lines carry no derivatives: the base level, magnified (spec 3.8.9).
-    sampleTextureMagnified(*texture, s, t, texel);
-  } else {
-    // One lambda per 2x2 pixel quad (texture_lod.h): every fragment of the quad computes the
-    // same value from the same upper-left pixel.
-    const PixelQuad quad = pixelQuadOf(f.x, f.y, ctx.framebuffer.height());
-    const TexCoordDerivatives d =
-        quadTexCoordDifferences(*batch.planes, varying::kTexCoord, varying::kTexCoord + 1,
-                                varying::kTexCoord + 3, quad, twoD);
-    const TextureImage& base = texture->baseImage();
-    const double rhoSquared = textureScaleFactorSquared(d, base.width, twoD ? base.height : 0);
-    const float lambda = levelOfDetailFromSquaredScale(rhoSquared, p.minLod, p.maxLod);
-    sampleTexture(*texture, s, t, lambda, texel);
+    sampleTextureMagnified(texture, s, t, texel, 0, r);
+    return;
   }
-  applyTextureEnvironment(ctx.texture.envMode, texture->baseImage().base, texel,
-                          ctx.texture.envColor, color);
+  // One lambda per 2x2 pixel quad (texture_lod.h): every fragment of the quad computes the
+  // same value from the same upper-left pixel.
+  const PixelQuad quad = pixelQuadOf(f.x, f.y, ctx.framebuffer.height());
+  const TexCoordDerivatives d =
+      quadTexCoordDifferences(*batch.planes, slot, slot + 1, slot + 3, quad, twoD);
+  const TextureImage& base = texture.baseImage();
+  double rhoSquared = textureScaleFactorSquared(d, base.width, twoD ? base.height : 0);
+  if (threeD) {
+    // Equation 3.21 with the w terms: the differences of r/q, times the depth, join u's and v's.
+    const TexCoordDerivatives dr =
+        quadTexCoordDifferences(*batch.planes, slot + 2, slot + 1, slot + 3, quad, false);
+    const double dwdx = dr.dsdx * base.depth, dwdy = dr.dsdy * base.depth;
+    const double u2x = d.dsdx * base.width, v2x = d.dtdx * base.height;
+    const double u2y = d.dsdy * base.width, v2y = d.dtdy * base.height;
+    rhoSquared =
+        std::max(u2x * u2x + v2x * v2x + dwdx * dwdx, u2y * u2y + v2y * v2y + dwdy * dwdy);
+  }
+  const float lambda =
+      levelOfDetailFromSquaredScale(rhoSquared, p.minLod, p.maxLod, lodBias(unitBias, p));
+  sampleTexture(texture, s, t, lambda, texel, 0, r);
+}
+
+}  // namespace
+
+void applyTexturing(const Context& ctx, const raster::FragmentBatch& batch, int fragmentIndex,
+                    float color[4]) {
+  const raster::Fragment& f = batch.fragments[fragmentIndex];
+  const TextureState& state = ctx.texture;
+  // First every unit's texel, since GL_COMBINE may read any unit's (the GL 1.4 crossbar).
+  float texels[kTextureUnitCount][4];
+  const float* unitTexels[kTextureUnitCount] = {};
+  const TextureObject* textures[kTextureUnitCount] = {};
+  bool any = false;
+  for (int u = 0; u < kTextureUnitCount; ++u) {
+    const TextureUnit& unit = state.units[u];
+    if (!unit.anyTargetEnabled()) continue;
+    textures[u] = unit.activeTexture();
+    if (textures[u] == nullptr) continue;
+    sampleUnit(ctx, *textures[u], varying::texCoordSlot(u), unit.env.lodBias, batch, f, texels[u]);
+    unitTexels[u] = texels[u];
+    any = true;
+  }
+  if (!any) return;
+  // Then the environments in order of the units, each on the previous unit's result; a unit
+  // that is off passes its input on (spec 3.8.17).
+  const float primary[4] = {color[0], color[1], color[2], color[3]};
+  for (int u = 0; u < kTextureUnitCount; ++u) {
+    if (textures[u] == nullptr) continue;
+    const TextureEnvironment& env = state.units[u].env;
+    if (env.mode == GL_COMBINE) {
+      CombineSources sources;
+      sources.texel = texels[u];
+      sources.unitTexels = unitTexels;
+      sources.primary = primary;
+      sources.previous = color;
+      applyCombine(env, sources, color);
+    } else {
+      applyTextureEnvironment(env.mode, textures[u]->baseImage().base, texels[u], env.color, color);
+    }
+  }
 }
 
 bool bumpMappingActive(const Context& ctx) { return bumpHeightMap(ctx) != nullptr; }

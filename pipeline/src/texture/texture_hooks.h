@@ -11,25 +11,30 @@ namespace glass::gl {
 struct Context;
 struct StateValue;
 
-// glEnable/glDisable/glIsEnabled of GL_TEXTURE_1D/2D/..., GL_TEXTURE_GEN_S/T/R/Q. Return false
-// when cap is not a texturing capability.
+// glEnable/glDisable/glIsEnabled of GL_TEXTURE_1D/2D/..., GL_TEXTURE_GEN_S/T/R/Q of the active
+// texture unit. Return false when cap is not a texturing capability.
 bool setTextureCapability(Context& ctx, GLenum cap, bool enabled);
 bool getTextureCapability(const Context& ctx, GLenum cap, bool& enabled);
 // glGet of texturing state (GL_TEXTURE_BINDING_2D, ...). False when pname is not texturing state.
 bool queryTextureState(const Context& ctx, GLenum pname, StateValue& value);
 
-// Some texture target is enabled: the pipeline then computes texture coordinates per vertex,
-// interpolates them, and calls applyTexturing per fragment.
+// Some texture target of some unit is enabled: the pipeline then computes texture coordinates
+// per vertex, interpolates them, and calls applyTexturing per fragment.
 bool texturingEnabled(const Context& ctx);
+// One more than the highest texture unit with a target enabled (1 when only bump mapping is on):
+// the units whose coordinates the vertex stage computes and the rasterizer interpolates.
+int textureUnitsInUse(const Context& ctx);
 
-// Per vertex: texture coordinate generation and the texture matrix, giving (s, t, r, q).
-// objectPosition is the vertex as given, eyePosition = modelview * objectPosition, eyeNormal as
-// for lighting. The current texture coordinate is ctx.current.texCoord.
-void computeTexCoords(const Context& ctx, const float objectPosition[4], const float eyePosition[4],
-                      const float eyeNormal[3], float out[4]);
+// Per vertex: texture coordinate generation and the texture matrix of units 0 .. units - 1,
+// giving (s, t, r, q) of unit u in varyings[varying::texCoordSlot(u) ..]. objectPosition is the
+// vertex as given, eyePosition = modelview * objectPosition, eyeNormal as for lighting. The
+// current texture coordinates are ctx.current.texCoord[u].
+void computeTexCoords(const Context& ctx, int units, const float objectPosition[4],
+                      const float eyePosition[4], const float eyeNormal[3], float* varyings);
 
-// Per fragment, after rasterization: replaces color with the textured colour (spec 3.8.13).
-// The fragment's texture coordinates are batch.fragments[fragmentIndex].varyings[9..12]; the
+// Per fragment, after rasterization: replaces color with the textured colour, each enabled unit
+// in turn applying its environment to the previous unit's result (spec 3.8.13, 3.8.17). The
+// fragment's texture coordinates of unit u are in its varyings from varying::texCoordSlot(u); the
 // batch's attribute planes (triangles only) give the texture coordinates at the other pixels of
 // the fragment's 2x2 quad, whose differences set the level of detail (texture_lod.h).
 void applyTexturing(const Context& ctx, const raster::FragmentBatch& batch, int fragmentIndex,

@@ -26,6 +26,8 @@ enum class BaseFormat : uint8_t { Alpha, Luminance, LuminanceAlpha, Intensity, R
 // GL_MAX_TEXTURE_SIZE. Levels 0 .. kMaxTextureLevels - 1 exist, enough for a 4096-texel side.
 inline constexpr int kMaxTextureSize = 4096;
 inline constexpr int kMaxTextureLevels = 13;
+// GL_MAX_3D_TEXTURE_SIZE, as Mesa's llvmpipe reports it.
+inline constexpr int kMax3DTextureSize = 2048;
 
 // The base internal format of an internal format given to glTexImage (table 3.15 and 3.16, plus
 // the legacy component counts 1 to 4 and the GL 1.3 generic compressed formats, which glass
@@ -42,21 +44,24 @@ int componentBits(BaseFormat base, GLenum sizeQuery);
 struct TextureImage {
   int width = 0;               // 0: the level has no image
   int height = 0;              // 1 for a one-dimensional texture
+  int depth = 1;               // the number of slices of a three-dimensional texture, else 1
   int border = 0;              // as specified; the border texels themselves are not kept (below)
   GLint internalFormat = 1;    // as specified, returned by GL_TEXTURE_INTERNAL_FORMAT
   BaseFormat base = BaseFormat::Luminance;
-  // width * height texels, 4 bytes each, row 0 (t = 0) first. A border given with border = 1 is
+  // width * height * depth texels, 4 bytes each, row 0 (t = 0) of slice 0 (r = 0) first, each
+  // slice after the previous. A border given with border = 1 is
   // stripped when the image is specified, as Mesa does; texels outside the image take the
   // border colour instead (docs/texturing.md).
   std::vector<uint8_t> texels;
 
-  bool defined() const { return width > 0 && height > 0; }
-  const uint8_t* texel(int i, int j) const {
-    return &texels[(static_cast<std::size_t>(j) * static_cast<std::size_t>(width) + static_cast<std::size_t>(i)) * 4];
+  bool defined() const { return width > 0 && height > 0 && depth > 0; }
+  std::size_t texelIndex(int i, int j, int k) const {
+    return (static_cast<std::size_t>(k) * static_cast<std::size_t>(height) +
+            static_cast<std::size_t>(j)) * static_cast<std::size_t>(width) +
+           static_cast<std::size_t>(i);
   }
-  uint8_t* texel(int i, int j) {
-    return &texels[(static_cast<std::size_t>(j) * static_cast<std::size_t>(width) + static_cast<std::size_t>(i)) * 4];
-  }
+  const uint8_t* texel(int i, int j, int k = 0) const { return &texels[texelIndex(i, j, k) * 4]; }
+  uint8_t* texel(int i, int j, int k = 0) { return &texels[texelIndex(i, j, k) * 4]; }
   void clear() { *this = TextureImage(); }
 };
 

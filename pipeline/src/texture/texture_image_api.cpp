@@ -1,5 +1,5 @@
-// Texture images (OpenGL 1.5 specification, sections 3.8.1 to 3.8.3 and 6.1.4): glTexImage1D/2D,
-// glTexSubImage1D/2D, glCopyTexImage1D/2D, glCopyTexSubImage1D/2D, glGetTexImage and
+// Texture images (OpenGL 1.5 specification, sections 3.8.1 to 3.8.3 and 6.1.4): glTexImage1D/2D/3D,
+// glTexSubImage1D/2D/3D, glCopyTexImage1D/2D, glCopyTexSubImage1D/2D/3D, glGetTexImage and
 // glGetTexLevelParameter.
 #include <GL/gl.h>
 
@@ -18,7 +18,8 @@ namespace {
 void submitTexImage(const TexImageArguments& args, const void* pixels) {
   Context* ctx = currentContext();
   if (ctx == nullptr) return;
-  const bool proxy = args.target == GL_PROXY_TEXTURE_1D || args.target == GL_PROXY_TEXTURE_2D;
+  const bool proxy = args.target == GL_PROXY_TEXTURE_1D || args.target == GL_PROXY_TEXTURE_2D ||
+                     args.target == GL_PROXY_TEXTURE_3D || args.target == GL_PROXY_TEXTURE_CUBE_MAP;
   if (proxy || !ctx->lists.isCompiling()) {
     texImage(*ctx, args, pixels, nullptr);
     return;
@@ -54,28 +55,46 @@ void texelToGetRGBA(BaseFormat base, const uint8_t* texel, float rgba[4]) {
 
 void getTexImage(Context& ctx, GLenum target, GLint level, GLenum format, GLenum type, GLvoid* pixels) {
   if (rejectInsideBeginEnd(ctx)) return;
-  const TextureObject* texture = boundTexture(ctx, target);
-  if (texture == nullptr) return recordError(ctx, GL_INVALID_ENUM);
+  // glGetTexImage reads a 1D or 2D texture or a cube map face; GL_TEXTURE_CUBE_MAP itself names
+  // no image (spec 6.1.4).
+  const ImageTarget named = imageTarget(ctx, target);
+  if (named.texture == nullptr || target == GL_TEXTURE_CUBE_MAP)
+    return recordError(ctx, GL_INVALID_ENUM);
   if (level < 0 || level >= kMaxTextureLevels) return recordError(ctx, GL_INVALID_VALUE);
   if (GLenum e = checkTexelFormatAndType(format, type); e != GL_NO_ERROR) return recordError(ctx, e);
-  const TextureImage& image = texture->levels[level];
+  const TextureImage& image = named.texture->image(named.face, level);
   if (!image.defined() || pixels == nullptr) return;
   const PixelLayout layout = packLayout(ctx);
   std::vector<float> row(static_cast<size_t>(image.width) * 4);
-  for (int j = 0; j < image.height; ++j) {
-    for (int i = 0; i < image.width; ++i) texelToGetRGBA(image.base, image.texel(i, j), &row[static_cast<size_t>(i) * 4]);
-    packPixelRow(row.data(), image.width, j, format, type, layout, pixels);
+  // The slices of a 3D image follow each other GL_PACK_IMAGE_HEIGHT rows apart (or the image's
+  // height when that is 0), after GL_PACK_SKIP_IMAGES slices (spec 6.1.4 and 3.8.1).
+  const int imageRows = layout.imageHeight > 0 ? layout.imageHeight : image.height;
+  for (int k = 0; k < image.depth; ++k) {
+    PixelLayout sliceLayout = layout;
+    if (target == GL_TEXTURE_3D)
+      sliceLayout.skipRows = layout.skipRows + (layout.skipImages + k) * imageRows;
+    for (int j = 0; j < image.height; ++j) {
+      for (int i = 0; i < image.width; ++i)
+        texelToGetRGBA(image.base, image.texel(i, j, k), &row[static_cast<size_t>(i) * 4]);
+      packPixelRow(row.data(), image.width, j, format, type, sliceLayout, pixels);
+    }
   }
 }
 
 // The image glGetTexLevelParameter describes: a level of the bound texture or of a proxy.
 const TextureImage* levelImage(const Context& ctx, GLenum target, GLint level) {
   switch (target) {
-    case GL_TEXTURE_1D: return &ctx.texture.bound1D->levels[level];
-    case GL_TEXTURE_2D: return &ctx.texture.bound2D->levels[level];
+    case GL_TEXTURE_1D: return &ctx.texture.unit().bound1D->levels[level];
+    case GL_TEXTURE_2D: return &ctx.texture.unit().bound2D->levels[level];
+    case GL_TEXTURE_3D: return &ctx.texture.unit().bound3D->levels[level];
+    case GL_PROXY_TEXTURE_3D: return &ctx.texture.proxy3D[level];
+    case GL_PROXY_TEXTURE_CUBE_MAP: return &ctx.texture.proxyCube[level];
     case GL_PROXY_TEXTURE_1D: return &ctx.texture.proxy1D[level];
     case GL_PROXY_TEXTURE_2D: return &ctx.texture.proxy2D[level];
-    default: return nullptr;
+    default: {
+      const int face = cubeFaceOf(target);
+      return face >= 0 ? &ctx.texture.unit().boundCube->image(face, level) : nullptr;
+    }
   }
 }
 
@@ -92,11 +111,17 @@ bool texLevelParameter(Context& ctx, GLenum target, GLint level, GLenum pname, d
   }
   const TextureImage& image = *levelImage(ctx, target, level);
   const bool defined = image.defined();
-  const int rowBorder = (target == GL_TEXTURE_2D || target == GL_PROXY_TEXTURE_2D) ? image.border : 0;
+  const bool oneD = target == GL_TEXTURE_1D || target == GL_PROXY_TEXTURE_1D;
+  const int rowBorder = oneD ? 0 : image.border;
   switch (pname) {
     // Widths and heights include the border (spec 6.1.3: TEXTURE_WIDTH is w_s).
     case GL_TEXTURE_WIDTH: *value = defined ? image.width + 2 * image.border : 0; return true;
     case GL_TEXTURE_HEIGHT: *value = defined ? image.height + 2 * rowBorder : 0; return true;
+    case GL_TEXTURE_DEPTH: {
+      const bool threeD = target == GL_TEXTURE_3D || target == GL_PROXY_TEXTURE_3D;
+      *value = defined ? image.depth + (threeD ? 2 * image.border : 0) : 0;
+      return true;
+    }
     case GL_TEXTURE_BORDER: *value = defined ? image.border : 0; return true;
     case GL_TEXTURE_INTERNAL_FORMAT: *value = defined ? image.internalFormat : (image.internalFormat == 0 ? 0 : 1); return true;
     case GL_TEXTURE_RED_SIZE:
@@ -117,62 +142,42 @@ using glass::gl::Context;
 
 void GLAPIENTRY glTexImage1D(GLenum target, GLint level, GLint internalFormat, GLsizei width,
                              GLint border, GLenum format, GLenum type, const GLvoid* pixels) {
-  glass::gl::TexImageArguments a;
-  a.dimensions = 1;
-  a.target = target;
-  a.level = level;
-  a.internalFormat = internalFormat;
-  a.width = width;
-  a.height = 1;
-  a.border = border;
-  a.format = format;
-  a.type = type;
-  glass::gl::submitTexImage(a, pixels);
+  glass::gl::submitTexImage({1, target, level, internalFormat, width, 1, 1, border, format, type},
+                            pixels);
 }
 
 void GLAPIENTRY glTexImage2D(GLenum target, GLint level, GLint internalFormat, GLsizei width,
                              GLsizei height, GLint border, GLenum format, GLenum type,
                              const GLvoid* pixels) {
-  glass::gl::TexImageArguments a;
-  a.dimensions = 2;
-  a.target = target;
-  a.level = level;
-  a.internalFormat = internalFormat;
-  a.width = width;
-  a.height = height;
-  a.border = border;
-  a.format = format;
-  a.type = type;
-  glass::gl::submitTexImage(a, pixels);
+  glass::gl::submitTexImage(
+      {2, target, level, internalFormat, width, height, 1, border, format, type}, pixels);
+}
+
+void GLAPIENTRY glTexImage3D(GLenum target, GLint level, GLint internalFormat, GLsizei width,
+                             GLsizei height, GLsizei depth, GLint border, GLenum format,
+                             GLenum type, const GLvoid* pixels) {
+  glass::gl::submitTexImage(
+      {3, target, level, internalFormat, width, height, depth, border, format, type}, pixels);
 }
 
 void GLAPIENTRY glTexSubImage1D(GLenum target, GLint level, GLint xoffset, GLsizei width,
                                 GLenum format, GLenum type, const GLvoid* pixels) {
-  glass::gl::TexSubImageArguments a;
-  a.dimensions = 1;
-  a.target = target;
-  a.level = level;
-  a.xoffset = xoffset;
-  a.width = width;
-  a.format = format;
-  a.type = type;
-  glass::gl::submitTexSubImage(a, pixels);
+  glass::gl::submitTexSubImage({1, target, level, xoffset, 0, 0, width, 1, 1, format, type},
+                               pixels);
 }
 
 void GLAPIENTRY glTexSubImage2D(GLenum target, GLint level, GLint xoffset, GLint yoffset,
                                 GLsizei width, GLsizei height, GLenum format, GLenum type,
                                 const GLvoid* pixels) {
-  glass::gl::TexSubImageArguments a;
-  a.dimensions = 2;
-  a.target = target;
-  a.level = level;
-  a.xoffset = xoffset;
-  a.yoffset = yoffset;
-  a.width = width;
-  a.height = height;
-  a.format = format;
-  a.type = type;
-  glass::gl::submitTexSubImage(a, pixels);
+  glass::gl::submitTexSubImage(
+      {2, target, level, xoffset, yoffset, 0, width, height, 1, format, type}, pixels);
+}
+
+void GLAPIENTRY glTexSubImage3D(GLenum target, GLint level, GLint xoffset, GLint yoffset,
+                                GLint zoffset, GLsizei width, GLsizei height, GLsizei depth,
+                                GLenum format, GLenum type, const GLvoid* pixels) {
+  glass::gl::submitTexSubImage(
+      {3, target, level, xoffset, yoffset, zoffset, width, height, depth, format, type}, pixels);
 }
 
 void GLAPIENTRY glCopyTexImage1D(GLenum target, GLint level, GLenum internalFormat, GLint x, GLint y,
@@ -200,6 +205,15 @@ void GLAPIENTRY glCopyTexSubImage2D(GLenum target, GLint level, GLint xoffset, G
                                     GLint y, GLsizei width, GLsizei height) {
   glass::gl::compileOrExecute([=](Context& ctx) {
     glass::gl::copyTexSubImage(ctx, 2, target, level, xoffset, yoffset, x, y, width, height);
+  });
+}
+
+void GLAPIENTRY glCopyTexSubImage3D(GLenum target, GLint level, GLint xoffset, GLint yoffset,
+                                    GLint zoffset, GLint x, GLint y, GLsizei width,
+                                    GLsizei height) {
+  glass::gl::compileOrExecute([=](Context& ctx) {
+    glass::gl::copyTexSubImage(ctx, 3, target, level, xoffset, yoffset, x, y, width, height,
+                               zoffset);
   });
 }
 

@@ -89,11 +89,17 @@ inline double textureScaleFactor(const TexCoordDerivatives& d, int width, int he
   return std::sqrt(textureScaleFactorSquared(d, width, height));
 }
 
-// lambda = log2(rho), clamped to [minLod, maxLod] (equations 3.18 and 3.19), computed from
-// rho^2 as log2(rho^2) / 2. rho = 0 gives minLod.
-inline float levelOfDetailFromSquaredScale(double rhoSquared, float minLod, float maxLod) {
+// GL_MAX_TEXTURE_LOD_BIAS, Mesa's llvmpipe's value.
+inline constexpr float kMaxTextureLodBias = 16.0f;
+
+// lambda = log2(rho) + bias, clamped to [minLod, maxLod] (equations 3.18 and 3.19; OpenGL 1.4
+// adds the bias, the sum of the unit's and the texture's GL_TEXTURE_LOD_BIAS clamped to
+// +-GL_MAX_TEXTURE_LOD_BIAS), computed from rho^2 as log2(rho^2) / 2. rho = 0 gives minLod.
+inline float levelOfDetailFromSquaredScale(double rhoSquared, float minLod, float maxLod,
+                                           float bias = 0.0f) {
   // log2(0) is -infinity and log2(NaN) is NaN: both end at minLod, the magnification side.
-  const float lambda = rhoSquared > 0.0 ? 0.5f * std::log2(static_cast<float>(rhoSquared)) : -HUGE_VALF;
+  const float lambda =
+      rhoSquared > 0.0 ? 0.5f * std::log2(static_cast<float>(rhoSquared)) + bias : -HUGE_VALF;
   if (!(lambda > minLod)) return minLod;
   if (lambda > maxLod) return maxLod;
   return lambda;

@@ -12,8 +12,8 @@ bool isMipmapFilter(GLenum minFilter) {
          minFilter == GL_NEAREST_MIPMAP_LINEAR || minFilter == GL_LINEAR_MIPMAP_LINEAR;
 }
 
-int lastMipmapLevel(int base, int width, int height) {
-  int size = std::max(width, height);
+int lastMipmapLevel(int base, int width, int height, int depth) {
+  int size = std::max({width, height, depth});
   int p = base;
   while (size > 1) {
     size /= 2;
@@ -29,6 +29,14 @@ void TextureObject::updateCompleteness() {
   if (base < 0 || base >= kMaxTextureLevels) return;
   const TextureImage& b = levels[base];
   if (!b.defined()) return;
+  // Spec 3.8.10, "cube complete": the six base images are defined, square, of one size, one
+  // internal format and one border.
+  for (int face = 1; face < faceCount(); ++face) {
+    const TextureImage& f = image(face, base);
+    if (!f.defined() || f.width != b.width || f.height != b.height ||
+        f.internalFormat != b.internalFormat || f.border != b.border)
+      return;
+  }
   borderTexel(*this, sampling.border);
   for (float& c : sampling.border) c *= 255.0f;
   sampling.switchOverPoint = magnificationSwitchOverPoint(params.minFilter, params.magFilter);
@@ -37,15 +45,19 @@ void TextureObject::updateCompleteness() {
     return;
   }
   if (params.maxLevel < base) return;
-  const int q = std::min(lastMipmapLevel(base, b.width, b.height), params.maxLevel);
-  for (int i = base + 1; i <= q; ++i) {
-    const TextureImage& level = levels[i];
-    const int shift = i - base;
-    const int w = std::max(1, b.width >> shift);
-    const int h = std::max(1, b.height >> shift);
-    if (level.width != w || level.height != h || level.internalFormat != b.internalFormat ||
-        level.border != b.border)
-      return;
+  const int q = std::min(lastMipmapLevel(base, b.width, b.height, b.depth), params.maxLevel);
+  for (int face = 0; face < faceCount(); ++face) {
+    for (int i = base + 1; i <= q; ++i) {
+      const TextureImage& level = image(face, i);
+      const int shift = i - base;
+      const int w = std::max(1, b.width >> shift);
+      const int h = std::max(1, b.height >> shift);
+      const int d = std::max(1, b.depth >> shift);
+      if (level.width != w || level.height != h || level.depth != d ||
+          level.internalFormat != b.internalFormat ||
+          level.border != b.border)
+        return;
+    }
   }
   lastLevel = q;
   complete = true;

@@ -19,6 +19,7 @@ struct SamplerParameters {
   float borderColor[4] = {0.0f, 0.0f, 0.0f, 0.0f};
   float minLod = -1000.0f;
   float maxLod = 1000.0f;
+  float lodBias = 0.0f;  // GL_TEXTURE_LOD_BIAS of the object (OpenGL 1.4)
   int baseLevel = 0;
   int maxLevel = 1000;
   bool generateMipmap = false;
@@ -28,12 +29,23 @@ struct SamplerParameters {
 // True for the four minification filters that use mipmaps.
 bool isMipmapFilter(GLenum minFilter);
 
+// A cube map (OpenGL 1.3, section 3.8.6) has six faces, in the order of their targets:
+// GL_TEXTURE_CUBE_MAP_POSITIVE_X, NEGATIVE_X, POSITIVE_Y, NEGATIVE_Y, POSITIVE_Z, NEGATIVE_Z.
+inline constexpr int kCubeFaceCount = 6;
+// The face index 0..5 of a face target, -1 for any other value.
+inline int cubeFaceOf(GLenum target) {
+  return target >= GL_TEXTURE_CUBE_MAP_POSITIVE_X && target <= GL_TEXTURE_CUBE_MAP_NEGATIVE_Z
+             ? static_cast<int>(target - GL_TEXTURE_CUBE_MAP_POSITIVE_X)
+             : -1;
+}
+
 struct TextureObject {
   GLuint name = 0;
-  // GL_TEXTURE_1D or GL_TEXTURE_2D once the object was first bound; 0 before (spec 3.8.12: a
-  // name becomes a texture of the target it is first bound to).
+  // GL_TEXTURE_1D, GL_TEXTURE_2D, GL_TEXTURE_3D or GL_TEXTURE_CUBE_MAP once first bound; 0
+  // before (spec 3.8.12: a name becomes a texture of the target it is first bound to).
   GLenum target = 0;
-  TextureImage levels[kMaxTextureLevels];
+  TextureImage levels[kMaxTextureLevels];  // a 1D or 2D texture's images; face 0 of a cube map
+  TextureImage otherFaces[kCubeFaceCount - 1][kMaxTextureLevels];  // faces 1..5 of a cube map
   SamplerParameters params;
 
   // Whether the object can be sampled with its current filter (spec 3.8.10, "Texture
@@ -56,12 +68,20 @@ struct TextureObject {
 
   void updateCompleteness();
 
-  // The base level image (valid when complete).
+  // The base level image (valid when complete); face 0's for a cube map.
   const TextureImage& baseImage() const { return levels[params.baseLevel]; }
+  // Level `level` of face `face` (0 for a 1D or 2D texture).
+  TextureImage& image(int face, int level) {
+    return face == 0 ? levels[level] : otherFaces[face - 1][level];
+  }
+  const TextureImage& image(int face, int level) const {
+    return face == 0 ? levels[level] : otherFaces[face - 1][level];
+  }
+  int faceCount() const { return target == GL_TEXTURE_CUBE_MAP ? kCubeFaceCount : 1; }
 };
 
 // The last level index of a full mipmap chain starting at base with a base image of the given
-// size: base + floor(log2(max(width, height))), clamped to the levels glass stores.
-int lastMipmapLevel(int base, int width, int height);
+// size: base + floor(log2(max(width, height, depth))), clamped to the levels glass stores.
+int lastMipmapLevel(int base, int width, int height, int depth = 1);
 
 }  // namespace glass::gl

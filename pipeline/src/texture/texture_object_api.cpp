@@ -20,10 +20,18 @@ TextureObject* findTexture(Context& ctx, GLuint name) {
 void bindTexture(Context& ctx, GLenum target, GLuint name) {
   if (rejectInsideBeginEnd(ctx)) return;
   TextureState& t = ctx.texture;
-  if (target != GL_TEXTURE_1D && target != GL_TEXTURE_2D) return recordError(ctx, GL_INVALID_ENUM);
-  TextureObject*& binding = target == GL_TEXTURE_1D ? t.bound1D : t.bound2D;
+  TextureUnit& u = t.unit();
+  TextureObject** binding = target == GL_TEXTURE_1D         ? &u.bound1D
+                            : target == GL_TEXTURE_2D       ? &u.bound2D
+                            : target == GL_TEXTURE_3D       ? &u.bound3D
+                            : target == GL_TEXTURE_CUBE_MAP ? &u.boundCube
+                                                            : nullptr;
+  if (binding == nullptr) return recordError(ctx, GL_INVALID_ENUM);
   if (name == 0) {
-    binding = target == GL_TEXTURE_1D ? &t.default1D : &t.default2D;
+    *binding = target == GL_TEXTURE_1D   ? &t.default1D
+               : target == GL_TEXTURE_2D ? &t.default2D
+               : target == GL_TEXTURE_3D ? &t.default3D
+                                         : &t.defaultCube;
     return;
   }
   TextureObject* texture = findTexture(ctx, name);
@@ -38,7 +46,7 @@ void bindTexture(Context& ctx, GLenum target, GLuint name) {
   } else if (texture->target != target) {
     return recordError(ctx, GL_INVALID_OPERATION);
   }
-  binding = texture;
+  *binding = texture;
 }
 
 void deleteTextures(Context& ctx, const std::vector<GLuint>& names) {
@@ -48,9 +56,14 @@ void deleteTextures(Context& ctx, const std::vector<GLuint>& names) {
     t.reservedNames.erase(name);
     auto it = t.objects.find(name);
     if (it == t.objects.end()) continue;
-    // Spec 3.8.12: deleting a bound texture binds the default texture in its place.
-    if (t.bound1D == it->second.get()) t.bound1D = &t.default1D;
-    if (t.bound2D == it->second.get()) t.bound2D = &t.default2D;
+    // Spec 3.8.12: deleting a bound texture binds the default texture in its place, in every
+    // texture unit it is bound to.
+    for (TextureUnit& u : t.units) {
+      if (u.bound1D == it->second.get()) u.bound1D = &t.default1D;
+      if (u.bound2D == it->second.get()) u.bound2D = &t.default2D;
+      if (u.bound3D == it->second.get()) u.bound3D = &t.default3D;
+      if (u.boundCube == it->second.get()) u.boundCube = &t.defaultCube;
+    }
     t.objects.erase(it);
   }
 }

@@ -8,10 +8,10 @@
 
 #include "core/context.h"
 #include "core/errors.h"
+#include "core/float_to_int.h"
 #include "lists/command_recording.h"
 #include "texture/integer_colors.h"
 #include "texture/texture_commands.h"
-#include "core/float_to_int.h"
 
 namespace glass::gl {
 namespace {
@@ -36,6 +36,7 @@ int parameterSize(GLenum pname) {
     case GL_TEXTURE_PRIORITY:
     case GL_TEXTURE_MIN_LOD:
     case GL_TEXTURE_MAX_LOD:
+    case GL_TEXTURE_LOD_BIAS:
     case GL_TEXTURE_BASE_LEVEL:
     case GL_TEXTURE_MAX_LEVEL:
     case GL_GENERATE_MIPMAP: return 1;
@@ -78,6 +79,7 @@ void texParameter(Context& ctx, GLenum target, GLenum pname, const std::array<do
       break;
     case GL_TEXTURE_MIN_LOD: p.minLod = static_cast<float>(v[0]); break;
     case GL_TEXTURE_MAX_LOD: p.maxLod = static_cast<float>(v[0]); break;
+    case GL_TEXTURE_LOD_BIAS: p.lodBias = static_cast<float>(v[0]); break;
     case GL_TEXTURE_BASE_LEVEL:
     case GL_TEXTURE_MAX_LEVEL: {
       // Spec 3.8.4: negative levels are an INVALID_VALUE error. Integral values are expected;
@@ -123,6 +125,7 @@ bool getTexParameter(Context& ctx, GLenum target, GLenum pname, double out[4], i
     case GL_TEXTURE_RESIDENT: out[0] = GL_TRUE; return true;
     case GL_TEXTURE_MIN_LOD: out[0] = p.minLod; return true;
     case GL_TEXTURE_MAX_LOD: out[0] = p.maxLod; return true;
+    case GL_TEXTURE_LOD_BIAS: out[0] = p.lodBias; return true;
     case GL_TEXTURE_BASE_LEVEL: out[0] = p.baseLevel; return true;
     case GL_TEXTURE_MAX_LEVEL: out[0] = p.maxLevel; return true;
     case GL_GENERATE_MIPMAP: out[0] = p.generateMipmap ? GL_TRUE : GL_FALSE; return true;

@@ -68,12 +68,13 @@ struct LevelLookup {
   GLenum wrapS, wrapT;
   bool twoD;
   const float* border;  // the border texel, components in [0, 255]
+  int slice = 0;        // the slice of a 3D image the 2D lookups read
 };
 
 // Texel (i, j) with components in [0, 255] (the scale to [0, 1] is applied once per lookup).
 const float* fetchTexel(const LevelLookup& l, int i, int j, float scratch[4]) {
   if (i < 0 || i >= l.image->width || j < 0 || j >= l.image->height) return l.border;
-  const uint8_t* texel = l.image->texel(i, j);
+  const uint8_t* texel = l.image->texel(i, j, l.slice);
   for (int c = 0; c < 4; ++c) scratch[c] = static_cast<float>(texel[c]);
   return scratch;
 }
@@ -118,10 +119,10 @@ void sampleLinear(const LevelLookup& l, float s, float t, float out[4]) {
   if (i0 >= 0 && i1 >= 0 && j0 >= 0 && j1 >= 0 && i0 < width && i1 < width && j0 < height && j1 < height) {
     // All four texels inside the image (always so except near a CLAMP or CLAMP_TO_BORDER edge):
     // read the bytes directly.
-    const uint8_t* p00 = l.image->texel(i0, j0);
-    const uint8_t* p10 = l.image->texel(i1, j0);
-    const uint8_t* p01 = l.image->texel(i0, j1);
-    const uint8_t* p11 = l.image->texel(i1, j1);
+    const uint8_t* p00 = l.image->texel(i0, j0, l.slice);
+    const uint8_t* p10 = l.image->texel(i1, j0, l.slice);
+    const uint8_t* p01 = l.image->texel(i0, j1, l.slice);
+    const uint8_t* p11 = l.image->texel(i1, j1, l.slice);
     for (int c = 0; c < 4; ++c)
       out[c] = (w00 * p00[c] + w10 * p10[c] + w01 * p01[c] + w11 * p11[c]) * (1.0f / 255.0f);
     return;
@@ -135,10 +136,47 @@ void sampleLinear(const LevelLookup& l, float s, float t, float out[4]) {
     out[c] = (w00 * t00[c] + w10 * t10[c] + w01 * t01[c] + w11 * t11[c]) * (1.0f / 255.0f);
 }
 
-void sampleLevel(const TextureObject& texture, int level, bool linear, float s, float t, float out[4]) {
-  const LevelLookup l{&texture.levels[level], texture.params.wrapS, texture.params.wrapT,
+// A 3D lookup (spec 3.8.8 with the third axis): NEAREST reads slice k = wrap(floor(w)),
+// LINEAR mixes the bilinear lookups of slices k0 = wrap(floor(w - 1/2)) and k1 = wrap(k0 + 1) by
+// gamma = frac(w - 1/2), w = r * depth; a slice outside the image is the border colour.
+void sampleVolume(LevelLookup l, bool linear, float s, float t, float r, GLenum wrapR,
+                  float out[4]) {
+  const int depth = l.image->depth;
+  auto sampleSlice = [&](int k, float result[4]) {
+    if (k < 0 || k >= depth) {
+      for (int c = 0; c < 4; ++c) result[c] = l.border[c] * (1.0f / 255.0f);
+      return;
+    }
+    l.slice = k;
+    if (linear) {
+      sampleLinear(l, s, t, result);
+    } else {
+      sampleNearest(l, s, t, result);
+    }
+  };
+  if (!linear) {
+    const float w = texelCoordinate(r, depth, wrapR);
+    sampleSlice(wrapTexelIndex(static_cast<int>(std::floor(w)), depth, wrapR, false), out);
+    return;
+  }
+  const float w = texelCoordinate(r, depth, wrapR) - 0.5f;
+  const float wFloor = std::floor(w);
+  const float gamma = w - wFloor;
+  int k0, k1;
+  wrapTexelPair(static_cast<int>(wFloor), depth, wrapR, &k0, &k1);
+  float a[4], b[4];
+  sampleSlice(k0, a);
+  sampleSlice(k1, b);
+  for (int c = 0; c < 4; ++c) out[c] = (1.0f - gamma) * a[c] + gamma * b[c];
+}
+
+void sampleLevel(const TextureObject& texture, int face, int level, bool linear, float s, float t,
+                 float r, float out[4]) {
+  const LevelLookup l{&texture.image(face, level), texture.params.wrapS, texture.params.wrapT,
                       texture.target != GL_TEXTURE_1D, texture.sampling.border};
-  if (linear) {
+  if (texture.target == GL_TEXTURE_3D) {
+    sampleVolume(l, linear, s, t, r, texture.params.wrapR, out);
+  } else if (linear) {
     sampleLinear(l, s, t, out);
   } else {
     sampleNearest(l, s, t, out);
@@ -161,32 +199,35 @@ void borderTexel(const TextureObject& texture, float out[4]) {
   }
 }
 
-void sampleTextureMagnified(const TextureObject& texture, float s, float t, float out[4]) {
-  sampleLevel(texture, texture.params.baseLevel, texture.params.magFilter == GL_LINEAR, s, t, out);
+void sampleTextureMagnified(const TextureObject& texture, float s, float t, float out[4],
+                            int face, float r) {
+  sampleLevel(texture, face, texture.params.baseLevel, texture.params.magFilter == GL_LINEAR, s, t,
+              r, out);
 }
 
-void sampleTexture(const TextureObject& texture, float s, float t, float lambda, float out[4]) {
+void sampleTexture(const TextureObject& texture, float s, float t, float lambda, float out[4],
+                   int face, float r) {
   const SamplerParameters& p = texture.params;
   if (lambda <= texture.sampling.switchOverPoint) {
-    sampleTextureMagnified(texture, s, t, out);
+    sampleTextureMagnified(texture, s, t, out, face, r);
     return;
   }
   switch (p.minFilter) {
     case GL_NEAREST:
-      sampleLevel(texture, p.baseLevel, false, s, t, out);
+      sampleLevel(texture, face, p.baseLevel, false, s, t, r, out);
       return;
     case GL_LINEAR:
-      sampleLevel(texture, p.baseLevel, true, s, t, out);
+      sampleLevel(texture, face, p.baseLevel, true, s, t, r, out);
       return;
     default:
       break;
   }
   const bool linearWithinLevel = p.minFilter == GL_LINEAR_MIPMAP_NEAREST || p.minFilter == GL_LINEAR_MIPMAP_LINEAR;
   const MipmapLevels m = selectMipmapLevels(lambda, p.minFilter, p.baseLevel, texture.lastLevel);
-  sampleLevel(texture, m.level1, linearWithinLevel, s, t, out);
+  sampleLevel(texture, face, m.level1, linearWithinLevel, s, t, r, out);
   if (m.level2 == m.level1 || m.weight2 == 0.0f) return;
   float second[4];
-  sampleLevel(texture, m.level2, linearWithinLevel, s, t, second);
+  sampleLevel(texture, face, m.level2, linearWithinLevel, s, t, r, second);
   for (int c = 0; c < 4; ++c) out[c] = (1.0f - m.weight2) * out[c] + m.weight2 * second[c];
 }
 

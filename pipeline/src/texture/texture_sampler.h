@@ -12,7 +12,8 @@
 //   CLAMP_TO_BORDER  clamp(i, -1, size)
 //   CLAMP            s is first clamped to [0, 1]; then clamp(i, 0, size - 1) for NEAREST and
 //                    clamp(i, -1, size) for LINEAR
-// and a texel outside the image (i = -1 or i = size) is the border colour.
+// and a texel outside the image (i = -1 or i = size) is the border colour. A 3D texture does the
+// same along r with GL_TEXTURE_WRAP_R (LINEAR: two slices, mixed by frac(r * depth - 1/2)).
 #pragma once
 
 #include "texture/texture_lod.h"
@@ -28,11 +29,14 @@ void borderTexel(const TextureObject& texture, float out[4]);
 // Looks up a complete texture at (s, t) (already divided by q; t is ignored for a 1D texture)
 // with level of detail lambda: magnification (the TEXTURE_MAG_FILTER on the base level) when
 // lambda <= c, minification otherwise. Writes the filtered texel (RGBA in [0, 1], in the layout
-// of texture_image.h).
-void sampleTexture(const TextureObject& texture, float s, float t, float lambda, float out[4]);
+// of texture_image.h). For a cube map, (s, t) are on face `face` (cube_map.h); a 3D texture
+// reads r as well (already divided by q).
+void sampleTexture(const TextureObject& texture, float s, float t, float lambda, float out[4],
+                   int face = 0, float r = 0.0f);
 
 // The same lookup with the magnification filter, for primitives without derivatives (points
 // and lines) and for the base level (spec 3.8.9).
-void sampleTextureMagnified(const TextureObject& texture, float s, float t, float out[4]);
+void sampleTextureMagnified(const TextureObject& texture, float s, float t, float out[4],
+                            int face = 0, float r = 0.0f);
 
 }  // namespace glass::gl

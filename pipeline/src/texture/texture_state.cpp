@@ -5,11 +5,23 @@ namespace glass::gl {
 TextureState::TextureState() {
   default1D.target = GL_TEXTURE_1D;
   default2D.target = GL_TEXTURE_2D;
-  setDefaultTexGenPlanes(texGen);
+  default3D.target = GL_TEXTURE_3D;
+  defaultCube.target = GL_TEXTURE_CUBE_MAP;
+  for (TextureUnit& u : units) {
+    u.bound1D = &default1D;
+    u.bound2D = &default2D;
+    u.bound3D = &default3D;
+    u.boundCube = &defaultCube;
+    setDefaultTexGenPlanes(u.texGen);
+  }
 }
 
-const TextureObject* TextureState::activeTexture() const {
-  const TextureObject* texture = enabled2D ? bound2D : enabled1D ? bound1D : nullptr;
+const TextureObject* TextureUnit::activeTexture() const {
+  const TextureObject* texture = enabledCube ? boundCube
+                                : enabled3D   ? bound3D
+                                : enabled2D   ? bound2D
+                                : enabled1D   ? bound1D
+                                              : nullptr;
   return texture != nullptr && texture->complete ? texture : nullptr;
 }
 

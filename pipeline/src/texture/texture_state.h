@@ -1,7 +1,8 @@
-// Texturing state (OpenGL 1.5 specification, section 3.8; tables 6.15 to 6.18): the texture
-// objects and their bindings, the enables, the texture environment and texture coordinate
-// generation. glass has one texture unit (GL 1.1 texturing, without GL_ARB_multitexture).
-// Member initialisers are the GL defaults. The texture matrix stack belongs to TransformState.
+// Texturing state (OpenGL 1.5 specification, section 3.8; tables 6.15 to 6.19): the texture
+// objects, shared by all texture units, and per unit (texture_units.h) the enables, the bindings,
+// the texture environment and texture coordinate generation. Member initialisers are the GL
+// defaults. The texture matrix stacks belong to TransformState, the current texture coordinates
+// to CurrentState, the texture coordinate arrays to ArrayState.
 #pragma once
 
 #include <GL/gl.h>
@@ -12,21 +13,44 @@
 
 #include "texture/bump_map_state.h"
 #include "texture/texgen.h"
+#include "texture/texture_environment.h"
 #include "texture/texture_object.h"
+#include "texture/texture_units.h"
 
 namespace glass::gl {
+
+// The state of one texture unit (spec 2.7, 3.8.17).
+struct TextureUnit {
+  bool enabled1D = false;  // glEnable(GL_TEXTURE_1D)
+  bool enabled2D = false;  // glEnable(GL_TEXTURE_2D)
+  bool enabled3D = false;  // glEnable(GL_TEXTURE_3D)
+  bool enabledCube = false;  // glEnable(GL_TEXTURE_CUBE_MAP)
+  TextureObject* bound1D = nullptr;  // never null once TextureState is constructed
+  TextureObject* bound2D = nullptr;
+  TextureObject* bound3D = nullptr;
+  TextureObject* boundCube = nullptr;
+  TextureEnvironment env;             // glTexEnv (section 3.8.13)
+  TexGenCoordinate texGen[4];         // glTexGen for s, t, r, q (section 2.11.4)
+
+  bool anyTargetEnabled() const { return enabled1D || enabled2D || enabled3D || enabledCube; }
+  // The texture the unit samples: the cube map if GL_TEXTURE_CUBE_MAP is enabled, else the 3D,
+  // 2D or 1D texture, the first of them whose target is enabled; null when none is
+  // enabled or the texture of the target that takes precedence is incomplete (spec 3.8.15: the
+  // unit is then off).
+  const TextureObject* activeTexture() const;
+};
 
 struct TextureState {
   TextureState();
   TextureState(const TextureState&) = delete;
   TextureState& operator=(const TextureState&) = delete;
 
-  bool enabled1D = false;  // glEnable(GL_TEXTURE_1D)
-  bool enabled2D = false;  // glEnable(GL_TEXTURE_2D)
-
-  // The texture objects named 0, one per target (spec 3.8.12: "the default texture").
+  // The texture objects named 0, one per target (spec 3.8.12: "the default texture"), shared by
+  // the units.
   TextureObject default1D;
   TextureObject default2D;
+  TextureObject default3D;
+  TextureObject defaultCube;
   // Named objects (glBindTexture creates them); pointers stay valid until glDeleteTextures.
   std::unordered_map<GLuint, std::unique_ptr<TextureObject>> objects;
   // Names returned by glGenTextures and not yet bound: in use, but not yet textures (glIsTexture
@@ -34,27 +58,20 @@ struct TextureState {
   std::unordered_set<GLuint> reservedNames;
   GLuint nextName = 1;  // where glGenTextures starts looking
 
-  TextureObject* bound1D = &default1D;
-  TextureObject* bound2D = &default2D;
-
   // Proxy textures (spec 3.8.11): only the size and format of each level are kept.
   TextureImage proxy1D[kMaxTextureLevels];
   TextureImage proxy2D[kMaxTextureLevels];
+  TextureImage proxy3D[kMaxTextureLevels];
+  TextureImage proxyCube[kMaxTextureLevels];
 
-  // glTexEnv (section 3.8.13).
-  GLenum envMode = GL_MODULATE;
-  float envColor[4] = {0.0f, 0.0f, 0.0f, 0.0f};
-
-  // glTexGen for s, t, r, q (section 2.11.4).
-  TexGenCoordinate texGen[4];
+  TextureUnit units[kTextureUnitCount];
+  int activeUnit = 0;  // glActiveTexture: GL_TEXTURE0 + activeUnit
 
   // The bump-mapping extension (docs/texturing.md).
   BumpMapState bumpMap;
 
-  // The texture a fragment is textured with: the 2D texture if GL_TEXTURE_2D is enabled, else
-  // the 1D texture if GL_TEXTURE_1D is; null when neither is enabled or the texture of the
-  // highest enabled dimension is incomplete (spec 3.8.15: texturing is then off).
-  const TextureObject* activeTexture() const;
+  TextureUnit& unit() { return units[activeUnit]; }
+  const TextureUnit& unit() const { return units[activeUnit]; }
 };
 
 }  // namespace glass::gl

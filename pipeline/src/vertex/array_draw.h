@@ -7,6 +7,7 @@
 
 #include <vector>
 
+#include "texture/texture_units.h"
 #include "vertex/vertex_arrays.h"
 
 namespace glass::gl {
@@ -15,7 +16,8 @@ struct Context;
 
 // Which arrays an element reads: the enabled ones with a pointer.
 struct ArrayElementLayout {
-  bool edgeFlag = false, texCoord = false, normal = false, color = false, vertex = false;
+  bool edgeFlag = false, normal = false, color = false, vertex = false;
+  bool texCoord[kTextureUnitCount] = {};  // per texture unit
   bool fogCoord = false, secondaryColor = false;
 };
 
@@ -24,7 +26,7 @@ struct ArrayElementValues {
   float vertex[4] = {0.0f, 0.0f, 0.0f, 1.0f};
   float color[4] = {0.0f, 0.0f, 0.0f, 1.0f};
   float normal[3] = {0.0f, 0.0f, 1.0f};
-  float texCoord[4] = {0.0f, 0.0f, 0.0f, 1.0f};
+  float texCoord[kTextureUnitCount][4] = {};  // read for the units whose array is enabled
   bool edgeFlag = true;
   float fogCoord = 0.0f;
   float secondaryColor[3] = {0.0f, 0.0f, 0.0f};

@@ -43,12 +43,9 @@ void normalCommand(Context& ctx, float x, float y, float z) {
   n[2] = z;
 }
 
-void texCoordCommand(Context& ctx, float s, float t, float r, float q) {
-  float* tc = ctx.current.texCoord;
-  tc[0] = s;
-  tc[1] = t;
-  tc[2] = r;
-  tc[3] = q;
+void texCoordCommand(Context& ctx, int unit, const float coords[4]) {
+  float* tc = ctx.current.texCoord[unit];
+  for (int k = 0; k < 4; ++k) tc[k] = coords[k];
 }
 
 void edgeFlagCommand(Context& ctx, bool flag) { ctx.current.edgeFlag = flag; }

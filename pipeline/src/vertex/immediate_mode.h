@@ -16,7 +16,8 @@ void endCommand(Context& ctx);                 // glEnd, with its errors
 void vertexCommand(Context& ctx, float x, float y, float z, float w);
 void colorCommand(Context& ctx, float r, float g, float b, float a);
 void normalCommand(Context& ctx, float x, float y, float z);
-void texCoordCommand(Context& ctx, float s, float t, float r, float q);
+// glMultiTexCoord (glTexCoord for unit 0): (s, t, r, q) of texture unit `unit` (0-based).
+void texCoordCommand(Context& ctx, int unit, const float coords[4]);
 void edgeFlagCommand(Context& ctx, bool flag);
 // OpenGL 1.4: glSecondaryColor (alpha stays 1, spec 2.7) and glFogCoord.
 void secondaryColorCommand(Context& ctx, float r, float g, float b);

@@ -72,7 +72,9 @@ void glInterleavedArrays(GLenum format, GLsizei stride, const GLvoid* pointer) {
     const auto* p = static_cast<const unsigned char*>(pointer);
     glass::gl::ArrayState& a = ctx.arrays;
     a.edgeFlag.enabled = false;  // (and the colour index array, which glass does not have)
-    setArray(a.texCoord, layout->texCoordSize > 0, layout->texCoordSize, GL_FLOAT, str, p);
+    // The texture coordinates go to the client active unit's array (spec 2.8).
+    setArray(a.texCoord[a.clientActiveUnit], layout->texCoordSize > 0, layout->texCoordSize,
+             GL_FLOAT, str, p);
     setArray(a.color, layout->colorSize > 0, layout->colorSize, layout->colorType, str,
              p + layout->colorOffset);
     setArray(a.normal, layout->normal, 3, GL_FLOAT, str, p + layout->normalOffset);

@@ -84,7 +84,8 @@ void readArray(const ClientArray& a, int index, bool normalized, const float* de
 ArrayElementLayout currentElementLayout(const ArrayState& arrays) {
   ArrayElementLayout layout;
   layout.edgeFlag = arrays.edgeFlag.enabled && arrays.edgeFlag.pointer;
-  layout.texCoord = arrays.texCoord.enabled && arrays.texCoord.pointer;
+  for (int u = 0; u < kTextureUnitCount; ++u)
+    layout.texCoord[u] = arrays.texCoord[u].enabled && arrays.texCoord[u].pointer;
   layout.normal = arrays.normal.enabled && arrays.normal.pointer;
   layout.color = arrays.color.enabled && arrays.color.pointer;
   layout.vertex = arrays.vertex.enabled && arrays.vertex.pointer;
@@ -98,7 +99,10 @@ void readElement(const ArrayState& arrays, const ArrayElementLayout& layout, int
   static constexpr float kPointDefaults[4] = {0.0f, 0.0f, 0.0f, 1.0f};
   static constexpr float kColorDefaults[4] = {0.0f, 0.0f, 0.0f, 1.0f};
   if (layout.edgeFlag) out.edgeFlag = *elementAddress(arrays.edgeFlag, index) != 0;
-  if (layout.texCoord) readArray(arrays.texCoord, index, false, kPointDefaults, 4, out.texCoord);
+  for (int u = 0; u < kTextureUnitCount; ++u) {
+    if (layout.texCoord[u])
+      readArray(arrays.texCoord[u], index, false, kPointDefaults, 4, out.texCoord[u]);
+  }
   if (layout.normal) readArray(arrays.normal, index, true, kPointDefaults, 3, out.normal);
   if (layout.color) readArray(arrays.color, index, true, kColorDefaults, 4, out.color);
   if (layout.secondaryColor) {
@@ -110,7 +114,9 @@ void readElement(const ArrayState& arrays, const ArrayElementLayout& layout, int
 
 void applyElement(Context& ctx, const ArrayElementLayout& layout, const ArrayElementValues& v) {
   if (layout.edgeFlag) edgeFlagCommand(ctx, v.edgeFlag);
-  if (layout.texCoord) texCoordCommand(ctx, v.texCoord[0], v.texCoord[1], v.texCoord[2], v.texCoord[3]);
+  for (int u = 0; u < kTextureUnitCount; ++u) {
+    if (layout.texCoord[u]) texCoordCommand(ctx, u, v.texCoord[u]);
+  }
   if (layout.normal) normalCommand(ctx, v.normal[0], v.normal[1], v.normal[2]);
   if (layout.color) colorCommand(ctx, v.color[0], v.color[1], v.color[2], v.color[3]);
   if (layout.secondaryColor) {

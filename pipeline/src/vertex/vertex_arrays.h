@@ -5,6 +5,8 @@
 
 #include <GL/gl.h>
 
+#include "texture/texture_units.h"
+
 namespace glass::gl {
 
 struct ClientArray {
@@ -19,7 +21,8 @@ struct ArrayState {
   ClientArray vertex;                         // size 4, GL_FLOAT
   ClientArray color;                          // size 4, GL_FLOAT
   ClientArray normal{false, 3, GL_FLOAT, 0, nullptr};
-  ClientArray texCoord;                       // size 4, GL_FLOAT
+  ClientArray texCoord[kTextureUnitCount];    // size 4, GL_FLOAT, one per texture unit
+  int clientActiveUnit = 0;  // glClientActiveTexture: the unit of glTexCoordPointer (spec 2.8)
   ClientArray edgeFlag{false, 1, GL_UNSIGNED_BYTE, 0, nullptr};
   ClientArray index{false, 1, GL_FLOAT, 0, nullptr};  // glIndexPointer: never read in RGBA mode
   ClientArray fogCoord{false, 1, GL_FLOAT, 0, nullptr};        // glFogCoordPointer (1.4)
@@ -28,7 +31,8 @@ struct ArrayState {
 
 struct Context;
 
-// glArrayElement(i): the enabled arrays' elements i, sent as glEdgeFlag, glTexCoord, glNormal,
+// glArrayElement(i): the enabled arrays' elements i, sent as glEdgeFlag, glMultiTexCoord for each
+// unit, glNormal,
 // glColor and, last, glVertex (spec 2.8). When a display list is being compiled, the values are
 // read now and compiled as those commands.
 void arrayElement(Context& ctx, int index);

@@ -31,6 +31,7 @@ void prepareVertexStage(const Context& ctx, VertexStageSetup& s) {
   s.lightPerVertex = lighting && !s.phong;
   s.twoSided = s.lightPerVertex && twoSidedLighting(ctx);
   s.texturing = texturingEnabled(ctx);
+  s.textureUnits = s.texturing ? textureUnitsInUse(ctx) : 0;
   s.fog = fogEnabled(ctx);
   s.normalize = t.normalize;
   s.rescaleNormal = t.rescaleNormal && !t.normalize;
@@ -60,6 +61,7 @@ void prepareVertexStage(const Context& ctx, VertexStageSetup& s) {
   if (s.fog) count = varying::kCountFog;
   if (s.texturing) count = varying::kCountTexture;
   if (s.phong) count = varying::kCountPhong;
+  if (s.texturing) count = std::max(count, varying::countForTextureUnits(s.textureUnits));
   s.varyingCount = count;
 }
 
@@ -115,7 +117,7 @@ void processVertex(const Context& ctx, const VertexStageSetup& s, const float ob
   }
 
   if (s.fog) varyings[varying::kFogCoordinate] = fogCoordinate(ctx, eye);
-  if (s.texturing) computeTexCoords(ctx, object, eye, normal, varyings + varying::kTexCoord);
+  if (s.texturing) computeTexCoords(ctx, s.textureUnits, object, eye, normal, varyings);
   if (s.phong) {
     const float w = eye[3] != 0.0f ? eye[3] : 1.0f;
     for (int i = 0; i < 3; ++i) {

@@ -26,6 +26,7 @@ struct VertexStageSetup {
   bool phong = false;            // GL_LIGHTING with GL_PHONG_WIN
   bool twoSided = false;         // back colours are computed
   bool texturing = false;
+  int textureUnits = 0;          // texture coordinates are computed for units 0 .. textureUnits - 1
   bool fog = false;
   bool secondaryColor = false;  // unlit with GL_COLOR_SUM: glSecondaryColor goes to the varyings
   bool normalize = false;

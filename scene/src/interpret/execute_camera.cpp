@@ -153,11 +153,50 @@ void Interpreter::Executor::run(const ShadowMatrix &s) {
 void Interpreter::Executor::run(const Push &) {
   glPushMatrix();
   glPushAttrib(GL_ALL_ATTRIB_BITS);
+  saveCurrentValues();
 }
 
 void Interpreter::Executor::run(const Pop &) {
   glPopAttrib();
   glPopMatrix();
+  resendCurrentValues();
+}
+
+// glPopAttrib restores the current colour, normal, texture coordinates and edge flag (OpenGL 1.4,
+// table 6.5, GL_CURRENT_BIT), so sending the restored values again is a no-op by the
+// specification. Mesa 22 keeps a second copy of the current values for immediate mode that
+// glPopAttrib does not update: the vertices after the pop are drawn with the values from before
+// it, and glGet may even copy those back. So the values are read before glPushAttrib, when both
+// copies agree, and sent again after glPopAttrib.
+// With GL_COLOR_MATERIAL enabled Mesa also gives the tracked material the colour from before the
+// pop; enabling GL_COLOR_MATERIAL again sets the tracked material to the current colour (section
+// 2.13.3), which the restored material already is.
+// While a definition is being compiled glGet would read the values of compile time, not those of
+// the instance, so nothing is saved or sent there (and Mesa's display lists restore them right).
+void Interpreter::Executor::saveCurrentValues() {
+  if (compilingDefinition_ > 0) return;
+  CurrentValues saved;
+  GLboolean edgeFlag = GL_TRUE;
+  glGetDoublev(GL_CURRENT_COLOR, saved.color);
+  glGetDoublev(GL_CURRENT_NORMAL, saved.normal);
+  glGetDoublev(GL_CURRENT_TEXTURE_COORDS, saved.texcoord);
+  glGetBooleanv(GL_EDGE_FLAG, &edgeFlag);
+  saved.edgeFlag = edgeFlag;
+  savedCurrentValues_.push_back(saved);
+}
+
+void Interpreter::Executor::resendCurrentValues() {
+  if (compilingDefinition_ > 0 || savedCurrentValues_.empty()) return;
+  const CurrentValues saved = savedCurrentValues_.back();
+  savedCurrentValues_.pop_back();
+  glColor4dv(saved.color);
+  glNormal3dv(saved.normal);
+  glTexCoord4dv(saved.texcoord);
+  glEdgeFlag(saved.edgeFlag);
+  if (glIsEnabled(GL_COLOR_MATERIAL)) {
+    glDisable(GL_COLOR_MATERIAL);
+    glEnable(GL_COLOR_MATERIAL);
+  }
 }
 
 } // namespace glass::scene

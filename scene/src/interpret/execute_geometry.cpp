@@ -54,6 +54,11 @@ void Interpreter::Executor::run(const Mesh &s) {
     }
   }
 
+  // The GL leaves the current values of the arrays drawn undefined after glDrawArrays and
+  // glDrawElements (OpenGL 1.4, section 2.8); the mesh keeps the ones before it, so that a
+  // colour or normal after it is the same on every GL.
+  saveCurrentValues();
+  glPushAttrib(GL_CURRENT_BIT);
   glEnableClientState(GL_VERTEX_ARRAY);
   glVertexPointer(s.positionSize, GL_FLOAT, 0, positions.data());
   if (!normals.empty()) {
@@ -77,6 +82,8 @@ void Interpreter::Executor::run(const Mesh &s) {
   glDisableClientState(GL_NORMAL_ARRAY);
   glDisableClientState(GL_COLOR_ARRAY);
   glDisableClientState(GL_TEXTURE_COORD_ARRAY);
+  glPopAttrib();
+  resendCurrentValues();
 }
 
 void Interpreter::Executor::run(const DrawModel &s) {
@@ -84,6 +91,7 @@ void Interpreter::Executor::run(const DrawModel &s) {
   VertexTracer *tracer = options_.tracer;
   // The model's materials and textures are its own: the state before it comes back after it.
   if (tracer != nullptr && tracer->pending()) tracer->capture();
+  saveCurrentValues();
   glPushAttrib(GL_CURRENT_BIT | GL_LIGHTING_BIT | GL_ENABLE_BIT | GL_TEXTURE_BIT);
   for (const ModelPart &part : model.parts) {
     if (s.useMaterials && part.material >= 0) {
@@ -132,6 +140,7 @@ void Interpreter::Executor::run(const DrawModel &s) {
     glDisableClientState(GL_TEXTURE_COORD_ARRAY);
   }
   glPopAttrib();
+  resendCurrentValues();
 }
 
 } // namespace glass::scene

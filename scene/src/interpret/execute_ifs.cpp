@@ -65,6 +65,7 @@ void Interpreter::Executor::run(const Ifs &s) {
   }
 
   // The part colours are the ifs statement's own: the current colour comes back after it.
+  saveCurrentValues();
   glPushAttrib(GL_CURRENT_BIT);
   if (s.mode == Ifs::Mode::Recursive) {
     GLint depth = 0, maxDepth = 32;
@@ -108,6 +109,7 @@ void Interpreter::Executor::run(const Ifs &s) {
     glEnd();
   }
   glPopAttrib();
+  resendCurrentValues();
 }
 
 } // namespace glass::scene

@@ -108,6 +108,10 @@ public:
   std::vector<float> floats(const Numbers &numbers) const;
   // Stops the frame with a message at the current statement.
   [[noreturn]] void fail(const std::string &message) const;
+  // Before a glPushAttrib and after its glPopAttrib of GL_CURRENT_BIT: the current vertex values
+  // saved and sent again (execute_camera.cpp says why).
+  void saveCurrentValues();
+  void resendCurrentValues();
 
 private:
   void setUpFrame();
@@ -129,6 +133,13 @@ private:
   std::vector<GLuint> textures_;
   GLuint listBase_ = 0;
   bool phongWarned_ = false;
+  struct CurrentValues {
+    GLdouble color[4];
+    GLdouble normal[3];
+    GLdouble texcoord[4];
+    GLboolean edgeFlag;
+  };
+  std::vector<CurrentValues> savedCurrentValues_;
 };
 
 } // namespace glass::scene

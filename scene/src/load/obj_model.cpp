@@ -18,6 +18,72 @@ std::array<float, 4> rgb1(const tinyobj::real_t c[3]) {
   return {static_cast<float>(c[0]), static_cast<float>(c[1]), static_cast<float>(c[2]), 1.0f};
 }
 
+// The first fault that tinyobjloader's warnings name, in glass's words: a material library or
+// material that is missing, a face with fewer than three corners. (Its other warnings, such as
+// an MTL giving both d and Tr, leave a usable model.) Empty when there is none.
+std::string faultInWarnings(const std::string &warnings) {
+  // tinyobjloader names the file or material between "[ " and " ]".
+  const auto named = [](const std::string &line) {
+    std::size_t open = line.find("[ "), close = line.find(" ]");
+    if (open == std::string::npos || close == std::string::npos || close < open + 2) return std::string();
+    std::string name = line.substr(open + 2, close - open - 2);
+    if (name.size() >= 2 && name.front() == '\'' && name.back() == '\'') name = name.substr(1, name.size() - 2);
+    return name;
+  };
+  std::size_t start = 0;
+  while (start < warnings.size()) {
+    std::size_t end = warnings.find('\n', start);
+    if (end == std::string::npos) end = warnings.size();
+    std::string line = warnings.substr(start, end - start);
+    start = end + 1;
+    if (line.find("Material file") != std::string::npos && line.find("not found") != std::string::npos) {
+      return "its material library '" + named(line) + "' is not found next to it";
+    }
+    if (line.find("not found in .mtl") != std::string::npos) {
+      return "material '" + named(line) + "' is not in its material library";
+    }
+    if (line.find("Degenerated face") != std::string::npos) return "a face has fewer than 3 corners";
+    if (line.find("error state") != std::string::npos) return "its material library cannot be read";
+  }
+  return {};
+}
+
+// Every face's vertex, normal and texture coordinate index must name an element the file has.
+// tinyobjloader reads the positions of the faces it triangulates without checking the indices,
+// so this runs on an untriangulated read before the real one.
+bool checkFaceIndices(const std::string &path, const tinyobj::ObjReaderConfig &triangulating,
+                      std::string &reason) {
+  tinyobj::ObjReaderConfig config = triangulating;
+  config.triangulate = false;
+  tinyobj::ObjReader reader;
+  if (!reader.ParseFromFile(path, config)) return true; // the real read reports it
+  const tinyobj::attrib_t &attrib = reader.GetAttrib();
+  struct Kind {
+    const char *name;
+    std::size_t count;
+    bool optional; // -1: the face gives none
+  };
+  const Kind kinds[3] = {{"vertex", attrib.vertices.size() / 3, false},
+                         {"normal", attrib.normals.size() / 3, true},
+                         {"texture coordinate", attrib.texcoords.size() / 2, true}};
+  for (const tinyobj::shape_t &shape : reader.GetShapes()) {
+    for (const tinyobj::index_t &index : shape.mesh.indices) {
+      const int values[3] = {index.vertex_index, index.normal_index, index.texcoord_index};
+      for (int k = 0; k < 3; ++k) {
+        int value = values[k];
+        if ((kinds[k].optional && value == -1) ||
+            (value >= 0 && static_cast<std::size_t>(value) < kinds[k].count)) {
+          continue;
+        }
+        reason = "a face names " + std::string(kinds[k].name) + " " + std::to_string(value + 1) +
+                 ", but the file has " + std::to_string(kinds[k].count) + " (OBJ counts from 1)";
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
 } // namespace
 
 bool loadObjModel(const std::string &path, Model &model, std::vector<TextureDefinition> &textures,
@@ -33,9 +99,15 @@ bool loadObjModel(const std::string &path, Model &model, std::vector<TextureDefi
     reason = std::filesystem::exists(path, ec) ? "not a regular file" : "no such file";
     return false;
   }
+  if (!checkFaceIndices(path, config, reason)) return false;
   if (!reader.ParseFromFile(path, config)) {
     reason = reader.Error().empty() ? "not a readable OBJ file" : reader.Error();
     while (!reason.empty() && (reason.back() == '\n' || reason.back() == '\r')) reason.pop_back();
+    return false;
+  }
+  // A missing MTL file or material is a missing file, an error as for textures.
+  if (std::string fault = faultInWarnings(reader.Warning()); !fault.empty()) {
+    reason = fault;
     return false;
   }
   const tinyobj::attrib_t &attrib = reader.GetAttrib();

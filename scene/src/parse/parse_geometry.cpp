@@ -37,10 +37,15 @@ void Parser::checkPrimitive(const Statement &statement) {
   long vertices = 0;
   for (const Statement &s : begin.body) vertices += std::holds_alternative<Vertex>(s.body) ? 1 : 0;
   std::string mode = enumName(names::primitiveModes, begin.mode);
+  warnIncompletePrimitive(begin.mode, vertices, "'begin " + mode + "' has", statement.where, statement.length);
+}
+
+// `what` says who sends the vertices: "'begin triangles' has", "'mesh triangles' sends".
+void Parser::warnIncompletePrimitive(GLenumValue mode, long vertices, const std::string &what, SourceLocation where,
+                                     int length) {
   auto warn = [&](const std::string &text) {
-    diagnostics_.warning(statement.where, "'begin " + mode + "' has " + std::to_string(vertices) +
-                                              (vertices == 1 ? " vertex: " : " vertices: ") + text,
-                         statement.length);
+    diagnostics_.warning(where, what + " " + std::to_string(vertices) + (vertices == 1 ? " vertex: " : " vertices: ") + text,
+                         length);
   };
   auto leftover = [&](long group, const char *noun) {
     long whole = vertices / group;
@@ -54,7 +59,7 @@ void Parser::checkPrimitive(const Statement &statement) {
     warn("nothing is drawn");
     return;
   }
-  switch (begin.mode) {
+  switch (mode) {
   case GL_LINES: leftover(2, "line"); break;
   case GL_TRIANGLES: leftover(3, "triangle"); break;
   case GL_QUADS: leftover(4, "quad"); break;
@@ -131,6 +136,9 @@ void Parser::parseMesh(StatementReader &r) {
     mesh.indices = indices->indices;
     mesh.indexed = true;
   }
+  warnIncompletePrimitive(mesh.mode, static_cast<long>(mesh.indexed ? mesh.indices.size() : count),
+                          "'mesh " + enumName(names::primitiveModes, mesh.mode) + "' sends", r.statementToken().where,
+                          r.statementToken().length);
   emit(r, mesh);
 }
 
@@ -139,7 +147,8 @@ void Parser::parseModel(StatementReader &r) {
       {"materials", ParamKind::Boolean, 1, 1, {}, ""},
   };
   const Token &pathToken = r.peek();
-  std::string path = resolvePath(r.string("the OBJ file"), pathToken.where);
+  const std::string written = r.string("the OBJ file");
+  std::string path = resolvePath(written, pathToken.where);
   NamedParams params = NamedParams::read(r, specs);
   DrawModel draw;
   draw.useMaterials = params.booleanOr("materials", true);
@@ -152,7 +161,7 @@ void Parser::parseModel(StatementReader &r) {
     std::string reason;
     std::vector<TextureDefinition> textures;
     if (!loadObjModel(path, model, program_.textures, reason)) {
-      r.fail(pathToken, "cannot load model '" + path + "': " + reason);
+      r.fail(pathToken, "cannot load model '" + written + "': " + reason);
     }
     draw.model = static_cast<int>(program_.models.size());
     program_.models.push_back(std::move(model));

@@ -68,6 +68,7 @@ private:
   void closeBlock(StatementReader &reader);
   void finishIfs(OpenBlock &block, const StatementReader &reader);
   void checkPrimitive(const Statement &begin);
+  void warnIncompletePrimitive(GLenumValue mode, long vertices, const std::string &what, SourceLocation where, int length);
   void report(const StatementError &error);
   void checkOverrides();
 

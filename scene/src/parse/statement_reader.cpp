@@ -180,6 +180,13 @@ double StatementReader::constant(std::string_view what) {
     Parameter *parameter = scope_.findParameter(token.text, index);
     if (parameter != nullptr && parameter->kind == Parameter::Kind::Numbers &&
         parameter->value.size() == 1) {
+      // 'animate' before this use; an 'animate' after it reports the use (parseAnimate).
+      if (!parameter->keys.empty()) {
+        throw StatementError{token.where, token.length,
+                             "'$" + token.text + "' is animated, but " + std::string(what) +
+                                 " must be a fixed number, known while reading the scene",
+                             {{parameter->keys.front().where, "it is animated from here"}}};
+      }
       take();
       scope_.noteConstantUse(index, token.where);
       return parameter->value[0];

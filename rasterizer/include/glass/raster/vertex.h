@@ -7,8 +7,9 @@
 
 namespace glass::raster {
 
-// Attributes interpolated across a primitive: colours, texture coordinates, fog coordinate, ...
-inline constexpr int kMaxVaryings = 24;
+// Attributes interpolated across a primitive: colours, texture coordinates (eight texture units),
+// fog coordinate, ... Only the prefix a primitive uses is interpolated (varyingCount).
+inline constexpr int kMaxVaryings = 48;
 // User clip planes (GL_CLIP_PLANE0..5).
 inline constexpr int kMaxUserClipPlanes = 6;
 

@@ -1,0 +1,78 @@
+// Antialiased lines and points (GL_LINE_SMOOTH, GL_POINT_SMOOTH): the rectangle or square of
+// smooth_coverage.h, rasterized as two triangles by the triangle rule, each fragment carrying its
+// coverage to the fragment stage. A stippled smooth line is first cut into its dashes
+// (stipple_dashes.h).
+#include <algorithm>
+#include <cmath>
+
+#include "core/context.h"
+#include "primitive/draw_pipeline.h"
+#include "primitive/smooth_coverage.h"
+#include "primitive/stipple_dashes.h"
+
+namespace glass::gl {
+namespace {
+
+template <class Shape>
+void fillShape(const Shape& shape, raster::TriangleSettings settings, double depthBias,
+               FragmentProcessor& fragments) {
+  settings.depthBias = depthBias;
+  settings.frontFacing = true;
+  CoverageFilter<Shape> filter(shape, fragments);
+  for (const auto& t : Shape::kTriangles) {
+    raster::TriangleSetup setup;
+    if (!raster::setupTriangle(shape.corners[t[0]], shape.corners[t[1]], shape.corners[t[2]],
+                               settings, setup)) {
+      continue;
+    }
+    raster::rasterizeTriangle(setup, filter);
+  }
+}
+
+// The window vertex at t along a -> b, every value linear in window coordinates (as Mesa's
+// stipple stage interpolates the ends of a dash).
+raster::WindowVertex along(const raster::WindowVertex& a, const raster::WindowVertex& b, float t,
+                           int varyingCount) {
+  auto mix = [t](float u, float v) { return u + t * (v - u); };
+  raster::WindowVertex v;
+  v.x = mix(a.x, b.x);
+  v.y = mix(a.y, b.y);
+  v.z = mix(a.z, b.z);
+  v.invW = mix(a.invW, b.invW);
+  for (int k = 0; k < varyingCount; ++k) v.varyings[k] = mix(a.varyings[k], b.varyings[k]);
+  return v;
+}
+
+}  // namespace
+
+void DrawPipeline::rasterizeSmoothSegment(const raster::WindowVertex& a,
+                                          const raster::WindowVertex& b, double depthBias) {
+  if (lineSettings_.stippleFactor == 0) return rasterizeSmoothDash(a, b, depthBias);
+  const int varyingCount = std::clamp(vertex_.varyingCount, 0, raster::kMaxVaryings);
+  const float dx = b.x - a.x, dy = b.y - a.y;
+  stippleCounter_ = forEachStippleDash(
+      std::sqrt(dx * dx + dy * dy), stippleCounter_, lineSettings_.stipplePattern,
+      lineSettings_.stippleFactor, [&](float t0, float t1) {
+        rasterizeSmoothDash(t0 > 0.0f ? along(a, b, t0, varyingCount) : a,
+                            t1 < 1.0f ? along(a, b, t1, varyingCount) : b, depthBias);
+      });
+}
+
+void DrawPipeline::rasterizeSmoothDash(const raster::WindowVertex& a,
+                                       const raster::WindowVertex& b, double depthBias) {
+  SmoothLineShape shape;
+  // GL_SMOOTH_LINE_WIDTH_RANGE is GL_LINE_WIDTH_RANGE, 1 to kMaxLineWidth.
+  const float width = std::fmin(std::fmax(ctx_.raster.lineWidth, 1.0f), kMaxLineWidth);
+  if (!makeSmoothLine(a, b, width, ctx_.framebuffer.height(), vertex_.varyingCount, shape)) return;
+  fillShape(shape, triangleSettings_, depthBias, fragments_);
+}
+
+void DrawPipeline::rasterizeSmoothPoint(const raster::WindowVertex& w, float size,
+                                        double depthBias) {
+  SmoothPointShape shape;
+  makeSmoothPoint(w, smoothPointRadius(size, pointDistanceAttenuated_), ctx_.framebuffer.height(),
+                  vertex_.varyingCount, shape);
+  fillShape(shape, triangleSettings_, depthBias, fragments_);
+}
+
+}  // namespace glass::gl
