@@ -256,14 +256,21 @@ int runRender(const std::vector<std::string> &args) {
   }
 
   // Each frame goes to a temporary file next to its target; only when every frame is done are
-  // they renamed into place, so a failure leaves no pictures behind.
-  const bool progress = isatty(STDERR_FILENO) == 1 && last > first;
+  // they renamed into place, so a failure leaves no pictures behind. On a terminal a status line
+  // says which frame is being drawn (and at what size), for long renders and frame ranges; it is
+  // erased when done, and never written when standard error is a file or a pipe.
+  const bool progress = isatty(STDERR_FILENO) == 1;
   std::vector<std::pair<std::string, std::string>> written; // temporary, final
   auto discard = [&] {
     for (const auto &[temporary, final] : written) std::filesystem::remove(temporary);
   };
   for (int frame = first; frame <= last; ++frame) {
-    if (progress) std::cerr << "\rglass render: frame " << frame << " (" << frame - first + 1 << " of " << last - first + 1 << ")" << std::flush;
+    if (progress) {
+      std::cerr << "\rglass render: drawing frame " << frame;
+      if (last > first) std::cerr << " (" << frame - first + 1 << " of " << last - first + 1 << ")";
+      if (request->options.supersample > 1) std::cerr << " with " << request->options.supersample << " x " << request->options.supersample << " samples a pixel";
+      std::cerr << "..." << std::flush;
+    }
     scene::RenderedFrame rendered;
     if (!scene::renderFrame(program, frame, request->options, rendered, diagnostics)) {
       if (progress) std::cerr << "\n";
