@@ -150,7 +150,15 @@ constexpr GLenum kEnums[] = {
     GLU_SILHOUETTE, GLU_POINT, GLU_SMOOTH, GLU_FLAT, GLU_NONE, GLU_INSIDE, GLU_OUTSIDE,
     GLU_TESS_WINDING_RULE, GLU_TESS_WINDING_ODD, GLU_TESS_WINDING_NONZERO,
     GLU_TESS_WINDING_POSITIVE, GLU_TESS_WINDING_NEGATIVE, GLU_TESS_WINDING_ABS_GEQ_TWO,
-    GLU_TESS_BOUNDARY_ONLY, GLU_TESS_TOLERANCE,
+    GLU_TESS_BOUNDARY_ONLY, GLU_TESS_TOLERANCE, GL_TEXTURE_3D, GL_TEXTURE_CUBE_MAP,
+    GL_TEXTURE_CUBE_MAP_POSITIVE_X, GL_TEXTURE_CUBE_MAP_NEGATIVE_Z, GL_PROXY_TEXTURE_CUBE_MAP,
+    GL_REFLECTION_MAP, GL_NORMAL_MAP, GL_CLAMP_TO_BORDER, GL_MIRRORED_REPEAT, GL_TEXTURE_WRAP_R,
+    GL_TEXTURE_LOD_BIAS, GL_TEXTURE_FILTER_CONTROL, GL_COMBINE_ALPHA, GL_SOURCE0_RGB,
+    GL_SOURCE2_ALPHA, GL_OPERAND0_RGB, GL_OPERAND1_ALPHA, GL_RGB_SCALE, GL_ALPHA_SCALE,
+    GL_SUBTRACT, GL_INTERPOLATE, GL_ADD_SIGNED, GL_DOT3_RGBA, GL_PREVIOUS, GL_PRIMARY_COLOR,
+    GL_CONSTANT, GL_TEXTURE3, GL_UNPACK_IMAGE_HEIGHT, GL_UNPACK_SKIP_IMAGES, GL_POINT_SIZE_MIN,
+    GL_CURRENT_SECONDARY_COLOR, GL_CURRENT_FOG_COORDINATE, GL_DRAW_BUFFER, GL_READ_BUFFER,
+    GL_FRONT_RIGHT, GL_LEFT,
 };
 constexpr std::size_t kEnumCount = sizeof kEnums / sizeof kEnums[0];
 
@@ -168,7 +176,9 @@ constexpr GLbitfield kAttribMasks[] = {GL_ALL_ATTRIB_BITS, GL_CURRENT_BIT, GL_EN
 constexpr int kMaxImageSide = 16;
 constexpr int kMaxRowLength = 32;
 constexpr int kMaxSkip = 4;
-constexpr std::size_t kPixelBytes = (kMaxSkip + kMaxImageSide + 1) * (kMaxRowLength + kMaxSkip + 8) * 64;
+// A 3D image adds at most kMaxSkip + 4 slices of kMaxImageSide + kMaxSkip rows each.
+constexpr std::size_t kPixelBytes =
+    (kMaxSkip + 4) * (kMaxSkip + kMaxImageSide + 1) * (kMaxRowLength + kMaxSkip + 8) * 64;
 
 // Vertex arrays: at most kMaxArrayVertices vertices of at most kMaxArrayStride bytes.
 constexpr int kMaxArrayVertices = 40;
@@ -222,7 +232,9 @@ GLint clampPixelStore(GLenum pname, GLint value) {
   case GL_UNPACK_SKIP_ROWS:
   case GL_UNPACK_SKIP_PIXELS:
   case GL_PACK_SKIP_ROWS:
-  case GL_PACK_SKIP_PIXELS: return value < 0 ? value : value % (kMaxSkip + 1);
+  case GL_PACK_SKIP_PIXELS:
+  case GL_UNPACK_SKIP_IMAGES: return value < 0 ? value : value % (kMaxSkip + 1);
+  case GL_UNPACK_IMAGE_HEIGHT: return value < 0 ? value : value % (kMaxImageSide + 1);
   default: return value;
   }
 }
@@ -241,12 +253,19 @@ void drawImmediate(ByteReader &in) {
   glBegin(in.enumFrom(kEnums, kEnumCount));
   const int vertices = in.below(12);
   for (int i = 0; i < vertices; ++i) {
-    switch (in.below(6)) {
+    switch (in.below(7)) {
     case 0: CALL(glColor4f, in.real(), in.real(), in.real(), in.real()); break;
     case 1: CALL(glNormal3f, in.real(), in.real(), in.real()); break;
     case 2: CALL(glTexCoord4f, in.real(), in.real(), in.real(), in.real()); break;
     case 3: glEdgeFlag(in.byte() & 1); break;
     case 4: CALL(glMaterialf, in.enumFrom(kEnums, kEnumCount), in.enumFrom(kEnums, kEnumCount), in.real()); break;
+    case 5:
+      switch (in.below(3)) {
+      case 0: CALL(glMultiTexCoord4f, in.enumFrom(kEnums, kEnumCount), in.real(), in.real(), in.real(), in.real()); break;
+      case 1: CALL(glSecondaryColor3f, in.real(), in.real(), in.real()); break;
+      default: glFogCoordf(in.real()); break;
+      }
+      break;
     default: break;
     }
     CALL(glVertex4f, in.real(), in.real(), in.real(), in.byte() < 200 ? 1.0f : in.real());
@@ -313,7 +332,22 @@ void textureCall(ByteReader &in) {
   const GLenum format = in.enumFrom(kEnums, kEnumCount);
   const GLenum type = in.enumFrom(kEnums, kEnumCount);
   const GLint level = in.byte() < 200 ? in.below(5) : in.size();
-  switch (in.below(9)) {
+  switch (in.below(11)) {
+  case 9: {
+    // A 3D image with client pixels: at most 16 x 16 x 4 (the image skips and heights the
+    // fuzzer sets stay small too).
+    const GLsizei w = clientImageSide(in);
+    const GLsizei h = clientImageSide(in);
+    const int depth = in.size();
+    const GLsizei d = depth > 4 ? 4 : depth;
+    CALL(glTexImage3D, target, level, static_cast<GLint>(in.enumFrom(kEnums, kEnumCount)), w, h, d,
+         in.below(3) == 0, format, type, memory->pixels.data());
+    break;
+  }
+  case 10:
+    CALL(glCopyTexSubImage3D, target, level, in.size(), in.size(), in.size(), in.size(), in.size(), in.size(),
+         in.size());
+    break;
   case 0: {
     GLuint name = in.below(6);
     if (in.byte() & 1) glGenTextures(1, &name);
@@ -579,7 +613,21 @@ void listAndModeCall(ByteReader &in) {
     CALL(glEvalCoord2f, in.real(), in.real());
     break;
   }
-  case 10: glActiveTexture(in.enumFrom(kEnums, kEnumCount)); break;
+  case 10:
+    switch (in.below(6)) {
+    case 0: glActiveTexture(in.enumFrom(kEnums, kEnumCount)); break;
+    case 1: glClientActiveTexture(in.enumFrom(kEnums, kEnumCount)); break;
+    case 2: glDrawBuffer(in.enumFrom(kEnums, kEnumCount)); break;
+    case 3: glReadBuffer(in.enumFrom(kEnums, kEnumCount)); break;
+    case 4: CALL(glPointParameterf, in.enumFrom(kEnums, kEnumCount), in.real()); break;
+    default: {
+      float values[3];
+      fill(in, values, 3);
+      glPointParameterfv(in.enumFrom(kEnums, kEnumCount), values);
+      break;
+    }
+    }
+    break;
   default: glGetError(); break;
   }
 }
