@@ -148,6 +148,19 @@ TEST_CASE("pipeline fragments: the alpha test compares the fragment's alpha with
   CHECK(pixelAt(3, 3).r == 255);
 }
 
+TEST_CASE("pipeline fragments: the alpha test compares 8-bit fixed-point values (spec 4.1.4)") {
+  ScopedContext context(8, 8);
+  glEnable(GL_ALPHA_TEST);
+  // 0.502 and the reference 0.5 are both 128 in the colour buffer's 8 bits: equal, not greater.
+  glColor4f(1, 1, 1, 0.502f);
+  glAlphaFunc(GL_GREATER, 0.5f);
+  fullScreenQuad(0.0f);
+  CHECK(pixelAt(3, 3).r == 0);
+  glAlphaFunc(GL_EQUAL, 0.5f);
+  fullScreenQuad(0.0f);
+  CHECK(pixelAt(3, 3).r == 255);
+}
+
 TEST_CASE("pipeline fragments: blending, hand-computed") {
   ScopedContext context(8, 8);
   glEnable(GL_BLEND);

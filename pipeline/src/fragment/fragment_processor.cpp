@@ -32,7 +32,7 @@ void FragmentProcessor::prepare(Context& ctx, bool phong) {
 
   alphaTest_ = f.alphaTest && f.alphaFunc != GL_ALWAYS;
   alphaFunc_ = f.alphaFunc;
-  alphaRef_ = f.alphaRef;
+  alphaRefByte_ = floatToColorByte(f.alphaRef);
 
   stencilTest_ = f.stencilTest;
   stencilFunc_ = f.stencilFunc;
@@ -95,7 +95,9 @@ void FragmentProcessor::processFragments(const raster::FragmentBatch& batch,
     if (coverage) color[3] *= coverage[i];
 
     // Chapter 4.1: the tests, in order. The scissor test was the rasterizer's bounds.
-    if (alphaTest_ && !passesComparison(alphaFunc_, color[3], alphaRef_)) continue;
+    // Spec 4.1.4: the reference and the alpha are compared as the colour buffer's fixed-point
+    // values, so an alpha that rounds to the reference's 8-bit value is equal to it.
+    if (alphaTest_ && !passesComparison(alphaFunc_, floatToColorByte(color[3]), alphaRefByte_)) continue;
 
     uint8_t* stencil = stencilTest_ ? fb.stencilAt(fragment.x, fragment.y) : nullptr;
     if (stencil) {

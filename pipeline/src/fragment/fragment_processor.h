@@ -42,7 +42,7 @@ class FragmentProcessor final : public raster::FragmentSink {
 
   bool alphaTest_ = false;
   GLenum alphaFunc_ = GL_ALWAYS;
-  float alphaRef_ = 0.0f;
+  uint8_t alphaRefByte_ = 0;  // the reference as the colour buffer's 8-bit value
 
   bool stencilTest_ = false;
   GLenum stencilFunc_ = GL_ALWAYS;
