@@ -1,5 +1,5 @@
 // GLU 1.3's utility additions: gluCheckExtension, gluUnProject4, gluBuild*MipmapLevels,
-// gluBuild3DMipmaps (level 0 only), and the error strings of the tessellator.
+// gluBuild3DMipmaps (every level, through GL_GENERATE_MIPMAP), and the error strings of the tessellator.
 #include <doctest/doctest.h>
 
 #include <GL/gl.h>
@@ -84,7 +84,7 @@ TEST_CASE("gluBuild2DMipmapLevels loads levels base to max from the given level"
   glDeleteTextures(1, &texture);
 }
 
-TEST_CASE("gluBuild3DMipmaps checks its arguments, then loads level 0 of the 3D texture") {
+TEST_CASE("gluBuild3DMipmaps checks its arguments, then loads every level of the 3D texture") {
   ScopedContext context;
   std::vector<GLubyte> image(4 * 4 * 4 * 4, 0);
   CHECK(gluBuild3DMipmaps(GL_TEXTURE_3D, GL_RGBA, 0, 4, 4, GL_RGBA, GL_UNSIGNED_BYTE,
@@ -98,6 +98,22 @@ TEST_CASE("gluBuild3DMipmaps checks its arguments, then loads level 0 of the 3D 
   GLint depth = 0;
   glGetTexLevelParameteriv(GL_TEXTURE_3D, 0, GL_TEXTURE_DEPTH, &depth);
   CHECK(depth == 4);
+  // The smaller levels down to 1 x 1 x 1, each texel the average of the 2 x 2 x 2 block above it.
+  for (size_t i = 0; i < image.size(); i += 4) image[i] = (i / 4) % 2 == 0 ? 255 : 51;  // red
+  CHECK(gluBuild3DMipmaps(GL_TEXTURE_3D, GL_RGBA, 4, 4, 4, GL_RGBA, GL_UNSIGNED_BYTE,
+                          image.data()) == 0);
+  for (int level = 1; level <= 2; ++level) {
+    GLint side = 0;
+    glGetTexLevelParameteriv(GL_TEXTURE_3D, level, GL_TEXTURE_DEPTH, &side);
+    CHECK(side == 4 >> level);
+  }
+  GLubyte smallest[4] = {};
+  glGetTexImage(GL_TEXTURE_3D, 2, GL_RGBA, GL_UNSIGNED_BYTE, smallest);
+  CHECK(smallest[0] == 153);  // (255 + 51) / 2
+  GLint generate = GL_TRUE;
+  glGetTexParameteriv(GL_TEXTURE_3D, GL_GENERATE_MIPMAP, &generate);
+  CHECK(generate == GL_FALSE);  // restored
+  CHECK(glGetError() == GL_NO_ERROR);
   CHECK(gluBuild3DMipmapLevels(GL_TEXTURE_3D, GL_RGBA, 4, 4, 4, GL_RGBA, GL_UNSIGNED_BYTE, 0, 1,
                                0, image.data()) == GLU_INVALID_VALUE);
 }

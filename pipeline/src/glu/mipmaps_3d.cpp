@@ -1,9 +1,13 @@
 // gluBuild3DMipmaps and gluBuild3DMipmapLevels (GLU 1.3, section 3.2). The arguments are checked
 // as GLU checks them (GLU_INVALID_VALUE for a size below 1 or levels out of order,
-// GLU_INVALID_ENUM for a target other than GL_TEXTURE_3D or an unknown format or type), then
-// level 0 goes to glTexImage3D as given; the smaller levels are not built (GLU's scaling to
-// powers of two and its 3D box filter are not implemented), so a program that wants mipmaps of
-// a 3D texture sets GL_GENERATE_MIPMAP first.
+// GLU_INVALID_ENUM for a target other than GL_TEXTURE_3D or an unknown format or type).
+//
+// gluBuild3DMipmaps loads level 0 with GL_GENERATE_MIPMAP on for the bound texture (and restores
+// the setting after), so the GL builds every smaller level with its 2 x 2 x 2 box filter: the
+// chain GLU's own 3D box filter makes, up to its rounding (SGI's halves in float; glass's
+// generation rounds each average to the texel format). GLU's scaling of sizes that are not powers
+// of two to the nearest power is not done: such an image is loaded as it is.
+// gluBuild3DMipmapLevels loads the given level only.
 #include <GL/gl.h>
 #include <GL/glu.h>
 
@@ -47,7 +51,11 @@ GLint GLAPIENTRY gluBuild3DMipmaps(GLenum target, GLint internalFormat, GLsizei 
   if (const GLint error = check3DArguments(target, width, height, depth, format, type)) {
     return error;
   }
+  GLint generate = GL_FALSE;
+  glGetTexParameteriv(target, GL_GENERATE_MIPMAP, &generate);
+  glTexParameteri(target, GL_GENERATE_MIPMAP, GL_TRUE);
   glTexImage3D(target, 0, internalFormat, width, height, depth, 0, format, type, data);
+  glTexParameteri(target, GL_GENERATE_MIPMAP, generate);
   return 0;
 }
 
