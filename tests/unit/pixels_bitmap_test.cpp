@@ -221,3 +221,20 @@ TEST_CASE("pixels bitmap: a raster position moved to infinity or a NaN zoom draw
   CHECK_FALSE(lit(4, 4));
   CHECK_FALSE(lit(4, 3));
 }
+
+TEST_CASE("pixels bitmap: between glBegin and glEnd glBitmap and glDrawPixels read no client data") {
+  ScopedContext context(8, 8);
+  // Nothing may be read from a null pointer's worth of data the unpack state says is there: the
+  // commands are refused before reading.
+  glPixelStorei(GL_UNPACK_ROW_LENGTH, 1 << 20);
+  const GLubyte one[1] = {0x80};
+  glBegin(GL_POINTS);
+  glBitmap(8, 8, 0.0f, 0.0f, 0.0f, 0.0f, one);
+  glEnd();
+  CHECK(glGetError() == GL_INVALID_OPERATION);
+  glBegin(GL_POINTS);
+  glDrawPixels(8, 8, GL_RGBA, GL_UNSIGNED_BYTE, one);
+  glEnd();
+  CHECK(glGetError() == GL_INVALID_OPERATION);
+  glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
+}

@@ -29,6 +29,12 @@ void pixelCommand(Context& ctx, GLenum error, Work work) {
   });
 }
 
+// Between glBegin and glEnd (and not compiling a list) the command will be refused with
+// GL_INVALID_OPERATION, so its client data is not read: the unpack state its caller meant for it
+// may itself have been refused there (glPixelStore is an error between glBegin and glEnd), and
+// reading by the state in force could run past the caller's data.
+bool refusedBeforeReading(const Context& ctx) { return ctx.assembly.active && !ctx.lists.isCompiling(); }
+
 }  // namespace
 
 extern "C" {
@@ -38,7 +44,7 @@ void glDrawPixels(GLsizei width, GLsizei height, GLenum format, GLenum type, con
     GLenum error = glass::gl::checkPixelFormatAndType(format, type);
     if (width < 0 || height < 0) error = GL_INVALID_VALUE;
     std::shared_ptr<const glass::gl::UnpackedImage> image;
-    if (error == GL_NO_ERROR && pixels != nullptr) {
+    if (error == GL_NO_ERROR && pixels != nullptr && !refusedBeforeReading(ctx)) {
       try {
         image = std::make_shared<const glass::gl::UnpackedImage>(
             glass::gl::unpackImage(pixels, width, height, format, type, ctx.pixelStore.unpack));
@@ -76,7 +82,7 @@ void glBitmap(GLsizei width, GLsizei height, GLfloat xorig, GLfloat yorig, GLflo
   glass::gl::executeNow([=](Context& ctx) {
     GLenum error = (width < 0 || height < 0) ? GL_INVALID_VALUE : GL_NO_ERROR;
     auto bits = std::make_shared<std::vector<uint8_t>>();
-    if (error == GL_NO_ERROR && bitmap != nullptr && width > 0 && height > 0) {
+    if (error == GL_NO_ERROR && bitmap != nullptr && width > 0 && height > 0 && !refusedBeforeReading(ctx)) {
       try {
         bits->resize(static_cast<size_t>(width) * static_cast<size_t>(height));
         std::vector<int32_t> row(static_cast<size_t>(width));
