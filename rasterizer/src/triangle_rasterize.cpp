@@ -19,45 +19,85 @@
 //
 // Attributes are evaluated directly at each pixel centre from the setup's planes (never by
 // accumulating increments), so a pixel's values do not depend on the order blocks are visited.
+// Evaluating v0 + dvdx x + dvdy y at a centre computes (v0 + dvdx x) + dvdy y: the sum depends
+// only on the column and the product only on the row, so a block computes those once per column
+// and row and adds them per pixel. Those are the same operations in the same order, so the values
+// have the same bits as when each pixel is evaluated on its own.
+//
+// Depth comes first, so that the early depth test (depth_test.h) can drop hidden fragments
+// before their varyings are interpolated: with many overlapping triangles most fragments are
+// hidden, and the divisions of perspective-correct interpolation are the costliest part.
 #include <algorithm>
 
 #include "depth_value.h"
+#include "edge_functions.h"
+#include "glass/raster/framebuffer.h"
 #include "glass/raster/triangle.h"
-#include "subpixel.h"
 
 namespace glass::raster {
 namespace {
 
 constexpr int kBlockSize = 8;
-constexpr int kBlockLog2 = 3;
 
 struct BlockFragments {
   Fragment fragments[kBlockSize * kBlockSize];
   int count = 0;
 };
 
-// Fills depth and varyings of the batch's fragments from the planes, then hands it over.
-void shadeAndEmit(const TriangleSetup& setup, BlockFragments& block, FragmentSink& sink) {
+// The columns [x0, x1) and rows [y0, y1) of a block whose lower-left pixel is (bx, by).
+struct BlockSpan {
+  int bx, by, x0, x1, y0, y1;
+};
+
+// The depth plane at the block's pixel centres, split as described at the top of the file.
+struct BlockDepth {
+  double column[kBlockSize], row[kBlockSize];
+
+  BlockDepth(const TriangleSetup& setup, const BlockSpan& span) {
+    for (int i = span.x0 - span.bx; i < span.x1 - span.bx; ++i)
+      column[i] = setup.z0 + setup.zdx * (span.bx + i + 0.5);
+    for (int j = span.y0 - span.by; j < span.y1 - span.by; ++j)
+      row[j] = setup.zdy * (span.by + j + 0.5);
+  }
+};
+
+// Interpolates the varyings of the block's fragments (whose position and depth are set), then
+// hands them to the sink.
+void interpolateAndEmit(const TriangleSetup& setup, const BlockSpan& span, BlockFragments& block,
+                        FragmentSink& sink) {
+  const double columnX0 = span.bx + 0.5, rowY0 = span.by + 0.5;  // centres of column/row 0
+  const int kept = block.count;
+  block.count = 0;
   const AttributePlanes& planes = setup.planes;
   const int varyingCount = setup.varyingCount;
-  for (int f = 0; f < block.count; ++f) {
-    Fragment& fragment = block.fragments[f];
-    const double x = fragment.x + 0.5, y = fragment.y + 0.5;
-    fragment.depth = depthValue(setup.z0 + setup.zdx * x + setup.zdy * y);
-    const double q = planes.invW0 + planes.invWdx * x + planes.invWdy * y;
-    for (int k = 0; k < varyingCount; ++k) {
-      const double p = planes.a0[k] + planes.dx[k] * x + planes.dy[k] * y;
-      fragment.varyings[k] = static_cast<float>(p / q);
-    }
+  // q = 1/w (or 1), and p = varying / w, per column and row as above; a varying is p / q.
+  double qColumn[kBlockSize], qRow[kBlockSize];
+  double pColumn[kBlockSize][kMaxVaryings], pRow[kBlockSize][kMaxVaryings];
+  for (int i = span.x0 - span.bx; i < span.x1 - span.bx; ++i) {
+    const double x = columnX0 + i;
+    qColumn[i] = planes.invW0 + planes.invWdx * x;
+    for (int k = 0; k < varyingCount; ++k) pColumn[i][k] = planes.a0[k] + planes.dx[k] * x;
   }
+  for (int j = span.y0 - span.by; j < span.y1 - span.by; ++j) {
+    const double y = rowY0 + j;
+    qRow[j] = planes.invWdy * y;
+    for (int k = 0; k < varyingCount; ++k) pRow[j][k] = planes.dy[k] * y;
+  }
+  for (int f = 0; f < kept; ++f) {
+    Fragment& fragment = block.fragments[f];
+    const int i = fragment.x - span.bx, j = fragment.y - span.by;
+    const double q = qColumn[i] + qRow[j];
+    for (int k = 0; k < varyingCount; ++k)
+      fragment.varyings[k] = static_cast<float>((pColumn[i][k] + pRow[j][k]) / q);
+  }
+
   FragmentBatch batch;
   batch.fragments = block.fragments;
-  batch.count = block.count;
+  batch.count = kept;
   batch.varyingCount = varyingCount;
   batch.frontFacing = setup.frontFacing;
   batch.planes = &setup.planes;
   sink.processFragments(batch);
-  block.count = 0;
 }
 
 }  // namespace
@@ -65,24 +105,9 @@ void shadeAndEmit(const TriangleSetup& setup, BlockFragments& block, FragmentSin
 void rasterizeTriangle(const TriangleSetup& setup, FragmentSink& sink) {
   const PixelRect& box = setup.box;
   if (box.empty()) return;
-
-  // Per edge: the step of the biased edge value from one pixel centre to the next, and the extra
-  // amount that takes a block's first pixel centre to its corner of largest and smallest value.
-  int64_t stepX[3], stepY[3], biasedC[3], toMax[3], toMin[3];
-  for (int i = 0; i < 3; ++i) {
-    const int64_t a = setup.edgeA[i], b = setup.edgeB[i];
-    const bool ownsCentres = a > 0 || (a == 0 && b > 0);
-    biasedC[i] = setup.edgeC[i] + (ownsCentres ? 0 : -1);
-    stepX[i] = a * kSubpixelOne;
-    stepY[i] = b * kSubpixelOne;
-    const int64_t spanX = stepX[i] * (kBlockSize - 1), spanY = stepY[i] * (kBlockSize - 1);
-    toMax[i] = std::max<int64_t>(spanX, 0) + std::max<int64_t>(spanY, 0);
-    toMin[i] = std::min<int64_t>(spanX, 0) + std::min<int64_t>(spanY, 0);
-  }
-  auto edgeAt = [&](int i, int px, int py) {
-    return setup.edgeA[i] * (px * kSubpixelOne + kSubpixelHalf) +
-           setup.edgeB[i] * (py * kSubpixelOne + kSubpixelHalf) + biasedC[i];
-  };
+  const PixelEdgeFunctions edges(setup);
+  const Framebuffer* earlyDepth = setup.earlyDepth.buffer;
+  const DepthCompare compare = setup.earlyDepth.compare;
 
   BlockFragments block;
   const int firstBlockX = box.x0 & ~(kBlockSize - 1), firstBlockY = box.y0 & ~(kBlockSize - 1);
@@ -90,40 +115,39 @@ void rasterizeTriangle(const TriangleSetup& setup, FragmentSink& sink) {
     const int y0 = std::max(by, box.y0), y1 = std::min(by + kBlockSize, box.y1);
     for (int bx = firstBlockX; bx < box.x1; bx += kBlockSize) {
       const int x0 = std::max(bx, box.x0), x1 = std::min(bx + kBlockSize, box.x1);
-      int64_t origin[3];
-      bool rejected = false, accepted = true;
-      for (int i = 0; i < 3; ++i) {
-        origin[i] = edgeAt(i, bx, by);
-        if (origin[i] + toMax[i] < 0) rejected = true;
-        if (origin[i] + toMin[i] < 0) accepted = false;
-      }
-      if (rejected) continue;
+      if (edges.rejects(bx, by, kBlockSize, kBlockSize)) continue;
+      bool accepted = true;
+      for (int i = 0; i < 3; ++i)
+        if (edges.minOver(i, bx, by, kBlockSize, kBlockSize) < 0) accepted = false;
 
-      if (accepted) {
-        for (int y = y0; y < y1; ++y)
-          for (int x = x0; x < x1; ++x) {
-            Fragment& f = block.fragments[block.count++];
-            f.x = x;
-            f.y = y;
-          }
-      } else {
-        for (int y = y0; y < y1; ++y) {
-          int64_t e0 = origin[0] + stepY[0] * (y - by) + stepX[0] * (x0 - bx);
-          int64_t e1 = origin[1] + stepY[1] * (y - by) + stepX[1] * (x0 - bx);
-          int64_t e2 = origin[2] + stepY[2] * (y - by) + stepX[2] * (x0 - bx);
-          for (int x = x0; x < x1; ++x) {
-            if ((e0 | e1 | e2) >= 0) {
-              Fragment& f = block.fragments[block.count++];
-              f.x = x;
-              f.y = y;
-            }
-            e0 += stepX[0];
-            e1 += stepX[1];
-            e2 += stepX[2];
-          }
+      // Coverage and depth, row by row. A covered pixel's depth is computed at once, and a
+      // fragment that fails the early depth test goes no further.
+      const BlockSpan span{bx, by, x0, x1, y0, y1};
+      const BlockDepth depth(setup, span);
+      for (int y = y0; y < y1; ++y) {
+        const double zRow = depth.row[y - by];
+        const uint32_t* stored = earlyDepth ? earlyDepth->depthAt(0, y) : nullptr;
+        auto cover = [&](int x) {
+          const uint32_t z = depthValue(depth.column[x - bx] + zRow);
+          if (stored && !passesDepthCompare(compare, z, stored[x])) return;
+          Fragment& f = block.fragments[block.count++];
+          f.x = x;
+          f.y = y;
+          f.depth = z;
+        };
+        if (accepted) {
+          for (int x = x0; x < x1; ++x) cover(x);
+          continue;
+        }
+        int64_t e0 = edges.at(0, x0, y), e1 = edges.at(1, x0, y), e2 = edges.at(2, x0, y);
+        for (int x = x0; x < x1; ++x) {
+          if ((e0 | e1 | e2) >= 0) cover(x);
+          e0 += edges.stepX[0];
+          e1 += edges.stepX[1];
+          e2 += edges.stepX[2];
         }
       }
-      if (block.count > 0) shadeAndEmit(setup, block, sink);
+      if (block.count > 0) interpolateAndEmit(setup, span, block, sink);
     }
   }
 }

@@ -118,6 +118,7 @@ bool setupTriangle(const WindowVertex& a, const WindowVertex& b, const WindowVer
   setup.varyingCount = varyingCount;
   setup.perspectiveCorrect = settings.perspectiveCorrect;
   setup.frontFacing = settings.frontFacing;
+  setup.earlyDepth = settings.earlyDepth;
   return true;
 }
 

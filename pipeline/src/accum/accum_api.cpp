@@ -7,6 +7,7 @@
 #include "accum/accumulation.h"
 #include "core/context.h"
 #include "lists/command_recording.h"
+#include "primitive/queued_drawing.h"
 
 using glass::gl::Context;
 
@@ -16,6 +17,7 @@ void glAccum(GLenum op, GLfloat value) {
   glass::gl::compileOrExecute([=](Context& ctx) {
     if (glass::gl::rejectInsideBeginEnd(ctx)) return;
     if (!glass::gl::isAccumOperation(op)) return glass::gl::recordError(ctx, GL_INVALID_ENUM);
+    glass::gl::finishQueuedDrawing(ctx);
     glass::gl::accumulate(ctx, op, value);
   });
 }

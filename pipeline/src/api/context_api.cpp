@@ -6,6 +6,7 @@
 #include "core/context.h"
 #include "core/png_writer.h"
 #include "core/transform_state.h"
+#include "primitive/queued_drawing.h"
 
 struct GlassContext {
   glass::gl::Context gl;
@@ -42,6 +43,7 @@ void glassDestroyContext(GlassContext* ctx) {
 
 int glassWritePNG(GlassContext* ctx, const char* path) {
   if (!ctx) return 0;
+  glass::gl::finishQueuedDrawing(ctx->gl);
   return glass::gl::writeColorBufferPNG(ctx->gl.framebuffer, path) ? 1 : 0;
 }
 
@@ -51,5 +53,9 @@ int glassGetWidth(const GlassContext* ctx) { return ctx ? ctx->gl.framebuffer.wi
 int glassGetHeight(const GlassContext* ctx) { return ctx ? ctx->gl.framebuffer.height() : 0; }
 
 const unsigned char* glassGetColorBuffer(const GlassContext* ctx) {
-  return ctx ? ctx->gl.framebuffer.colorAt(0, 0) : nullptr;
+  if (!ctx) return nullptr;
+  // The caller reads the pixels: queued draws must be in them. Finishing queued work changes no
+  // GL state, so the context stays logically const.
+  glass::gl::finishQueuedDrawing(const_cast<GlassContext*>(ctx)->gl);
+  return ctx->gl.framebuffer.colorAt(0, 0);
 }

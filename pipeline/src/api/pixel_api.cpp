@@ -7,6 +7,7 @@
 #include "fragment/buffer_selection.h"
 #include "fragment/read_pixels.h"
 #include "lists/command_recording.h"
+#include "primitive/queued_drawing.h"
 
 using glass::gl::Context;
 using glass::gl::executeNow;
@@ -68,6 +69,7 @@ void glReadPixels(GLint x, GLint y, GLsizei width, GLsizei height, GLenum format
       return recordError(ctx, GL_INVALID_OPERATION);
     }
     if (!pixels) return;
+    glass::gl::finishQueuedDrawing(ctx);
     glass::gl::readPixels(ctx, x, y, width, height, format, type, pixels);
   });
 }

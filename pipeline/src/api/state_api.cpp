@@ -10,6 +10,7 @@
 #include "core/gl_strings.h"
 #include "core/state_query.h"
 #include "lists/command_recording.h"
+#include "primitive/queued_drawing.h"
 
 using glass::gl::compileOrExecute;
 using glass::gl::Context;
@@ -141,9 +142,18 @@ void glHint(GLenum target, GLenum mode) {
   });
 }
 
-// glass draws each primitive completely before the GL call that specified it returns, so there
-// is never pending work to flush or wait for.
-void glFinish(void) { executeNow([](Context& ctx) { rejectInsideBeginEnd(ctx); }); }
-void glFlush(void) { executeNow([](Context& ctx) { rejectInsideBeginEnd(ctx); }); }
+// Draws are queued and rasterized later (primitive/queued_drawing.h). Both commands rasterize
+// what is queued and return when it is in the framebuffer: glFinish must (spec 5.5), and glFlush,
+// which need only start it, does the same, since nothing else would start it in finite time.
+void glFinish(void) {
+  executeNow([](Context& ctx) {
+    if (!rejectInsideBeginEnd(ctx)) glass::gl::finishQueuedDrawing(ctx);
+  });
+}
+void glFlush(void) {
+  executeNow([](Context& ctx) {
+    if (!rejectInsideBeginEnd(ctx)) glass::gl::finishQueuedDrawing(ctx);
+  });
+}
 
 }  // extern "C"

@@ -17,6 +17,8 @@ struct BlendSettings {
   GLenum srcRGB = GL_ONE, dstRGB = GL_ZERO, srcAlpha = GL_ONE, dstAlpha = GL_ZERO;
   GLenum equation = GL_FUNC_ADD;
   uint8_t constant[4] = {0, 0, 0, 0};  // glBlendColor, converted to 8 bits
+
+  bool operator==(const BlendSettings&) const = default;
 };
 
 bool isBlendFactor(GLenum factor, bool source);

@@ -7,12 +7,14 @@
 #include "fragment/buffer_selection.h"
 #include "fragment/color_conversion.h"
 #include "glass/raster/fragment.h"
+#include "primitive/queued_drawing.h"
 
 namespace glass::gl {
 
 void clearBuffers(Context& ctx, GLbitfield mask) {
   // As in Mesa, glClear does nothing in selection and feedback modes, where nothing is drawn.
   if (ctx.renderMode.mode != GL_RENDER) return;
+  finishQueuedDrawing(ctx);
   raster::Framebuffer& fb = ctx.framebuffer;
   const FragmentState& f = ctx.fragment;
   int x0 = 0, y0 = 0, x1 = fb.width(), y1 = fb.height();

@@ -1,5 +1,7 @@
 #include "fragment/fragment_processor.h"
 
+#include <bit>
+#include <cstdint>
 #include <cstring>
 
 #include "core/context.h"
@@ -15,54 +17,66 @@
 #include "vertex/varyings.h"
 
 namespace glass::gl {
+namespace {
+
+// The 32-bit word whose bytes in memory are r, g, b, a (the colour buffer's order).
+uint32_t packColorBytes(uint8_t r, uint8_t g, uint8_t b, uint8_t a) {
+  if constexpr (std::endian::native == std::endian::little) {
+    return uint32_t{r} | uint32_t{g} << 8 | uint32_t{b} << 16 | uint32_t{a} << 24;
+  } else {
+    return uint32_t{r} << 24 | uint32_t{g} << 16 | uint32_t{b} << 8 | uint32_t{a};
+  }
+}
+
+}  // namespace
 
 void FragmentProcessor::prepare(Context& ctx, bool phong) {
   ctx_ = &ctx;
   const FragmentState& f = ctx.fragment;
   const bool lighting = lightingEnabled(ctx);
 
-  phong_ = phong;
-  texturing_ = texturingEnabled(ctx);
-  bumpMapping_ = phong && bumpMappingActive(ctx);
+  s_.phong = phong;
+  s_.texturing = texturingEnabled(ctx);
+  s_.bumpMapping = phong && bumpMappingActive(ctx);
   // Spec 3.9: the secondary colour is added when lighting with GL_SEPARATE_SPECULAR_COLOR or,
   // without lighting, when GL_COLOR_SUM is enabled (the vertex stage then passes glSecondaryColor).
-  colorSum_ = lighting ? separateSpecularColor(ctx) : ctx.fog.colorSum;
-  secondaryVarying_ = colorSum_ && !phong;
-  fog_ = fogEnabled(ctx);
+  s_.colorSum = lighting ? separateSpecularColor(ctx) : ctx.fog.colorSum;
+  s_.secondaryVarying = s_.colorSum && !phong;
+  s_.fog = fogEnabled(ctx);
 
-  alphaTest_ = f.alphaTest && f.alphaFunc != GL_ALWAYS;
-  alphaFunc_ = f.alphaFunc;
-  alphaRefByte_ = floatToColorByte(f.alphaRef);
+  s_.alphaTest = f.alphaTest && f.alphaFunc != GL_ALWAYS;
+  s_.alphaFunc = f.alphaFunc;
+  s_.alphaRefByte = floatToColorByte(f.alphaRef);
 
-  stencilTest_ = f.stencilTest;
-  stencilFunc_ = f.stencilFunc;
-  stencilRef_ = static_cast<uint8_t>(f.stencilRef);
-  stencilValueMask_ = f.stencilValueMask & 0xFFu;
-  stencilWriteMask_ = f.stencilWriteMask & 0xFFu;
-  stencilFail_ = f.stencilFail;
-  stencilDepthFail_ = f.stencilDepthFail;
-  stencilDepthPass_ = f.stencilDepthPass;
+  s_.stencilTest = f.stencilTest;
+  s_.stencilFunc = f.stencilFunc;
+  s_.stencilRef = static_cast<uint8_t>(f.stencilRef);
+  s_.stencilValueMask = f.stencilValueMask & 0xFFu;
+  s_.stencilWriteMask = f.stencilWriteMask & 0xFFu;
+  s_.stencilFail = f.stencilFail;
+  s_.stencilDepthFail = f.stencilDepthFail;
+  s_.stencilDepthPass = f.stencilDepthPass;
 
-  depthTest_ = f.depthTest;
-  depthFunc_ = f.depthFunc;
-  depthMask_ = f.depthMask;
+  s_.depthTest = f.depthTest;
+  s_.depthFunc = f.depthFunc;
+  s_.depthMask = f.depthMask;
 
   // With GL_COLOR_LOGIC_OP enabled, the logic op replaces blending (spec 4.1.10).
-  logicOp_ = f.colorLogicOp;
-  logicOpMode_ = f.logicOp;
-  blend_ = f.blend && !logicOp_;
-  blendSettings_.srcRGB = f.blendSrcRGB;
-  blendSettings_.dstRGB = f.blendDstRGB;
-  blendSettings_.srcAlpha = f.blendSrcAlpha;
-  blendSettings_.dstAlpha = f.blendDstAlpha;
-  blendSettings_.equation = f.blendEquation;
+  s_.logicOp = f.colorLogicOp;
+  s_.logicOpMode = f.logicOp;
+  s_.blend = f.blend && !s_.logicOp;
+  s_.blendSettings.srcRGB = f.blendSrcRGB;
+  s_.blendSettings.dstRGB = f.blendDstRGB;
+  s_.blendSettings.srcAlpha = f.blendSrcAlpha;
+  s_.blendSettings.dstAlpha = f.blendDstAlpha;
+  s_.blendSettings.equation = f.blendEquation;
   for (int i = 0; i < 4; ++i) {
-    blendSettings_.constant[i] = floatToColorByte(f.blendColor[i]);
-    colorMask_[i] = f.colorMask[i];
+    s_.blendSettings.constant[i] = floatToColorByte(f.blendColor[i]);
+    s_.colorMask[i] = f.colorMask[i];
   }
-  writesColor_ = drawsColor(f.drawBuffer) &&
-                 (colorMask_[0] || colorMask_[1] || colorMask_[2] || colorMask_[3]);
-  allChannels_ = colorMask_[0] && colorMask_[1] && colorMask_[2] && colorMask_[3];
+  s_.writesColor = drawsColor(f.drawBuffer) &&
+                   (s_.colorMask[0] || s_.colorMask[1] || s_.colorMask[2] || s_.colorMask[3]);
+  s_.allChannels = s_.colorMask[0] && s_.colorMask[1] && s_.colorMask[2] && s_.colorMask[3];
 }
 
 void FragmentProcessor::processFragments(const raster::FragmentBatch& batch) {
@@ -81,65 +95,77 @@ void FragmentProcessor::processFragments(const raster::FragmentBatch& batch,
     // Chapter 3: the fragment's colour.
     float color[4] = {v[0], v[1], v[2], v[3]};
     float secondary[4] = {0.0f, 0.0f, 0.0f, 0.0f};
-    if (secondaryVarying_) {
+    if (s_.secondaryVarying) {
       for (int c = 0; c < 4; ++c) secondary[c] = v[varying::kSecondaryColor + c];
     }
-    if (phong_) {
+    if (s_.phong) {
       float normal[3] = {v[varying::kEyeNormal], v[varying::kEyeNormal + 1], v[varying::kEyeNormal + 2]};
-      if (bumpMapping_) perturbNormal(ctx, batch, i, normal);
+      if (s_.bumpMapping) perturbNormal(ctx, batch, i, normal);
       lightFragment(ctx, v + varying::kEyePosition, normal, batch.frontFacing, color, secondary);
     }
-    if (texturing_) applyTexturing(ctx, batch, i, color);
-    if (colorSum_) applyColorSum(secondary, color);
-    if (fog_) applyFog(ctx, fragment, color);
+    if (s_.texturing) applyTexturing(ctx, batch, i, color);
+    if (s_.colorSum) applyColorSum(secondary, color);
+    if (s_.fog) applyFog(ctx, fragment, color);
     if (coverage) color[3] *= coverage[i];
 
     // Chapter 4.1: the tests, in order. The scissor test was the rasterizer's bounds.
     // Spec 4.1.4: the reference and the alpha are compared as the colour buffer's fixed-point
     // values, so an alpha that rounds to the reference's 8-bit value is equal to it.
-    if (alphaTest_ && !passesComparison(alphaFunc_, floatToColorByte(color[3]), alphaRefByte_)) continue;
+    if (s_.alphaTest &&
+        !passesComparison(s_.alphaFunc, floatToColorByte(color[3]), s_.alphaRefByte)) {
+      continue;
+    }
 
-    uint8_t* stencil = stencilTest_ ? fb.stencilAt(fragment.x, fragment.y) : nullptr;
+    uint8_t* stencil = s_.stencilTest ? fb.stencilAt(fragment.x, fragment.y) : nullptr;
     if (stencil) {
-      const unsigned stored = *stencil & stencilValueMask_;
-      if (!passesComparison(stencilFunc_, stencilRef_ & stencilValueMask_, stored)) {
-        writeStencil(*stencil, applyStencilOperation(stencilFail_, *stencil, stencilRef_),
-                     stencilWriteMask_);
+      const unsigned stored = *stencil & s_.stencilValueMask;
+      if (!passesComparison(s_.stencilFunc, s_.stencilRef & s_.stencilValueMask, stored)) {
+        writeStencil(*stencil, applyStencilOperation(s_.stencilFail, *stencil, s_.stencilRef),
+                     s_.stencilWriteMask);
         continue;
       }
     }
-    if (depthTest_) {
+    if (s_.depthTest) {
       uint32_t* depth = fb.depthAt(fragment.x, fragment.y);
-      if (!passesComparison(depthFunc_, fragment.depth, *depth)) {
+      if (!passesComparison(s_.depthFunc, fragment.depth, *depth)) {
         if (stencil) {
-          writeStencil(*stencil, applyStencilOperation(stencilDepthFail_, *stencil, stencilRef_),
-                       stencilWriteMask_);
+          writeStencil(*stencil, applyStencilOperation(s_.stencilDepthFail, *stencil, s_.stencilRef),
+                       s_.stencilWriteMask);
         }
         continue;
       }
-      if (depthMask_) *depth = fragment.depth;
+      if (s_.depthMask) *depth = fragment.depth;
     }
     if (stencil) {
-      writeStencil(*stencil, applyStencilOperation(stencilDepthPass_, *stencil, stencilRef_),
-                   stencilWriteMask_);
+      writeStencil(*stencil, applyStencilOperation(s_.stencilDepthPass, *stencil, s_.stencilRef),
+                   s_.stencilWriteMask);
     }
 
-    if (!writesColor_) continue;
+    if (!s_.writesColor) continue;
     uint8_t* pixel = fb.colorAt(fragment.x, fragment.y);
+    if (s_.allChannels && !s_.blend && !s_.logicOp) {
+      // The common case, one whole-pixel store. The four bytes are put together in a register:
+      // written to memory one by one and read back as a word, they would stall the store until
+      // the processor had merged them.
+      const uint32_t word = packColorBytes(floatToColorByte(color[0]), floatToColorByte(color[1]),
+                                           floatToColorByte(color[2]), floatToColorByte(color[3]));
+      std::memcpy(pixel, &word, 4);
+      continue;
+    }
     uint8_t out[4];
     for (int c = 0; c < 4; ++c) out[c] = floatToColorByte(color[c]);
-    if (blend_) {
+    if (s_.blend) {
       uint8_t blended[4];
-      blend(blendSettings_, out, pixel, blended);
+      blend(s_.blendSettings, out, pixel, blended);
       for (int c = 0; c < 4; ++c) out[c] = blended[c];
-    } else if (logicOp_) {
-      for (int c = 0; c < 4; ++c) out[c] = applyLogicOp(logicOpMode_, out[c], pixel[c]);
+    } else if (s_.logicOp) {
+      for (int c = 0; c < 4; ++c) out[c] = applyLogicOp(s_.logicOpMode, out[c], pixel[c]);
     }
-    if (allChannels_) {
+    if (s_.allChannels) {
       std::memcpy(pixel, out, 4);
     } else {
       for (int c = 0; c < 4; ++c) {
-        if (colorMask_[c]) pixel[c] = out[c];
+        if (s_.colorMask[c]) pixel[c] = out[c];
       }
     }
   }

@@ -24,44 +24,63 @@ class FragmentProcessor final : public raster::FragmentSink {
  public:
   // phong: the vertex stage passes eye position and normal (GL_PHONG_WIN with lighting on).
   void prepare(Context& ctx, bool phong);
+  // Called for different tiles from several threads at once (tiled_rasterizer.h): it changes
+  // nothing but the framebuffer's pixels of the batch.
   void processFragments(const raster::FragmentBatch& batch) override;
   // The same for fragments of an antialiased primitive: coverage[i] (smooth_coverage.h)
   // multiplies the alpha of fragment i once its colour is final (spec 3.11, "Antialiasing
   // Application").
   void processFragments(const raster::FragmentBatch& batch, const float* coverage);
 
+  // Texturing, fog and per-fragment lighting read their GL state from the context for each
+  // fragment, not from a copy made by prepare(): while fragments of such a draw are queued,
+  // that state must not change.
+  bool readsContextState() const { return s_.texturing || s_.fog || s_.phong; }
+  // Per-fragment lighting reads the lights and materials of the context.
+  bool readsLighting() const { return s_.phong; }
+  // Whether two processors treat every fragment the same way.
+  bool sameSettings(const FragmentProcessor& other) const {
+    return ctx_ == other.ctx_ && s_ == other.s_;
+  }
+
  private:
+  // Everything prepare() takes from the GL state.
+  struct Settings {
+    bool phong = false;
+    bool bumpMapping = false;       // GL_GLASS_bump_map perturbs the normal before Phong lighting
+    bool texturing = false;
+    bool secondaryVarying = false;  // separate specular colour in varyings 4-7
+    bool colorSum = false;          // lit with separate specular, or unlit with GL_COLOR_SUM
+    bool fog = false;
+
+    bool alphaTest = false;
+    GLenum alphaFunc = GL_ALWAYS;
+    uint8_t alphaRefByte = 0;  // the reference as the colour buffer's 8-bit value
+
+    bool stencilTest = false;
+    GLenum stencilFunc = GL_ALWAYS;
+    uint8_t stencilRef = 0;
+    unsigned stencilValueMask = 0xFF;
+    unsigned stencilWriteMask = 0xFF;
+    GLenum stencilFail = GL_KEEP, stencilDepthFail = GL_KEEP, stencilDepthPass = GL_KEEP;
+
+    bool depthTest = false;
+    GLenum depthFunc = GL_LESS;
+    bool depthMask = true;
+
+    bool blend = false;
+    BlendSettings blendSettings;
+    bool logicOp = false;
+    GLenum logicOpMode = GL_COPY;
+    bool colorMask[4] = {true, true, true, true};
+    bool writesColor = true;        // some channel unmasked and glDrawBuffer not GL_NONE
+    bool allChannels = true;
+
+    bool operator==(const Settings&) const = default;
+  };
+
   Context* ctx_ = nullptr;
-
-  bool phong_ = false;
-  bool bumpMapping_ = false;       // GL_GLASS_bump_map perturbs the normal before Phong lighting
-  bool texturing_ = false;
-  bool secondaryVarying_ = false;  // separate specular colour in varyings 4-7
-  bool colorSum_ = false;          // lit with separate specular, or unlit with GL_COLOR_SUM
-  bool fog_ = false;
-
-  bool alphaTest_ = false;
-  GLenum alphaFunc_ = GL_ALWAYS;
-  uint8_t alphaRefByte_ = 0;  // the reference as the colour buffer's 8-bit value
-
-  bool stencilTest_ = false;
-  GLenum stencilFunc_ = GL_ALWAYS;
-  uint8_t stencilRef_ = 0;
-  unsigned stencilValueMask_ = 0xFF;
-  unsigned stencilWriteMask_ = 0xFF;
-  GLenum stencilFail_ = GL_KEEP, stencilDepthFail_ = GL_KEEP, stencilDepthPass_ = GL_KEEP;
-
-  bool depthTest_ = false;
-  GLenum depthFunc_ = GL_LESS;
-  bool depthMask_ = true;
-
-  bool blend_ = false;
-  BlendSettings blendSettings_;
-  bool logicOp_ = false;
-  GLenum logicOpMode_ = GL_COPY;
-  bool colorMask_[4] = {true, true, true, true};
-  bool writesColor_ = true;        // some channel unmasked and glDrawBuffer not GL_NONE
-  bool allChannels_ = true;
+  Settings s_;
 };
 
 }  // namespace glass::gl

@@ -11,6 +11,7 @@
 #include "core/state_value.h"
 #include "lighting/color_material.h"
 #include "lighting/lighting_equation.h"
+#include "primitive/queued_drawing.h"
 
 namespace glass::gl {
 
@@ -131,6 +132,10 @@ void lightFragment(const Context& ctx, const float eyePosition[3], const float e
   }
 }
 
-void onCurrentColorChanged(Context& ctx) { applyColorMaterial(ctx.lighting, ctx.current.color); }
+void onCurrentColorChanged(Context& ctx) {
+  if (!ctx.lighting.colorMaterial.enabled) return;
+  beforeColorMaterialChange(ctx);  // queued per-fragment lighting may be reading the material
+  applyColorMaterial(ctx.lighting, ctx.current.color);
+}
 
 }  // namespace glass::gl

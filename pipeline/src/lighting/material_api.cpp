@@ -9,6 +9,7 @@
 #include "core/errors.h"
 #include "lighting/color_material.h"
 #include "lists/command_recording.h"
+#include "primitive/queued_drawing.h"
 #include "texture/integer_colors.h"
 
 namespace glass::gl {
@@ -59,6 +60,7 @@ void setMaterial(Context& ctx, GLenum face, GLenum pname, const float* v) {
     recordError(ctx, GL_INVALID_VALUE);
     return;
   }
+  finishDrawReadingContext(ctx);  // per-fragment lighting may still need the old material
   LightingState& l = ctx.lighting;
   for (int f = 0; f < 2; ++f) {
     if (!(faces & (1u << f))) continue;

@@ -11,6 +11,7 @@
 #include "core/context.h"
 #include "fragment/buffer_selection.h"
 #include "lists/command_recording.h"
+#include "primitive/queued_drawing.h"
 #include "pixels/pixel_image.h"
 #include "texture/client_pixels.h"
 
@@ -25,6 +26,7 @@ void pixelCommand(Context& ctx, GLenum error, Work work) {
   glass::gl::compileOrExecuteOn(ctx, [=](Context& c) {
     if (glass::gl::rejectInsideBeginEnd(c)) return;
     if (error != GL_NO_ERROR) return recordError(c, error);
+    glass::gl::finishQueuedDrawing(c);  // the pixels read and write the framebuffer
     work(c);
   });
 }

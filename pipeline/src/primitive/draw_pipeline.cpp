@@ -1,16 +1,69 @@
 #include "primitive/draw_pipeline.h"
 
 #include <algorithm>
+#include <cstdlib>
+#include <thread>
 
 #include "core/context.h"
 #include "primitive/point_parameters.h"
+#include "primitive/queued_drawing.h"
 
 namespace glass::gl {
+namespace {
+
+// GLASS_THREADS, a whole number from 1 to 256, chooses how many threads rasterize; otherwise
+// as many as the machine has hardware threads. The count changes the speed, never the bytes.
+int rasterThreadCount() {
+  if (const char* text = std::getenv("GLASS_THREADS")) {
+    char* end = nullptr;
+    const long n = std::strtol(text, &end, 10);
+    if (end != text && *end == '\0' && n >= 1 && n <= 256) return static_cast<int>(n);
+  }
+  return static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+}
+
+// The early depth test of triangles (glass/raster/depth_test.h): only when a fragment that fails
+// the depth test has no effect. With the stencil test on, its depth-fail operation still writes
+// the stencil buffer, so the test must wait for the fragment stage.
+raster::EarlyDepthTest earlyDepthTest(const Context& ctx) {
+  const FragmentState& f = ctx.fragment;
+  raster::EarlyDepthTest early;
+  if (!f.depthTest || f.stencilTest || f.depthFunc == GL_ALWAYS) return early;
+  switch (f.depthFunc) {
+    case GL_NEVER: early.compare = raster::DepthCompare::Never; break;
+    case GL_LESS: early.compare = raster::DepthCompare::Less; break;
+    case GL_EQUAL: early.compare = raster::DepthCompare::Equal; break;
+    case GL_LEQUAL: early.compare = raster::DepthCompare::LessEqual; break;
+    case GL_GREATER: early.compare = raster::DepthCompare::Greater; break;
+    case GL_NOTEQUAL: early.compare = raster::DepthCompare::NotEqual; break;
+    case GL_GEQUAL: early.compare = raster::DepthCompare::GreaterEqual; break;
+    default: return early;
+  }
+  early.buffer = &ctx.framebuffer;
+  return early;
+}
+
+}  // namespace
+
+DrawPipeline::DrawPipeline(Context& ctx)
+    : ctx_(ctx), tiles_(ctx.framebuffer, rasterThreadCount()) {}
 
 void DrawPipeline::prepare() {
   Context& ctx = ctx_;
   prepareVertexStage(ctx, vertex_);
-  fragments_.prepare(ctx, vertex_.phong);
+
+  // Queued fragments of earlier draws still go through fragments_ (and polygonStipple_), so
+  // those change only when nothing is queued: a draw whose fragments are treated differently
+  // first finishes the queued ones. Draws with the same settings, the common case of many
+  // glBegin/glEnd pairs, keep queuing.
+  FragmentProcessor fragments;
+  fragments.prepare(ctx, vertex_.phong);
+  if (!tiles_.idle() && !fragments.sameSettings(fragments_)) tiles_.finish();
+  if (tiles_.idle()) {
+    fragments_ = fragments;
+    polygonStipple_.prepare(ctx.raster.polygonStipplePattern, fragments_);
+  }
+  drawReadsContext_ = fragments_.readsContextState() || ctx.raster.polygonStipple;
 
   clip_.userPlaneMask = vertex_.clipPlaneMask;
   clip_.varyingCount = vertex_.varyingCount;
@@ -35,6 +88,7 @@ void DrawPipeline::prepare() {
   triangleSettings_.bounds = bounds;
   triangleSettings_.varyingCount = vertex_.varyingCount;
   triangleSettings_.perspectiveCorrect = perspective;
+  triangleSettings_.earlyDepth = earlyDepthTest(ctx);
 
   lineSettings_ = raster::LineSettings{};
   lineSettings_.bounds = bounds;
@@ -63,11 +117,32 @@ void DrawPipeline::prepare() {
   flat_ = r.shadeModel == GL_FLAT;
   stippleCounter_ = 0;
 
-  polygonStipple_.prepare(r.polygonStipplePattern, fragments_);
   polygonSink_ = r.polygonStipple ? static_cast<raster::FragmentSink*>(&polygonStipple_) : &fragments_;
   recording_ = ctx.renderMode.mode != GL_RENDER;
   lineReset_ = false;
   if (recording_) recorder_.prepare(ctx, vertex_.texturing);
+}
+
+void DrawPipeline::finishIfReadingContext() {
+  if (drawReadsContext_) tiles_.finish();
+}
+
+void DrawPipeline::finishQueuedWork() { tiles_.finish(); }
+
+void DrawPipeline::beforeColorMaterialChange() {
+  if (fragments_.readsLighting()) tiles_.waitForThreads();
+}
+
+void finishQueuedDrawing(Context& ctx) {
+  if (ctx.draw) ctx.draw->finishQueuedWork();
+}
+
+void finishDrawReadingContext(Context& ctx) {
+  if (ctx.draw) ctx.draw->finishIfReadingContext();
+}
+
+void beforeColorMaterialChange(Context& ctx) {
+  if (ctx.draw) ctx.draw->beforeColorMaterialChange();
 }
 
 }  // namespace glass::gl

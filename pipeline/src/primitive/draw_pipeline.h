@@ -15,6 +15,20 @@
 // to the FragmentProcessor, those of filled polygons through the polygon stipple first
 // (polygon_stipple.h) when GL_POLYGON_STIPPLE is on.
 //
+// Rasterization is deferred: primitives go to a TiledRasterizer (glass/raster/tiled_rasterizer.h),
+// which bins them into 64 x 64 tiles and rasterizes the tiles later on GLASS_THREADS threads,
+// with the same bytes as one thread. The fragment stage's settings are a copy made at glBegin
+// (FragmentProcessor::prepare), so queued draws keep them while the GL state moves on, with two
+// exceptions, finished at the end of their draw instead (finishIfReadingContext):
+//   - draws whose fragment stage reads GL state by reference for each fragment: texturing (the
+//     texture objects are changed in place), fog and per-fragment lighting;
+//   - polygon-stippled draws (the filter reads the pattern in the context).
+// A draw whose fragment settings differ from those of the queued draws first finishes them
+// (prepare), since there is one FragmentProcessor. Everything that reads or writes the
+// framebuffer outside a draw (glClear, glReadPixels, glCopyTexImage, pixel rectangles, bitmaps,
+// glAccum, glFinish, glFlush, glassWritePNG, ...) calls finishQueuedDrawing first
+// (primitive/queued_drawing.h), and the pipeline's destructor finishes what is left.
+//
 // In GL_SELECT and GL_FEEDBACK render modes nothing is rasterized: each point, line and polygon
 // that survives clipping goes to the PrimitiveRecorder (select/primitive_recorder.h) instead, in
 // window coordinates (spec 5.2, 5.3).
@@ -23,6 +37,7 @@
 #include "fragment/fragment_processor.h"
 #include "glass/raster/clip.h"
 #include "glass/raster/line.h"
+#include "glass/raster/tiled_rasterizer.h"
 #include "glass/raster/triangle.h"
 #include "primitive/polygon_stipple.h"
 #include "primitive/viewport_transform.h"
@@ -39,10 +54,21 @@ inline constexpr unsigned kAllEdges = 7u;
 
 class DrawPipeline {
  public:
-  explicit DrawPipeline(Context& ctx) : ctx_(ctx) {}
+  explicit DrawPipeline(Context& ctx);
 
   // Derives the vertex, primitive and fragment setup from the GL state (at glBegin).
   void prepare();
+  // Finishes the draw's queued fragments if they read GL state by reference: at glEnd, and
+  // before glMaterial changes such state between glBegin and glEnd.
+  void finishIfReadingContext();
+  // Rasterizes everything queued; returns when the framebuffer holds every queued fragment.
+  void finishQueuedWork();
+  // Before glColor changes the material under GL_COLOR_MATERIAL between glBegin and glEnd.
+  // Per-fragment lighting reads the material from the context, but takes the tracked parameters
+  // from the fragment's own colour (materialWithColor), so the queued fragments light the same
+  // with the old or the new material and need not be drawn first. Only, no thread may be reading
+  // the material while it is written: this waits for the threads if they may be.
+  void beforeColorMaterialChange();
   const VertexStageSetup& vertexSetup() const { return vertex_; }
   // The vertex lies outside a frustum plane or an enabled user clip plane.
   bool needsClipping(const PipelineVertex& v) const { return raster::outcode(v.clip, clip_) != 0; }
@@ -92,6 +118,7 @@ class DrawPipeline {
   bool pointDistanceAttenuated_ = false;  // ... by distance, not only by GL_POINT_SIZE_MIN/MAX
   Matrix4 projectionInverse_;        // eye = P^-1 clip, for the points' eye distance
   bool flat_ = false;
+  bool drawReadsContext_ = false;  // this draw's fragments read GL state by reference
   int stippleCounter_ = 0;
   PolygonStippleFilter polygonStipple_;
   raster::FragmentSink* polygonSink_ = &fragments_;  // polygonStipple_ when stippling
@@ -101,6 +128,9 @@ class DrawPipeline {
   // Scratch space for clipped polygons.
   raster::ClipVertex clipped_[raster::kMaxClippedPolygonVertices + 3];
   raster::WindowVertex window_[raster::kMaxClippedPolygonVertices + 3];
+  // Declared last, so that it is destroyed first: its destructor finishes the queued work,
+  // which uses the fragment processor and the stipple filter above.
+  raster::TiledRasterizer tiles_;
 };
 
 }  // namespace glass::gl

@@ -32,9 +32,14 @@ void DrawPipeline::rasterizeSegment(raster::ClipVertex a, raster::ClipVertex b, 
     lineReset_ = false;
     return;
   }
-  if (smoothLines_) return rasterizeSmoothSegment(wa, wb, depthBias);
+  // Smooth ones are rasterized at once (smooth_stage.cpp), not queued: what is queued goes
+  // first, so that every pixel still receives its fragments in submission order.
+  if (smoothLines_) {
+    tiles_.finish();
+    return rasterizeSmoothSegment(wa, wb, depthBias);
+  }
   lineSettings_.depthBias = depthBias;
-  raster::rasterizeLine(wa, wb, lineSettings_, fragments_);
+  tiles_.line(wa, wb, lineSettings_, fragments_);
 }
 
 }  // namespace glass::gl

@@ -32,10 +32,15 @@ void DrawPipeline::rasterizeVertexPoint(const raster::ClipVertex& v, double dept
   toWindow(viewport_, v, clip_.varyingCount, w);
   if (recording_) return recorder_.point(w);
   const float size = pointSizeAt(v);
-  if (smoothPoints_) return rasterizeSmoothPoint(w, size, depthBias);
+  // Smooth ones are rasterized at once (smooth_stage.cpp), not queued: what is queued goes
+  // first, so that every pixel still receives its fragments in submission order.
+  if (smoothPoints_) {
+    tiles_.finish();
+    return rasterizeSmoothPoint(w, size, depthBias);
+  }
   pointSettings_.size = size;
   pointSettings_.depthBias = depthBias;
-  raster::rasterizePoint(w, pointSettings_, fragments_);
+  tiles_.point(w, pointSettings_, fragments_);
 }
 
 }  // namespace glass::gl

@@ -47,7 +47,7 @@ void DrawPipeline::fillTriangle(const raster::ClipVertex (&v)[3], bool frontFaci
   raster::TriangleSetup setup;
   for (int i = 1; i + 1 < count; ++i) {
     if (raster::setupTriangle(window_[0], window_[i], window_[i + 1], triangleSettings_, setup)) {
-      raster::rasterizeTriangle(setup, *polygonSink_);
+      tiles_.triangle(setup, *polygonSink_);
     }
   }
 }

@@ -8,6 +8,7 @@
 #include "core/context.h"
 #include "core/errors.h"
 #include "lists/command_recording.h"
+#include "primitive/queued_drawing.h"
 #include "texture/texture_commands.h"
 
 namespace glass::gl {
@@ -183,6 +184,7 @@ void GLAPIENTRY glTexSubImage3D(GLenum target, GLint level, GLint xoffset, GLint
 void GLAPIENTRY glCopyTexImage1D(GLenum target, GLint level, GLenum internalFormat, GLint x, GLint y,
                                  GLsizei width, GLint border) {
   glass::gl::compileOrExecute([=](Context& ctx) {
+    glass::gl::finishQueuedDrawing(ctx);
     glass::gl::copyTexImage(ctx, 1, target, level, internalFormat, x, y, width, 1, border);
   });
 }
@@ -190,6 +192,7 @@ void GLAPIENTRY glCopyTexImage1D(GLenum target, GLint level, GLenum internalForm
 void GLAPIENTRY glCopyTexImage2D(GLenum target, GLint level, GLenum internalFormat, GLint x, GLint y,
                                  GLsizei width, GLsizei height, GLint border) {
   glass::gl::compileOrExecute([=](Context& ctx) {
+    glass::gl::finishQueuedDrawing(ctx);
     glass::gl::copyTexImage(ctx, 2, target, level, internalFormat, x, y, width, height, border);
   });
 }
@@ -197,6 +200,7 @@ void GLAPIENTRY glCopyTexImage2D(GLenum target, GLint level, GLenum internalForm
 void GLAPIENTRY glCopyTexSubImage1D(GLenum target, GLint level, GLint xoffset, GLint x, GLint y,
                                     GLsizei width) {
   glass::gl::compileOrExecute([=](Context& ctx) {
+    glass::gl::finishQueuedDrawing(ctx);
     glass::gl::copyTexSubImage(ctx, 1, target, level, xoffset, 0, x, y, width, 1);
   });
 }
@@ -204,6 +208,7 @@ void GLAPIENTRY glCopyTexSubImage1D(GLenum target, GLint level, GLint xoffset, G
 void GLAPIENTRY glCopyTexSubImage2D(GLenum target, GLint level, GLint xoffset, GLint yoffset, GLint x,
                                     GLint y, GLsizei width, GLsizei height) {
   glass::gl::compileOrExecute([=](Context& ctx) {
+    glass::gl::finishQueuedDrawing(ctx);
     glass::gl::copyTexSubImage(ctx, 2, target, level, xoffset, yoffset, x, y, width, height);
   });
 }

@@ -163,6 +163,7 @@ void endPrimitive(Context& ctx) {
   }
   pa.pending.clear();
   pa.active = false;
+  ctx.draw->finishIfReadingContext();
 }
 
 }  // namespace glass::gl

@@ -11,6 +11,7 @@
 
 #include <cstdint>
 
+#include "glass/raster/depth_test.h"
 #include "glass/raster/fragment.h"
 #include "glass/raster/vertex.h"
 
@@ -24,6 +25,7 @@ struct TriangleSettings {
   // pipeline as factor * max|dz/dx|,|dz/dy| + units * r, in window-depth units ([0, 1] range).
   double depthBias = 0.0;
   bool frontFacing = true;     // passed through to the fragment batches
+  EarlyDepthTest earlyDepth;   // off by default (depth_test.h)
 };
 
 struct TriangleSetup {
@@ -37,6 +39,7 @@ struct TriangleSetup {
   int varyingCount;
   bool perspectiveCorrect;
   bool frontFacing;
+  EarlyDepthTest earlyDepth;
   // Signed area in window coordinates (positive: counter-clockwise), for facing and culling.
   double signedArea;
 };

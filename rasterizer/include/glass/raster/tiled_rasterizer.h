@@ -1,0 +1,74 @@
+// Deferred rasterization in screen tiles, on several threads, with the same bytes as one thread.
+//
+// Primitives are not rasterized when they are submitted. Each is stored once in a "scene" and
+// its index is appended to the bin of every 64 x 64 tile of the window it may touch, in
+// submission order. When the scene is full, or finish() is called, the tiles are handed to a
+// pool of threads: a tile is owned by one thread at a time, which runs the tile's bin in order,
+// rasterizing each primitive clipped to the tile. So every pixel receives its fragments in
+// submission order, whatever the number of threads, and the framebuffer ends byte for byte as
+// if one thread had drawn everything in order. (The idea is Mesa llvmpipe's; the code is glass's.)
+//
+// Why clipping to a tile changes nothing: triangle coverage walks 8 x 8 blocks aligned to
+// multiples of 8 and evaluates every attribute directly from its plane at the pixel centre
+// (triangle_rasterize.cpp), and a tile's edges are multiples of 64, so a tile sees exactly the
+// blocks and fragments the whole triangle would give it. Lines and points are rasterized whole
+// for each tile they touch, with the tile as their bounds: their fragments are computed from the
+// primitive alone (the stipple counter runs outside the bounds too), and the bounds only filter.
+//
+// Two scenes alternate: while the pool rasterizes one, the submitting thread fills the next.
+// The next scene starts only when the previous one has finished, so the order per pixel holds
+// across scenes too.
+//
+// The sink of a primitive is called later, from any of the threads, for different tiles at the
+// same time: it must not change state of its own, and whatever it reads (GL state, textures)
+// must stay unchanged until finish() returns. The framebuffer the sinks write must not be read
+// or written by anything else until then.
+#pragma once
+
+#include <memory>
+
+#include "glass/raster/fragment.h"
+#include "glass/raster/framebuffer.h"
+#include "glass/raster/line.h"
+#include "glass/raster/triangle.h"
+
+namespace glass::raster {
+
+inline constexpr int kTileSize = 64;
+
+class TiledRasterizer {
+ public:
+  // Tiles cover the framebuffer the sinks write (read here only to bring a tile's rows into the
+  // cache before its bin runs). threadCount >= 1 threads rasterize tiles: the thread that calls
+  // finish() and threadCount - 1 workers. With one thread there are no workers: the submitting
+  // thread rasterizes a scene when it is full and at finish().
+  TiledRasterizer(const Framebuffer& framebuffer, int threadCount);
+  ~TiledRasterizer();  // finishes the queued work, then stops the workers
+  TiledRasterizer(const TiledRasterizer&) = delete;
+  TiledRasterizer& operator=(const TiledRasterizer&) = delete;
+
+  int threadCount() const;
+
+  // Queue a primitive (copied; the setup, vertices and settings may change after the call).
+  void triangle(const TriangleSetup& setup, FragmentSink& sink);
+  // settings.stippleCounter, when set, is advanced now, as rasterizeLine would advance it.
+  void line(const WindowVertex& a, const WindowVertex& b, const LineSettings& settings,
+            FragmentSink& sink);
+  void point(const WindowVertex& v, const PointSettings& settings, FragmentSink& sink);
+
+  // True when nothing is queued or being rasterized.
+  bool idle() const;
+  // Rasterizes everything queued; returns when every fragment has reached its sink.
+  void finish();
+  // Returns when no thread is rasterizing: the scene handed to the threads has finished, and
+  // what is queued since stays queued. For a change of state that the queued primitives' sinks
+  // read but whose old and new values give them the same results (so they need not be drawn
+  // first), which must still not be written while another thread reads it.
+  void waitForThreads();
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace glass::raster

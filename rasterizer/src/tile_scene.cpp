@@ -1,0 +1,254 @@
+#include "tile_scene.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "edge_functions.h"
+#include "glass/raster/tiled_rasterizer.h"
+
+namespace glass::raster {
+namespace {
+
+PixelRect intersect(const PixelRect& a, const PixelRect& b) {
+  return {std::max(a.x0, b.x0), std::max(a.y0, b.y0), std::min(a.x1, b.x1), std::min(a.y1, b.y1)};
+}
+
+// The pixels a line or point may touch lie within `reach` pixels of its vertices' window
+// positions: half the (rounded) width or size, plus a margin for the diamond-exit ends and the
+// snapping to 1/256 pixel. Being generous only costs a bin entry that draws nothing.
+double reachOf(float widthOrSize) { return std::ceil(std::max(1.0f, widthOrSize)) * 0.5 + 2.0; }
+
+int64_t floorToPixel(double v) { return static_cast<int64_t>(std::floor(v)); }
+
+// Asks for the memory where the next `count` elements of a bin's list will be written. A new
+// record lands on cache lines nobody has touched yet, and with hundreds of bins filled in turn
+// each write would otherwise wait for its line; by the time the bin's next primitive arrives,
+// the line is there. (A hint only, and only within the capacity the list already has.)
+template <typename T>
+void prefetchAppend(const std::vector<T>& list, size_t count) {
+  if (list.size() + count > list.capacity()) return;
+  const char* next = reinterpret_cast<const char*>(list.data() + list.size());
+  for (size_t offset = 0; offset < count * sizeof(T); offset += 64) __builtin_prefetch(next + offset, 1);
+}
+
+WindowVertex rebuildVertex(const float position[4], const float* varyings, int count) {
+  WindowVertex v;
+  v.x = position[0];
+  v.y = position[1];
+  v.z = position[2];
+  v.invW = position[3];
+  std::copy(varyings, varyings + count, v.varyings);
+  return v;
+}
+
+}  // namespace
+
+void TileScene::Bin::clear() {
+  order.clear();
+  triangles.clear();
+  lines.clear();
+  points.clear();
+  planes.clear();
+  varyings.clear();
+}
+
+TileScene::TileScene(int width, int height)
+    : width_(width),
+      height_(height),
+      tilesX_((width + kTileSize - 1) / kTileSize),
+      tilesY_((height + kTileSize - 1) / kTileSize),
+      bins_(static_cast<size_t>(tilesX_) * static_cast<size_t>(tilesY_)) {}
+
+PixelRect TileScene::tileRect(int tile) const {
+  const int x0 = (tile % tilesX_) * kTileSize, y0 = (tile / tilesX_) * kTileSize;
+  return {x0, y0, std::min(x0 + kTileSize, width_), std::min(y0 + kTileSize, height_)};
+}
+
+TileScene::Bin& TileScene::binOf(int tile) {
+  Bin& bin = bins_[static_cast<size_t>(tile)];
+  if (bin.empty()) activeTiles_.push_back(tile);
+  return bin;
+}
+
+template <typename AddToBin>
+void TileScene::forTilesIn(int64_t x0, int64_t y0, int64_t x1, int64_t y1, AddToBin add) {
+  x0 = std::max<int64_t>(x0, 0);
+  y0 = std::max<int64_t>(y0, 0);
+  x1 = std::min<int64_t>(x1, width_ - 1);
+  y1 = std::min<int64_t>(y1, height_ - 1);
+  if (x0 > x1 || y0 > y1) return;
+  for (int64_t ty = y0 / kTileSize; ty <= y1 / kTileSize; ++ty)
+    for (int64_t tx = x0 / kTileSize; tx <= x1 / kTileSize; ++tx)
+      add(binOf(static_cast<int>(ty * tilesX_ + tx)));
+}
+
+void TileScene::addTriangle(const TriangleSetup& setup, FragmentSink& sink) {
+  const PixelRect& box = setup.box;
+  if (box.empty()) return;
+
+  TriangleRecord r;
+  r.sink = &sink;
+  for (int i = 0; i < 3; ++i) {
+    r.edgeA[i] = setup.edgeA[i];
+    r.edgeB[i] = setup.edgeB[i];
+    r.edgeC[i] = setup.edgeC[i];
+  }
+  r.box = box;
+  r.z0 = setup.z0;
+  r.zdx = setup.zdx;
+  r.zdy = setup.zdy;
+  r.invW0 = setup.planes.invW0;
+  r.invWdx = setup.planes.invWdx;
+  r.invWdy = setup.planes.invWdy;
+  r.signedArea = setup.signedArea;
+  r.varyingCount = std::clamp(setup.varyingCount, 0, kMaxVaryings);
+  r.perspectiveCorrect = setup.perspectiveCorrect;
+  r.frontFacing = setup.frontFacing;
+  r.earlyDepth = setup.earlyDepth;
+  const AttributePlanes& planes = setup.planes;
+
+  // Bin the triangle to the tiles its bounding box overlaps, except those no pixel centre of
+  // which is inside: the coverage walk would reject every block of such a tile anyway. This
+  // matters for large triangles, whose box holds many tiles the triangle misses.
+  const PixelEdgeFunctions edges(setup);
+  for (int ty = box.y0 / kTileSize; ty <= (box.y1 - 1) / kTileSize; ++ty)
+    for (int tx = box.x0 / kTileSize; tx <= (box.x1 - 1) / kTileSize; ++tx) {
+      if (edges.rejects(tx * kTileSize, ty * kTileSize, kTileSize, kTileSize)) continue;
+      Bin& bin = binOf(ty * tilesX_ + tx);
+      bin.order.push_back(Kind::Triangle);
+      bin.triangles.push_back(r);
+      for (int k = 0; k < r.varyingCount; ++k) {
+        bin.planes.push_back(planes.a0[k]);
+        bin.planes.push_back(planes.dx[k]);
+        bin.planes.push_back(planes.dy[k]);
+      }
+      prefetchAppend(bin.triangles, 1);
+      prefetchAppend(bin.planes, 3 * static_cast<size_t>(r.varyingCount));
+      bytes_ += 1 + sizeof(TriangleRecord) + 3 * sizeof(double) * static_cast<size_t>(r.varyingCount);
+    }
+}
+
+void TileScene::addLine(const WindowVertex& a, const WindowVertex& b, const LineSettings& settings,
+                        int stippleStart, FragmentSink& sink) {
+  LineRecord r;
+  r.sink = &sink;
+  const float av[4] = {a.x, a.y, a.z, a.invW}, bv[4] = {b.x, b.y, b.z, b.invW};
+  std::copy(av, av + 4, r.a);
+  std::copy(bv, bv + 4, r.b);
+  r.settings = settings;
+  r.settings.varyingCount = std::clamp(settings.varyingCount, 0, kMaxVaryings);
+  r.settings.stippleCounter = nullptr;
+  r.stippleStart = stippleStart;
+  const int n = r.settings.varyingCount;
+
+  const double reach = reachOf(settings.width);
+  const PixelRect& bounds = settings.bounds;
+  forTilesIn(std::max<int64_t>(floorToPixel(std::min(a.x, b.x) - reach), bounds.x0),
+             std::max<int64_t>(floorToPixel(std::min(a.y, b.y) - reach), bounds.y0),
+             std::min<int64_t>(floorToPixel(std::max(a.x, b.x) + reach), bounds.x1 - 1),
+             std::min<int64_t>(floorToPixel(std::max(a.y, b.y) + reach), bounds.y1 - 1),
+             [&](Bin& bin) {
+               bin.order.push_back(Kind::Line);
+               bin.lines.push_back(r);
+               bin.varyings.insert(bin.varyings.end(), a.varyings, a.varyings + n);
+               bin.varyings.insert(bin.varyings.end(), b.varyings, b.varyings + n);
+               bytes_ += 1 + sizeof(LineRecord) + 2 * sizeof(float) * static_cast<size_t>(n);
+             });
+}
+
+void TileScene::addPoint(const WindowVertex& v, const PointSettings& settings, FragmentSink& sink) {
+  PointRecord r;
+  r.sink = &sink;
+  const float position[4] = {v.x, v.y, v.z, v.invW};
+  std::copy(position, position + 4, r.v);
+  r.settings = settings;
+  r.settings.varyingCount = std::clamp(settings.varyingCount, 0, kMaxVaryings);
+  const int n = r.settings.varyingCount;
+
+  const double reach = reachOf(settings.size);
+  const PixelRect& bounds = settings.bounds;
+  forTilesIn(std::max<int64_t>(floorToPixel(v.x - reach), bounds.x0),
+             std::max<int64_t>(floorToPixel(v.y - reach), bounds.y0),
+             std::min<int64_t>(floorToPixel(v.x + reach), bounds.x1 - 1),
+             std::min<int64_t>(floorToPixel(v.y + reach), bounds.y1 - 1), [&](Bin& bin) {
+               bin.order.push_back(Kind::Point);
+               bin.points.push_back(r);
+               bin.varyings.insert(bin.varyings.end(), v.varyings, v.varyings + n);
+               bytes_ += 1 + sizeof(PointRecord) + sizeof(float) * static_cast<size_t>(n);
+             });
+}
+
+void TileScene::runTile(int activeIndex) const {
+  const int tile = activeTiles_[static_cast<size_t>(activeIndex)];
+  const PixelRect rect = tileRect(tile);
+  const Bin& bin = bins_[static_cast<size_t>(tile)];
+  // Each list is read front to back; `order` says which list the next primitive comes from.
+  const TriangleRecord* triangle = bin.triangles.data();
+  const LineRecord* line = bin.lines.data();
+  const PointRecord* point = bin.points.data();
+  const double* plane = bin.planes.data();
+  const float* varyings = bin.varyings.data();
+  for (const Kind kind : bin.order) {
+    switch (kind) {
+      case Kind::Triangle: {
+        const TriangleRecord& r = *triangle++;
+        TriangleSetup setup;
+        for (int i = 0; i < 3; ++i) {
+          setup.edgeA[i] = r.edgeA[i];
+          setup.edgeB[i] = r.edgeB[i];
+          setup.edgeC[i] = r.edgeC[i];
+        }
+        setup.box = intersect(r.box, rect);
+        setup.z0 = r.z0;
+        setup.zdx = r.zdx;
+        setup.zdy = r.zdy;
+        setup.planes.invW0 = r.invW0;
+        setup.planes.invWdx = r.invWdx;
+        setup.planes.invWdy = r.invWdy;
+        for (int k = 0; k < r.varyingCount; ++k, plane += 3) {
+          setup.planes.a0[k] = plane[0];
+          setup.planes.dx[k] = plane[1];
+          setup.planes.dy[k] = plane[2];
+        }
+        setup.varyingCount = r.varyingCount;
+        setup.perspectiveCorrect = r.perspectiveCorrect;
+        setup.frontFacing = r.frontFacing;
+        setup.earlyDepth = r.earlyDepth;
+        setup.signedArea = r.signedArea;
+        rasterizeTriangle(setup, *r.sink);
+        break;
+      }
+      case Kind::Line: {
+        const LineRecord& r = *line++;
+        const int n = r.settings.varyingCount;
+        const WindowVertex a = rebuildVertex(r.a, varyings, n);
+        const WindowVertex b = rebuildVertex(r.b, varyings + n, n);
+        varyings += 2 * n;
+        LineSettings settings = r.settings;
+        settings.bounds = intersect(settings.bounds, rect);
+        int stippleCounter = r.stippleStart;
+        settings.stippleCounter = &stippleCounter;
+        rasterizeLine(a, b, settings, *r.sink);
+        break;
+      }
+      case Kind::Point: {
+        const PointRecord& r = *point++;
+        const int n = r.settings.varyingCount;
+        const WindowVertex v = rebuildVertex(r.v, varyings, n);
+        varyings += n;
+        PointSettings settings = r.settings;
+        settings.bounds = intersect(settings.bounds, rect);
+        rasterizePoint(v, settings, *r.sink);
+        break;
+      }
+    }
+  }
+}
+
+void TileScene::clear() {
+  for (const int tile : activeTiles_) bins_[static_cast<size_t>(tile)].clear();
+  activeTiles_.clear();
+  bytes_ = 0;
+}
+
+}  // namespace glass::raster

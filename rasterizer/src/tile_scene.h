@@ -1,0 +1,96 @@
+// One scene of deferred rasterization (tiled_rasterizer.h): the primitives submitted since the
+// previous scene, sorted into the bins of the 64 x 64 tiles of the window they may touch, each bin
+// in submission order.
+//
+// A bin holds its own copy of each of its primitives, so that rasterizing a tile reads one bin
+// front to back instead of gathering records from all over the scene: a small triangle touches
+// one or two tiles, and reading its record from a cold, scattered place cost about as much as
+// rasterizing it. Copies are compact: a triangle keeps its setup with the attribute planes of
+// only as many varyings as it has, a line or point its vertices' varyings likewise, and runTile
+// rebuilds the full setup or vertex on its stack. clear() keeps every buffer's capacity, so once
+// the first frame has grown them, drawing allocates no memory.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "glass/raster/fragment.h"
+#include "glass/raster/line.h"
+#include "glass/raster/triangle.h"
+
+namespace glass::raster {
+
+class TileScene {
+ public:
+  TileScene(int width, int height);
+
+  void addTriangle(const TriangleSetup& setup, FragmentSink& sink);
+  // stippleStart: the line stipple counter at the line's first fragment.
+  void addLine(const WindowVertex& a, const WindowVertex& b, const LineSettings& settings,
+               int stippleStart, FragmentSink& sink);
+  void addPoint(const WindowVertex& v, const PointSettings& settings, FragmentSink& sink);
+
+  // The tiles with something in their bin; runTile(i) rasterizes the bin of the i-th of them.
+  // Different tiles may run on different threads at the same time.
+  int activeTileCount() const { return static_cast<int>(activeTiles_.size()); }
+  void runTile(int activeIndex) const;
+  PixelRect activeTileRect(int activeIndex) const {
+    return tileRect(activeTiles_[static_cast<size_t>(activeIndex)]);
+  }
+
+  bool empty() const { return activeTiles_.empty(); }
+  size_t bytes() const { return bytes_; }  // about how much memory the queued primitives hold
+  void clear();
+
+ private:
+  // A triangle setup without its attribute planes, which follow in the bin's planes.
+  struct TriangleRecord {
+    FragmentSink* sink;
+    int64_t edgeA[3], edgeB[3], edgeC[3];
+    PixelRect box;
+    double z0, zdx, zdy;
+    double invW0, invWdx, invWdy;
+    double signedArea;
+    int varyingCount;
+    bool perspectiveCorrect, frontFacing;
+    EarlyDepthTest earlyDepth;
+  };
+  // A line's vertices without their varyings, which follow in the bin's varyings (a's, b's).
+  struct LineRecord {
+    FragmentSink* sink;
+    float a[4], b[4];  // x, y, z, invW
+    LineSettings settings;
+    int stippleStart;
+  };
+  struct PointRecord {
+    FragmentSink* sink;
+    float v[4];
+    PointSettings settings;
+  };
+  enum class Kind : uint8_t { Triangle, Line, Point };
+
+  struct Bin {
+    std::vector<Kind> order;  // which list the next primitive comes from
+    std::vector<TriangleRecord> triangles;
+    std::vector<LineRecord> lines;
+    std::vector<PointRecord> points;
+    std::vector<double> planes;   // a0, dx, dy of each varying of each triangle, in order
+    std::vector<float> varyings;  // the varyings of each line's and point's vertices, in order
+    bool empty() const { return order.empty(); }
+    void clear();
+  };
+
+  Bin& binOf(int tile);
+  // Calls add(bin) for the bin of every tile the inclusive pixel range may touch.
+  template <typename AddToBin>
+  void forTilesIn(int64_t x0, int64_t y0, int64_t x1, int64_t y1, AddToBin add);
+  PixelRect tileRect(int tile) const;
+
+  int width_, height_, tilesX_, tilesY_;
+  std::vector<Bin> bins_;
+  std::vector<int> activeTiles_;
+  size_t bytes_ = 0;
+};
+
+}  // namespace glass::raster

@@ -1,0 +1,207 @@
+// The scheduling of tiled_rasterizer.h: two scenes, one being filled by the submitting thread and
+// one being rasterized, and a pool of workers that take the tiles of the scene in flight one at a
+// time.
+//
+// A scene in flight is shared by the workers through an atomic tile counter: each thread takes
+// the next unclaimed tile with fetch_add and rasterizes its whole bin, so a tile is never run by
+// two threads and its primitives run in bin order. The mutex and condition variables only hand
+// scenes over and wait for them: a worker registers as a user of the scene under the mutex and
+// deregisters under it when no tile is left, so when the submitting thread sees, under the mutex,
+// every tile claimed and no user left, every tile has finished, and everything the workers wrote
+// (the framebuffer) happens-before what the submitting thread does next.
+#include "glass/raster/tiled_rasterizer.h"
+
+#include <algorithm>
+#include <atomic>
+#include <condition_variable>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+#include "tile_scene.h"
+
+namespace glass::raster {
+namespace {
+
+// A scene is handed to the threads when its primitives take this much memory. Smaller scenes let
+// the workers start sooner (they rasterize one scene while the next is binned) and stay in the
+// cache; larger ones visit every tile of the framebuffer fewer times.
+constexpr size_t kSceneBudgetBytes = size_t{32} << 20;
+
+// Before a tile's bin runs, asks the memory system for the tile's depth and colour rows all at
+// once. Otherwise the first fragments to reach each cache line of the tile wait for it one line
+// at a time, which for scattered small primitives costs more than shading them. (A hint only:
+// it changes no value.)
+void prefetchTile(const Framebuffer& fb, const PixelRect& tile) {
+  constexpr int kLineBytes = 64;
+  const int rowBytes = (tile.x1 - tile.x0) * 4;  // 4 bytes per pixel in both buffers
+  for (int y = tile.y0; y < tile.y1; ++y) {
+    const char* depth = reinterpret_cast<const char*>(fb.depthAt(tile.x0, y));
+    const char* color = reinterpret_cast<const char*>(fb.colorAt(tile.x0, y));
+    for (int offset = 0; offset < rowBytes; offset += kLineBytes) {
+      __builtin_prefetch(depth + offset, 1);
+      __builtin_prefetch(color + offset, 1);
+    }
+  }
+}
+
+// A sink for the stipple counter's dry run: the line is walked for its counter only.
+class DiscardingSink final : public FragmentSink {
+ public:
+  void processFragments(const FragmentBatch&) override {}
+};
+
+}  // namespace
+
+struct TiledRasterizer::Impl {
+  struct Flight {
+    TileScene* scene = nullptr;
+    std::atomic<int> nextTile{0};
+    int users = 0;  // workers currently taking tiles from it (guarded by mutex)
+  };
+
+  Impl(const Framebuffer& fb, int threads)
+      : framebuffer(fb),
+        scenes{TileScene(fb.width(), fb.height()), TileScene(fb.width(), fb.height())},
+        threadCount(threads) {
+    for (int i = 1; i < threadCount; ++i) workers.emplace_back([this] { workerLoop(); });
+  }
+
+  ~Impl() {
+    finish();
+    {
+      std::lock_guard<std::mutex> lock(mutex);
+      stopping = true;
+    }
+    wake.notify_all();
+    for (std::thread& t : workers) t.join();
+  }
+
+  TileScene& filling() { return scenes[fillingIndex]; }
+
+  void runTile(const TileScene& scene, int i) const {
+    prefetchTile(framebuffer, scene.activeTileRect(i));
+    scene.runTile(i);
+  }
+
+  // Rasterizes tiles of the scene in flight until none is left unclaimed.
+  void takeTiles(TileScene& scene) {
+    const int count = scene.activeTileCount();
+    for (int i = flight.nextTile.fetch_add(1, std::memory_order_relaxed); i < count;
+         i = flight.nextTile.fetch_add(1, std::memory_order_relaxed)) {
+      runTile(scene, i);
+    }
+  }
+
+  void workerLoop() {
+    uint64_t seen = 0;
+    std::unique_lock<std::mutex> lock(mutex);
+    for (;;) {
+      wake.wait(lock, [&] { return stopping || (flight.scene != nullptr && flightNumber != seen); });
+      if (stopping) return;
+      seen = flightNumber;
+      TileScene& scene = *flight.scene;
+      ++flight.users;
+      lock.unlock();
+      takeTiles(scene);
+      lock.lock();
+      if (--flight.users == 0) done.notify_all();
+    }
+  }
+
+  // Waits for the scene in flight to finish, rasterizing tiles of it meanwhile, then empties it.
+  void land() {
+    if (flight.scene == nullptr) return;
+    takeTiles(*flight.scene);
+    std::unique_lock<std::mutex> lock(mutex);
+    done.wait(lock, [&] { return flight.users == 0; });
+    // Every tile is claimed (takeTiles returned) and no worker is still running one.
+    flight.scene->clear();
+    flight.scene = nullptr;
+  }
+
+  // Hands the filled scene to the workers and starts filling the other one. The previous scene
+  // must have landed first: a tile's bins of two scenes must not run at the same time.
+  void launch() {
+    land();
+    TileScene& scene = filling();
+    if (scene.empty()) return;
+    if (workers.empty()) {  // one thread: rasterize it right here
+      for (int i = 0; i < scene.activeTileCount(); ++i) runTile(scene, i);
+      scene.clear();
+      return;
+    }
+    {
+      std::lock_guard<std::mutex> lock(mutex);
+      flight.scene = &scene;
+      flight.nextTile.store(0, std::memory_order_relaxed);
+      ++flightNumber;
+    }
+    wake.notify_all();
+    fillingIndex = 1 - fillingIndex;
+  }
+
+  void afterSubmit() {
+    if (filling().bytes() >= kSceneBudgetBytes) launch();
+  }
+
+  void finish() {
+    launch();
+    land();
+  }
+
+  const Framebuffer& framebuffer;
+  TileScene scenes[2];
+  int fillingIndex = 0;
+  Flight flight;
+  uint64_t flightNumber = 0;
+  bool stopping = false;
+  int threadCount;
+  std::mutex mutex;
+  std::condition_variable wake, done;
+  std::vector<std::thread> workers;
+};
+
+TiledRasterizer::TiledRasterizer(const Framebuffer& framebuffer, int threadCount)
+    : impl_(std::make_unique<Impl>(framebuffer, std::max(1, threadCount))) {}
+
+TiledRasterizer::~TiledRasterizer() = default;
+
+int TiledRasterizer::threadCount() const { return impl_->threadCount; }
+
+void TiledRasterizer::triangle(const TriangleSetup& setup, FragmentSink& sink) {
+  impl_->filling().addTriangle(setup, sink);
+  impl_->afterSubmit();
+}
+
+void TiledRasterizer::line(const WindowVertex& a, const WindowVertex& b,
+                           const LineSettings& settings, FragmentSink& sink) {
+  int stippleStart = 0;
+  if (settings.stippleFactor > 0 && settings.stippleCounter != nullptr) {
+    // The next segment of a strip continues this one's counter, so find where it ends now: walk
+    // the line with nothing inside the bounds (the counter runs outside the bounds too).
+    stippleStart = *settings.stippleCounter;
+    LineSettings walk = settings;
+    walk.bounds = PixelRect{};
+    DiscardingSink discard;
+    rasterizeLine(a, b, walk, discard);
+  }
+  impl_->filling().addLine(a, b, settings, stippleStart, sink);
+  impl_->afterSubmit();
+}
+
+void TiledRasterizer::point(const WindowVertex& v, const PointSettings& settings,
+                            FragmentSink& sink) {
+  impl_->filling().addPoint(v, settings, sink);
+  impl_->afterSubmit();
+}
+
+bool TiledRasterizer::idle() const {
+  return impl_->flight.scene == nullptr && impl_->scenes[impl_->fillingIndex].empty();
+}
+
+void TiledRasterizer::finish() { impl_->finish(); }
+
+void TiledRasterizer::waitForThreads() { impl_->land(); }
+
+}  // namespace glass::raster
