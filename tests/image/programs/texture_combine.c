@@ -19,6 +19,7 @@
 #define GL_GLEXT_PROTOTYPES
 #include <GL/gl.h>
 
+#include "checkerboard.h"
 #include "gl_program.h"
 
 enum { CELL = 64, COLUMNS = 5, ROWS = 8, TEX = 16 };
@@ -54,20 +55,7 @@ static void makeTextures(void)
 
 static void checkerboard(float x0, float y0)
 {
-  const int n = 4;
-  const float size = (float)CELL / n;
-  glBegin(GL_QUADS);
-  for (int j = 0; j < n; ++j) {
-    for (int i = 0; i < n; ++i) {
-      const float v = (i + j) % 2 ? 0.8f : 0.3f;
-      glColor3f(v, v, v);
-      glVertex2f(x0 + i * size, y0 + j * size);
-      glVertex2f(x0 + (i + 1) * size, y0 + j * size);
-      glVertex2f(x0 + (i + 1) * size, y0 + (j + 1) * size);
-      glVertex2f(x0 + i * size, y0 + (j + 1) * size);
-    }
-  }
-  glEnd();
+  draw_checkerboard(x0, y0, (float)CELL, 4, 0.3f, 0.8f);
 }
 
 /* A quad with a different primary colour (and alpha) at each corner. */

@@ -9,6 +9,7 @@
  * the checkerboard alone. BLEND uses the environment colour (0.2, 0.9, 0.3, 0.6). */
 #include <GL/gl.h>
 
+#include "checkerboard.h"
 #include "gl_program.h"
 
 enum { CELL = 96, COLUMNS = 5, ROWS = 6, TEX = 16, GRID = 8 };
@@ -65,20 +66,7 @@ static void makeTexture(int row)
 
 static void checkerboard(float x0, float y0)
 {
-  const int n = 6;
-  const float size = (float)CELL / n;
-  glBegin(GL_QUADS);
-  for (int j = 0; j < n; ++j) {
-    for (int i = 0; i < n; ++i) {
-      const float v = (i + j) % 2 ? 0.85f : 0.35f;
-      glColor3f(v, v, v);
-      glVertex2f(x0 + i * size, y0 + j * size);
-      glVertex2f(x0 + (i + 1) * size, y0 + j * size);
-      glVertex2f(x0 + (i + 1) * size, y0 + (j + 1) * size);
-      glVertex2f(x0 + i * size, y0 + (j + 1) * size);
-    }
-  }
-  glEnd();
+  draw_checkerboard(x0, y0, (float)CELL, 6, 0.35f, 0.85f);
 }
 
 /* A lit square, GRID x GRID quads, texture coordinates 0..1. */
