@@ -145,14 +145,19 @@ void glHint(GLenum target, GLenum mode) {
 // Draws are queued and rasterized later (primitive/queued_drawing.h). Both commands rasterize
 // what is queued and return when it is in the framebuffer: glFinish must (spec 5.5), and glFlush,
 // which need only start it, does the same, since nothing else would start it in finite time.
+// An embedding that shows the framebuffer elsewhere (OSMesa's caller's buffer) is told after.
 void glFinish(void) {
   executeNow([](Context& ctx) {
-    if (!rejectInsideBeginEnd(ctx)) glass::gl::finishQueuedDrawing(ctx);
+    if (rejectInsideBeginEnd(ctx)) return;
+    glass::gl::finishQueuedDrawing(ctx);
+    if (ctx.afterFlush) ctx.afterFlush(ctx);
   });
 }
 void glFlush(void) {
   executeNow([](Context& ctx) {
-    if (!rejectInsideBeginEnd(ctx)) glass::gl::finishQueuedDrawing(ctx);
+    if (rejectInsideBeginEnd(ctx)) return;
+    glass::gl::finishQueuedDrawing(ctx);
+    if (ctx.afterFlush) ctx.afterFlush(ctx);
   });
 }
 
