@@ -27,3 +27,6 @@ else()
 endif()
 configure_file(${PROJECT_SOURCE_DIR}/cmake/glass.pc.in ${PROJECT_BINARY_DIR}/glass.pc @ONLY)
 install(FILES ${PROJECT_BINARY_DIR}/glass.pc DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig)
+
+# GLUT's names (libglut.so.3, glut.pc) under the same prefix.
+include(${PROJECT_SOURCE_DIR}/cmake/glut_install.cmake)

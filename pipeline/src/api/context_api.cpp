@@ -1,15 +1,22 @@
-// glass/context.h: creating offscreen contexts, making them current, writing PNGs.
+// glass/context.h: creating offscreen contexts, making them current, writing PNGs, and the hooks
+// of window systems (resizing, the flush callback).
 #include <glass/context.h>
 
+#include <memory>
 #include <new>
+
+#include "api/flush_callback.h"
 
 #include "core/context.h"
 #include "core/png_writer.h"
 #include "core/transform_state.h"
+#include "primitive/draw_pipeline.h"
 #include "primitive/queued_drawing.h"
 
 struct GlassContext {
   glass::gl::Context gl;
+  GlassFlushCallback flushCallback = nullptr;
+  void* flushUserData = nullptr;
   GlassContext(int width, int height) : gl(width, height) {}
 };
 
@@ -58,4 +65,41 @@ const unsigned char* glassGetColorBuffer(const GlassContext* ctx) {
   // GL state, so the context stays logically const.
   glass::gl::finishQueuedDrawing(const_cast<GlassContext*>(ctx)->gl);
   return ctx->gl.framebuffer.colorAt(0, 0);
+}
+
+int glassResizeContext(GlassContext* ctx, int width, int height) {
+  if (!ctx || width <= 0 || height <= 0 || width > glass::gl::kMaxViewportSize ||
+      height > glass::gl::kMaxViewportSize) {
+    return 0;
+  }
+  glass::gl::Context& gl = ctx->gl;
+  glass::gl::finishQueuedDrawing(gl);
+  try {
+    // Both are built before either replaces the old one, so that running out of memory leaves
+    // the context as it was. The draw pipeline's tiles cover the framebuffer it was made for.
+    glass::raster::Framebuffer resized(width, height);
+    std::vector<int16_t> noAccumulation;  // allocated again, at the new size, when next used
+    gl.framebuffer = std::move(resized);
+    auto draw = std::make_unique<glass::gl::DrawPipeline>(gl);
+    gl.draw = std::move(draw);
+    gl.accumulation.buffer.swap(noAccumulation);
+  } catch (const std::bad_alloc&) {
+    return 0;
+  }
+  return 1;
+}
+
+void glassSetFlushCallback(GlassContext* ctx, GlassFlushCallback callback, void* userData) {
+  if (!ctx) return;
+  ctx->flushCallback = callback;
+  ctx->flushUserData = userData;
+}
+
+int glassWritePixelsPNG(const char* path, int width, int height, const unsigned char* rgba) {
+  return glass::gl::writeRGBAPixelsPNG(rgba, width, height, path) ? 1 : 0;
+}
+
+void glass::gl::runFlushCallback() {
+  GlassContext* ctx = currentGlassContext;
+  if (ctx && ctx->flushCallback) ctx->flushCallback(ctx, ctx->flushUserData);
 }
