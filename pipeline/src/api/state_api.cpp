@@ -5,7 +5,6 @@
 #include <cmath>
 #include <limits>
 
-#include "api/flush_callback.h"
 #include "core/capabilities.h"
 #include "core/context.h"
 #include "core/gl_strings.h"
@@ -146,22 +145,20 @@ void glHint(GLenum target, GLenum mode) {
 // Draws are queued and rasterized later (primitive/queued_drawing.h). Both commands rasterize
 // what is queued and return when it is in the framebuffer: glFinish must (spec 5.5), and glFlush,
 // which need only start it, does the same, since nothing else would start it in finite time.
-// Then a window system's flush callback may show the picture (a single-buffered GLUT window), or
-// an embedding that shows the framebuffer elsewhere copy it there (OSMesa's caller's buffer).
+// Then the embedding that shows the framebuffer elsewhere is told, through the one hook
+// Context::afterFlush: a single-buffered GLUT window shows its picture (glassSetFlushCallback),
+// an OSMesa context fills the caller's buffer.
 namespace {
-void finishAndRunFlushCallback() {
-  bool finished = false;
-  executeNow([&finished](Context& ctx) {
+void finishAndShow() {
+  executeNow([](Context& ctx) {
     if (rejectInsideBeginEnd(ctx)) return;
     glass::gl::finishQueuedDrawing(ctx);
     if (ctx.afterFlush) ctx.afterFlush(ctx);
-    finished = true;
   });
-  if (finished) glass::gl::runFlushCallback();
 }
 }  // namespace
 
-void glFinish(void) { finishAndRunFlushCallback(); }
-void glFlush(void) { finishAndRunFlushCallback(); }
+void glFinish(void) { finishAndShow(); }
+void glFlush(void) { finishAndShow(); }
 
 }  // extern "C"
