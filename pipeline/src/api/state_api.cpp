@@ -44,12 +44,14 @@ bool lookUp(Context& ctx, GLenum pname, StateValue& value) {
 // i = ((2^32 - 1) c - 1) / 2, rounded to nearest with halves upward, so that 0.0 gives 0.
 GLint normalizedToInteger(double value) {
   const double scaled = std::floor(4294967295.0 * value / 2.0);
+  if (std::isnan(scaled)) return 0;  // converting NaN is undefined; a NaN state value reads as 0
   if (scaled >= 2147483647.0) return std::numeric_limits<GLint>::max();
   if (scaled <= -2147483648.0) return std::numeric_limits<GLint>::min();
   return static_cast<GLint>(scaled);
 }
 
 GLint floatToInteger(double value) {
+  if (std::isnan(value)) return 0;
   if (value >= 2147483647.0) return std::numeric_limits<GLint>::max();
   if (value <= -2147483648.0) return std::numeric_limits<GLint>::min();
   return static_cast<GLint>(std::lround(value));
