@@ -37,8 +37,9 @@
 // the block is dropped before any per-pixel work; when the farthest corner passes against the
 // nearest stored value, every pixel passes and none is compared.
 //
-// Rows. Each row of a block is worked as eight lanes without branches (all eight depths, the
-// coverage of all eight centres as a bit mask), which the compiler turns into vector code.
+// Rows. Each row of a block is worked as lanes without branches (the depths of the columns in
+// the triangle's box, the coverage of their centres as a bit mask), which the compiler turns
+// into vector code.
 //
 // The walk ends at a CoveredBlock (triangle_block.h): which pixels of the block are covered and
 // passed the early test, and their depths. The sink decides what happens next; by default it is
@@ -57,30 +58,30 @@ namespace {
 constexpr int kBlockSize = CoveredBlock::kSize;
 
 // The depth plane at the block's pixel centres, split as described at the top of the file.
+// Only the columns [i0, i1) and rows [j0, j1) of the block inside the triangle's box are set.
 struct BlockDepth {
   double column[kBlockSize], row[kBlockSize];
 
-  BlockDepth(const TriangleSetup& setup, int bx, int by) {
-    for (int i = 0; i < kBlockSize; ++i) column[i] = setup.z0 + setup.zdx * (bx + i + 0.5);
-    for (int j = 0; j < kBlockSize; ++j) row[j] = setup.zdy * (by + j + 0.5);
+  BlockDepth(const TriangleSetup& setup, int bx, int by, int i0, int i1, int j0, int j1) {
+    for (int i = i0; i < i1; ++i) column[i] = setup.z0 + setup.zdx * (bx + i + 0.5);
+    for (int j = j0; j < j1; ++j) row[j] = setup.zdy * (by + j + 0.5);
   }
   uint32_t at(int i, int j) const { return depthValue(column[i] + row[j]); }
 };
 
-// Bit i: columns bx + i with x0 <= bx + i < x1.
-unsigned columnMask(int bx, int x0, int x1) {
-  return (0xFFu << (x0 - bx)) & (0xFFu >> (bx + kBlockSize - x1));
-}
+// Bits i0 <= i < i1.
+unsigned columnMask(int i0, int i1) { return (0xFFu << i0) & (0xFFu >> (kBlockSize - i1)); }
 
-// Bit i: the centre of pixel (bx + i, y) is inside the three edges (edge_functions.h). The
-// value at column i is the value at column 0 plus i steps, exactly (64-bit integers).
-unsigned rowCoverage(const PixelEdgeFunctions& edges, int bx, int y) {
-  const int64_t e0 = edges.at(0, bx, y), e1 = edges.at(1, bx, y), e2 = edges.at(2, bx, y);
+// Bit i, for i0 <= i < i1: the centre of pixel (bx + i, y) is inside the three edges
+// (edge_functions.h). Stepping from column to column is exact (64-bit integers).
+unsigned rowCoverage(const PixelEdgeFunctions& edges, int bx, int y, int i0, int i1) {
+  int64_t e0 = edges.at(0, bx + i0, y), e1 = edges.at(1, bx + i0, y), e2 = edges.at(2, bx + i0, y);
   unsigned mask = 0;
-  for (int i = 0; i < kBlockSize; ++i) {
-    const int64_t inside = (e0 + edges.stepX[0] * i) | (e1 + edges.stepX[1] * i) |
-                           (e2 + edges.stepX[2] * i);
-    mask |= static_cast<unsigned>((static_cast<uint64_t>(inside) >> 63) ^ 1u) << i;
+  for (int i = i0; i < i1; ++i) {
+    mask |= static_cast<unsigned>((static_cast<uint64_t>(e0 | e1 | e2) >> 63) ^ 1u) << i;
+    e0 += edges.stepX[0];
+    e1 += edges.stepX[1];
+    e2 += edges.stepX[2];
   }
   return mask;
 }
@@ -135,6 +136,7 @@ void walkTriangle(const TriangleSetup& setup, FragmentSink& sink) {
   const PixelRect& box = setup.box;
   const PixelEdgeFunctions edges(setup);
   const Framebuffer* earlyDepth = setup.earlyDepth.buffer;
+  const bool largeTriangle = box.x1 - box.x0 >= 4 * kBlockSize && box.y1 - box.y0 >= 4 * kBlockSize;
 
   CoveredBlock block;
   const int firstBlockX = box.x0 & ~(kBlockSize - 1), firstBlockY = box.y0 & ~(kBlockSize - 1);
@@ -147,32 +149,37 @@ void walkTriangle(const TriangleSetup& setup, FragmentSink& sink) {
       for (int i = 0; i < 3; ++i)
         if (edges.minOver(i, bx, by, kBlockSize, kBlockSize) < 0) accepted = false;
 
-      const BlockDepth depth(setup, bx, by);
+      const int i0 = x0 - bx, i1 = x1 - bx;
+      const BlockDepth depth(setup, bx, by, i0, i1, y0 - by, y1 - by);
       bool test = kEarly;
       if constexpr (kEarly) {
-        const BlockDepthOutcome outcome =
-            blockDepthOutcome<kCompare>(depth, *earlyDepth, bx, by, x0, x1, y0, y1);
-        if (outcome == BlockDepthOutcome::AllFail) continue;
-        test = outcome == BlockDepthOutcome::PerPixel;
+        // Not for small triangles: their blocks have too few pixels to repay the look at the
+        // stored range.
+        if (largeTriangle || accepted) {
+          const BlockDepthOutcome outcome =
+              blockDepthOutcome<kCompare>(depth, *earlyDepth, bx, by, x0, x1, y0, y1);
+          if (outcome == BlockDepthOutcome::AllFail) continue;
+          test = outcome == BlockDepthOutcome::PerPixel;
+        }
       }
 
       // Coverage and depth, row by row; a fragment that fails the early depth test goes no
       // further.
       block.bx = bx;
       block.by = by;
-      const unsigned columns = columnMask(bx, x0, x1);
+      const unsigned columns = columnMask(i0, i1);
       bool any = false;
       for (int j = 0; j < kBlockSize; ++j) {
         const int y = by + j;
         unsigned mask = 0;
         if (y >= y0 && y < y1) {
-          mask = accepted ? columns : rowCoverage(edges, bx, y) & columns;
+          mask = accepted ? columns : rowCoverage(edges, bx, y, i0, i1);
           uint32_t* z = block.depth[j];
-          for (int i = 0; i < kBlockSize; ++i) z[i] = depth.at(i, j);
+          for (int i = i0; i < i1; ++i) z[i] = depth.at(i, j);
           if constexpr (kEarly) {
             if (test && mask != 0) {
               const uint32_t* stored = earlyDepth->depthAt(bx, y);
-              for (int i = 0; i < kBlockSize; ++i)
+              for (int i = i0; i < i1; ++i)
                 if ((mask & (1u << i)) && !passesDepthCompare(kCompare, z[i], stored[i]))
                   mask &= ~(1u << i);
             }

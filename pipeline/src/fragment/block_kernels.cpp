@@ -15,6 +15,7 @@
 #include "fragment/block_kernels.h"
 
 #include <array>
+#include <bit>
 #include <cstdlib>
 #include <cstring>
 
@@ -31,40 +32,47 @@ namespace {
 
 constexpr int kSize = raster::CoveredBlock::kSize;
 
+int firstBit(unsigned mask) { return std::countr_zero(mask); }
+int lastBit(unsigned mask) { return std::bit_width(mask) - 1; }
+
 // The perspective-correct values of the varyings `Slots` at the pixel centres of one block,
 // a row at a time: the column parts once per block, the row parts once per row, then the values
-// of all eight columns of the row (uncovered columns too: fixed-length loops the compiler can
-// vectorise; their values are never read).
+// of the row from its first to its last covered column (the uncovered columns between too:
+// loops without branches the compiler can vectorise; their values are never read).
 template <int... Slots>
 class BlockVaryings {
  public:
   static constexpr int kCount = sizeof...(Slots);
 
-  BlockVaryings(const raster::AttributePlanes& planes, int bx, int by)
-      : planes_(planes), rowY0_(by + 0.5) {
+  BlockVaryings(const raster::AttributePlanes& planes, const raster::CoveredBlock& block)
+      : planes_(planes), rowY0_(block.by + 0.5) {
     constexpr int slots[kCount] = {Slots...};
     unitQ_ = planes.invW0 == 1.0 && planes.invWdx == 0.0 && planes.invWdy == 0.0;
-    const double columnX0 = bx + 0.5;
-    for (int i = 0; i < kSize; ++i) {
+    unsigned columns = 0;
+    for (const uint8_t mask : block.rowMask) columns |= mask;
+    const double columnX0 = block.bx + 0.5;
+    for (int i = firstBit(columns); i <= lastBit(columns); ++i) {
       const double x = columnX0 + i;
       qColumn_[i] = planes.invW0 + planes.invWdx * x;
       for (int n = 0; n < kCount; ++n) pColumn_[n][i] = planes.a0[slots[n]] + planes.dx[slots[n]] * x;
     }
   }
 
-  // Computes the values of row j; value(n, i) then reads them.
-  void computeRow(int j) {
+  // Computes the values of row j, whose covered columns are the bits of `mask` (not 0); value(n, i)
+  // then reads them.
+  void computeRow(int j, unsigned mask) {
     constexpr int slots[kCount] = {Slots...};
+    const int first = firstBit(mask), last = lastBit(mask);
     const double y = rowY0_ + j;
     const double qRow = planes_.invWdy * y;
     double q[kSize];
-    for (int i = 0; i < kSize; ++i) q[i] = qColumn_[i] + qRow;
+    for (int i = first; i <= last; ++i) q[i] = qColumn_[i] + qRow;
     for (int n = 0; n < kCount; ++n) {
       const double pRow = planes_.dy[slots[n]] * y;
       if (unitQ_) {
-        for (int i = 0; i < kSize; ++i) values_[n][i] = static_cast<float>(pColumn_[n][i] + pRow);
+        for (int i = first; i <= last; ++i) values_[n][i] = static_cast<float>(pColumn_[n][i] + pRow);
       } else {
-        for (int i = 0; i < kSize; ++i)
+        for (int i = first; i <= last; ++i)
           values_[n][i] = static_cast<float>((pColumn_[n][i] + pRow) / q[i]);
       }
     }
@@ -160,20 +168,22 @@ void shadeBlock(Context& ctx, const raster::TriangleSetup& setup, const raster::
       const unsigned mask = block.rowMask[j];
       if (mask == 0) continue;
       uint32_t* depth = fb.depthAt(bx, by + j);
-      for (int i = 0; i < kSize; ++i)
-        if (mask & (1u << i)) depth[i] = block.depth[j][i];
+      for (unsigned rest = mask; rest != 0; rest &= rest - 1) {
+        const int i = std::countr_zero(rest);
+        depth[i] = block.depth[j][i];
+      }
     }
   }
   if constexpr (kWriteColor) {
-    typename TexturingStage<kTexturing>::Varyings varyings(setup.planes, bx, by);
+    typename TexturingStage<kTexturing>::Varyings varyings(setup.planes, block);
     [[maybe_unused]] typename TexturingStage<kTexturing>::Texturing texturing(ctx, setup, by);
     for (int j = 0; j < kSize; ++j) {
       const unsigned mask = block.rowMask[j];
       if (mask == 0) continue;
-      varyings.computeRow(j);
+      varyings.computeRow(j, mask);
       uint8_t* pixels = fb.colorAt(bx, by + j);
-      for (int i = 0; i < kSize; ++i) {
-        if (!(mask & (1u << i))) continue;
+      for (unsigned rest = mask; rest != 0; rest &= rest - 1) {
+        const int i = std::countr_zero(rest);
         float color[4] = {varyings.value(0, i), varyings.value(1, i), varyings.value(2, i),
                           varyings.value(3, i)};
         if constexpr (kTexturing == KernelTexturing::Single2D) {
