@@ -192,7 +192,7 @@ std::string formatIfs3(const IteratedFunctionSystem3& ifs) {
       out += text;
     }
     if (map.probability) {
-      std::snprintf(text, sizeof text, " probability %.17g", *map.probability);
+      std::snprintf(text, sizeof text, " probability %.6g", *map.probability);
       out += text;
     }
     out += '\n';
