@@ -48,4 +48,27 @@ std::optional<BoxCountingEstimate> estimate(std::size_t pointCount, double side,
   return estimate;
 }
 
+// The dimension report of r maps: Moran's equation when ratioOf(i) gives every map's similarity
+// ratio, else boxCount(report), which fills report.boxCounting or report.problem.
+template <class RatioOf, class BoxCount>
+IfsDimensionReport dimensionReport(std::size_t maps, const RatioOf& ratioOf, const BoxCount& boxCount) {
+  IfsDimensionReport report;
+  report.allSimilarities = maps != 0;
+  std::vector<double> ratios;
+  for (std::size_t i = 0; i < maps; ++i) {
+    report.ratios.push_back(ratioOf(i));
+    if (report.ratios.back()) {
+      ratios.push_back(*report.ratios.back());
+    } else {
+      report.allSimilarities = false;
+    }
+  }
+  if (report.allSimilarities) {
+    report.moranDimension = solveMoranEquation(ratios);
+    if (report.moranDimension) return report;
+  }
+  boxCount(report);
+  return report;
+}
+
 }  // namespace glass::geometry::box_counting

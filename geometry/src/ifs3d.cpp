@@ -290,32 +290,20 @@ std::optional<BoxCountingEstimate> boxCountingDimension3(std::span<const glm::dv
 }
 
 IfsDimensionReport ifsDimension3(const IteratedFunctionSystem3& ifs, std::uint64_t points, std::uint64_t seed) {
-  IfsDimensionReport report;
-  report.allSimilarities = !ifs.maps.empty();
-  std::vector<double> ratios;
-  for (const IfsMap3& map : ifs.maps) {
-    report.ratios.push_back(similarityRatio3(map.transform));
-    if (report.ratios.back()) {
-      ratios.push_back(*report.ratios.back());
-    } else {
-      report.allSimilarities = false;
-    }
-  }
-  if (report.allSimilarities) {
-    report.moranDimension = solveMoranEquation(ratios);
-    if (report.moranDimension) return report;
-  }
-  const auto probabilities = chaosGameProbabilities3(ifs);
-  if (!probabilities) {
-    report.problem = "the maps' probabilities are invalid";
-    return report;
-  }
-  std::vector<glm::dvec3> cloud;
-  cloud.reserve(points);
-  for (const IfsPoint3& p : chaosGamePoints3(ifs, *probabilities, points, seed)) cloud.push_back(p.position);
-  report.boxCounting = boxCountingDimension3(cloud);
-  if (!report.boxCounting) report.problem = "the attractor is too small or too thin for box counting";
-  return report;
+  return box_counting::dimensionReport(
+      ifs.maps.size(), [&](std::size_t i) { return similarityRatio3(ifs.maps[i].transform); },
+      [&](IfsDimensionReport& report) {
+        const auto probabilities = chaosGameProbabilities3(ifs);
+        if (!probabilities) {
+          report.problem = "the maps' probabilities are invalid";
+          return;
+        }
+        std::vector<glm::dvec3> cloud;
+        cloud.reserve(points);
+        for (const IfsPoint3& p : chaosGamePoints3(ifs, *probabilities, points, seed)) cloud.push_back(p.position);
+        report.boxCounting = boxCountingDimension3(cloud);
+        if (!report.boxCounting) report.problem = "the attractor is too small or too thin for box counting";
+      });
 }
 
 }  // namespace glass::geometry

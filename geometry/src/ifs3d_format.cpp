@@ -43,83 +43,61 @@ std::optional<std::array<double, N>> numbers(LineParser& p, std::string_view wha
 
 void parseMap(LineParser& p, IteratedFunctionSystem3& ifs, int mapColumn) {
   IfsMap3 map;
-  int operations = 0;
-  bool sawAttribute = false;
-  while (!p.atEnd() && !p.failed()) {
-    const Token word = p.take();
+  ifs_text::MapEnding ending;
+  const auto operation = [&](const Token& word) {
+    using ifs_text::OperationRead;
     if (word.text == "translate") {
       auto t = numbers<3>(p, "translate x y z");
-      if (!t) return;
+      if (!t) return OperationRead::Failed;
       map.transform = map.transform * Affine3::translation({(*t)[0], (*t)[1], (*t)[2]});
     } else if (word.text == "rotate") {
       if (!p.atEnd() && p.peek()->text == "quaternion") {
         p.take();
         const int column = p.column();
         auto q = numbers<4>(p, "a quaternion w x y z");
-        if (!q) return;
+        if (!q) return OperationRead::Failed;
         const Quaternion quaternion{(*q)[0], (*q)[1], (*q)[2], (*q)[3]};
         if (!(normSquared(quaternion) > 0.0)) {
           p.error(column, "the zero quaternion is no rotation");
-          return;
+          return OperationRead::Failed;
         }
         map.transform = map.transform * Affine3::fromParts(rotationMatrix(quaternion), glm::dvec3(0.0));
       } else {
         auto degrees = p.number("an angle in degrees");
-        if (!degrees) return;
+        if (!degrees) return OperationRead::Failed;
         const int column = p.column();
         auto axis = numbers<3>(p, "a rotation axis x y z");
-        if (!axis) return;
+        if (!axis) return OperationRead::Failed;
         const glm::dvec3 a{(*axis)[0], (*axis)[1], (*axis)[2]};
         if (a == glm::dvec3(0.0)) {
           p.error(column, "the rotation axis cannot be 0 0 0");
-          return;
+          return OperationRead::Failed;
         }
         map.transform = map.transform * Affine3::rotationDegrees(*degrees, a);
       }
     } else if (word.text == "scale") {
       auto sx = p.number("a scale factor");
-      if (!sx) return;
+      if (!sx) return OperationRead::Failed;
       glm::dvec3 s(*sx);
       if (p.peekIsNumber()) {
         auto rest = numbers<2>(p, "scale y z (one factor, or three)");
-        if (!rest) return;
+        if (!rest) return OperationRead::Failed;
         s.y = (*rest)[0];
         s.z = (*rest)[1];
       }
       map.transform = map.transform * Affine3::scaling(s);
     } else if (word.text == "matrix") {
       auto v = numbers<12>(p, "twelve matrix entries a11 a12 a13 t1 a21 a22 a23 t2 a31 a32 a33 t3");
-      if (!v) return;
+      if (!v) return OperationRead::Failed;
       map.transform = map.transform * Affine3::fromRows(*v);
-    } else if (word.text == "color") {
-      map.color = ifs_text::readColor(p);
-      if (p.failed()) return;
-      sawAttribute = true;
-      continue;
-    } else if (word.text == "probability") {
-      map.probability = ifs_text::readProbability(p);
-      if (p.failed()) return;
-      sawAttribute = true;
-      continue;
-    } else if (!word.quoted && LineParser::parseNumber(word.text)) {
-      p.error(word.column, "unexpected '" + word.text + "': too many numbers for the operation before it");
-      return;
     } else {
-      p.error(word.column, "unknown map operation '" + word.text +
-                               "' (translate, rotate, scale, matrix, color, probability)");
-      return;
+      return OperationRead::Unknown;
     }
-    if (sawAttribute) {
-      p.error(word.column, "put '" + word.text + "' before color and probability");
-      return;
-    }
-    ++operations;
-  }
-  if (p.failed()) return;
-  if (operations == 0) {
-    p.error(mapColumn, "a map needs at least one operation (translate, rotate, scale, matrix)");
-    return;
-  }
+    return OperationRead::Done;
+  };
+  if (!ifs_text::readMapLine(p, mapColumn, "translate, rotate, scale, matrix", operation, ending)) return;
+  map.color = ending.color;
+  map.probability = ending.probability;
   ifs.maps.push_back(map);
 }
 

@@ -74,34 +74,20 @@ std::optional<BoxCountingEstimate> boxCountingDimension(std::span<const glm::dve
 }
 
 IfsDimensionReport ifsDimension(const IteratedFunctionSystem& ifs, std::uint64_t points, std::uint64_t seed) {
-  IfsDimensionReport report;
-  report.allSimilarities = !ifs.maps.empty();
-  std::vector<double> ratios;
-  for (const IfsMap& map : ifs.maps) {
-    report.ratios.push_back(similarityRatio(map.transform));
-    if (report.ratios.back()) {
-      ratios.push_back(*report.ratios.back());
-    } else {
-      report.allSimilarities = false;
-    }
-  }
-  if (report.allSimilarities) {
-    report.moranDimension = solveMoranEquation(ratios);
-    if (report.moranDimension) return report;
-  }
-  const auto probabilities = chaosGameProbabilities(ifs);
-  if (!probabilities) {
-    report.problem = "the maps' probabilities are invalid";
-    return report;
-  }
-  std::vector<glm::dvec2> cloud;
-  cloud.reserve(points);
-  chaosGame(ifs, *probabilities, points, seed, [&cloud](const glm::dvec2& p, int) { cloud.push_back(p); });
-  report.boxCounting = boxCountingDimension(cloud);
-  if (!report.boxCounting) {
-    report.problem = "the attractor is too small or too thin for box counting";
-  }
-  return report;
+  return box_counting::dimensionReport(
+      ifs.maps.size(), [&](std::size_t i) { return similarityRatio(ifs.maps[i].transform); },
+      [&](IfsDimensionReport& report) {
+        const auto probabilities = chaosGameProbabilities(ifs);
+        if (!probabilities) {
+          report.problem = "the maps' probabilities are invalid";
+          return;
+        }
+        std::vector<glm::dvec2> cloud;
+        cloud.reserve(points);
+        chaosGame(ifs, *probabilities, points, seed, [&cloud](const glm::dvec2& p, int) { cloud.push_back(p); });
+        report.boxCounting = boxCountingDimension(cloud);
+        if (!report.boxCounting) report.problem = "the attractor is too small or too thin for box counting";
+      });
 }
 
 }  // namespace glass::geometry

@@ -54,64 +54,42 @@ void parseBase(LineParser& p, IteratedFunctionSystem& ifs) {
 
 void parseMap(LineParser& p, IteratedFunctionSystem& ifs, int mapColumn) {
   IfsMap map;
-  int operations = 0;
-  bool sawAttribute = false;
-  while (!p.atEnd() && !p.failed()) {
-    const Token word = p.take();
+  ifs_text::MapEnding ending;
+  const auto operation = [&](const Token& word) {
+    using ifs_text::OperationRead;
     if (word.text == "translate") {
       auto tx = p.number("translate x"), ty = p.number("translate y");
-      if (p.failed()) return;
+      if (p.failed()) return OperationRead::Failed;
       map.transform = map.transform * Affine2::translation(*tx, *ty);
     } else if (word.text == "rotate") {
       auto degrees = p.number("an angle in degrees");
-      if (p.failed()) return;
+      if (p.failed()) return OperationRead::Failed;
       map.transform = map.transform * Affine2::rotationDegrees(*degrees);
     } else if (word.text == "scale") {
       auto sx = p.number("a scale factor");
-      if (p.failed()) return;
+      if (p.failed()) return OperationRead::Failed;
       const double sy = p.peekIsNumber() ? *p.number("scale y") : *sx;
       map.transform = map.transform * Affine2::scaling(*sx, sy);
     } else if (word.text == "shear") {
       auto h = p.number("a shear factor");
-      if (p.failed()) return;
+      if (p.failed()) return OperationRead::Failed;
       map.transform = map.transform * Affine2::shear(*h);
     } else if (word.text == "matrix") {
       double v[6];
       for (int i = 0; i < 6; ++i) {
         auto value = p.number("six matrix entries a11 a12 a13 a21 a22 a23");
-        if (p.failed()) return;
+        if (p.failed()) return OperationRead::Failed;
         v[i] = *value;
       }
       map.transform = map.transform * Affine2::fromRows(v[0], v[1], v[2], v[3], v[4], v[5]);
-    } else if (word.text == "color") {
-      map.color = ifs_text::readColor(p);
-      if (p.failed()) return;
-      sawAttribute = true;
-      continue;
-    } else if (word.text == "probability") {
-      map.probability = ifs_text::readProbability(p);
-      if (p.failed()) return;
-      sawAttribute = true;
-      continue;
-    } else if (!word.quoted && LineParser::parseNumber(word.text)) {
-      p.error(word.column, "unexpected '" + word.text + "': too many numbers for the operation before it");
-      return;
     } else {
-      p.error(word.column, "unknown map operation '" + word.text +
-                               "' (translate, rotate, scale, shear, matrix, color, probability)");
-      return;
+      return OperationRead::Unknown;
     }
-    if (sawAttribute) {
-      p.error(word.column, "put '" + word.text + "' before color and probability");
-      return;
-    }
-    ++operations;
-  }
-  if (p.failed()) return;
-  if (operations == 0) {
-    p.error(mapColumn, "a map needs at least one operation (translate, rotate, scale, shear, matrix)");
-    return;
-  }
+    return OperationRead::Done;
+  };
+  if (!ifs_text::readMapLine(p, mapColumn, "translate, rotate, scale, shear, matrix", operation, ending)) return;
+  map.color = ending.color;
+  map.probability = ending.probability;
   ifs.maps.push_back(map);
 }
 

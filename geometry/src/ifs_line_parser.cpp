@@ -114,6 +114,46 @@ std::optional<double> readProbability(LineParser& p) {
   return value;
 }
 
+bool readMapLine(LineParser& p, int mapColumn, std::string_view operationNames,
+                 const std::function<OperationRead(const Token& word)>& operation, MapEnding& ending) {
+  int operations = 0;
+  bool sawEnding = false;
+  while (!p.atEnd() && !p.failed()) {
+    const Token word = p.take();
+    if (word.text == "color") {
+      ending.color = readColor(p);
+      sawEnding = true;
+      continue;
+    }
+    if (word.text == "probability") {
+      ending.probability = readProbability(p);
+      sawEnding = true;
+      continue;
+    }
+    const OperationRead read = operation(word);
+    if (read == OperationRead::Failed || p.failed()) return false;
+    if (read == OperationRead::Unknown) {
+      if (!word.quoted && LineParser::parseNumber(word.text)) {
+        p.error(word.column, "unexpected '" + word.text + "': too many numbers for the operation before it");
+      } else {
+        p.error(word.column, "unknown map operation '" + word.text + "' (" + std::string(operationNames) + ", color, probability)");
+      }
+      return false;
+    }
+    if (sawEnding) {
+      p.error(word.column, "put '" + word.text + "' before color and probability");
+      return false;
+    }
+    ++operations;
+  }
+  if (p.failed()) return false;
+  if (operations == 0) {
+    p.error(mapColumn, "a map needs at least one operation (" + std::string(operationNames) + ")");
+    return false;
+  }
+  return true;
+}
+
 void checkProbabilities(std::span<const std::optional<double>> probabilities, std::span<const int> mapLines,
                         std::vector<IfsParseError>& errors) {
   std::size_t given = 0;

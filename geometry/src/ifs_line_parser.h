@@ -65,6 +65,18 @@ std::optional<IfsColor> readColor(LineParser& p);
 // `probability p` after the keyword: p >= 0.
 std::optional<double> readProbability(LineParser& p);
 
+// A `map` line: operations, then optionally `color` and `probability`, which end the map.
+// operation(word) reads the numbers of one operation and says how it went.
+enum class OperationRead { Done, Failed, Unknown };
+struct MapEnding {
+  std::optional<IfsColor> color;
+  std::optional<double> probability;
+};
+// False when the line has an error (reported). `operationNames` lists the operations for
+// messages: "translate, rotate, scale, matrix".
+bool readMapLine(LineParser& p, int mapColumn, std::string_view operationNames,
+                 const std::function<OperationRead(const Token& word)>& operation, MapEnding& ending);
+
 // Probabilities must be given to every map or to none, and must not all be 0. mapLines[i] is the
 // line of map i.
 void checkProbabilities(std::span<const std::optional<double>> probabilities, std::span<const int> mapLines,

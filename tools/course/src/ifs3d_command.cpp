@@ -8,6 +8,7 @@
 
 #include <glass/scene/render.h>
 
+#include "box_counting_table.h"
 #include "command_arguments.h"
 #include "glass/course/commands.h"
 #include "glass/course/ifs3d_fit.h"
@@ -133,20 +134,6 @@ void printMaps(const std::vector<g::Affine3>& maps, std::ostream& out) {
   }
 }
 
-void printBoxCounting(const g::BoxCountingEstimate& box, std::ostream& out) {
-  out << "    level  box side     boxes N\n";
-  for (const g::BoxCount& count : box.counts) {
-    char text[128];
-    std::snprintf(text, sizeof text, "    %5d  %-11.4g  %8zu%s\n", count.level, count.boxSide, count.boxes,
-                  count.level >= box.firstFittedLevel && count.level <= box.lastFittedLevel ? "  fitted" : "");
-    out << text;
-  }
-  char text[160];
-  std::snprintf(text, sizeof text, "  d is about %.3f: the slope of log2 N against the level, levels %d to %d (least squares)\n",
-                box.dimension, box.firstFittedLevel, box.lastFittedLevel);
-  out << text;
-}
-
 void printDimension(const g::IteratedFunctionSystem3& ifs, std::ostream& out) {
   constexpr std::uint64_t kPoints = 1'000'000;
   const g::IfsDimensionReport report = g::ifsDimension3(ifs, kPoints, 1);
@@ -158,7 +145,7 @@ void printDimension(const g::IteratedFunctionSystem3& ifs, std::ostream& out) {
   } else if (report.boxCounting) {
     out << "  Not every map is a similarity, so Moran's equation does not apply. Box counting on " << kPoints
         << " chaos-game points:\n";
-    printBoxCounting(*report.boxCounting, out);
+    printBoxCountingTable(*report.boxCounting, out);
   } else {
     out << "  No dimension: " << report.problem << "\n";
   }
@@ -313,7 +300,7 @@ int runFit(ArgumentList& list, std::ostream& out, std::ostream& err) {
   out << "Dimension:\n";
   if (auto box = g::boxCountingDimension3(cloud.points)) {
     out << "  Box counting of the cloud:\n";
-    printBoxCounting(*box, out);
+    printBoxCountingTable(*box, out);
   } else {
     out << "  Too few points for box counting\n";
   }
