@@ -101,6 +101,7 @@ public:
   void run(const BezierCurve &s);
   void run(const BezierPatch &s);
   void run(const Ifs &s);
+  void run(const Ifs3d &s);
   void run(const Instance &s);
 
   double value(const Number &n) const { return values_(n); }

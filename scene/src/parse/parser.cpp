@@ -144,6 +144,7 @@ std::span<const Parser::StatementKind> Parser::statementKinds() {
       // Iterated function systems.
       {"ifs", &Parser::parseIfs, P::Scene},
       {"map", &Parser::parseMap, P::IfsMap},
+      {"ifs3d", &Parser::parseIfs3d, P::Scene},
   };
   return kinds;
 }

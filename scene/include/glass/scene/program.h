@@ -16,6 +16,10 @@
 #include <variant>
 #include <vector>
 
+namespace glass::geometry {
+struct IteratedFunctionSystem3;
+}
+
 namespace glass::scene {
 
 using GLenumValue = unsigned int;
@@ -197,6 +201,16 @@ struct Ifs {
   StatementList base; // the shape drawn at depth 0 (recursive mode)
 };
 
+// `ifs3d`: the polyhedral rebuild of a 3D IFS file (geometry/include/glass/geometry/ifs3d.h),
+// optionally moved by one map's animation as translation x rotation x scaling.
+struct Ifs3d {
+  std::shared_ptr<const geometry::IteratedFunctionSystem3> system;
+  int depth = 3;
+  bool partColors = true;
+  int animatedMap = -1; // 0-based; -1: drawn in place
+  Number step;          // 0..1 along the animation of animatedMap
+};
+
 struct Instance { int definition = -1; }; // glCallList of a `define`d block
 
 struct Statement {
@@ -210,7 +224,7 @@ struct Statement {
                CullFace, FrontFace, PolygonMode, PolygonOffset, ClipPlane, LineWidth, PointSize,
                Scissor, LogicOp, BindTexture, TexEnv, TexGen, Begin, Rect, Mesh, DrawModel,
                Sphere, Cylinder, Disk, PartialDisk, GlutShape, ParametricTorus, BezierCurve,
-               BezierPatch, Ifs, Instance>
+               BezierPatch, Ifs, Instance, Ifs3d>
       body;
 };
 
