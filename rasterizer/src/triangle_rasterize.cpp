@@ -45,6 +45,7 @@
 // passed the early test, and their depths. The sink decides what happens next; by default it is
 // the reference path below (emitBlockFragments), which interpolates every varying.
 #include <algorithm>
+#include <bit>
 
 #include "glass/raster/depth_value.h"
 #include "edge_functions.h"
@@ -175,13 +176,21 @@ void walkTriangle(const TriangleSetup& setup, FragmentSink& sink) {
         if (y >= y0 && y < y1) {
           mask = accepted ? columns : rowCoverage(edges, bx, y, i0, i1);
           uint32_t* z = block.depth[j];
-          for (int i = i0; i < i1; ++i) z[i] = depth.at(i, j);
+          if (accepted) {  // every column: one loop without branches
+            for (int i = i0; i < i1; ++i) z[i] = depth.at(i, j);
+          } else {  // the covered ones only
+            for (unsigned rest = mask; rest != 0; rest &= rest - 1) {
+              const int i = std::countr_zero(rest);
+              z[i] = depth.at(i, j);
+            }
+          }
           if constexpr (kEarly) {
             if (test && mask != 0) {
               const uint32_t* stored = earlyDepth->depthAt(bx, y);
-              for (int i = i0; i < i1; ++i)
-                if ((mask & (1u << i)) && !passesDepthCompare(kCompare, z[i], stored[i]))
-                  mask &= ~(1u << i);
+              for (unsigned rest = mask; rest != 0; rest &= rest - 1) {
+                const int i = std::countr_zero(rest);
+                if (!passesDepthCompare(kCompare, z[i], stored[i])) mask &= ~(1u << i);
+              }
             }
           }
         }
