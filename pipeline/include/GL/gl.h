@@ -18,8 +18,8 @@
 #define GLASS_GL 1
 #define GL_VERSION_1_1 1
 /* As in Mesa's gl.h: the header declares the OpenGL 1.2 and 1.3 commands and the imaging
- * subset's (see the sections at the end for what glass does with each); a <GL/glext.h> included
- * after it then adds only what comes later. */
+ * subset's (see the sections at the end for what glass does with each), then includes glass's
+ * <GL/glext.h> for the extension names of what glass implements. */
 #define GL_VERSION_1_2 1
 #define GL_VERSION_1_3 1
 #define GL_ARB_imaging 1
@@ -1484,6 +1484,11 @@ GLAPI void GLAPIENTRY glMultiDrawElements(GLenum mode, const GLsizei *count, GLe
 
 #ifdef __cplusplus
 }
+#endif
+
+/* The extension names (GL_COMBINE_ARB, glFogCoordfEXT, ...), as Mesa's gl.h includes them. */
+#ifndef GL_GLEXT_LEGACY
+#include <GL/glext.h>
 #endif
 
 #endif /* GLASS_GL_GL_H */
