@@ -1435,8 +1435,18 @@ typedef void (APIENTRYP PFNGLMULTITEXCOORD4SARBPROC)(GLenum target, GLshort s, G
 typedef void (APIENTRYP PFNGLMULTITEXCOORD4SVARBPROC)(GLenum target, const GLshort *v);
 
 /* GLASS-SECTION: OpenGL 1.4 (glBlendFuncSeparate, glWindowPos and the blend colour and
- * equation are declared above): multi-draws, fog coordinates, secondary colours, point
- * parameters (<GL/glext.h> declares these too, with the same prototypes). */
+ * equation are declared above): depth textures and their comparison, multi-draws, fog
+ * coordinates, secondary colours, point parameters (<GL/glext.h> declares these too, with the
+ * same prototypes). */
+#define GL_VERSION_1_4 1
+#define GL_DEPTH_COMPONENT16                     0x81A5
+#define GL_DEPTH_COMPONENT24                     0x81A6
+#define GL_DEPTH_COMPONENT32                     0x81A7
+#define GL_TEXTURE_DEPTH_SIZE                    0x884A
+#define GL_DEPTH_TEXTURE_MODE                    0x884B
+#define GL_TEXTURE_COMPARE_MODE                  0x884C
+#define GL_TEXTURE_COMPARE_FUNC                  0x884D
+#define GL_COMPARE_R_TO_TEXTURE                  0x884E
 #define GL_POINT_SIZE_MIN                        0x8126
 #define GL_POINT_SIZE_MAX                        0x8127
 #define GL_POINT_FADE_THRESHOLD_SIZE             0x8128

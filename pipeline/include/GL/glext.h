@@ -70,6 +70,21 @@ GLAPI void APIENTRY glSampleCoverageARB(GLfloat value, GLboolean invert);
 #endif
 #endif /* GL_ARB_multisample */
 
+#ifndef GL_ARB_depth_texture
+#define GL_ARB_depth_texture 1
+#define GL_DEPTH_COMPONENT16_ARB                 0x81A5
+#define GL_DEPTH_COMPONENT24_ARB                 0x81A6
+#define GL_DEPTH_COMPONENT32_ARB                 0x81A7
+#define GL_TEXTURE_DEPTH_SIZE_ARB                0x884A
+#define GL_DEPTH_TEXTURE_MODE_ARB                0x884B
+#endif /* GL_ARB_depth_texture */
+
+#ifndef GL_ARB_shadow
+#define GL_ARB_shadow 1
+#define GL_TEXTURE_COMPARE_MODE_ARB              0x884C
+#define GL_TEXTURE_COMPARE_FUNC_ARB              0x884D
+#define GL_COMPARE_R_TO_TEXTURE_ARB              0x884E
+#endif /* GL_ARB_shadow */
 
 #ifndef GL_ARB_texture_env_add
 #define GL_ARB_texture_env_add 1
@@ -414,6 +429,10 @@ GLAPI void APIENTRY glSecondaryColorPointerEXT(GLint size, GLenum type, GLsizei 
 #define GL_SINGLE_COLOR_EXT                      0x81F9
 #define GL_SEPARATE_SPECULAR_COLOR_EXT           0x81FA
 #endif /* GL_EXT_separate_specular_color */
+
+#ifndef GL_EXT_shadow_funcs
+#define GL_EXT_shadow_funcs 1
+#endif /* GL_EXT_shadow_funcs */
 
 #ifndef GL_EXT_stencil_wrap
 #define GL_EXT_stencil_wrap 1
