@@ -61,3 +61,15 @@ run("configuring the find_package(glass) project"
 run("building the find_package(glass) project" ${CMAKE_COMMAND} --build ${WORK_DIR}/consumer)
 run("the program built with find_package(glass)" ${WORK_DIR}/consumer/consumer)
 message(STATUS "find_package build: ${output}")
+
+# 3. Textbook-style programs (textbook/*.c) that name features by their extensions and use depth
+#    textures and shadow comparison, built unchanged with pkg-config and run; each checks its own
+#    pixels and exits non-zero on a difference.
+file(GLOB textbook_programs ${SOURCE_DIR}/textbook/*.c)
+foreach(source IN LISTS textbook_programs)
+  get_filename_component(name ${source} NAME_WE)
+  run("cc textbook/${name}.c $(pkg-config --cflags --libs glass)"
+      sh -c "'${C_COMPILER}' '${source}' $(pkg-config --cflags --libs glass) -o '${WORK_DIR}/${name}'")
+  run("textbook/${name}" ${WORK_DIR}/${name})
+  message(STATUS "textbook/${name}: ${output}")
+endforeach()
