@@ -1,5 +1,9 @@
 #include "core/gl_strings.h"
 
+#include <string>
+
+#include "core/fast_paths.h"
+
 namespace glass::gl {
 
 namespace {
@@ -25,6 +29,16 @@ constexpr const char* kExtensions =
     "GL_SGIS_generate_mipmap GL_SGIS_texture_edge_clamp GL_SGIS_texture_lod "
     "GL_WIN_phong_shading GL_GLASS_bump_map";
 
+// "glass software rasterizer (SIMD: <target>)", or "(fast paths off)" with GLASS_FAST_PATHS=0:
+// what a benchmark of the renderer should report beside its figures.
+const char* rendererString() {
+  static const std::string renderer =
+      std::string("glass software rasterizer (") +
+      (fastPathsEnabled() ? std::string("SIMD: ") + simdTargetName() : std::string("fast paths off")) +
+      ")";
+  return renderer.c_str();
+}
+
 }  // namespace
 
 const char* glString(GLenum name) {
@@ -32,7 +46,7 @@ const char* glString(GLenum name) {
     case GL_VENDOR:
       return "glass";
     case GL_RENDERER:
-      return "glass software rasterizer";
+      return rendererString();
     case GL_VERSION:
       // "<major>.<minor> <vendor information>" (spec 6.1.11). Every feature OpenGL 1.4 added
       // (appendix I) is there; the README lists what works and what is not done.
