@@ -4,9 +4,13 @@
  *    too (system_enum_names.h, written at configure time, has an #error for each missing one),
  *    but for the Mesa, ATI and OES extensions glass does not have;
  *  - then the system's headers are read after glass's: a function declared by both with another
- *    prototype is a conflicting declaration (an error), and a macro defined by both with other
- *    tokens is a redefinition (a warning, an error here). So every prototype and every enum value
- *    glass shares with the system headers is the same. */
+ *    prototype is a conflicting declaration (an error), a typedef declared by both with another
+ *    type is an error, and a macro defined by both with other tokens is a redefinition (a warning,
+ *    an error here). So every prototype, function pointer type and enum value glass shares with
+ *    the system headers is the same. The system's glext.h is read with the guards of the
+ *    extensions glass declares lifted (system_extension_guards.h), so that their blocks are
+ *    compared too. */
+#define GL_GLEXT_PROTOTYPES 1
 #include <GL/gl.h>
 #include <GL/glu.h>
 #include <GL/freeglut.h>
@@ -20,8 +24,13 @@
 #undef __glu_h__
 #undef __GLU_H__
 #undef GLAPI
-#define GL_GLEXT_PROTOTYPES 1
+#undef __gl_glext_h_
+#undef __glext_h_
+/* Mesa's gl.h would include <GL/glext.h>, which is glass's on this include path. */
+#define GL_GLEXT_LEGACY 1
 #include GLASS_SYSTEM_GL_HEADER
+#include "system_extension_guards.h"
+#include GLASS_SYSTEM_GLEXT_HEADER
 #include GLASS_SYSTEM_GLU_HEADER
 #include GLASS_SYSTEM_FREEGLUT_HEADER
 

@@ -66,3 +66,15 @@ if(NOT EXISTS ${WORK_DIR}/scene.png)
   message(FATAL_ERROR "the installed glass command wrote no picture")
 endif()
 message(STATUS "installed glass command: rendered ${SCENE}")
+
+# 4. Textbook-style programs (textbook/*.c) that name features by their extensions and use depth
+#    textures and shadow comparison, built unchanged with pkg-config and run; each checks its own
+#    pixels and exits non-zero on a difference.
+file(GLOB textbook_programs ${SOURCE_DIR}/textbook/*.c)
+foreach(source IN LISTS textbook_programs)
+  get_filename_component(name ${source} NAME_WE)
+  run("cc textbook/${name}.c $(pkg-config --cflags --libs glass)"
+      sh -c "'${C_COMPILER}' '${source}' $(pkg-config --cflags --libs glass) -o '${WORK_DIR}/${name}'")
+  run("textbook/${name}" ${WORK_DIR}/${name})
+  message(STATUS "textbook/${name}: ${output}")
+endforeach()

@@ -18,8 +18,8 @@
 #define GLASS_GL 1
 #define GL_VERSION_1_1 1
 /* As in Mesa's gl.h: the header declares the OpenGL 1.2 and 1.3 commands and the imaging
- * subset's (see the sections at the end for what glass does with each); a <GL/glext.h> included
- * after it then adds only what comes later. */
+ * subset's (see the sections at the end for what glass does with each), then includes glass's
+ * <GL/glext.h> for the extension names of what glass implements. */
 #define GL_VERSION_1_2 1
 #define GL_VERSION_1_3 1
 #define GL_ARB_imaging 1
@@ -1435,8 +1435,18 @@ typedef void (APIENTRYP PFNGLMULTITEXCOORD4SARBPROC)(GLenum target, GLshort s, G
 typedef void (APIENTRYP PFNGLMULTITEXCOORD4SVARBPROC)(GLenum target, const GLshort *v);
 
 /* GLASS-SECTION: OpenGL 1.4 (glBlendFuncSeparate, glWindowPos and the blend colour and
- * equation are declared above): multi-draws, fog coordinates, secondary colours, point
- * parameters (<GL/glext.h> declares these too, with the same prototypes). */
+ * equation are declared above): depth textures and their comparison, multi-draws, fog
+ * coordinates, secondary colours, point parameters (<GL/glext.h> declares these too, with the
+ * same prototypes). */
+#define GL_VERSION_1_4 1
+#define GL_DEPTH_COMPONENT16                     0x81A5
+#define GL_DEPTH_COMPONENT24                     0x81A6
+#define GL_DEPTH_COMPONENT32                     0x81A7
+#define GL_TEXTURE_DEPTH_SIZE                    0x884A
+#define GL_DEPTH_TEXTURE_MODE                    0x884B
+#define GL_TEXTURE_COMPARE_MODE                  0x884C
+#define GL_TEXTURE_COMPARE_FUNC                  0x884D
+#define GL_COMPARE_R_TO_TEXTURE                  0x884E
 #define GL_POINT_SIZE_MIN                        0x8126
 #define GL_POINT_SIZE_MAX                        0x8127
 #define GL_POINT_FADE_THRESHOLD_SIZE             0x8128
@@ -1484,6 +1494,11 @@ GLAPI void GLAPIENTRY glMultiDrawElements(GLenum mode, const GLsizei *count, GLe
 
 #ifdef __cplusplus
 }
+#endif
+
+/* The extension names (GL_COMBINE_ARB, glFogCoordfEXT, ...), as Mesa's gl.h includes them. */
+#ifndef GL_GLEXT_LEGACY
+#include <GL/glext.h>
 #endif
 
 #endif /* GLASS_GL_GL_H */

@@ -105,11 +105,14 @@ bool queryCoreState(const Context& ctx, GLenum pname, StateValue& v) {
     case GL_POINT_SIZE: v.setFloats({r.pointSize}); return true;
     case GL_POINT_SIZE_RANGE:
     case GL_ALIASED_POINT_SIZE_RANGE: v.setFloats({1.0, kMaxPointSize}); return true;
-    case GL_POINT_SIZE_GRANULARITY: v.setFloats({1.0}); return true;
+    // Smooth points and lines take their size unrounded (smooth_coverage.h: the point's radius
+    // is size / 2 above size 2, the line's half width w / 2 + 1/2), so sizes 0.1 apart draw
+    // differently (tests/unit/implementation_limits_test.cpp); Mesa reports 0.1 too.
+    case GL_POINT_SIZE_GRANULARITY: v.setFloats({0.1}); return true;
     case GL_LINE_WIDTH: v.setFloats({r.lineWidth}); return true;
     case GL_LINE_WIDTH_RANGE:
     case GL_ALIASED_LINE_WIDTH_RANGE: v.setFloats({1.0, kMaxLineWidth}); return true;
-    case GL_LINE_WIDTH_GRANULARITY: v.setFloats({1.0}); return true;
+    case GL_LINE_WIDTH_GRANULARITY: v.setFloats({0.1}); return true;
     case GL_LINE_STIPPLE_PATTERN: v.setIntegers({double(r.lineStipplePattern)}); return true;
     case GL_LINE_STIPPLE_REPEAT: v.setIntegers({double(r.lineStippleFactor)}); return true;
     case GL_SHADE_MODEL: v.setIntegers({double(r.shadeModel)}); return true;

@@ -63,7 +63,16 @@ void DrawPipeline::rasterizeSmoothDash(const raster::WindowVertex& a,
   SmoothLineShape shape;
   // GL_SMOOTH_LINE_WIDTH_RANGE is GL_LINE_WIDTH_RANGE, 1 to kMaxLineWidth.
   const float width = std::fmin(std::fmax(ctx_.raster.lineWidth, 1.0f), kMaxLineWidth);
-  if (!makeSmoothLine(a, b, width, ctx_.framebuffer.height(), vertex_.varyingCount, shape)) return;
+  // A fragment's depth and attributes depend on where it lies along the segment, not on which
+  // end comes first (spec 3.4.1: z = (1 - t) z_a + t z_b, with t measured from a, equals the
+  // same expression measured from b). The rectangle is built from the same end whichever way the
+  // segment was given, so both directions give the same values to the last bit: a wireframe
+  // whose edges are drawn once from each face then blends every pixel once under GL_LESS, as
+  // the specification's values imply (docs/pipeline.md, "Smooth lines drawn twice").
+  const bool reversed = b.x < a.x || (b.x == a.x && b.y < a.y);
+  if (!makeSmoothLine(reversed ? b : a, reversed ? a : b, width, ctx_.framebuffer.height(),
+                      vertex_.varyingCount, shape))
+    return;
   fillShape(shape, triangleSettings_, depthBias, fragments_);
 }
 

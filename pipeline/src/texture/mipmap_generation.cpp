@@ -41,6 +41,8 @@ TextureImage reduceImageByBoxFilter(const TextureImage& source) {
   out.border = source.border;
   out.internalFormat = source.internalFormat;
   out.base = source.base;
+  out.depthBits = source.depthBits;
+  if (source.isDepth()) out.depths.resize(static_cast<size_t>(out.width) * static_cast<size_t>(out.height));
   out.texels.resize(static_cast<size_t>(out.width) * static_cast<size_t>(out.height) *
                     static_cast<size_t>(out.depth) * 4);
 
@@ -57,6 +59,7 @@ TextureImage reduceImageByBoxFilter(const TextureImage& source) {
       for (int i = 0; i < out.width; ++i) {
         const AxisFootprint& rx = fx[static_cast<size_t>(i)];
         long sum[4] = {0, 0, 0, 0};
+        double depthSum = 0.0;  // a depth image's values, weighted the same way
         for (size_t e = 0; e < rz.weights.size(); ++e) {
           for (size_t b = 0; b < ry.weights.size(); ++b) {
             for (size_t a = 0; a < rx.weights.size(); ++a) {
@@ -65,12 +68,18 @@ TextureImage reduceImageByBoxFilter(const TextureImage& source) {
                                               ry.first + static_cast<int>(b),
                                               rz.first + static_cast<int>(e));
               for (int c = 0; c < 4; ++c) sum[c] += w * t[c];
+              if (source.isDepth())
+                depthSum += static_cast<double>(w) *
+                            source.depths[source.texelIndex(rx.first + static_cast<int>(a),
+                                                            ry.first + static_cast<int>(b), 0)];
             }
           }
         }
         uint8_t* d = out.texel(i, j, k);
         // Round to nearest, halves up: (sum + total / 2) / total.
         for (int c = 0; c < 4; ++c) d[c] = static_cast<uint8_t>((2 * sum[c] + total) / (2 * total));
+        if (source.isDepth())
+          out.depths[out.texelIndex(i, j, 0)] = static_cast<float>(depthSum / static_cast<double>(total));
       }
     }
   }

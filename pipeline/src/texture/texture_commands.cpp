@@ -7,6 +7,7 @@
 #include "core/context.h"
 #include "core/errors.h"
 #include "fragment/buffer_selection.h"
+#include "texture/depth_texture.h"
 #include "texture/mipmap_generation.h"
 
 namespace glass::gl {
@@ -100,6 +101,33 @@ void unpackBlock(const void* pixels, int dimensions, int width, int height, int 
   }
 }
 
+// The format checks of glTexImage and glTexSubImage for an image of the given internal format:
+// those of the colour formats, or for GL_DEPTH_COMPONENT those of glDrawPixels; then (OpenGL 1.4,
+// 3.8.1) a depth format with a colour internal format or the other way round, or a depth image on
+// a target other than 1D and 2D, is GL_INVALID_OPERATION.
+GLenum checkImageFormat(GLenum target, GLint internalFormat, GLenum format, GLenum type) {
+  const bool depthData = format == GL_DEPTH_COMPONENT;
+  const GLenum e =
+      depthData ? checkPixelFormatAndType(format, type) : checkTexelFormatAndType(format, type);
+  if (e != GL_NO_ERROR) return e;
+  if (depthData != isDepthInternalFormat(internalFormat)) return GL_INVALID_OPERATION;
+  if (depthData && !takesDepthImages(target)) return GL_INVALID_OPERATION;
+  return GL_NO_ERROR;
+}
+
+// unpackBlock, or for GL_DEPTH_COMPONENT data the depths as float bits (depth_texture.h), with
+// the depth scale and bias of the pixel transfer state.
+void unpackImageBlock(const Context& ctx, const void* pixels, int dimensions, int width, int height,
+                      int depth, GLenum format, GLenum type, BaseFormat base,
+                      std::vector<uint8_t>& out) {
+  if (format == GL_DEPTH_COMPONENT) {
+    unpackDepthTexels(pixels, width, height, type, unpackLayout(ctx), ctx.pixelTransfer.depthScale,
+                      ctx.pixelTransfer.depthBias, out);
+    return;
+  }
+  unpackBlock(pixels, dimensions, width, height, depth, format, type, unpackLayout(ctx), base, out);
+}
+
 // Copies the texels inside the border of a full image (fullWidth x fullHeight x depth texels,
 // border included) into `image`, whose width/height/depth are the inner size.
 void copyInsideBorder(const std::vector<uint8_t>& full, int fullWidth, int fullHeight, int border,
@@ -121,6 +149,13 @@ void afterBaseLevelChange(TextureObject& texture, int face, GLint level) {
   if (level == texture.params.baseLevel && texture.params.generateMipmap)
     generateMipmaps(texture, face);
   texture.updateCompleteness();
+}
+
+// The depth buffer's value at window (x, y) in [0, 1]; outside the window zero, as for colours.
+float readFramebufferDepth(const Context& ctx, int x, int y) {
+  const raster::Framebuffer& fb = ctx.framebuffer;
+  if (x < 0 || y < 0 || x >= fb.width() || y >= fb.height()) return 0.0f;
+  return static_cast<float>(static_cast<double>(*fb.depthAt(x, y)) / raster::kDepthMax);
 }
 
 // The colour buffer's RGBA at window (x, y) as floats; pixels outside the window read as zero
@@ -166,13 +201,12 @@ UnpackedTexels unpackForDisplayList(const Context& ctx, const TexImageArguments&
       checkImageSize(a.dimensions, a.width, a.height, a.depth, a.border, &w, &h, &d) !=
           GL_NO_ERROR ||
       a.level < 0 || a.level >= kMaxTextureLevels || !fitsLevel(a.level, w, h, d, a.dimensions) ||
-      checkTexelFormatAndType(a.format, a.type) != GL_NO_ERROR)
+      checkImageFormat(a.target, a.internalFormat, a.format, a.type) != GL_NO_ERROR)
     return nullptr;
   try {
     auto texels = std::make_shared<std::vector<uint8_t>>();
-    unpackBlock(pixels, a.dimensions, a.width, a.dimensions >= 2 ? a.height : 1,
-                a.dimensions == 3 ? a.depth : 1, a.format, a.type, unpackLayout(ctx), base,
-                *texels);
+    unpackImageBlock(ctx, pixels, a.dimensions, a.width, a.dimensions >= 2 ? a.height : 1,
+                     a.dimensions == 3 ? a.depth : 1, a.format, a.type, base, *texels);
     return texels;
   } catch (const std::bad_alloc&) {
     return nullptr;
@@ -189,8 +223,10 @@ void texImage(Context& ctx, const TexImageArguments& a, const void* pixels, cons
   if (GLenum e = checkImageSize(a.dimensions, a.width, a.height, a.depth, a.border, &w, &h, &d);
       e != GL_NO_ERROR)
     return recordError(ctx, e);
-  if (GLenum e = checkTexelFormatAndType(a.format, a.type); e != GL_NO_ERROR) return recordError(ctx, e);
+  if (GLenum e = checkImageFormat(a.target, a.internalFormat, a.format, a.type); e != GL_NO_ERROR)
+    return recordError(ctx, e);
   if (isCubeMapTarget(a.target) && w != h) return recordError(ctx, GL_INVALID_VALUE);
+  const bool depthImage = isDepthInternalFormat(a.internalFormat);
 
   if (!isImageTarget(a.dimensions, a.target)) {
     // Spec 3.8.11: a proxy query succeeds (the level state is set) when the image would fit, and
@@ -204,6 +240,7 @@ void texImage(Context& ctx, const TexImageArguments& a, const void* pixels, cons
       proxy.border = a.border;
       proxy.internalFormat = a.internalFormat;
       proxy.base = base;
+      proxy.depthBits = depthImage ? depthBitsOfInternalFormat(a.internalFormat) : 0;
     } else {
       proxy.internalFormat = 0;
     }
@@ -231,15 +268,18 @@ void texImage(Context& ctx, const TexImageArguments& a, const void* pixels, cons
         copyInsideBorder(*unpacked, a.width, fullHeight, a.border, a.dimensions, image);
       } else if (pixels != nullptr) {
         if (a.border == 0) {
-          unpackBlock(pixels, a.dimensions, w, h, d, a.format, a.type, unpackLayout(ctx), base,
-                      image.texels);
+          unpackImageBlock(ctx, pixels, a.dimensions, w, h, d, a.format, a.type, base,
+                           image.texels);
         } else {
           std::vector<uint8_t> full;
-          unpackBlock(pixels, a.dimensions, a.width, fullHeight, fullDepth, a.format, a.type,
-                      unpackLayout(ctx), base, full);
+          unpackImageBlock(ctx, pixels, a.dimensions, a.width, fullHeight, fullDepth, a.format,
+                           a.type, base, full);
           copyInsideBorder(full, a.width, fullHeight, a.border, a.dimensions, image);
         }
       }
+      if (depthImage) finishDepthImage(image, depthBitsOfInternalFormat(a.internalFormat));
+    } else if (depthImage) {
+      image.depthBits = depthBitsOfInternalFormat(a.internalFormat);
     }
     slot = std::move(image);
     afterBaseLevelChange(texture, target.face, a.level);
@@ -252,18 +292,18 @@ void texImage(Context& ctx, const TexImageArguments& a, const void* pixels, cons
 
 UnpackedTexels unpackForDisplayList(const Context& ctx, const TexSubImageArguments& a, const void* pixels) {
   if (pixels == nullptr || !isImageTarget(a.dimensions, a.target) || a.level < 0 ||
-      a.level >= kMaxTextureLevels || a.width < 0 || a.height < 0 ||
-      checkTexelFormatAndType(a.format, a.type) != GL_NO_ERROR)
+      a.level >= kMaxTextureLevels || a.width < 0 || a.height < 0)
     return nullptr;
   const ImageTarget target = imageTarget(const_cast<Context&>(ctx), a.target);
   // The base format decides which components are kept; it is the one of the image when the list
   // is compiled (an image defined later with another format is rare enough to accept this).
   const TextureImage& image = target.texture->image(target.face, a.level);
+  if (checkImageFormat(a.target, image.internalFormat, a.format, a.type) != GL_NO_ERROR)
+    return nullptr;
   try {
     auto texels = std::make_shared<std::vector<uint8_t>>();
-    unpackBlock(pixels, a.dimensions, a.width, a.dimensions >= 2 ? a.height : 1,
-                a.dimensions == 3 ? a.depth : 1, a.format, a.type, unpackLayout(ctx), image.base,
-                *texels);
+    unpackImageBlock(ctx, pixels, a.dimensions, a.width, a.dimensions >= 2 ? a.height : 1,
+                     a.dimensions == 3 ? a.depth : 1, a.format, a.type, image.base, *texels);
     return texels;
   } catch (const std::bad_alloc&) {
     return nullptr;
@@ -274,11 +314,16 @@ void texSubImage(Context& ctx, const TexSubImageArguments& a, const void* pixels
   if (rejectInsideBeginEnd(ctx)) return;
   if (!isImageTarget(a.dimensions, a.target)) return recordError(ctx, GL_INVALID_ENUM);
   if (a.level < 0 || a.level >= kMaxTextureLevels) return recordError(ctx, GL_INVALID_VALUE);
-  if (GLenum e = checkTexelFormatAndType(a.format, a.type); e != GL_NO_ERROR) return recordError(ctx, e);
   const ImageTarget target = imageTarget(ctx, a.target);
   TextureObject& texture = *target.texture;
   TextureImage& image = texture.image(target.face, a.level);
+  if (GLenum e = a.format == GL_DEPTH_COMPONENT ? checkPixelFormatAndType(a.format, a.type)
+                                                 : checkTexelFormatAndType(a.format, a.type);
+      e != GL_NO_ERROR)
+    return recordError(ctx, e);
   if (!image.defined()) return recordError(ctx, GL_INVALID_OPERATION);
+  // OpenGL 1.4, 3.8.2: depth data for a depth image, colour data for a colour image.
+  if ((a.format == GL_DEPTH_COMPONENT) != image.isDepth()) return recordError(ctx, GL_INVALID_OPERATION);
   const int height = a.dimensions >= 2 ? a.height : 1;
   const int yoffset = a.dimensions >= 2 ? a.yoffset : 0;
   const int depth = a.dimensions == 3 ? a.depth : 1;
@@ -298,8 +343,8 @@ void texSubImage(Context& ctx, const TexSubImageArguments& a, const void* pixels
     std::vector<uint8_t> local;
     const std::vector<uint8_t>* texels = unpacked.get();
     if (texels == nullptr) {
-      unpackBlock(pixels, a.dimensions, a.width, height, depth, a.format, a.type,
-                  unpackLayout(ctx), image.base, local);
+      unpackImageBlock(ctx, pixels, a.dimensions, a.width, height, depth, a.format, a.type,
+                       image.base, local);
       texels = &local;
     }
     for (int k = 0; k < depth; ++k) {
@@ -314,7 +359,11 @@ void texSubImage(Context& ctx, const TexSubImageArguments& a, const void* pixels
           const size_t from = (static_cast<size_t>(k) * static_cast<size_t>(height) +
                                static_cast<size_t>(j)) * static_cast<size_t>(a.width) +
                               static_cast<size_t>(i);
-          std::memcpy(image.texel(x, y, z), &(*texels)[from * 4], 4);
+          if (image.isDepth()) {
+            setDepthTexel(image, x, y, depthFromTexelBits(&(*texels)[from * 4]));
+          } else {
+            std::memcpy(image.texel(x, y, z), &(*texels)[from * 4], 4);
+          }
         }
       }
     }
@@ -340,8 +389,13 @@ void copyTexImage(Context& ctx, int dimensions, GLenum target, GLint level, GLen
     return recordError(ctx, e);
   if (!fitsLevel(level, w, h)) return recordError(ctx, GL_INVALID_VALUE);
   if (isCubeMapTarget(target) && w != h) return recordError(ctx, GL_INVALID_VALUE);
+  // A depth internal format copies the depth buffer (OpenGL 1.4, 3.8.2), into 1D and 2D
+  // textures only (3.8.1).
+  const bool depthImage = isDepthInternalFormat(format);
+  if (depthImage && !takesDepthImages(target)) return recordError(ctx, GL_INVALID_OPERATION);
   // No colour buffer to read from after glReadBuffer(GL_NONE), as for glReadPixels (Mesa too).
-  if (!readsColor(ctx.pixelTransfer.readBuffer)) return recordError(ctx, GL_INVALID_OPERATION);
+  if (!depthImage && !readsColor(ctx.pixelTransfer.readBuffer))
+    return recordError(ctx, GL_INVALID_OPERATION);
 
   const ImageTarget named = imageTarget(ctx, target);
   TextureObject& texture = *named.texture;
@@ -356,13 +410,20 @@ void copyTexImage(Context& ctx, int dimensions, GLenum target, GLint level, GLen
       image.height = h;
       image.texels.resize(static_cast<size_t>(w) * static_cast<size_t>(h) * 4);
       const int rowBorder = dimensions == 2 ? border : 0;
+      if (depthImage) allocateDepthImage(image, depthBitsOfInternalFormat(format));
       for (int j = 0; j < h; ++j) {
         for (int i = 0; i < w; ++i) {
+          if (depthImage) {
+            setDepthTexel(image, i, j, readFramebufferDepth(ctx, x + border + i, y + rowBorder + j));
+            continue;
+          }
           float rgba[4];
           readFramebufferPixel(ctx, x + border + i, y + rowBorder + j, rgba);
           storeTexel(base, rgba, image.texel(i, j));
         }
       }
+    } else if (depthImage) {
+      image.depthBits = depthBitsOfInternalFormat(format);
     }
     slot = std::move(image);
     afterBaseLevelChange(texture, named.face, level);
@@ -395,7 +456,8 @@ void copyTexSubImage(Context& ctx, int dimensions, GLenum target, GLint level, G
       yoffset < -rowBorder || yoffset + height > image.height + rowBorder ||
       zoffset < -sliceBorder || zoffset >= image.depth + sliceBorder)
     return recordError(ctx, GL_INVALID_VALUE);
-  if (!readsColor(ctx.pixelTransfer.readBuffer)) return recordError(ctx, GL_INVALID_OPERATION);
+  if (!image.isDepth() && !readsColor(ctx.pixelTransfer.readBuffer))
+    return recordError(ctx, GL_INVALID_OPERATION);
   // A border slice of a 3D image is not stored.
   if (zoffset < 0 || zoffset >= image.depth) return;
   for (int j = 0; j < height; ++j) {
@@ -404,6 +466,10 @@ void copyTexSubImage(Context& ctx, int dimensions, GLenum target, GLint level, G
     for (int i = 0; i < width; ++i) {
       const int tx = xoffset + i;
       if (tx < 0 || tx >= image.width) continue;
+      if (image.isDepth()) {  // the depth buffer (OpenGL 1.4, 3.8.2)
+        setDepthTexel(image, tx, ty, readFramebufferDepth(ctx, x + i, y + j));
+        continue;
+      }
       float rgba[4];
       readFramebufferPixel(ctx, x + i, y + j, rgba);
       storeTexel(image.base, rgba, image.texel(tx, ty, zoffset));

@@ -9,6 +9,7 @@
 #include "core/state_value.h"
 #include "texture/bump_mapping.h"
 #include "texture/cube_map.h"
+#include "texture/depth_comparison.h"
 #include "texture/texture_combine.h"
 #include "texture/texture_environment.h"
 #include "texture/texture_lod.h"
@@ -293,7 +294,8 @@ void applyTexturing(const Context& ctx, const raster::FragmentBatch& batch, int 
       sources.previous = color;
       applyCombine(env, sources, color);
     } else {
-      applyTextureEnvironment(env.mode, textures[u]->baseImage().base, texels[u], env.color, color);
+      applyTextureEnvironment(env.mode, environmentBaseFormat(*textures[u]), texels[u], env.color,
+                              color);
     }
   }
 }

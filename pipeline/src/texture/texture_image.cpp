@@ -66,6 +66,14 @@ bool baseFormatOfInternalFormat(GLint internalFormat, BaseFormat* base) {
     case GL_COMPRESSED_RGBA:
       *base = BaseFormat::RGBA;
       return true;
+    // Depth textures (OpenGL 1.4; depth_texture.h): the base format is the luminance layout
+    // their texels take by default; GL_DEPTH_TEXTURE_MODE decides what sampling sees.
+    case GL_DEPTH_COMPONENT:
+    case GL_DEPTH_COMPONENT16:
+    case GL_DEPTH_COMPONENT24:
+    case GL_DEPTH_COMPONENT32:
+      *base = BaseFormat::Luminance;
+      return true;
     default:
       return false;
   }

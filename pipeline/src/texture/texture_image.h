@@ -53,7 +53,14 @@ struct TextureImage {
   // stripped when the image is specified, as Mesa does; texels outside the image take the
   // border colour instead (docs/texturing.md).
   std::vector<uint8_t> texels;
+  // A DEPTH_COMPONENT image (OpenGL 1.4, 3.8.1; texture/depth_texture.h): the resolution of its
+  // depth values (16 or 24 bits), 0 for the colour formats. Its values, width * height of them
+  // in [0, 1] in the order of `texels`, are in `depths`; `texels` holds each at 8 bits in all
+  // four components, for the code that reads any image (mipmaps, glGetTexImage of colours).
+  int depthBits = 0;
+  std::vector<float> depths;
 
+  bool isDepth() const { return depthBits > 0; }
   bool defined() const { return width > 0 && height > 0 && depth > 0; }
   std::size_t texelIndex(int i, int j, int k) const {
     return (static_cast<std::size_t>(k) * static_cast<std::size_t>(height) +

@@ -62,10 +62,21 @@ void getTexImage(Context& ctx, GLenum target, GLint level, GLenum format, GLenum
   if (named.texture == nullptr || target == GL_TEXTURE_CUBE_MAP)
     return recordError(ctx, GL_INVALID_ENUM);
   if (level < 0 || level >= kMaxTextureLevels) return recordError(ctx, GL_INVALID_VALUE);
-  if (GLenum e = checkTexelFormatAndType(format, type); e != GL_NO_ERROR) return recordError(ctx, e);
+  const bool depthData = format == GL_DEPTH_COMPONENT;
+  if (GLenum e = depthData ? checkPixelFormatAndType(format, type) : checkTexelFormatAndType(format, type);
+      e != GL_NO_ERROR)
+    return recordError(ctx, e);
   const TextureImage& image = named.texture->image(named.face, level);
+  // OpenGL 1.4, 6.1.4: depth images are read as GL_DEPTH_COMPONENT and only they are.
+  if (image.defined() && depthData != image.isDepth()) return recordError(ctx, GL_INVALID_OPERATION);
   if (!image.defined() || pixels == nullptr) return;
   const PixelLayout layout = packLayout(ctx);
+  if (depthData) {
+    for (int j = 0; j < image.height; ++j)
+      packDepthSpan(&image.depths[image.texelIndex(0, j, 0)], image.width, image.width, 0, j, type,
+                    layout, pixels);
+    return;
+  }
   std::vector<float> row(static_cast<size_t>(image.width) * 4);
   // The slices of a 3D image follow each other GL_PACK_IMAGE_HEIGHT rows apart (or the image's
   // height when that is 0), after GL_PACK_SKIP_IMAGES slices (spec 6.1.4 and 3.8.1).
@@ -130,7 +141,10 @@ bool texLevelParameter(Context& ctx, GLenum target, GLint level, GLenum pname, d
     case GL_TEXTURE_BLUE_SIZE:
     case GL_TEXTURE_ALPHA_SIZE:
     case GL_TEXTURE_LUMINANCE_SIZE:
-    case GL_TEXTURE_INTENSITY_SIZE: *value = defined ? componentBits(image.base, pname) : 0; return true;
+    case GL_TEXTURE_INTENSITY_SIZE:
+      *value = defined && !image.isDepth() ? componentBits(image.base, pname) : 0;
+      return true;
+    case GL_TEXTURE_DEPTH_SIZE: *value = defined ? image.depthBits : 0; return true;
     case GL_TEXTURE_COMPRESSED: *value = 0; return true;
     default: recordError(ctx, GL_INVALID_ENUM); return false;
   }

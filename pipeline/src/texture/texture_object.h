@@ -24,6 +24,10 @@ struct SamplerParameters {
   int maxLevel = 1000;
   bool generateMipmap = false;
   float priority = 1.0f;
+  // Depth textures (OpenGL 1.4, 3.8.4 and 3.8.13; texture/depth_comparison.h).
+  GLenum compareMode = GL_NONE;           // GL_TEXTURE_COMPARE_MODE
+  GLenum compareFunc = GL_LEQUAL;         // GL_TEXTURE_COMPARE_FUNC
+  GLenum depthTextureMode = GL_LUMINANCE;  // GL_DEPTH_TEXTURE_MODE
 };
 
 // True for the four minification filters that use mipmaps.

@@ -39,7 +39,10 @@ int parameterSize(GLenum pname) {
     case GL_TEXTURE_LOD_BIAS:
     case GL_TEXTURE_BASE_LEVEL:
     case GL_TEXTURE_MAX_LEVEL:
-    case GL_GENERATE_MIPMAP: return 1;
+    case GL_GENERATE_MIPMAP:
+    case GL_TEXTURE_COMPARE_MODE:
+    case GL_TEXTURE_COMPARE_FUNC:
+    case GL_DEPTH_TEXTURE_MODE: return 1;
     case GL_TEXTURE_BORDER_COLOR: return 4;
     default: return 0;
   }
@@ -93,6 +96,21 @@ void texParameter(Context& ctx, GLenum target, GLenum pname, const std::array<do
     case GL_GENERATE_MIPMAP:
       p.generateMipmap = v[0] != 0.0;
       break;
+    // OpenGL 1.4, 3.8.4 (table 3.19); the functions beyond LEQUAL and GEQUAL are
+    // GL_EXT_shadow_funcs' (OpenGL 1.5).
+    case GL_TEXTURE_COMPARE_MODE:
+      if (e != GL_NONE && e != GL_COMPARE_R_TO_TEXTURE) return recordError(ctx, GL_INVALID_ENUM);
+      p.compareMode = e;
+      break;
+    case GL_TEXTURE_COMPARE_FUNC:
+      if (e < GL_NEVER || e > GL_ALWAYS) return recordError(ctx, GL_INVALID_ENUM);
+      p.compareFunc = e;
+      break;
+    case GL_DEPTH_TEXTURE_MODE:
+      if (e != GL_LUMINANCE && e != GL_INTENSITY && e != GL_ALPHA)
+        return recordError(ctx, GL_INVALID_ENUM);
+      p.depthTextureMode = e;
+      break;
     default: break;
   }
   texture->updateCompleteness();
@@ -129,6 +147,9 @@ bool getTexParameter(Context& ctx, GLenum target, GLenum pname, double out[4], i
     case GL_TEXTURE_BASE_LEVEL: out[0] = p.baseLevel; return true;
     case GL_TEXTURE_MAX_LEVEL: out[0] = p.maxLevel; return true;
     case GL_GENERATE_MIPMAP: out[0] = p.generateMipmap ? GL_TRUE : GL_FALSE; return true;
+    case GL_TEXTURE_COMPARE_MODE: out[0] = p.compareMode; return true;
+    case GL_TEXTURE_COMPARE_FUNC: out[0] = p.compareFunc; return true;
+    case GL_DEPTH_TEXTURE_MODE: out[0] = p.depthTextureMode; return true;
     default:
       recordError(ctx, GL_INVALID_ENUM);
       return false;

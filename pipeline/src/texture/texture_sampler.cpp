@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "texture/depth_comparison.h"
+
 namespace glass::gl {
 namespace {
 
@@ -69,10 +71,12 @@ struct LevelLookup {
   bool twoD;
   const float* border;  // the border texel, components in [0, 255]
   int slice = 0;        // the slice of a 3D image the 2D lookups read
+  const DepthLookup* depth = nullptr;  // a depth texture's values or comparisons
 };
 
 // Texel (i, j) with components in [0, 255] (the scale to [0, 1] is applied once per lookup).
 const float* fetchTexel(const LevelLookup& l, int i, int j, float scratch[4]) {
+  if (l.depth != nullptr) return depthTexel(*l.depth, *l.image, i, j, scratch);
   if (i < 0 || i >= l.image->width || j < 0 || j >= l.image->height) return l.border;
   const uint8_t* texel = l.image->texel(i, j, l.slice);
   for (int c = 0; c < 4; ++c) scratch[c] = static_cast<float>(texel[c]);
@@ -116,7 +120,7 @@ void sampleLinear(const LevelLookup& l, float s, float t, float out[4]) {
   wrapTexelPair(static_cast<int>(vFloor), height, l.wrapT, &j0, &j1);
   const float w00 = (1.0f - alpha) * (1.0f - beta), w10 = alpha * (1.0f - beta);
   const float w01 = (1.0f - alpha) * beta, w11 = alpha * beta;
-  if (i0 >= 0 && i1 >= 0 && j0 >= 0 && j1 >= 0 && i0 < width && i1 < width && j0 < height && j1 < height) {
+  if (l.depth == nullptr && i0 >= 0 && i1 >= 0 && j0 >= 0 && j1 >= 0 && i0 < width && i1 < width && j0 < height && j1 < height) {
     // All four texels inside the image (always so except near a CLAMP or CLAMP_TO_BORDER edge):
     // read the bytes directly.
     const uint8_t* p00 = l.image->texel(i0, j0, l.slice);
@@ -172,8 +176,11 @@ void sampleVolume(LevelLookup l, bool linear, float s, float t, float r, GLenum 
 
 void sampleLevel(const TextureObject& texture, int face, int level, bool linear, float s, float t,
                  float r, float out[4]) {
+  DepthLookup depth;
+  const bool isDepth = depthLookupOf(texture, r, &depth);
   const LevelLookup l{&texture.image(face, level), texture.params.wrapS, texture.params.wrapT,
-                      texture.target != GL_TEXTURE_1D, texture.sampling.border};
+                      texture.target != GL_TEXTURE_1D, texture.sampling.border, 0,
+                      isDepth ? &depth : nullptr};
   if (texture.target == GL_TEXTURE_3D) {
     sampleVolume(l, linear, s, t, r, texture.params.wrapR, out);
   } else if (linear) {

@@ -42,8 +42,10 @@ void drawPolygon(DrawPipeline& draw, const std::vector<PipelineVertex>& p) {
 
 // GL_QUADS: each quad v0 v1 v2 v3 with v3 provoking. Mesa splits the quads of a draw call along
 // v0-v2 when every vertex lies inside the clip volume and along v1-v3 when some vertex must be
-// clipped (its draw module takes a different path then). glass decides the same way for the
-// quads of one glBegin/glEnd, so that colours interpolate across quads as in Mesa.
+// clipped (its draw module takes a different path then), and along v1-v3 always for
+// glDrawElements and in display lists (their vertices reach the draw module indexed). glass
+// decides the same way for the quads of one glBegin/glEnd or draw call, so that colours
+// interpolate across quads as in Mesa (docs/pipeline.md, "How quads are split", has the numbers).
 void drawQuads(DrawPipeline& draw, const std::vector<PipelineVertex>& v, bool needsClipping) {
   for (size_t i = 0; i + 3 < v.size(); i += 4) {
     drawQuad(draw, v[i], v[i + 1], v[i + 2], v[i + 3], v[i + 3], needsClipping, v[i].edgeFlag,
@@ -159,7 +161,7 @@ void endPrimitive(Context& ctx) {
   } else if (pa.mode == GL_POLYGON) {
     drawPolygon(*ctx.draw, pa.pending);
   } else if (pa.mode == GL_QUADS) {
-    drawQuads(*ctx.draw, pa.pending, pa.pendingNeedsClipping);
+    drawQuads(*ctx.draw, pa.pending, pa.pendingNeedsClipping || ctx.lists.callDepth > 0);
   }
   pa.pending.clear();
   pa.active = false;

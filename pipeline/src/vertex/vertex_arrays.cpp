@@ -145,6 +145,8 @@ void drawArrayElements(Context& ctx, GLenum mode, const int* indices, int first,
     readElement(ctx.arrays, layout, indices ? indices[i] : first + i, values);
     applyElement(ctx, layout, values);
   }
+  // Indexed quads split along v1-v3, as Mesa's clipping path splits them (primitive_assembly.cpp).
+  if (indices != nullptr) ctx.assembly.pendingNeedsClipping = true;
   endCommand(ctx);
 }
 
