@@ -258,6 +258,9 @@ const TextureObject* singleTexture2D(const Context& ctx) {
   const TextureObject* texture = unit.activeTexture();
   if (texture == nullptr || texture->target != GL_TEXTURE_2D || unit.env.mode == GL_COMBINE)
     return nullptr;
+  // A depth texture's texel is a depth or the result of a comparison with r, and its environment
+  // uses GL_DEPTH_TEXTURE_MODE's base format (texture/depth_comparison.h): the reference path.
+  if (texture->baseImage().isDepth()) return nullptr;
   return texture;
 }
 
