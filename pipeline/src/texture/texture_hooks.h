@@ -50,8 +50,8 @@ bool needsLevelOfDetail(const TextureObject& texture);
 float quadLevelOfDetail(const Context& ctx, const TextureObject& texture, int slot, float unitBias,
                         const raster::AttributePlanes& planes, int x, int y);
 // For the fragment stage's fast kernels (fragment/block_kernels.h): when texturing is exactly one
-// complete colour (not depth) 2D texture on unit 0 with a texture environment other than GL_COMBINE and no bump
-// mapping, that texture; then applyTexturing amounts to sampleTexture (texture_sampler.h) at
+// complete colour (not depth) 2D texture on unit 0 with a texture environment other than
+// GL_COMBINE and no bump mapping, that texture; then applyTexturing amounts to sampleTexture (texture_sampler.h) at
 // (s/q, t/q) with quadLevelOfDetail's lambda (or sampleTextureMagnified when the texture needs
 // no level of detail), then applyTextureEnvironment with unit 0's environment. Null otherwise.
 const TextureObject* singleTexture2D(const Context& ctx);
