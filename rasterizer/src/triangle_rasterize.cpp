@@ -29,7 +29,7 @@
 // hidden, and the divisions of perspective-correct interpolation are the costliest part.
 #include <algorithm>
 
-#include "depth_value.h"
+#include "glass/raster/depth_value.h"
 #include "edge_functions.h"
 #include "glass/raster/framebuffer.h"
 #include "glass/raster/triangle.h"

@@ -2,21 +2,15 @@
 // of window systems (resizing, the flush callback).
 #include <glass/context.h>
 
-#include <memory>
 #include <new>
-
-#include "api/flush_callback.h"
 
 #include "core/context.h"
 #include "core/png_writer.h"
 #include "core/transform_state.h"
-#include "primitive/draw_pipeline.h"
 #include "primitive/queued_drawing.h"
 
 struct GlassContext {
   glass::gl::Context gl;
-  GlassFlushCallback flushCallback = nullptr;
-  void* flushUserData = nullptr;
   GlassContext(int width, int height) : gl(width, height) {}
 };
 
@@ -72,18 +66,9 @@ int glassResizeContext(GlassContext* ctx, int width, int height) {
       height > glass::gl::kMaxViewportSize) {
     return 0;
   }
-  glass::gl::Context& gl = ctx->gl;
-  glass::gl::finishQueuedDrawing(gl);
   try {
-    // Both are built before either replaces the old one, so that running out of memory leaves
-    // the context as it was. The draw pipeline's tiles cover the framebuffer it was made for.
-    glass::raster::Framebuffer resized(width, height);
-    std::vector<int16_t> noAccumulation;  // allocated again, at the new size, when next used
-    gl.framebuffer = std::move(resized);
-    auto draw = std::make_unique<glass::gl::DrawPipeline>(gl);
-    gl.draw = std::move(draw);
-    gl.accumulation.buffer.swap(noAccumulation);
-  } catch (const std::bad_alloc&) {
+    glass::gl::resizeFramebuffer(ctx->gl, width, height);
+  } catch (...) {  // no memory, or no threads for the rasterizer: the context is as it was
     return 0;
   }
   return 1;
@@ -91,15 +76,13 @@ int glassResizeContext(GlassContext* ctx, int width, int height) {
 
 void glassSetFlushCallback(GlassContext* ctx, GlassFlushCallback callback, void* userData) {
   if (!ctx) return;
-  ctx->flushCallback = callback;
-  ctx->flushUserData = userData;
+  if (!callback) {
+    ctx->gl.afterFlush = nullptr;
+    return;
+  }
+  ctx->gl.afterFlush = [ctx, callback, userData](glass::gl::Context&) { callback(ctx, userData); };
 }
 
 int glassWritePixelsPNG(const char* path, int width, int height, const unsigned char* rgba) {
   return glass::gl::writeRGBAPixelsPNG(rgba, width, height, path) ? 1 : 0;
-}
-
-void glass::gl::runFlushCallback() {
-  GlassContext* ctx = currentGlassContext;
-  if (ctx && ctx->flushCallback) ctx->flushCallback(ctx, ctx->flushUserData);
 }

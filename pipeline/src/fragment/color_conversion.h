@@ -23,6 +23,4 @@ inline uint8_t floatToColorByte(float c) {
   return static_cast<uint8_t>(std::bit_cast<uint32_t>(sum) & 0xFFu);
 }
 
-inline float colorByteToFloat(uint8_t c) { return static_cast<float>(c) * (1.0f / 255.0f); }
-
 }  // namespace glass::gl

@@ -1,4 +1,6 @@
-// Conversion of window depth in [0, 1] to the 24-bit depth buffer value.
+// Conversion of window depth in [0, 1] to the 24-bit depth buffer value: the one rounding that
+// fragments, glClear(GL_DEPTH_BUFFER_BIT) and glDrawPixels(GL_DEPTH_COMPONENT) share, so that a
+// fragment at the clear depth compares equal with the cleared buffer.
 #pragma once
 
 #include <cstdint>
