@@ -1,8 +1,11 @@
 // Output, camera and transform statements.
 #include "interpret/executor.h"
 
+#include "glass/scene/render.h"
+
 #include <glass/geometry/quaternion.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace glass::scene {
@@ -16,6 +19,25 @@ template <typename F> void setProjection(F &&multiply) {
   glLoadIdentity();
   multiply();
   glMatrixMode(GL_MODELVIEW);
+}
+
+double viewportAspect() {
+  GLint viewport[4] = {0, 0, 1, 1};
+  glGetIntegerv(GL_VIEWPORT, viewport);
+  return viewport[3] > 0 ? static_cast<double>(viewport[2]) / viewport[3] : 1.0;
+}
+
+// The viewer's projection (glass view) in place of the scene's.
+void setViewerProjection(const ViewCamera &camera) {
+  const double aspect = viewportAspect();
+  setProjection([&] {
+    if (camera.orthographic) {
+      glOrtho(-camera.halfHeight * aspect, camera.halfHeight * aspect, -camera.halfHeight,
+              camera.halfHeight, camera.zNear, camera.zFar);
+    } else {
+      gluPerspective(camera.fovy, aspect, camera.zNear, camera.zFar);
+    }
+  });
 }
 
 } // namespace
@@ -46,28 +68,30 @@ void Interpreter::Executor::run(const Clear &s) {
 }
 
 void Interpreter::Executor::run(const Perspective &s) {
-  double aspect = 0.0;
-  if (s.aspect) {
-    aspect = value(*s.aspect);
-  } else {
-    // `auto`: the aspect ratio of the current viewport, as a reshape function computes it.
-    GLint viewport[4] = {0, 0, 1, 1};
-    glGetIntegerv(GL_VIEWPORT, viewport);
-    aspect = viewport[3] > 0 ? static_cast<double>(viewport[2]) / viewport[3] : 1.0;
-  }
+  // `auto`: the aspect ratio of the current viewport, as a reshape function computes it.
+  const double aspect = s.aspect ? value(*s.aspect) : viewportAspect();
   double fovy = value(s.fovy), zNear = value(s.zNear), zFar = value(s.zFar);
   if (!(fovy > 0.0 && fovy < 180.0)) fail("the field of view must be between 0 and 180 degrees");
   if (!(zNear > 0.0 && zFar > zNear)) fail("perspective needs 0 < near < far");
+  if (SceneCamera *seen = options_.sceneCamera; seen && !seen->hasPerspective) {
+    seen->hasPerspective = true;
+    seen->fovy = fovy;
+    seen->zNear = zNear;
+    seen->zFar = zFar;
+  }
+  if (options_.camera) return setViewerProjection(*options_.camera);
   setProjection([&] { gluPerspective(fovy, aspect, zNear, zFar); });
 }
 
 void Interpreter::Executor::run(const Frustum &s) {
   std::vector<double> p = values(s.planes);
+  if (options_.camera) return setViewerProjection(*options_.camera);
   setProjection([&] { glFrustum(p[0], p[1], p[2], p[3], p[4], p[5]); });
 }
 
 void Interpreter::Executor::run(const Ortho &s) {
   std::vector<double> p = values(s.planes);
+  if (options_.camera) return setViewerProjection(*options_.camera);
   if (p.size() == 4) {
     setProjection([&] { gluOrtho2D(p[0], p[1], p[2], p[3]); });
   } else {
@@ -77,6 +101,15 @@ void Interpreter::Executor::run(const Ortho &s) {
 
 void Interpreter::Executor::run(const LookAt &s) {
   std::vector<double> v = values(s.values);
+  if (SceneCamera *seen = options_.sceneCamera; seen && !seen->hasLookAt) {
+    seen->hasLookAt = true;
+    std::copy(v.begin(), v.begin() + 9, seen->lookAt);
+  }
+  if (const ViewCamera *c = options_.camera) {
+    gluLookAt(c->eye[0], c->eye[1], c->eye[2], c->centre[0], c->centre[1], c->centre[2], c->up[0],
+              c->up[1], c->up[2]);
+    return;
+  }
   gluLookAt(v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7], v[8]);
 }
 

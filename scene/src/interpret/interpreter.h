@@ -13,6 +13,8 @@
 namespace glass::scene {
 
 class VertexTracer;
+struct ViewCamera;
+struct SceneCamera;
 
 struct InterpreterOptions {
   // Pixel measures in the scene (viewport, scissor, line width, point size) are in pixels of the
@@ -28,6 +30,10 @@ struct InterpreterOptions {
   // instance (the vertex trace needs to see every vertex).
   bool compileDefinitions = true;
   VertexTracer *tracer = nullptr;
+  // glass view: the viewer's camera replaces the scene's lookat and projection; the scene's own
+  // camera is reported (glass/scene/render.h).
+  const ViewCamera *camera = nullptr;
+  SceneCamera *sceneCamera = nullptr;
   // Where warnings about the GL go (a missing extension); null: into the diagnostics only.
 };
 

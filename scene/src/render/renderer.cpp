@@ -68,6 +68,8 @@ bool renderFrame(const Program &program, int frame, const RenderOptions &options
   interpreterOptions.countOverdraw = options.view == View::Overdraw;
   interpreterOptions.tracer = options.traceVertex >= 0 ? &tracer : nullptr;
   interpreterOptions.compileDefinitions = options.traceVertex < 0;
+  interpreterOptions.camera = options.camera;
+  interpreterOptions.sceneCamera = options.sceneCamera;
   Interpreter interpreter(program, interpreterOptions);
   if (!interpreter.drawFrame(frame, diagnostics)) return false;
 

@@ -17,6 +17,24 @@ enum class View {
   Wireframe, // every polygon in line mode
 };
 
+// An interactive viewer's camera (glass view): when given, it replaces the scene's `lookat` and
+// its projection statements (`perspective`, `frustum`, `ortho`), which the frame otherwise runs.
+struct ViewCamera {
+  double eye[3] = {0, 0, 5}, centre[3] = {0, 0, 0}, up[3] = {0, 1, 0};
+  bool orthographic = false;
+  double fovy = 45.0;      // perspective: the vertical field of view in degrees
+  double halfHeight = 1.0; // orthographic: half the height of the view volume
+  double zNear = 0.1, zFar = 100.0;
+};
+
+// The scene's own camera as the frame ran it: its first `lookat` and `perspective`.
+struct SceneCamera {
+  bool hasLookAt = false;
+  double lookAt[9] = {};  // eye, centre, up
+  bool hasPerspective = false;
+  double fovy = 0.0, zNear = 0.0, zFar = 0.0;
+};
+
 struct RenderOptions {
   int width = 0, height = 0; // 0: the scene's `size`
   // Supersampling: the frame is drawn at supersample times the size in each direction and each
@@ -24,6 +42,8 @@ struct RenderOptions {
   int supersample = 1;
   View view = View::Color;
   long traceVertex = -1; // >= 0: follow that vertex through the pipeline
+  const ViewCamera *camera = nullptr; // the viewer's camera instead of the scene's
+  SceneCamera *sceneCamera = nullptr; // filled with the scene's camera when not null
 };
 
 struct RenderedFrame {

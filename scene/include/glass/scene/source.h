@@ -45,6 +45,12 @@ private:
 class SourceSet {
 public:
   const SourceFile &add(std::string path, std::string text, SourceLocation includedFrom = {});
+  // The paths of the files read, the scene first (glass view watches them for changes).
+  std::vector<std::string> paths() const {
+    std::vector<std::string> result;
+    for (const auto &file : files_) result.push_back(file->path());
+    return result;
+  }
 
 private:
   std::deque<std::unique_ptr<SourceFile>> files_;
