@@ -27,3 +27,14 @@ else()
 endif()
 configure_file(${PROJECT_SOURCE_DIR}/cmake/glass.pc.in ${PROJECT_BINARY_DIR}/glass.pc @ONLY)
 install(FILES ${PROJECT_BINARY_DIR}/glass.pc DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig)
+
+# GLUT's names (libglut.so.3, glut.pc) under the same prefix.
+include(${PROJECT_SOURCE_DIR}/cmake/glut_install.cmake)
+
+# Installed programs and libraries find glass's libraries relative to their own place ($ORIGIN),
+# so that an installed glass runs from any prefix without LD_LIBRARY_PATH.
+file(RELATIVE_PATH bin_to_lib "/${CMAKE_INSTALL_BINDIR}" "/${CMAKE_INSTALL_LIBDIR}")
+set_target_properties(glass PROPERTIES INSTALL_RPATH "$ORIGIN/${bin_to_lib}")
+set_target_properties(glass_gl PROPERTIES INSTALL_RPATH "$ORIGIN")
+
+include(${PROJECT_SOURCE_DIR}/cmake/osmesa.cmake)  # the libOSMesa.so.8 and libGLU.so.1 names

@@ -1,14 +1,14 @@
 /* Every entry point a classic OpenGL 1.x program may call, taken by address: if glass lacks one,
  * this program fails to link. The lists are those of the OpenGL 1.1-1.3 headers (the 1.1
  * specification's 336 commands, OpenGL 1.2 with the imaging subset, OpenGL 1.3 and
- * GL_ARB_multitexture), OpenGL 1.4 (as <GL/glext.h> declares it), GLU 1.3, and GLUT's geometry
- * and fonts (GLUT 3.7 and freeglut's additions). The README says which of them glass implements fully and
+ * GL_ARB_multitexture), OpenGL 1.4 (as <GL/glext.h> declares it), GLU 1.3, and GLUT's windows,
+ * menus, callbacks, geometry and fonts (GLUT 3.7 and freeglut's additions). The README says which of them glass implements fully and
  * what the others do.
  *
  * The program also checks that no address is null and prints the count per list. */
 #include <GL/gl.h>
 #include <GL/glu.h>
-#include <GL/glut.h>
+#include <GL/freeglut.h>
 
 #include <stdio.h>
 
@@ -628,6 +628,84 @@ static const struct Entry entries[] = {
   ENTRY(glutStrokeLengthf),
   ENTRY(glutStrokeHeight),
   ENTRY(glutStrokeString),
+  /* GLUT 3.7 windows, menus, callbacks and state (59) */
+  ENTRY(glutInit),
+  ENTRY(glutInitWindowPosition),
+  ENTRY(glutInitWindowSize),
+  ENTRY(glutInitDisplayMode),
+  ENTRY(glutMainLoop),
+  ENTRY(glutCreateWindow),
+  ENTRY(glutDestroyWindow),
+  ENTRY(glutSetWindow),
+  ENTRY(glutGetWindow),
+  ENTRY(glutSetWindowTitle),
+  ENTRY(glutSetIconTitle),
+  ENTRY(glutReshapeWindow),
+  ENTRY(glutPositionWindow),
+  ENTRY(glutShowWindow),
+  ENTRY(glutHideWindow),
+  ENTRY(glutIconifyWindow),
+  ENTRY(glutPushWindow),
+  ENTRY(glutPopWindow),
+  ENTRY(glutFullScreen),
+  ENTRY(glutPostWindowRedisplay),
+  ENTRY(glutPostRedisplay),
+  ENTRY(glutSwapBuffers),
+  ENTRY(glutWarpPointer),
+  ENTRY(glutSetCursor),
+  ENTRY(glutCreateMenu),
+  ENTRY(glutDestroyMenu),
+  ENTRY(glutGetMenu),
+  ENTRY(glutSetMenu),
+  ENTRY(glutAddMenuEntry),
+  ENTRY(glutAddSubMenu),
+  ENTRY(glutChangeToMenuEntry),
+  ENTRY(glutChangeToSubMenu),
+  ENTRY(glutRemoveMenuItem),
+  ENTRY(glutAttachMenu),
+  ENTRY(glutDetachMenu),
+  ENTRY(glutTimerFunc),
+  ENTRY(glutIdleFunc),
+  ENTRY(glutKeyboardFunc),
+  ENTRY(glutSpecialFunc),
+  ENTRY(glutReshapeFunc),
+  ENTRY(glutVisibilityFunc),
+  ENTRY(glutDisplayFunc),
+  ENTRY(glutMouseFunc),
+  ENTRY(glutMotionFunc),
+  ENTRY(glutPassiveMotionFunc),
+  ENTRY(glutEntryFunc),
+  ENTRY(glutKeyboardUpFunc),
+  ENTRY(glutSpecialUpFunc),
+  ENTRY(glutMenuStateFunc),
+  ENTRY(glutMenuStatusFunc),
+  ENTRY(glutWindowStatusFunc),
+  ENTRY(glutGet),
+  ENTRY(glutDeviceGet),
+  ENTRY(glutGetModifiers),
+  ENTRY(glutLayerGet),
+  ENTRY(glutExtensionSupported),
+  ENTRY(glutIgnoreKeyRepeat),
+  ENTRY(glutSetKeyRepeat),
+  ENTRY(glutReportErrors),
+  /* freeglut's additions to them (17) */
+  ENTRY(glutMainLoopEvent),
+  ENTRY(glutLeaveMainLoop),
+  ENTRY(glutExit),
+  ENTRY(glutFullScreenToggle),
+  ENTRY(glutLeaveFullScreen),
+  ENTRY(glutMouseWheelFunc),
+  ENTRY(glutPositionFunc),
+  ENTRY(glutCloseFunc),
+  ENTRY(glutWMCloseFunc),
+  ENTRY(glutMenuDestroyFunc),
+  ENTRY(glutSetOption),
+  ENTRY(glutGetWindowData),
+  ENTRY(glutSetWindowData),
+  ENTRY(glutGetMenuData),
+  ENTRY(glutSetMenuData),
+  ENTRY(glutInitErrorFunc),
+  ENTRY(glutInitWarningFunc),
 };
 
 int main(void)

@@ -9,7 +9,7 @@
  *    glass shares with the system headers is the same. */
 #include <GL/gl.h>
 #include <GL/glu.h>
-#include <GL/glut.h>
+#include <GL/freeglut.h>
 
 #include "system_enum_names.h"
 

@@ -2,17 +2,13 @@
 # program.c the two ways a user would:
 #   1. cc program.c $(pkg-config --cflags --libs glass), with PKG_CONFIG_PATH into the prefix; its
 #      <GL/gl.h>, <GL/glu.h> and <glass/context.h> must come from the prefix;
-#   2. a CMake project with find_package(glass) linking glass::gl (consumer/).
-# Variables: BUILD_DIR, SOURCE_DIR (tests/install), WORK_DIR (scratch), C_COMPILER.
+#   2. a CMake project with find_package(glass) linking glass::gl (consumer/);
+# and runs the installed glass command with an empty environment (3).
+# Variables: BUILD_DIR, SOURCE_DIR (tests/install), WORK_DIR (scratch), C_COMPILER, BIN_DIR (the
+# install's bin directory, relative to the prefix), SCENE (a scene to render).
 cmake_minimum_required(VERSION 3.25)
 
-function(run description)
-  execute_process(COMMAND ${ARGN} RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  if(NOT status EQUAL 0)
-    message(FATAL_ERROR "${description} failed (${status}):\n${out}${err}")
-  endif()
-  set(output "${out}" PARENT_SCOPE)
-endfunction()
+include(${SOURCE_DIR}/../script_steps.cmake)  # run()
 
 set(prefix ${WORK_DIR}/prefix)
 file(REMOVE_RECURSE ${WORK_DIR})
@@ -61,3 +57,12 @@ run("configuring the find_package(glass) project"
 run("building the find_package(glass) project" ${CMAKE_COMMAND} --build ${WORK_DIR}/consumer)
 run("the program built with find_package(glass)" ${WORK_DIR}/consumer/consumer)
 message(STATUS "find_package build: ${output}")
+
+# 3. The installed glass command, with an empty environment (no LD_LIBRARY_PATH): its run path
+#    ($ORIGIN-relative, cmake/install.cmake) finds the installed libglass.
+run("the installed glass command with an empty environment"
+    env -i ${prefix}/${BIN_DIR}/glass render ${SCENE} -o ${WORK_DIR}/scene.png --size 64x48)
+if(NOT EXISTS ${WORK_DIR}/scene.png)
+  message(FATAL_ERROR "the installed glass command wrote no picture")
+endif()
+message(STATUS "installed glass command: rendered ${SCENE}")

@@ -53,6 +53,26 @@ GLASS_API int glassGetHeight(const GlassContext *ctx);
  * rows packed without padding. Valid until the context is destroyed. NULL for a NULL context. */
 GLASS_API const unsigned char *glassGetColorBuffer(const GlassContext *ctx);
 
+/* For window systems (glass's GLUT): the hooks a window needs to show a context's picture. */
+
+/* Gives the framebuffer a new size, as a window's resize does; GL state (matrices, viewport,
+ * lights, textures, lists) is kept, the viewport included (a GLUT reshape sets it), and the
+ * colour, depth, stencil and accumulation buffers start again cleared to zero. 1 on success; 0 on
+ * a NULL context, a size outside 1 to 16384 or no memory, and then nothing changed. */
+GLASS_API int glassResizeContext(GlassContext *ctx, int width, int height);
+
+/* Called on the calling thread after glFlush or glFinish has put every queued draw of ctx into
+ * its colour buffer (not after a call refused between glBegin and glEnd), with ctx current:
+ * a single-buffered window shows its picture there. NULL removes it. One callback per context. */
+typedef void (*GlassFlushCallback)(GlassContext *ctx, void *userData);
+GLASS_API void glassSetFlushCallback(GlassContext *ctx, GlassFlushCallback callback, void *userData);
+
+/* Writes width * height RGBA8 pixels (bottom row first, rows packed, as glassGetColorBuffer gives
+ * them) as an RGB PNG, whole or not at all, as glassWritePNG does; 1 on success. For a copy of a
+ * picture kept after the context drew on. */
+GLASS_API int glassWritePixelsPNG(const char *path, int width, int height,
+                                  const unsigned char *rgba);
+
 #ifdef __cplusplus
 }
 #endif

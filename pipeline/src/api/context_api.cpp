@@ -1,7 +1,10 @@
-// glass/context.h: creating offscreen contexts, making them current, writing PNGs.
+// glass/context.h: creating offscreen contexts, making them current, writing PNGs, and the hooks
+// of window systems (resizing, the flush callback).
 #include <glass/context.h>
 
 #include <new>
+
+#include "api/flush_callback.h"
 
 #include "core/context.h"
 #include "core/png_writer.h"
@@ -10,6 +13,8 @@
 
 struct GlassContext {
   glass::gl::Context gl;
+  GlassFlushCallback flushCallback = nullptr;
+  void* flushUserData = nullptr;
   GlassContext(int width, int height) : gl(width, height) {}
 };
 
@@ -58,4 +63,32 @@ const unsigned char* glassGetColorBuffer(const GlassContext* ctx) {
   // GL state, so the context stays logically const.
   glass::gl::finishQueuedDrawing(const_cast<GlassContext*>(ctx)->gl);
   return ctx->gl.framebuffer.colorAt(0, 0);
+}
+
+int glassResizeContext(GlassContext* ctx, int width, int height) {
+  if (!ctx || width <= 0 || height <= 0 || width > glass::gl::kMaxViewportSize ||
+      height > glass::gl::kMaxViewportSize) {
+    return 0;
+  }
+  try {
+    glass::gl::resizeFramebuffer(ctx->gl, width, height);
+  } catch (...) {  // no memory, or no threads for the rasterizer: the context is as it was
+    return 0;
+  }
+  return 1;
+}
+
+void glassSetFlushCallback(GlassContext* ctx, GlassFlushCallback callback, void* userData) {
+  if (!ctx) return;
+  ctx->flushCallback = callback;
+  ctx->flushUserData = userData;
+}
+
+int glassWritePixelsPNG(const char* path, int width, int height, const unsigned char* rgba) {
+  return glass::gl::writeRGBAPixelsPNG(rgba, width, height, path) ? 1 : 0;
+}
+
+void glass::gl::runFlushCallback() {
+  GlassContext* ctx = currentGlassContext;
+  if (ctx && ctx->flushCallback) ctx->flushCallback(ctx, ctx->flushUserData);
 }

@@ -90,8 +90,8 @@ void glEndList(void) {
     if (rejectInsideBeginEnd(ctx)) return;
     if (!ctx.lists.isCompiling()) return recordError(ctx, GL_INVALID_OPERATION);
     // The new list replaces the old one of that name only now (spec 5.4).
-    ctx.lists.lists[ctx.lists.compilingName] =
-        std::shared_ptr<const glass::gl::DisplayList>(std::move(ctx.lists.compiling));
+    ctx.lists.lists->replace(ctx.lists.compilingName,
+                             std::shared_ptr<const glass::gl::DisplayList>(std::move(ctx.lists.compiling)));
     ctx.lists.compilingName = 0;
   });
 }
@@ -126,17 +126,14 @@ void glDeleteLists(GLuint list, GLsizei range) {
   executeNow([=](Context& ctx) {
     if (rejectInsideBeginEnd(ctx)) return;
     if (range < 0) return recordError(ctx, GL_INVALID_VALUE);
-    auto& lists = ctx.lists.lists;
-    const unsigned long long end = static_cast<unsigned long long>(list) + static_cast<unsigned>(range);
-    lists.erase(lists.lower_bound(list),
-                end > 0xFFFFFFFFull ? lists.end() : lists.lower_bound(static_cast<GLuint>(end)));
+    ctx.lists.lists->erase(list, static_cast<unsigned long long>(list) + static_cast<unsigned>(range));
   });
 }
 
 GLboolean glIsList(GLuint list) {
   return queryNow(GLboolean(GL_FALSE), [=](Context& ctx) -> GLboolean {
     if (rejectInsideBeginEnd(ctx)) return GL_FALSE;
-    return ctx.lists.lists.count(list) ? GL_TRUE : GL_FALSE;
+    return ctx.lists.lists->contains(list) ? GL_TRUE : GL_FALSE;
   });
 }
 

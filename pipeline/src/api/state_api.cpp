@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 
+#include "api/flush_callback.h"
 #include "core/capabilities.h"
 #include "core/context.h"
 #include "core/gl_strings.h"
@@ -145,15 +146,22 @@ void glHint(GLenum target, GLenum mode) {
 // Draws are queued and rasterized later (primitive/queued_drawing.h). Both commands rasterize
 // what is queued and return when it is in the framebuffer: glFinish must (spec 5.5), and glFlush,
 // which need only start it, does the same, since nothing else would start it in finite time.
-void glFinish(void) {
-  executeNow([](Context& ctx) {
-    if (!rejectInsideBeginEnd(ctx)) glass::gl::finishQueuedDrawing(ctx);
+// Then a window system's flush callback may show the picture (a single-buffered GLUT window), or
+// an embedding that shows the framebuffer elsewhere copy it there (OSMesa's caller's buffer).
+namespace {
+void finishAndRunFlushCallback() {
+  bool finished = false;
+  executeNow([&finished](Context& ctx) {
+    if (rejectInsideBeginEnd(ctx)) return;
+    glass::gl::finishQueuedDrawing(ctx);
+    if (ctx.afterFlush) ctx.afterFlush(ctx);
+    finished = true;
   });
+  if (finished) glass::gl::runFlushCallback();
 }
-void glFlush(void) {
-  executeNow([](Context& ctx) {
-    if (!rejectInsideBeginEnd(ctx)) glass::gl::finishQueuedDrawing(ctx);
-  });
-}
+}  // namespace
+
+void glFinish(void) { finishAndRunFlushCallback(); }
+void glFlush(void) { finishAndRunFlushCallback(); }
 
 }  // extern "C"

@@ -1,6 +1,7 @@
 #include "core/context.h"
 
 #include "primitive/draw_pipeline.h"
+#include "primitive/queued_drawing.h"
 
 namespace glass::gl {
 
@@ -12,6 +13,20 @@ Context::Context(int width, int height)
 }
 
 Context::~Context() = default;
+
+void resizeFramebuffer(Context& ctx, int width, int height) {
+  finishQueuedDrawing(ctx);
+  // The draw pipeline's tiles cover the framebuffer it is made for: it is made again after.
+  raster::Framebuffer resized(width, height);
+  std::swap(ctx.framebuffer, resized);
+  try {
+    ctx.draw = std::make_unique<DrawPipeline>(ctx);
+  } catch (...) {
+    std::swap(ctx.framebuffer, resized);
+    throw;
+  }
+  std::vector<int16_t>().swap(ctx.accumulation.buffer);
+}
 
 namespace {
 thread_local Context* current = nullptr;

@@ -3,6 +3,7 @@
 // current context with currentContext() and do nothing when there is none.
 #pragma once
 
+#include <functional>
 #include <memory>
 
 #include "accum/accumulation_state.h"
@@ -84,7 +85,18 @@ struct Context {
 
   raster::Framebuffer framebuffer;
   std::unique_ptr<DrawPipeline> draw;
+
+  // Set by an embedding that shows the framebuffer elsewhere (an OSMesa context copies it into
+  // the caller's buffer, pipeline/src/osmesa/): called by glFlush and glFinish once the queued
+  // drawing is in the framebuffer.
+  std::function<void(Context&)> afterFlush;
 };
+
+// Gives the context a framebuffer of another size (OSMesaMakeCurrent to a buffer of another
+// size), after finishing the queued drawing. The new colour, depth and stencil buffers hold
+// zeros and the accumulation buffer is allocated again when next used; GL state, the viewport
+// included, is unchanged. Throws (std::bad_alloc, std::system_error for the threads), leaving the context as it was.
+void resizeFramebuffer(Context& ctx, int width, int height);
 
 // The context current on the calling thread (glassMakeCurrent), or nullptr.
 Context* currentContext();

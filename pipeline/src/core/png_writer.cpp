@@ -33,14 +33,18 @@ void writeToFile(void* file, void* data, int size) {
 }  // namespace
 
 bool writeColorBufferPNG(const raster::Framebuffer& fb, const char* path) {
-  if (!path || !*path) return false;
-  const int width = fb.width(), height = fb.height();
+  return writeRGBAPixelsPNG(fb.colorAt(0, 0), fb.width(), fb.height(), path);
+}
+
+bool writeRGBAPixelsPNG(const unsigned char* rgba, int width, int height, const char* path) {
+  if (!path || !*path || !rgba || width <= 0 || height <= 0) return false;
   const size_t rowBytes = static_cast<size_t>(width) * 3;
   std::vector<unsigned char> rgb(rowBytes * static_cast<size_t>(height));
   for (int y = 0; y < height; ++y) {
     // GL's row 0 is the bottom row; a PNG starts with the top row.
     unsigned char* out = rgb.data() + static_cast<size_t>(height - 1 - y) * rowBytes;
-    for (int x = 0; x < width; ++x) std::memcpy(out + 3 * x, fb.colorAt(x, y), 3);
+    const unsigned char* in = rgba + static_cast<size_t>(y) * width * 4;
+    for (int x = 0; x < width; ++x) std::memcpy(out + 3 * x, in + 4 * x, 3);
   }
 
   // The temporary file sits next to the target so that rename() replaces it atomically.

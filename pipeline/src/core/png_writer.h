@@ -10,4 +10,8 @@ namespace glass::gl {
 // temporary file is removed and path is untouched. Returns false on failure.
 bool writeColorBufferPNG(const raster::Framebuffer& framebuffer, const char* path);
 
+// The same for width * height RGBA8 pixels, bottom row first, rows packed (a copy of a colour
+// buffer).
+bool writeRGBAPixelsPNG(const unsigned char* rgba, int width, int height, const char* path);
+
 }  // namespace glass::gl

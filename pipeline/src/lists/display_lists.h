@@ -11,6 +11,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <mutex>
 #include <vector>
 
 namespace glass::gl {
@@ -26,10 +27,28 @@ struct DisplayList {
 // GL_MAX_LIST_NESTING: glCallList beyond this depth does nothing (spec 5.4).
 inline constexpr int kMaxListNesting = 64;
 
+// Name -> list. A name reserved by glGenLists holds an empty list. Lists are shared pointers so
+// that a list being executed stays alive even if it is replaced meanwhile. Contexts created to
+// share display lists (OSMesaCreateContext's sharelist) hold the same table, possibly on different
+// threads at once: each operation locks it, so each is whole.
+class ListTable {
+ public:
+  std::shared_ptr<const DisplayList> find(GLuint name) const;
+  bool contains(GLuint name) const;
+  void replace(GLuint name, std::shared_ptr<const DisplayList> list);
+  // Deletes the names in [first, end).
+  void erase(GLuint first, unsigned long long end);
+  // glGenLists: the first `count` consecutive unused names after 0, reserved with empty lists;
+  // 0 when there are none.
+  GLuint reserve(GLuint count);
+
+ private:
+  mutable std::mutex mutex_;
+  std::map<GLuint, std::shared_ptr<const DisplayList>> lists_;
+};
+
 struct DisplayListState {
-  // Name -> list. A name reserved by glGenLists holds an empty list. Lists are shared pointers so
-  // that a list being executed stays alive even if it is replaced meanwhile.
-  std::map<GLuint, std::shared_ptr<const DisplayList>> lists;
+  std::shared_ptr<ListTable> lists = std::make_shared<ListTable>();
 
   // The list being compiled between glNewList and glEndList: it replaces the old list of that
   // name only at glEndList.

@@ -1,0 +1,174 @@
+#!/bin/sh
+# GLUT programs run headless (SDL_VIDEODRIVER=dummy, set by ctest) with GLASS_GLUT_SNAPSHOT and
+# GLASS_GLUT_EVENTS, their snapshots checked with png_probe (pixel coordinates from the top left).
+#   glut_tests.sh CASE BIN_DIR WORK_DIR SOURCE_DIR
+set -eu
+
+case_name=$1
+bin=$2
+work=$3
+rm -rf "$work"
+mkdir -p "$work"
+cd "$work"
+
+probe() { "$bin/glut_png_probe" "$@"; }
+
+fail() {
+  echo "FAIL: $*" >&2
+  exit 1
+}
+
+# run PROGRAM EVENTS-TEXT [ARGS...]: the program with the events (may be empty) and
+# GLASS_GLUT_SNAPSHOT=snapshot.png; its stdout in out.txt, stderr in err.txt; the status in $status.
+run() {
+  program=$1
+  printf '%s' "$2" >events.txt
+  shift 2
+  status=0
+  GLASS_GLUT_SNAPSHOT=snapshot.png GLASS_GLUT_EVENTS=events.txt "$bin/$program" "$@" \
+    >out.txt 2>err.txt || status=$?
+  cat err.txt >&2
+}
+
+expect_text() {  # FILE TEXT
+  grep -F -- "$2" "$1" >/dev/null || { echo "--- $1:" >&2; cat "$1" >&2; fail "$1 lacks: $2"; }
+}
+
+case $case_name in
+listing5)
+  # The guide's Listing 5 as printed: four presses of the space bar draw step 4, which must be
+  # the picture glass draws off-screen for the same calls.
+  run glut_listing5 "key space
+key space
+key space
+key space
+"
+  [ "$status" -eq 0 ] || fail "listing5 exited with $status"
+  expect_text out.txt "Press space bar -> the next step; esc -> to quit."
+  "$bin/glut_listing5_offscreen" 4 offscreen.png
+  probe snapshot.png size 500 500 same offscreen.png count 255 255 255 20000 200000
+  # Escape ends it the way the listing says: exit(1).
+  run glut_listing5 "key escape
+"
+  [ "$status" -eq 1 ] || fail "escape: listing5 exited with $status, expected 1"
+  ;;
+single_buffer_flush)
+  # GLUT_SINGLE (the default) and glFlush: the first frame is the white square at the bottom left.
+  run glut_keys_and_reshape ""
+  [ "$status" -eq 0 ] || fail "exited with $status"
+  probe snapshot.png size 200 200 pixel 5 195 255 255 255 pixel 30 195 0 0 0 \
+    count 255 255 255 400 400
+  ;;
+timer_animation)
+  # Double-buffered, glutTimerFunc re-armed from inside: the 5th frame shows a bar 100 pixels
+  # long; the red that the display callback flushes before drawing is never shown.
+  GLASS_GLUT_FRAMES=5 run glut_timer_animation ""
+  [ "$status" -eq 0 ] || fail "exited with $status"
+  probe snapshot.png size 200 100 pixel 95 50 255 255 0 pixel 105 50 0 0 128 \
+    count 255 255 0 2000 2000 count 255 0 0 0 0
+  GLASS_GLUT_FRAMES=9 run glut_timer_animation ""
+  probe snapshot.png count 255 255 0 3600 3600
+  ;;
+menu)
+  # The right button's menu chosen by entry number: its callback changes the picture.
+  run glut_menu_colors "snapshot before.png
+menu 1
+snapshot red.png
+menu 3 2
+"
+  [ "$status" -eq 0 ] || fail "exited with $status"
+  probe before.png size 320 240 pixel 5 5 0 0 0 pixel 90 70 255 255 255
+  probe red.png pixel 5 5 255 0 0 pixel 90 70 255 255 255 pixel 160 120 255 255 255
+  probe snapshot.png pixel 5 5 255 0 0 pixel 90 70 255 0 0 pixel 160 120 255 255 255
+  ;;
+menu_by_pointer)
+  # The pop-up drawn over the picture and picked with the pointer: it opens on the right
+  # button, a submenu opens beside its entry, a press outside closes it without a callback, and
+  # the picture under it is unchanged.
+  run glut_menu_colors "snapshot before.png
+mouse right down 20 20
+snapshot open.png
+mouse left down 300 230
+mouse left up 300 230
+snapshot closed.png
+mouse right down 20 20
+motion 40 85
+snapshot submenu.png
+motion 200 106
+mouse right up 200 106
+"
+  [ "$status" -eq 0 ] || fail "exited with $status"
+  probe open.png differ before.png count 178 178 178 2000 40000
+  probe closed.png same before.png
+  probe submenu.png differ open.png
+  # Triangle chosen: the top corners of the square are black again.
+  probe snapshot.png pixel 90 70 0 0 0 pixel 160 120 255 255 255
+  ;;
+keyboard)
+  # Special keys move the square; characters colour it; Ctrl+G arrives as character 7 with
+  # GLUT_ACTIVE_CTRL.
+  run glut_keys_and_reshape "special right
+special right
+special up
+key r
+snapshot red.png
+key ctrl+g
+"
+  [ "$status" -eq 0 ] || fail "exited with $status"
+  probe red.png pixel 45 165 255 0 0 pixel 5 195 0 0 0 count 255 0 0 400 400
+  probe snapshot.png pixel 45 165 0 0 255 count 0 0 255 400 400
+  ;;
+reshape)
+  # The reshape callback runs with the first size and again with the new one; the picture
+  # has the new size.
+  run glut_keys_and_reshape "reshape 300 120
+"
+  [ "$status" -eq 0 ] || fail "exited with $status"
+  expect_text out.txt "reshape 200 200"
+  expect_text out.txt "reshape 300 120"
+  probe snapshot.png size 300 120 pixel 5 115 255 255 255 pixel 25 115 0 0 0
+  ;;
+two_windows)
+  # Two windows with their own contexts; closing the second under
+  # GLUT_ACTION_CONTINUE_EXECUTION runs its close callback and leaves the first.
+  run glut_two_windows "window 1
+snapshot first.png
+window 2
+snapshot second.png
+close
+"
+  [ "$status" -eq 0 ] || fail "exited with $status"
+  probe first.png size 160 120 pixel 2 2 0 153 0 pixel 80 100 255 255 255
+  probe second.png size 100 80 pixel 2 2 0 0 153 pixel 30 50 255 0 0 pixel 50 40 255 255 0
+  expect_text out.txt "window 2 closed; current window 2"
+  probe snapshot.png same first.png
+  ;;
+errors)
+  # freeglut's messages and exit status.
+  run glut_glut_errors "" before-init
+  [ "$status" -eq 1 ] || fail "before-init exited with $status"
+  expect_text err.txt "freeglut  ERROR:  Function <glutCreateWindow> called without first calling 'glutInit'."
+  run glut_glut_errors "" no-window
+  [ "$status" -eq 1 ] || fail "no-window exited with $status"
+  expect_text err.txt "freeglut (glut_glut_errors):  ERROR:  Function <glutPostRedisplay> called with no current window defined."
+  run glut_glut_errors "" no-display-callback
+  [ "$status" -eq 1 ] || fail "no-display-callback exited with $status"
+  expect_text err.txt "ERROR:  No display callback registered for window 1"
+  run glut_glut_errors "mouse right sideways 1 2
+"
+  [ "$status" -eq 1 ] || fail "bad events file: exited with $status"
+  expect_text err.txt "events.txt:1:13: expected down or up, not 'sideways'"
+  [ ! -e snapshot.png ] || fail "a snapshot was written despite the bad events file"
+  # No display and no GLASS_GLUT_SNAPSHOT: freeglut's message, and the variable named.
+  status=0
+  env -u DISPLAY -u WAYLAND_DISPLAY -u SDL_VIDEODRIVER -u GLASS_GLUT_SNAPSHOT -u GLASS_GLUT_EVENTS \
+    "$bin/glut_glut_errors" >out.txt 2>err.txt || status=$?
+  [ "$status" -eq 1 ] || fail "no display: exited with $status"
+  expect_text err.txt "freeglut (glut_glut_errors): failed to open display ''"
+  expect_text err.txt "GLASS_GLUT_SNAPSHOT"
+  ;;
+*)
+  fail "unknown case $case_name"
+  ;;
+esac
+echo "ok: $case_name"

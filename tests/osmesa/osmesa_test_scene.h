@@ -1,0 +1,23 @@
+// What the OSMesa tests draw, and buffers to draw it into.
+#pragma once
+
+#include <GL/osmesa.h>
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace osmesa_test {
+
+// A lit, textured, depth-tested picture that depends on `variant` (colours, angles), drawn with
+// GL and GLU calls only, ending with glFinish.
+void drawScene(int variant);
+
+// A context of the format with 24 depth and 8 stencil bits, or a failed test.
+OSMesaContext createContext(GLenum format);
+
+// Renders drawScene(variant) into a fresh RGBA / GL_UNSIGNED_BYTE buffer of width x height,
+// bottom row first: the picture every other layout is checked against.
+std::vector<uint8_t> renderRGBA(int width, int height, int variant);
+
+}  // namespace osmesa_test

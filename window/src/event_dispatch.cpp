@@ -1,0 +1,146 @@
+#include "event_dispatch.h"
+
+#include <GL/freeglut.h>
+
+#include "glut_state.h"
+#include "popup_menu.h"
+#include "presentation.h"
+#include "window_lifecycle.h"
+
+namespace glass::glut {
+
+namespace {
+
+// Runs an input callback with the window current and glutGetModifiers answering (spec 9.3: only
+// inside keyboard, special and mouse callbacks).
+template <class Call>
+void withModifiers(Window& window, int modifiers, Call&& call) {
+  makeCurrent(window);
+  state().modifiers = modifiers;
+  call();
+  state().modifiers = -1;
+}
+
+void dispatchButton(Window& window, const InputEvent& e) {
+  window.mouseX = e.x;
+  window.mouseY = e.y;
+  const unsigned bit = 1u << e.button;
+  if (e.buttonState == GLUT_DOWN) {
+    window.buttonsDown |= bit;
+  } else {
+    window.buttonsDown &= ~bit;
+  }
+  if (popupTakesButton(window, e.button, e.buttonState, e.x, e.y)) return;
+  // A button with a menu attached opens it and goes to no callback (spec 6.7).
+  if (e.button < 5 && window.menuOnButton[e.button] != 0) {
+    if (e.buttonState == GLUT_DOWN) openPopup(window, window.menuOnButton[e.button], e.button, e.x, e.y);
+    return;
+  }
+  if (window.callbacks.mouse) {
+    withModifiers(window, e.modifiers,
+                  [&] { window.callbacks.mouse(e.button, e.buttonState, e.x, e.y); });
+  }
+}
+
+// freeglut: the wheel goes to glutMouseWheelFunc, or, without one, to glutMouseFunc as buttons 3
+// (away from the user) and 4 (towards), pressed and released.
+void dispatchWheel(Window& window, const InputEvent& e) {
+  if (window.callbacks.mouseWheel) {
+    withModifiers(window, e.modifiers, [&] {
+      window.callbacks.mouseWheel(e.button, e.buttonState, e.x, e.y);
+    });
+    return;
+  }
+  if (!window.callbacks.mouse || e.button != 0) return;
+  const int button = e.buttonState > 0 ? 3 : 4;
+  const int id = window.id;
+  withModifiers(window, e.modifiers, [&] { window.callbacks.mouse(button, GLUT_DOWN, e.x, e.y); });
+  if (Window* still = findWindow(id); still && still->callbacks.mouse) {
+    withModifiers(*still, e.modifiers, [&] { still->callbacks.mouse(button, GLUT_UP, e.x, e.y); });
+  }
+}
+
+void dispatchMotion(Window& window, const InputEvent& e) {
+  window.mouseX = e.x;
+  window.mouseY = e.y;
+  if (!window.openMenus.empty()) {
+    popupFollowPointer(window, e.x, e.y);
+    return;
+  }
+  makeCurrent(window);
+  if (window.buttonsDown != 0) {
+    if (window.callbacks.motion) window.callbacks.motion(e.x, e.y);
+  } else if (window.callbacks.passiveMotion) {
+    window.callbacks.passiveMotion(e.x, e.y);
+  }
+}
+
+void dispatchKey(Window& window, const InputEvent& e) {
+  window.mouseX = e.x;
+  window.mouseY = e.y;
+  const WindowCallbacks& c = window.callbacks;
+  const auto key = static_cast<unsigned char>(e.key);
+  switch (e.kind) {
+    case InputKind::Key:
+      if (c.keyboard) withModifiers(window, e.modifiers, [&] { c.keyboard(key, e.x, e.y); });
+      break;
+    case InputKind::KeyUp:
+      if (c.keyboardUp) withModifiers(window, e.modifiers, [&] { c.keyboardUp(key, e.x, e.y); });
+      break;
+    case InputKind::Special:
+      if (c.special) withModifiers(window, e.modifiers, [&] { c.special(e.key, e.x, e.y); });
+      break;
+    case InputKind::SpecialUp:
+      if (c.specialUp) withModifiers(window, e.modifiers, [&] { c.specialUp(e.key, e.x, e.y); });
+      break;
+    default: break;
+  }
+}
+
+}  // namespace
+
+void dispatchInput(const InputEvent& e) {
+  Window* window = findWindow(e.window);
+  if (!window) return;
+  switch (e.kind) {
+    case InputKind::Key:
+    case InputKind::KeyUp:
+    case InputKind::Special:
+    case InputKind::SpecialUp: dispatchKey(*window, e); return;
+    case InputKind::Button: dispatchButton(*window, e); return;
+    case InputKind::Wheel: dispatchWheel(*window, e); return;
+    case InputKind::Motion: dispatchMotion(*window, e); return;
+    case InputKind::Reshape: resizeWindow(*window, e.width, e.height); return;
+    case InputKind::Moved:
+      window->x = e.x;
+      window->y = e.y;
+      if (window->callbacks.position) {
+        makeCurrent(*window);
+        window->callbacks.position(e.x, e.y);
+      }
+      return;
+    case InputKind::Close: closeWindowFromSystem(*window); return;
+    case InputKind::Entry:
+      if (window->callbacks.entry) {
+        makeCurrent(*window);
+        window->callbacks.entry(e.buttonState);
+      }
+      return;
+    case InputKind::Visibility:
+      window->visible = e.buttonState == GLUT_VISIBLE;
+      makeCurrent(*window);
+      if (window->callbacks.windowStatus) {
+        window->callbacks.windowStatus(window->visible ? GLUT_FULLY_RETAINED : GLUT_HIDDEN);
+      } else if (window->callbacks.visibility) {
+        window->callbacks.visibility(e.buttonState);
+      }
+      if (window->visible) window->redisplayPending = true;
+      return;
+    case InputKind::Exposed:
+      window->redisplayPending = true;
+      refreshScreen(*window);
+      return;
+  }
+}
+
+}  // namespace glass::glut

@@ -1,0 +1,149 @@
+// The state of glass's GLUT: the windows, the menus, the callbacks that are not per window (idle,
+// timers, menu status), the options, and the loop's state. One instance, used from the thread
+// that called glutInit (GLUT is single-threaded, spec 1.3).
+#pragma once
+
+#include <glass/context.h>
+
+#include <cstdarg>
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+struct SDL_Window;
+
+namespace glass::glut {
+
+// The callbacks of one window (GLUT 3.7 spec 7, and freeglut's additions).
+struct WindowCallbacks {
+  void (*display)() = nullptr;
+  void (*reshape)(int, int) = nullptr;
+  void (*keyboard)(unsigned char, int, int) = nullptr;
+  void (*keyboardUp)(unsigned char, int, int) = nullptr;
+  void (*special)(int, int, int) = nullptr;
+  void (*specialUp)(int, int, int) = nullptr;
+  void (*mouse)(int, int, int, int) = nullptr;
+  void (*mouseWheel)(int, int, int, int) = nullptr;
+  void (*motion)(int, int) = nullptr;
+  void (*passiveMotion)(int, int) = nullptr;
+  void (*entry)(int) = nullptr;
+  void (*visibility)(int) = nullptr;
+  void (*windowStatus)(int) = nullptr;
+  void (*position)(int, int) = nullptr;
+  void (*close)() = nullptr;
+};
+
+// The pop-up that is open in a window: the chain of menus from the one attached to the button
+// down to the deepest submenu opened, each with its place in window coordinates (y down).
+struct OpenMenu {
+  int menu = 0;
+  int x = 0, y = 0;         // top-left corner
+  int highlighted = -1;     // the item under the pointer, 0-based; -1 for none
+};
+
+struct Window {
+  int id = 0;
+  std::string title;
+  int x = 0, y = 0;                // position on the screen
+  int width = 0, height = 0;
+  unsigned displayMode = 0;
+  bool doubleBuffered = false;
+  GlassContext* context = nullptr;
+  SDL_Window* sdlWindow = nullptr;  // null when there is no display (headless runs)
+  WindowCallbacks callbacks;
+  int menuOnButton[5] = {0, 0, 0, 0, 0};  // glutAttachMenu: the menu of each mouse button
+  void* userData = nullptr;
+  int cursor = 0;
+  bool fullScreen = false;
+  bool visible = true;
+
+  bool redisplayPending = true;     // a new window is drawn once it is shown (spec 4.1)
+  bool reshapePending = true;       // and told its size first
+  bool firstPassDone = false;       // the checks freeglut makes before the first display
+  int requestedWidth = 0, requestedHeight = 0;  // glutReshapeWindow, applied by the loop
+  bool inDisplayCallback = false;
+  bool presentedInDisplay = false;  // glFlush/glFinish or glutSwapBuffers inside display
+
+  // The picture the window shows: what the context's colour buffer held when it was last
+  // presented (RGBA8, bottom row first), and what the screen shows, that picture with the open
+  // pop-up menu over it.
+  std::vector<unsigned char> shown;
+  std::vector<unsigned char> screen;
+  std::vector<OpenMenu> openMenus;  // empty when no pop-up is open
+  int menuButton = -1;              // the button that opened the pop-up
+  int popupOpenedAtX = 0, popupOpenedAtY = 0;
+  GlassContext* menuContext = nullptr;  // where glass draws the pop-up over a copy of `shown`
+
+  // Mouse state, for motion versus passive motion and for the keyboard callbacks' x, y.
+  int mouseX = 0, mouseY = 0;
+  unsigned buttonsDown = 0;
+};
+
+struct MenuItem {
+  std::string label;
+  int value = 0;       // the value given to the callback, or the submenu's id
+  bool isSubMenu = false;
+};
+
+struct Menu {
+  int id = 0;
+  void (*callback)(int) = nullptr;
+  std::vector<MenuItem> items;
+  void* userData = nullptr;
+  void* font = nullptr;
+  void (*destroy)() = nullptr;  // glutMenuDestroyFunc
+};
+
+struct Timer {
+  uint64_t deadline = 0;  // in GLUT_ELAPSED_TIME milliseconds
+  uint64_t order = 0;     // timers due at the same time run in the order they were set
+  void (*callback)(int) = nullptr;
+  int value = 0;
+};
+
+struct State {
+  bool initialised = false;
+  std::string programName;
+  unsigned initDisplayMode = 0;  // GLUT_RGBA | GLUT_SINGLE
+  int initX = -1, initY = -1;
+  int initWidth = 300, initHeight = 300;
+
+  std::map<int, std::unique_ptr<Window>> windows;
+  int nextWindowId = 1;
+  int currentWindow = 0;
+  std::map<int, std::unique_ptr<Menu>> menus;
+  int nextMenuId = 1;
+  int currentMenu = 0;
+
+  void (*idle)() = nullptr;
+  void (*menuStatus)(int, int, int) = nullptr;
+  void (*menuState)(int) = nullptr;
+  std::vector<Timer> timers;
+  uint64_t nextTimerOrder = 0;
+
+  int actionOnWindowClose = 0;  // GLUT_ACTION_EXIT
+  bool ignoreKeyRepeat = false;
+  bool loopRunning = false;
+  int modifiers = -1;           // valid inside input callbacks only; -1 elsewhere
+
+  void (*errorFunc)(const char*, va_list) = nullptr;
+  void (*warningFunc)(const char*, va_list) = nullptr;
+};
+
+State& state();
+
+// The window with this id, or null.
+Window* findWindow(int id);
+// The current window, or null.
+Window* currentWindow();
+Menu* findMenu(int id);
+
+// Runs the menu's destroy callback (with the menu current) and removes it.
+void destroyMenu(int id);
+
+// Makes the window current, and its context.
+void makeCurrent(Window& window);
+
+}  // namespace glass::glut

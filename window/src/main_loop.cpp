@@ -1,0 +1,193 @@
+// The event loop (GLUT 3.7 spec 3, freeglut's glutMainLoopEvent and glutLeaveMainLoop): each pass
+// takes the window system's events (and the next lines of an events file), runs the timers that
+// are due, then the pending reshape and display callbacks; between passes the idle callback runs,
+// or the loop sleeps until the next event or timer.
+#include <GL/freeglut.h>
+
+#include <algorithm>
+#include <limits>
+#include <vector>
+
+#include "event_dispatch.h"
+#include "glut_clock.h"
+#include "glut_errors.h"
+#include "glut_state.h"
+#include "headless_run.h"
+#include "presentation.h"
+#include "sdl_display.h"
+#include "window_lifecycle.h"
+
+namespace glass::glut {
+
+namespace {
+
+void runDueTimers() {
+  State& s = state();
+  const uint64_t now = elapsedMilliseconds();
+  // A timer callback may set new timers (often itself, re-armed): those wait for a later pass,
+  // even when due at once, so that a zero-delay timer cannot starve the loop.
+  std::vector<Timer> due;
+  auto notDue = std::stable_partition(s.timers.begin(), s.timers.end(),
+                                      [now](const Timer& t) { return t.deadline > now; });
+  due.assign(notDue, s.timers.end());
+  s.timers.erase(notDue, s.timers.end());
+  std::sort(due.begin(), due.end(), [](const Timer& a, const Timer& b) {
+    return a.deadline != b.deadline ? a.deadline < b.deadline : a.order < b.order;
+  });
+  for (const Timer& timer : due) timer.callback(timer.value);
+}
+
+// Runs `work` for each window that still exists, in the order of their ids; a callback may
+// destroy windows, including the one it runs for.
+template <class Work>
+void forEachWindow(Work&& work) {
+  std::vector<int> ids;
+  for (const auto& [id, window] : state().windows) ids.push_back(id);
+  for (int id : ids) {
+    if (Window* window = findWindow(id)) work(*window);
+  }
+}
+
+void runReshapes() {
+  forEachWindow([](Window& window) {
+    if (window.requestedWidth > 0) {
+      resizeWindow(window, window.requestedWidth, window.requestedHeight);
+      window.requestedWidth = window.requestedHeight = 0;
+    }
+    if (!window.reshapePending) return;
+    window.reshapePending = false;
+    makeCurrent(window);
+    if (window.callbacks.reshape) {
+      window.callbacks.reshape(window.width, window.height);
+    } else {
+      glViewport(0, 0, window.width, window.height);  // GLUT's default reshape (spec 7.2)
+    }
+  });
+}
+
+void runDisplays() {
+  forEachWindow([](Window& window) {
+    if (!window.firstPassDone) {
+      window.firstPassDone = true;
+      if (!window.callbacks.display) {
+        fatalError("ERROR:  No display callback registered for window %d\n", window.id);
+      }
+    }
+    if (!window.redisplayPending || !window.visible) return;
+    window.redisplayPending = false;
+    makeCurrent(window);
+    window.inDisplayCallback = true;
+    window.presentedInDisplay = false;
+    window.callbacks.display();
+    if (Window* still = findWindow(window.id)) {
+      still->inDisplayCallback = false;
+      if (still->presentedInDisplay) noteFramePresented(*still);
+    }
+  });
+}
+
+bool anyRedisplayPending() {
+  for (const auto& [id, window] : state().windows) {
+    if ((window->redisplayPending && window->visible) || window->reshapePending ||
+        window->requestedWidth > 0) {
+      return true;
+    }
+  }
+  return false;
+}
+
+// When the next timer or scripted step is due; max when none is.
+uint64_t nextWakeTime() {
+  uint64_t next = std::numeric_limits<uint64_t>::max();
+  for (const Timer& timer : state().timers) next = std::min(next, timer.deadline);
+  if (const auto resume = scriptResumeTime()) next = std::min(next, *resume);
+  return next;
+}
+
+// Between passes, with no idle callback: sleep until something is to do.
+void waitForWork() {
+  if (anyRedisplayPending() || scriptStepReady()) return;
+  const uint64_t next = nextWakeTime();
+  if (clockIsVirtual()) {
+    if (next == std::numeric_limits<uint64_t>::max()) {
+      finishStalledRun();  // nothing can ever happen again
+      return;
+    }
+    advanceClockTo(next);
+    return;
+  }
+  const uint64_t now = elapsedMilliseconds();
+  const uint64_t wait = next > now ? std::min<uint64_t>(next - now, 100) : 0;
+  waitForSystemEvent(static_cast<int>(wait));
+}
+
+}  // namespace
+
+void runLoopPass() {
+  std::vector<InputEvent> events;
+  pollSystemEvents(events);
+  for (const InputEvent& event : events) dispatchInput(event);
+  runScriptStep();
+  runDueTimers();
+  runReshapes();
+  runDisplays();
+  finishRunIfDone();
+}
+
+}  // namespace glass::glut
+
+using namespace glass::glut;
+
+extern "C" {
+
+void glutMainLoopEvent(void) {
+  requireInitialised("glutMainLoopEvent");
+  runLoopPass();
+}
+
+void glutMainLoop(void) {
+  requireInitialised("glutMainLoop");
+  State& s = state();
+  if (s.windows.empty()) fatalError(" ERROR:  glutMainLoop called with no windows created.");
+  s.loopRunning = true;
+  while (s.loopRunning) {
+    runLoopPass();
+    if (!s.loopRunning) break;
+    if (s.windows.empty()) {
+      s.loopRunning = false;
+      break;
+    }
+    if (s.idle) {
+      // Keep a current window for the idle callback, as freeglut does.
+      if (!currentWindow()) makeCurrent(*s.windows.begin()->second);
+      s.idle();
+      if (clockIsVirtual()) advanceClockTo(elapsedMilliseconds() + 1);
+    } else {
+      waitForWork();
+    }
+  }
+  // As freeglut: the loop ends by glutLeaveMainLoop or by closing windows; GLUT is then
+  // deinitialised, and under GLUT_ACTION_EXIT the program ends.
+  const int action = s.actionOnWindowClose;
+  deinitialise();
+  if (action == GLUT_ACTION_EXIT) std::exit(0);
+}
+
+void glutLeaveMainLoop(void) {
+  requireInitialised("glutLeaveMainLoop");
+  state().loopRunning = false;
+}
+
+void glutIdleFunc(void (*callback)(void)) {
+  requireInitialised("glutIdleFunc");
+  state().idle = callback;
+}
+
+void glutTimerFunc(unsigned int time, void (*callback)(int), int value) {
+  requireInitialised("glutTimerFunc");
+  if (!callback) return;
+  State& s = state();
+  s.timers.push_back(Timer{elapsedMilliseconds() + time, s.nextTimerOrder++, callback, value});
+}
+
+}  // extern "C"

@@ -1,0 +1,189 @@
+// State queries and options (GLUT 3.7 spec 9; freeglut's glutSetOption).
+#include <GL/freeglut.h>
+
+#include <cstring>
+
+#include "glut_clock.h"
+#include "glut_errors.h"
+#include "glut_state.h"
+#include "sdl_display.h"
+
+using namespace glass::glut;
+
+namespace {
+
+// glass's framebuffer (glass/context.h): RGBA8, 24-bit depth, 8-bit stencil, 16-bit accumulation.
+constexpr int kColorBits = 8;
+constexpr int kDepthBits = 24;
+constexpr int kStencilBits = 8;
+constexpr int kAccumulationBits = 16;
+
+int windowQuery(const Window& window, GLenum query) {
+  switch (query) {
+    case GLUT_WINDOW_X: return window.x;
+    case GLUT_WINDOW_Y: return window.y;
+    case GLUT_WINDOW_WIDTH: return window.width;
+    case GLUT_WINDOW_HEIGHT: return window.height;
+    case GLUT_WINDOW_BUFFER_SIZE: return 4 * kColorBits;
+    case GLUT_WINDOW_STENCIL_SIZE: return kStencilBits;
+    case GLUT_WINDOW_DEPTH_SIZE: return kDepthBits;
+    case GLUT_WINDOW_RED_SIZE:
+    case GLUT_WINDOW_GREEN_SIZE:
+    case GLUT_WINDOW_BLUE_SIZE:
+    case GLUT_WINDOW_ALPHA_SIZE: return kColorBits;
+    case GLUT_WINDOW_ACCUM_RED_SIZE:
+    case GLUT_WINDOW_ACCUM_GREEN_SIZE:
+    case GLUT_WINDOW_ACCUM_BLUE_SIZE:
+    case GLUT_WINDOW_ACCUM_ALPHA_SIZE: return kAccumulationBits;
+    case GLUT_WINDOW_DOUBLEBUFFER: return window.doubleBuffered ? 1 : 0;
+    case GLUT_WINDOW_RGBA: return 1;
+    case GLUT_WINDOW_PARENT:
+    case GLUT_WINDOW_NUM_CHILDREN:
+    case GLUT_WINDOW_COLORMAP_SIZE:
+    case GLUT_WINDOW_NUM_SAMPLES:
+    case GLUT_WINDOW_STEREO: return 0;
+    case GLUT_WINDOW_CURSOR: return window.cursor;
+    case GLUT_WINDOW_FORMAT_ID: return 0;
+    case GLUT_FULL_SCREEN: return window.fullScreen ? 1 : 0;
+    case GLUT_WINDOW_BORDER_WIDTH:
+    case GLUT_WINDOW_HEADER_HEIGHT: return 0;
+    default: return -1;
+  }
+}
+
+}  // namespace
+
+extern "C" {
+
+int glutGet(GLenum query) {
+  State& s = state();
+  // freeglut answers these before glutInit.
+  switch (query) {
+    case GLUT_INIT_STATE: return s.initialised ? 1 : 0;
+    case GLUT_ELAPSED_TIME: return s.initialised ? static_cast<int>(elapsedMilliseconds()) : 0;
+    case GLUT_VERSION: return 30200;  // the freeglut version whose interface glass follows
+    default: break;
+  }
+  requireInitialised("glutGet");
+  switch (query) {
+    case GLUT_SCREEN_WIDTH:
+    case GLUT_SCREEN_HEIGHT:
+    case GLUT_SCREEN_WIDTH_MM:
+    case GLUT_SCREEN_HEIGHT_MM: {
+      int width = 0, height = 0, widthMM = 0, heightMM = 0;
+      screenSize(width, height, widthMM, heightMM);
+      return query == GLUT_SCREEN_WIDTH    ? width
+             : query == GLUT_SCREEN_HEIGHT ? height
+             : query == GLUT_SCREEN_WIDTH_MM ? widthMM
+                                             : heightMM;
+    }
+    case GLUT_MENU_NUM_ITEMS: {
+      const Menu* menu = findMenu(s.currentMenu);
+      return menu ? static_cast<int>(menu->items.size()) : 0;
+    }
+    case GLUT_DISPLAY_MODE_POSSIBLE:
+      return (s.initDisplayMode & (GLUT_INDEX | GLUT_STEREO | GLUT_MULTISAMPLE)) ? 0 : 1;
+    case GLUT_INIT_WINDOW_X: return s.initX;
+    case GLUT_INIT_WINDOW_Y: return s.initY;
+    case GLUT_INIT_WINDOW_WIDTH: return s.initWidth;
+    case GLUT_INIT_WINDOW_HEIGHT: return s.initHeight;
+    case GLUT_INIT_DISPLAY_MODE: return static_cast<int>(s.initDisplayMode);
+    case GLUT_ACTION_ON_WINDOW_CLOSE: return s.actionOnWindowClose;
+    case GLUT_RENDERING_CONTEXT: return GLUT_CREATE_NEW_CONTEXT;
+    case GLUT_DIRECT_RENDERING: return GLUT_FORCE_DIRECT_CONTEXT;
+    default: break;
+  }
+  const Window* window = currentWindow();
+  if (!window) return query >= GLUT_WINDOW_X && query <= GLUT_WINDOW_FORMAT_ID ? 0 : -1;
+  const int answer = windowQuery(*window, query);
+  if (answer == -1) warning("glutGet(): missing enum handle %d", static_cast<int>(query));
+  return answer;
+}
+
+int glutDeviceGet(GLenum query) {
+  requireInitialised("glutDeviceGet");
+  switch (query) {
+    case GLUT_HAS_KEYBOARD:
+    case GLUT_HAS_MOUSE: return 1;
+    case GLUT_NUM_MOUSE_BUTTONS: return 3;
+    case GLUT_DEVICE_IGNORE_KEY_REPEAT: return state().ignoreKeyRepeat ? 1 : 0;
+    case GLUT_DEVICE_KEY_REPEAT: return GLUT_KEY_REPEAT_DEFAULT;
+    // No spaceball, dial and button box, tablet or joystick.
+    default: return 0;
+  }
+}
+
+int glutGetModifiers(void) {
+  requireInitialised("glutGetModifiers");
+  if (state().modifiers < 0) {
+    warning("glutGetModifiers() called outside an input callback");
+    return 0;
+  }
+  return state().modifiers;
+}
+
+// No overlays (freeglut has none either).
+int glutLayerGet(GLenum query) {
+  requireInitialised("glutLayerGet");
+  switch (query) {
+    case GLUT_TRANSPARENT_INDEX: return -1;
+    default: return 0;
+  }
+}
+
+// GLUT 3.7 spec 9.4: whether the current window's context has the extension, a whole word of
+// GL_EXTENSIONS.
+int glutExtensionSupported(const char* extension) {
+  requireInitialised("glutExtensionSupported");
+  if (!extension || !*extension || std::strchr(extension, ' ') || !currentWindow()) return 0;
+  const char* all = reinterpret_cast<const char*>(glGetString(GL_EXTENSIONS));
+  const size_t length = std::strlen(extension);
+  for (const char* at = all; at && (at = std::strstr(at, extension)) != nullptr; at += length) {
+    const bool starts = at == all || at[-1] == ' ';
+    const bool ends = at[length] == ' ' || at[length] == '\0';
+    if (starts && ends) return 1;
+  }
+  return 0;
+}
+
+void glutIgnoreKeyRepeat(int ignore) {
+  requireInitialised("glutIgnoreKeyRepeat");
+  state().ignoreKeyRepeat = ignore != 0;
+}
+
+// The system's key repeat is not GLUT's to change under SDL; the modes are checked as freeglut
+// checks them.
+void glutSetKeyRepeat(int repeatMode) {
+  requireInitialised("glutSetKeyRepeat");
+  if (repeatMode != GLUT_KEY_REPEAT_OFF && repeatMode != GLUT_KEY_REPEAT_ON &&
+      repeatMode != GLUT_KEY_REPEAT_DEFAULT) {
+    fatalError("Invalid glutSetKeyRepeat mode: %d", repeatMode);
+  }
+}
+
+// GLUT 3.7 spec 9.5: prints the GL errors of the current window's context.
+void glutReportErrors(void) {
+  requireInitialised("glutReportErrors");
+  for (GLenum error = glGetError(); error != GL_NO_ERROR; error = glGetError()) {
+    warning("GL error: %s", reinterpret_cast<const char*>(gluErrorString(error)));
+  }
+}
+
+void glutSetOption(GLenum option, int value) {
+  requireInitialised("glutSetOption");
+  State& s = state();
+  switch (option) {
+    case GLUT_INIT_WINDOW_X: s.initX = value; break;
+    case GLUT_INIT_WINDOW_Y: s.initY = value; break;
+    case GLUT_INIT_WINDOW_WIDTH: s.initWidth = value; break;
+    case GLUT_INIT_WINDOW_HEIGHT: s.initHeight = value; break;
+    case GLUT_INIT_DISPLAY_MODE: s.initDisplayMode = static_cast<unsigned>(value); break;
+    case GLUT_ACTION_ON_WINDOW_CLOSE: s.actionOnWindowClose = value; break;
+    // Contexts are always new and direct in glass.
+    case GLUT_RENDERING_CONTEXT:
+    case GLUT_DIRECT_RENDERING: break;
+    default: warning("glutSetOption(): missing enum handle %d", static_cast<int>(option)); break;
+  }
+}
+
+}  // extern "C"

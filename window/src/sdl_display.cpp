@@ -1,0 +1,438 @@
+#include "sdl_display.h"
+
+#include <GL/freeglut.h>
+#include <SDL.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <cstring>
+#include <map>
+
+#include "glut_state.h"
+
+namespace glass::glut {
+
+namespace {
+
+bool headless = false;
+
+// The character a key press gave, kept until its release, so that glutKeyboardUpFunc gets the
+// same character (SDL sends the text of a press in a separate SDL_TEXTINPUT event).
+std::map<SDL_Scancode, int> characterOfPressedKey;
+SDL_Scancode keyAwaitingText = SDL_SCANCODE_UNKNOWN;
+int windowAwaitingText = 0;
+
+Window* windowOfSystemId(Uint32 sdlId) {
+  SDL_Window* sdlWindow = SDL_GetWindowFromID(sdlId);
+  for (auto& [id, window] : state().windows) {
+    if (window->sdlWindow == sdlWindow) return window.get();
+  }
+  return nullptr;
+}
+
+int glutModifiersOf(Uint16 mod) {
+  int modifiers = 0;
+  if (mod & KMOD_SHIFT) modifiers |= GLUT_ACTIVE_SHIFT;
+  if (mod & KMOD_CTRL) modifiers |= GLUT_ACTIVE_CTRL;
+  if (mod & KMOD_ALT) modifiers |= GLUT_ACTIVE_ALT;
+  if (mod & KMOD_GUI) modifiers |= GLUT_ACTIVE_SUPER;
+  return modifiers;
+}
+
+// The GLUT_KEY_* code of a key that goes to glutSpecialFunc, or 0 (freeglut's X11 key table).
+int specialKeyOf(SDL_Keycode key) {
+  if (key >= SDLK_F1 && key <= SDLK_F12) return GLUT_KEY_F1 + (key - SDLK_F1);
+  switch (key) {
+    case SDLK_LEFT: return GLUT_KEY_LEFT;
+    case SDLK_UP: return GLUT_KEY_UP;
+    case SDLK_RIGHT: return GLUT_KEY_RIGHT;
+    case SDLK_DOWN: return GLUT_KEY_DOWN;
+    case SDLK_PAGEUP: return GLUT_KEY_PAGE_UP;
+    case SDLK_PAGEDOWN: return GLUT_KEY_PAGE_DOWN;
+    case SDLK_HOME: return GLUT_KEY_HOME;
+    case SDLK_END: return GLUT_KEY_END;
+    case SDLK_INSERT: return GLUT_KEY_INSERT;
+    case SDLK_NUMLOCKCLEAR: return GLUT_KEY_NUM_LOCK;
+    case SDLK_LSHIFT: return GLUT_KEY_SHIFT_L;
+    case SDLK_RSHIFT: return GLUT_KEY_SHIFT_R;
+    case SDLK_LCTRL: return GLUT_KEY_CTRL_L;
+    case SDLK_RCTRL: return GLUT_KEY_CTRL_R;
+    case SDLK_LALT: return GLUT_KEY_ALT_L;
+    case SDLK_RALT: return GLUT_KEY_ALT_R;
+    case SDLK_LGUI: return GLUT_KEY_SUPER_L;
+    case SDLK_RGUI: return GLUT_KEY_SUPER_R;
+    default: return 0;
+  }
+}
+
+// The character of a key whose press sends no text: the control characters, and any key with
+// Ctrl held (Ctrl+A is 1, as X's XLookupString gives it). -1 for keys whose text comes in an
+// SDL_TEXTINPUT event.
+int characterWithoutText(SDL_Keycode key, Uint16 mod) {
+  switch (key) {
+    case SDLK_ESCAPE: return 27;
+    case SDLK_RETURN:
+    case SDLK_KP_ENTER: return 13;
+    case SDLK_BACKSPACE: return 8;
+    case SDLK_TAB: return 9;
+    case SDLK_DELETE: return 127;
+    default: break;
+  }
+  if ((mod & KMOD_CTRL) && key >= 0 && key < 128) {
+    if (key >= 'a' && key <= 'z') return key & 0x1f;
+    return static_cast<int>(key);
+  }
+  return -1;
+}
+
+// The Latin-1 character of a UTF-8 text, or -1 (GLUT's keyboard callback takes one byte).
+int latin1Of(const char* text) {
+  const auto* bytes = reinterpret_cast<const unsigned char*>(text);
+  if (bytes[0] < 0x80) return bytes[0] ? bytes[0] : -1;
+  if ((bytes[0] & 0xe0) == 0xc0 && (bytes[1] & 0xc0) == 0x80) {
+    const int code = ((bytes[0] & 0x1f) << 6) | (bytes[1] & 0x3f);
+    return code < 256 ? code : -1;
+  }
+  return -1;
+}
+
+void translateKey(const SDL_KeyboardEvent& key, Window& window, std::vector<InputEvent>& events) {
+  InputEvent event;
+  event.window = window.id;
+  event.x = window.mouseX;
+  event.y = window.mouseY;
+  event.modifiers = glutModifiersOf(key.keysym.mod);
+  const bool down = key.type == SDL_KEYDOWN;
+  if (down && key.repeat && state().ignoreKeyRepeat) return;
+  if (const int special = specialKeyOf(key.keysym.sym)) {
+    event.kind = down ? InputKind::Special : InputKind::SpecialUp;
+    event.key = special;
+    events.push_back(event);
+    return;
+  }
+  if (!down) {
+    auto pressed = characterOfPressedKey.find(key.keysym.scancode);
+    if (pressed == characterOfPressedKey.end()) return;
+    event.kind = InputKind::KeyUp;
+    event.key = pressed->second;
+    characterOfPressedKey.erase(pressed);
+    events.push_back(event);
+    return;
+  }
+  const int character = characterWithoutText(key.keysym.sym, key.keysym.mod);
+  if (character < 0) {
+    keyAwaitingText = key.keysym.scancode;
+    windowAwaitingText = window.id;
+    return;
+  }
+  characterOfPressedKey[key.keysym.scancode] = character;
+  event.kind = InputKind::Key;
+  event.key = character;
+  events.push_back(event);
+}
+
+void translateText(const SDL_TextInputEvent& text, std::vector<InputEvent>& events) {
+  Window* window = findWindow(windowAwaitingText);
+  const int character = latin1Of(text.text);
+  if (!window || character < 0) return;
+  InputEvent event;
+  event.kind = InputKind::Key;
+  event.window = window->id;
+  event.key = character;
+  event.x = window->mouseX;
+  event.y = window->mouseY;
+  event.modifiers = glutModifiersOf(SDL_GetModState());
+  if (keyAwaitingText != SDL_SCANCODE_UNKNOWN) characterOfPressedKey[keyAwaitingText] = character;
+  keyAwaitingText = SDL_SCANCODE_UNKNOWN;
+  events.push_back(event);
+}
+
+// SDL's buttons 1-3 are GLUT's left, middle and right (X numbers them the same way).
+int glutButtonOf(Uint8 button) {
+  switch (button) {
+    case SDL_BUTTON_LEFT: return GLUT_LEFT_BUTTON;
+    case SDL_BUTTON_MIDDLE: return GLUT_MIDDLE_BUTTON;
+    case SDL_BUTTON_RIGHT: return GLUT_RIGHT_BUTTON;
+    default: return -1;
+  }
+}
+
+void translateWindowEvent(const SDL_WindowEvent& w, Window& window,
+                          std::vector<InputEvent>& events) {
+  InputEvent event;
+  event.window = window.id;
+  switch (w.event) {
+    case SDL_WINDOWEVENT_SIZE_CHANGED:
+      event.kind = InputKind::Reshape;
+      event.width = w.data1;
+      event.height = w.data2;
+      break;
+    case SDL_WINDOWEVENT_MOVED:
+      event.kind = InputKind::Moved;
+      event.x = w.data1;
+      event.y = w.data2;
+      break;
+    case SDL_WINDOWEVENT_CLOSE: event.kind = InputKind::Close; break;
+    case SDL_WINDOWEVENT_ENTER:
+    case SDL_WINDOWEVENT_LEAVE:
+      event.kind = InputKind::Entry;
+      event.buttonState = w.event == SDL_WINDOWEVENT_ENTER ? GLUT_ENTERED : GLUT_LEFT;
+      break;
+    case SDL_WINDOWEVENT_SHOWN:
+    case SDL_WINDOWEVENT_RESTORED:
+    case SDL_WINDOWEVENT_HIDDEN:
+    case SDL_WINDOWEVENT_MINIMIZED:
+      event.kind = InputKind::Visibility;
+      event.buttonState = (w.event == SDL_WINDOWEVENT_SHOWN || w.event == SDL_WINDOWEVENT_RESTORED)
+                              ? GLUT_VISIBLE
+                              : GLUT_NOT_VISIBLE;
+      break;
+    case SDL_WINDOWEVENT_EXPOSED: event.kind = InputKind::Exposed; break;
+    default: return;
+  }
+  events.push_back(event);
+}
+
+void translate(const SDL_Event& e, std::vector<InputEvent>& events) {
+  switch (e.type) {
+    case SDL_KEYDOWN:
+    case SDL_KEYUP:
+      if (Window* window = windowOfSystemId(e.key.windowID)) translateKey(e.key, *window, events);
+      return;
+    case SDL_TEXTINPUT: translateText(e.text, events); return;
+    case SDL_MOUSEBUTTONDOWN:
+    case SDL_MOUSEBUTTONUP: {
+      Window* window = windowOfSystemId(e.button.windowID);
+      const int button = glutButtonOf(e.button.button);
+      if (!window || button < 0) return;
+      InputEvent event;
+      event.kind = InputKind::Button;
+      event.window = window->id;
+      event.button = button;
+      event.buttonState = e.type == SDL_MOUSEBUTTONDOWN ? GLUT_DOWN : GLUT_UP;
+      event.x = e.button.x;
+      event.y = e.button.y;
+      event.modifiers = glutModifiersOf(SDL_GetModState());
+      events.push_back(event);
+      return;
+    }
+    case SDL_MOUSEWHEEL: {
+      Window* window = windowOfSystemId(e.wheel.windowID);
+      if (!window || (e.wheel.y == 0 && e.wheel.x == 0)) return;
+      InputEvent event;
+      event.kind = InputKind::Wheel;
+      event.window = window->id;
+      event.button = e.wheel.y != 0 ? 0 : 1;
+      const int amount = e.wheel.y != 0 ? e.wheel.y : e.wheel.x;
+      event.buttonState = amount > 0 ? 1 : -1;
+      event.x = window->mouseX;
+      event.y = window->mouseY;
+      event.modifiers = glutModifiersOf(SDL_GetModState());
+      events.push_back(event);
+      return;
+    }
+    case SDL_MOUSEMOTION: {
+      Window* window = windowOfSystemId(e.motion.windowID);
+      if (!window) return;
+      InputEvent event;
+      event.kind = InputKind::Motion;
+      event.window = window->id;
+      event.x = e.motion.x;
+      event.y = e.motion.y;
+      events.push_back(event);
+      return;
+    }
+    case SDL_WINDOWEVENT:
+      if (Window* window = windowOfSystemId(e.window.windowID)) {
+        translateWindowEvent(e.window, *window, events);
+      }
+      return;
+    default: return;
+  }
+}
+
+bool isHeadlessDriver(const char* driver) {
+  return driver && (std::strcmp(driver, "dummy") == 0 || std::strcmp(driver, "offscreen") == 0);
+}
+
+}  // namespace
+
+bool openDisplay(bool allowHeadless, std::string& failure) {
+  // Ctrl+C ends a GLUT program at once, as it does with freeglut.
+  SDL_SetHint(SDL_HINT_NO_SIGNAL_HANDLERS, "1");
+  SDL_SetHint(SDL_HINT_VIDEO_ALLOW_SCREENSAVER, "1");
+  // SDL falls back to its offscreen driver by itself when there is no display; glass takes a
+  // driver without a screen only when asked to (SDL_VIDEODRIVER, or the headless variables).
+  const char* requested = std::getenv("SDL_VIDEODRIVER");
+  const bool explicitlyHeadless = isHeadlessDriver(requested);
+  const bool displayNamed = std::getenv("DISPLAY") || std::getenv("WAYLAND_DISPLAY");
+  if (!requested && !displayNamed) {
+    failure = "neither DISPLAY nor WAYLAND_DISPLAY is set";
+  } else if (SDL_Init(SDL_INIT_VIDEO) != 0) {
+    failure = SDL_GetError();
+  } else if (isHeadlessDriver(SDL_GetCurrentVideoDriver()) && !explicitlyHeadless &&
+             !allowHeadless) {
+    failure = "SDL found no display";
+    SDL_QuitSubSystem(SDL_INIT_VIDEO);
+  } else {
+    failure.clear();
+  }
+  if (!failure.empty()) {
+    if (!allowHeadless) return false;
+    SDL_SetHint(SDL_HINT_VIDEODRIVER, "dummy");
+    if (SDL_Init(SDL_INIT_VIDEO) != 0) {
+      failure = SDL_GetError();
+      return false;
+    }
+  }
+  headless = isHeadlessDriver(SDL_GetCurrentVideoDriver());
+  return true;
+}
+
+void closeDisplay() {
+  characterOfPressedKey.clear();
+  SDL_QuitSubSystem(SDL_INIT_VIDEO);
+}
+
+bool displayIsHeadless() { return headless; }
+
+bool createSystemWindow(Window& window) {
+  const int x = window.x >= 0 ? window.x : static_cast<int>(SDL_WINDOWPOS_UNDEFINED);
+  const int y = window.y >= 0 ? window.y : static_cast<int>(SDL_WINDOWPOS_UNDEFINED);
+  window.sdlWindow = SDL_CreateWindow(window.title.c_str(), x, y, window.width, window.height,
+                                      SDL_WINDOW_RESIZABLE);
+  return window.sdlWindow != nullptr;
+}
+
+void destroySystemWindow(Window& window) {
+  if (window.sdlWindow) SDL_DestroyWindow(window.sdlWindow);
+  window.sdlWindow = nullptr;
+}
+
+void showOnScreen(Window& window) {
+  if (!window.sdlWindow || window.screen.empty()) return;
+  SDL_Surface* surface = SDL_GetWindowSurface(window.sdlWindow);
+  if (!surface) return;
+  // The surface may still have the old size while a resize is on its way.
+  const int width = std::min(surface->w, window.width);
+  const int height = std::min(surface->h, window.height);
+  if (SDL_MUSTLOCK(surface)) SDL_LockSurface(surface);
+  for (int row = 0; row < height; ++row) {
+    // GL's rows go bottom to top; the surface's top to bottom.
+    const unsigned char* source =
+        window.screen.data() + static_cast<size_t>(window.height - 1 - row) * window.width * 4;
+    auto* target = static_cast<unsigned char*>(surface->pixels) + static_cast<size_t>(row) * surface->pitch;
+    SDL_ConvertPixels(width, 1, SDL_PIXELFORMAT_RGBA32, source, window.width * 4,
+                      surface->format->format, target, surface->pitch);
+  }
+  if (SDL_MUSTLOCK(surface)) SDL_UnlockSurface(surface);
+  SDL_UpdateWindowSurface(window.sdlWindow);
+}
+
+void setSystemWindowTitle(Window& window) {
+  if (window.sdlWindow) SDL_SetWindowTitle(window.sdlWindow, window.title.c_str());
+}
+
+void setSystemWindowSize(Window& window, int width, int height) {
+  if (window.sdlWindow) SDL_SetWindowSize(window.sdlWindow, width, height);
+}
+
+void setSystemWindowPosition(Window& window) {
+  if (window.sdlWindow) SDL_SetWindowPosition(window.sdlWindow, window.x, window.y);
+}
+
+void setSystemWindowFullScreen(Window& window, bool fullScreen) {
+  if (window.sdlWindow) {
+    SDL_SetWindowFullscreen(window.sdlWindow, fullScreen ? SDL_WINDOW_FULLSCREEN_DESKTOP : 0);
+  }
+}
+
+void showSystemWindow(Window& window, bool visible) {
+  if (!window.sdlWindow) return;
+  if (visible) {
+    SDL_ShowWindow(window.sdlWindow);
+  } else {
+    SDL_HideWindow(window.sdlWindow);
+  }
+}
+
+void iconifySystemWindow(Window& window) {
+  if (window.sdlWindow) SDL_MinimizeWindow(window.sdlWindow);
+}
+
+void raiseSystemWindow(Window& window) {
+  if (window.sdlWindow) SDL_RaiseWindow(window.sdlWindow);
+}
+
+void warpSystemPointer(Window& window, int x, int y) {
+  if (window.sdlWindow) SDL_WarpMouseInWindow(window.sdlWindow, x, y);
+}
+
+void setSystemCursor(Window& window, int glutCursor) {
+  static std::map<SDL_SystemCursor, SDL_Cursor*> cursors;
+  if (!window.sdlWindow || headless) return;
+  if (glutCursor == GLUT_CURSOR_NONE) {
+    SDL_ShowCursor(SDL_DISABLE);
+    return;
+  }
+  SDL_ShowCursor(SDL_ENABLE);
+  SDL_SystemCursor shape = SDL_SYSTEM_CURSOR_ARROW;
+  switch (glutCursor) {
+    case GLUT_CURSOR_INFO: shape = SDL_SYSTEM_CURSOR_HAND; break;
+    case GLUT_CURSOR_DESTROY: shape = SDL_SYSTEM_CURSOR_NO; break;
+    case GLUT_CURSOR_WAIT: shape = SDL_SYSTEM_CURSOR_WAIT; break;
+    case GLUT_CURSOR_TEXT: shape = SDL_SYSTEM_CURSOR_IBEAM; break;
+    case GLUT_CURSOR_CROSSHAIR:
+    case GLUT_CURSOR_FULL_CROSSHAIR: shape = SDL_SYSTEM_CURSOR_CROSSHAIR; break;
+    case GLUT_CURSOR_UP_DOWN:
+    case GLUT_CURSOR_TOP_SIDE:
+    case GLUT_CURSOR_BOTTOM_SIDE: shape = SDL_SYSTEM_CURSOR_SIZENS; break;
+    case GLUT_CURSOR_LEFT_RIGHT:
+    case GLUT_CURSOR_LEFT_SIDE:
+    case GLUT_CURSOR_RIGHT_SIDE: shape = SDL_SYSTEM_CURSOR_SIZEWE; break;
+    case GLUT_CURSOR_TOP_LEFT_CORNER:
+    case GLUT_CURSOR_BOTTOM_RIGHT_CORNER: shape = SDL_SYSTEM_CURSOR_SIZENWSE; break;
+    case GLUT_CURSOR_TOP_RIGHT_CORNER:
+    case GLUT_CURSOR_BOTTOM_LEFT_CORNER: shape = SDL_SYSTEM_CURSOR_SIZENESW; break;
+    default: break;
+  }
+  SDL_Cursor*& cursor = cursors[shape];
+  if (!cursor) cursor = SDL_CreateSystemCursor(shape);
+  if (cursor) SDL_SetCursor(cursor);
+}
+
+void screenSize(int& width, int& height, int& widthMM, int& heightMM) {
+  SDL_DisplayMode mode;
+  if (SDL_GetDesktopDisplayMode(0, &mode) != 0) {
+    mode.w = 0;
+    mode.h = 0;
+  }
+  width = mode.w;
+  height = mode.h;
+  // SDL gives dots per inch; 25.4 mm to the inch.
+  float horizontalDpi = 0, verticalDpi = 0;
+  if (SDL_GetDisplayDPI(0, nullptr, &horizontalDpi, &verticalDpi) != 0 || horizontalDpi <= 0 ||
+      verticalDpi <= 0) {
+    horizontalDpi = verticalDpi = 96.0f;
+  }
+  widthMM = static_cast<int>(width * 25.4f / horizontalDpi + 0.5f);
+  heightMM = static_cast<int>(height * 25.4f / verticalDpi + 0.5f);
+}
+
+void pollSystemEvents(std::vector<InputEvent>& events) {
+  SDL_Event e;
+  while (SDL_PollEvent(&e)) {
+    // Without a display nothing real happens to the windows: input comes from the events file
+    // alone, so that a headless run is the same every time.
+    if (!headless) translate(e, events);
+  }
+}
+
+void waitForSystemEvent(int milliseconds) {
+  if (milliseconds <= 0) return;
+  SDL_WaitEventTimeout(nullptr, milliseconds);
+}
+
+int systemModifiers() { return glutModifiersOf(SDL_GetModState()); }
+
+}  // namespace glass::glut
