@@ -8,6 +8,7 @@
 #include "fragment/color_conversion.h"
 #include "glass/raster/fragment.h"
 #include "primitive/queued_drawing.h"
+#include "teaching/teaching_view.h"
 
 namespace glass::gl {
 
@@ -27,6 +28,7 @@ void clearBuffers(Context& ctx, GLbitfield mask) {
   if (x0 >= x1 || y0 >= y1) return;
 
   if ((mask & GL_COLOR_BUFFER_BIT) && drawsColor(f.drawBuffer)) {
+    restartTeachingFrame(ctx);
     uint8_t color[4];
     for (int c = 0; c < 4; ++c) color[c] = floatToColorByte(f.clearColor[c]);
     const bool all = f.colorMask[0] && f.colorMask[1] && f.colorMask[2] && f.colorMask[3];
