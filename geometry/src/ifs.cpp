@@ -5,7 +5,7 @@
 #include <cmath>
 #include <limits>
 
-#include "glass/geometry/deterministic_random.h"
+#include "chaos_game.h"
 
 namespace glass::geometry {
 
@@ -36,33 +36,13 @@ IfsColor partColor(const IteratedFunctionSystem& ifs, std::size_t part) {
 }
 
 std::optional<std::vector<double>> chaosGameProbabilities(const IteratedFunctionSystem& ifs) {
-  const std::size_t n = ifs.maps.size();
-  if (n == 0) return std::nullopt;
-  std::size_t given = 0;
-  for (const IfsMap& map : ifs.maps) given += map.probability.has_value() ? 1 : 0;
-  if (given != 0 && given != n) return std::nullopt;
-
-  std::vector<double> weights(n);
-  if (given == n) {
-    for (std::size_t i = 0; i < n; ++i) {
-      if (!(*ifs.maps[i].probability >= 0.0)) return std::nullopt;  // negative or NaN
-      weights[i] = *ifs.maps[i].probability;
-    }
-  } else {
-    double largest = 0.0;
-    for (std::size_t i = 0; i < n; ++i) {
-      weights[i] = std::abs(ifs.maps[i].transform.determinant());
-      largest = std::max(largest, weights[i]);
-    }
-    // All maps flatten the plane: every part is a curve or a point; share evenly.
-    const double floor = largest > 0.0 ? largest / 100.0 : 1.0;
-    for (double& w : weights) w = std::max(w, floor);
+  std::vector<std::optional<double>> given;
+  std::vector<double> areas;
+  for (const IfsMap& map : ifs.maps) {
+    given.push_back(map.probability);
+    areas.push_back(std::abs(map.transform.determinant()));
   }
-  double total = 0.0;
-  for (double w : weights) total += w;
-  if (!(total > 0.0) || !std::isfinite(total)) return std::nullopt;
-  for (double& w : weights) w /= total;
-  return weights;
+  return chaos::probabilities(given, areas);
 }
 
 namespace {
@@ -122,29 +102,16 @@ void chaosGame(const IteratedFunctionSystem& ifs, const std::vector<double>& pro
                const std::function<void(const glm::dvec2& point, int part)>& visit) {
   const std::size_t n = ifs.maps.size();
   if (n == 0 || probabilities.size() != n) return;
-  // Cumulative probabilities; the last is forced to 1 so that rounding never lets u fall past it.
-  std::vector<double> cumulative(n);
-  double sum = 0.0;
-  for (std::size_t i = 0; i < n; ++i) cumulative[i] = (sum += probabilities[i]);
-  cumulative[n - 1] = 1.0;
-
-  glm::dvec2 point{0.0, 0.0};
+  glm::dvec2 start{0.0, 0.0};
   for (const IfsMap& map : ifs.maps) {
     if (auto fixed = fixedPoint(map.transform)) {
-      point = *fixed;
+      start = *fixed;
       break;
     }
   }
-  SplitMix64 random(seed);
-  constexpr int kWarmUp = 100;
-  for (std::uint64_t k = 0; k < count + kWarmUp; ++k) {
-    const double u = random.uniform();
-    const std::size_t i = static_cast<std::size_t>(
-        std::upper_bound(cumulative.begin(), cumulative.end(), u) - cumulative.begin());
-    const std::size_t chosen = std::min(i, n - 1);
-    point = ifs.maps[chosen].transform.apply(point);
-    if (k >= kWarmUp) visit(point, static_cast<int>(chosen));
-  }
+  chaos::walk(
+      probabilities, start, count, seed,
+      [&ifs](std::size_t i, const glm::dvec2& p) { return ifs.maps[i].transform.apply(p); }, visit);
 }
 
 std::vector<IfsPoint> chaosGamePoints(const IteratedFunctionSystem& ifs,

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdint>
 
+#include "box_counting.h"
+
 namespace glass::geometry {
 
 std::optional<double> similarityRatio(const Affine2& map) {
@@ -61,77 +63,31 @@ std::optional<BoxCountingEstimate> boxCountingDimension(std::span<const glm::dve
   }
   const double side = std::max(xMax - xMin, yMax - yMin);
   if (!(side > 0.0) || !std::isfinite(side)) return std::nullopt;
-
-  BoxCountingEstimate estimate;
-  std::vector<std::uint64_t> keys(points.size());
-  const std::size_t wellSampled = points.size() / 20;
-  constexpr int kMaxLevel = 24;
-  for (int level = 0; level <= kMaxLevel; ++level) {
+  return box_counting::estimate(points.size(), side, 24, [&](int level, std::size_t i) {
     const double cells = std::ldexp(1.0, level);
     const std::uint64_t maxCell = (std::uint64_t{1} << level) - 1;
-    for (std::size_t i = 0; i < points.size(); ++i) {
-      // The top and right edges of the square belong to the last box.
-      const auto cx = std::min(static_cast<std::uint64_t>((points[i].x - xMin) / side * cells), maxCell);
-      const auto cy = std::min(static_cast<std::uint64_t>((points[i].y - yMin) / side * cells), maxCell);
-      keys[i] = (cx << 32) | cy;
-    }
-    std::sort(keys.begin(), keys.end());
-    const auto boxes = static_cast<std::size_t>(std::unique(keys.begin(), keys.end()) - keys.begin());
-    estimate.counts.push_back({level, side / cells, boxes});
-    if (boxes > wellSampled) break;
-  }
-
-  // Fit levels 2 .. the last one still well sampled.
-  estimate.firstFittedLevel = 2;
-  estimate.lastFittedLevel = 2;
-  for (const BoxCount& count : estimate.counts) {
-    if (count.level >= 2 && count.boxes <= wellSampled) estimate.lastFittedLevel = count.level;
-  }
-  if (estimate.lastFittedLevel - estimate.firstFittedLevel < 2) return std::nullopt;
-  double sumX = 0.0, sumY = 0.0, sumXX = 0.0, sumXY = 0.0;
-  int n = 0;
-  for (const BoxCount& count : estimate.counts) {
-    if (count.level < estimate.firstFittedLevel || count.level > estimate.lastFittedLevel) continue;
-    const double x = count.level, y = std::log2(static_cast<double>(count.boxes));
-    sumX += x;
-    sumY += y;
-    sumXX += x * x;
-    sumXY += x * y;
-    ++n;
-  }
-  estimate.dimension = (n * sumXY - sumX * sumY) / (n * sumXX - sumX * sumX);
-  return estimate;
+    // The top and right edges of the square belong to the last box.
+    const auto cx = std::min(static_cast<std::uint64_t>((points[i].x - xMin) / side * cells), maxCell);
+    const auto cy = std::min(static_cast<std::uint64_t>((points[i].y - yMin) / side * cells), maxCell);
+    return (cx << 32) | cy;
+  });
 }
 
 IfsDimensionReport ifsDimension(const IteratedFunctionSystem& ifs, std::uint64_t points, std::uint64_t seed) {
-  IfsDimensionReport report;
-  report.allSimilarities = !ifs.maps.empty();
-  std::vector<double> ratios;
-  for (const IfsMap& map : ifs.maps) {
-    report.ratios.push_back(similarityRatio(map.transform));
-    if (report.ratios.back()) {
-      ratios.push_back(*report.ratios.back());
-    } else {
-      report.allSimilarities = false;
-    }
-  }
-  if (report.allSimilarities) {
-    report.moranDimension = solveMoranEquation(ratios);
-    if (report.moranDimension) return report;
-  }
-  const auto probabilities = chaosGameProbabilities(ifs);
-  if (!probabilities) {
-    report.problem = "the maps' probabilities are invalid";
-    return report;
-  }
-  std::vector<glm::dvec2> cloud;
-  cloud.reserve(points);
-  chaosGame(ifs, *probabilities, points, seed, [&cloud](const glm::dvec2& p, int) { cloud.push_back(p); });
-  report.boxCounting = boxCountingDimension(cloud);
-  if (!report.boxCounting) {
-    report.problem = "the attractor is too small or too thin for box counting";
-  }
-  return report;
+  return box_counting::dimensionReport(
+      ifs.maps.size(), [&](std::size_t i) { return similarityRatio(ifs.maps[i].transform); },
+      [&](IfsDimensionReport& report) {
+        const auto probabilities = chaosGameProbabilities(ifs);
+        if (!probabilities) {
+          report.problem = "the maps' probabilities are invalid";
+          return;
+        }
+        std::vector<glm::dvec2> cloud;
+        cloud.reserve(points);
+        chaosGame(ifs, *probabilities, points, seed, [&cloud](const glm::dvec2& p, int) { cloud.push_back(p); });
+        report.boxCounting = boxCountingDimension(cloud);
+        if (!report.boxCounting) report.problem = "the attractor is too small or too thin for box counting";
+      });
 }
 
 }  // namespace glass::geometry

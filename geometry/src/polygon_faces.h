@@ -39,7 +39,6 @@ struct PolygonFaces {
   int twin(int halfEdge) const { return halfEdge ^ 1; }
   int target(int halfEdge) const { return origin[twin(halfEdge)]; }
   int faceOf(int halfEdge) const { return face[cycle[halfEdge]]; }
-  int faceWinding(int f) const { return f == kOutsideFace ? 0 : winding[f]; }
 };
 
 PolygonFaces findFaces(const PolygonArrangement& arrangement);

@@ -10,9 +10,15 @@
 // Working in clip space before the division by w is what makes primitives that cross w = 0 come
 // out right: a point with w <= 0 fails at least one of w + x >= 0 and w - x >= 0 (unless x = w = 0),
 // so the part of a triangle behind the eye is cut off before anything is divided by w.
+//
+// Non-finite coordinates (spec 2.1.1: the results are undefined, but the GL must not be
+// interrupted) make a vertex outside every plane and flag it kNotFinite: a point there is not
+// drawn, and neither is a line or polygon with such a vertex, since where it crosses a plane
+// cannot be computed (infinity minus infinity is NaN).
 #include "glass/raster/clip.h"
 
 #include <algorithm>
+#include <cmath>
 #include <vector>
 
 namespace glass::raster {
@@ -97,6 +103,9 @@ int clipAgainstPlane(const ClipVertex* in, int n, int plane, int varyingCount, C
 
 unsigned outcode(const ClipVertex& v, const ClipSettings& settings) {
   const unsigned enabled = enabledPlaneMask(settings);
+  if (!(std::isfinite(v.clip[0]) && std::isfinite(v.clip[1]) && std::isfinite(v.clip[2]) &&
+        std::isfinite(v.clip[3])))
+    return enabled | kNotFinite;
   unsigned code = 0;
   for (int plane = 0; plane < kAllPlanes; ++plane)
     if ((enabled >> plane & 1u) && !(planeDistance(v, plane) >= 0.0f)) code |= 1u << plane;
@@ -115,7 +124,7 @@ int clipPolygon(const ClipVertex* in, int n, const ClipSettings& settings, ClipV
     any |= code;
     all &= code;
   }
-  if (all != 0) return 0;  // every vertex outside one plane
+  if (all != 0 || (any & kNotFinite)) return 0;  // every vertex outside one plane, or one unknown
   if (any == 0) {          // every vertex inside every plane
     std::copy(in, in + n, out);
     return n;
@@ -156,7 +165,7 @@ int clipPolygon(const ClipVertex* in, int n, const ClipSettings& settings, ClipV
 
 bool clipLine(ClipVertex& a, ClipVertex& b, const ClipSettings& settings) {
   const unsigned codeA = outcode(a, settings), codeB = outcode(b, settings);
-  if (codeA & codeB) return false;
+  if ((codeA & codeB) || ((codeA | codeB) & kNotFinite)) return false;
   if ((codeA | codeB) == 0) return true;
 
   // Liang-Barsky: the segment a + t (b - a), t in [tEnter, tLeave], shrunk plane by plane.

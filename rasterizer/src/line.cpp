@@ -24,7 +24,7 @@
 #include <climits>
 #include <cmath>
 
-#include "depth_value.h"
+#include "glass/raster/depth_value.h"
 #include "glass/raster/line.h"
 #include "line_quad.h"
 #include "line_quad_walk.h"

@@ -14,7 +14,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "depth_value.h"
+#include "glass/raster/depth_value.h"
 #include "glass/raster/line.h"
 #include "subpixel.h"
 
@@ -31,7 +31,10 @@ int64_t firstPixel(int64_t fixed, int width) {
 
 void rasterizePoint(const WindowVertex& v, const PointSettings& settings, FragmentSink& sink) {
   if (!isRasterizableCoordinate(v.x) || !isRasterizableCoordinate(v.y)) return;
-  const int64_t sizeIn256ths = static_cast<int64_t>(std::floor(settings.size * 256.0f + 0.5f));
+  // The size is taken between 1 and 2^20 first (NaN gives 1), which keeps the conversion to
+  // integers defined; a point that size already covers any framebuffer.
+  const float size = std::fmin(std::fmax(settings.size, 1.0f), 1048576.0f);
+  const int64_t sizeIn256ths = static_cast<int64_t>(std::floor(size * 256.0f + 0.5f));
   const int width = static_cast<int>(std::max<int64_t>(1, (sizeIn256ths + 127) >> kSubpixelBits));
   const int64_t x0 = firstPixel(snapToSubpixel(v.x), width);
   const int64_t y0 = firstPixel(snapToSubpixel(v.y), width);

@@ -5,6 +5,7 @@
 
 #include "edge_functions.h"
 #include "glass/raster/tiled_rasterizer.h"
+#include "subpixel.h"
 
 namespace glass::raster {
 namespace {
@@ -18,7 +19,15 @@ PixelRect intersect(const PixelRect& a, const PixelRect& b) {
 // snapping to 1/256 pixel. Being generous only costs a bin entry that draws nothing.
 double reachOf(float widthOrSize) { return std::ceil(std::max(1.0f, widthOrSize)) * 0.5 + 2.0; }
 
-int64_t floorToPixel(double v) { return static_cast<int64_t>(std::floor(v)); }
+// floor(v), clamped to +-2^31 so that it is defined for every double: converting NaN, an infinity
+// or a value beyond int64_t's range is undefined behaviour. NaN gives the low end. The callers
+// clamp the result to the framebuffer, far inside this range.
+int64_t floorToPixel(double v) {
+  constexpr double kFar = 2147483648.0;  // 2^31
+  if (!(v > -kFar)) return -static_cast<int64_t>(kFar);
+  if (!(v < kFar)) return static_cast<int64_t>(kFar);
+  return static_cast<int64_t>(std::floor(v));
+}
 
 // Asks for the memory where the next `count` elements of a bin's list will be written. A new
 // record lands on cache lines nobody has touched yet, and with hundreds of bins filled in turn
@@ -130,6 +139,11 @@ void TileScene::addTriangle(const TriangleSetup& setup, FragmentSink& sink) {
 
 void TileScene::addLine(const WindowVertex& a, const WindowVertex& b, const LineSettings& settings,
                         int stippleStart, FragmentSink& sink) {
+  // What rasterizeLine would refuse (a position that is not finite or beyond the fixed-point
+  // range) is not binned.
+  if (!isRasterizableCoordinate(a.x) || !isRasterizableCoordinate(a.y) ||
+      !isRasterizableCoordinate(b.x) || !isRasterizableCoordinate(b.y))
+    return;
   LineRecord r;
   r.sink = &sink;
   const float av[4] = {a.x, a.y, a.z, a.invW}, bv[4] = {b.x, b.y, b.z, b.invW};
@@ -157,6 +171,7 @@ void TileScene::addLine(const WindowVertex& a, const WindowVertex& b, const Line
 }
 
 void TileScene::addPoint(const WindowVertex& v, const PointSettings& settings, FragmentSink& sink) {
+  if (!isRasterizableCoordinate(v.x) || !isRasterizableCoordinate(v.y)) return;  // as rasterizePoint
   PointRecord r;
   r.sink = &sink;
   const float position[4] = {v.x, v.y, v.z, v.invW};

@@ -27,89 +27,118 @@
 // Depth comes first, so that the early depth test (depth_test.h) can drop hidden fragments
 // before their varyings are interpolated: with many overlapping triangles most fragments are
 // hidden, and the divisions of perspective-correct interpolation are the costliest part.
+//
+// Hidden blocks. The depth a pixel gets, depthValue(column + row) with column and row as above,
+// never decreases (or never increases) from one column to the next, nor from one row to the
+// next: each step is one IEEE operation rounded to nearest, and rounding keeps the order of its
+// arguments. So over a rectangle of pixels its extremes are at the four corners, exactly. When
+// the early depth test is an ordering (LESS, LEQUAL, GREATER, GEQUAL) and the nearest corner
+// fails against the farthest value stored in the rectangle, every pixel of the block fails and
+// the block is dropped before any per-pixel work; when the farthest corner passes against the
+// nearest stored value, every pixel passes and none is compared.
+//
+// Rows. Each row of a block is worked as lanes without branches (the depths of the columns in
+// the triangle's box, the coverage of their centres as a bit mask), which the compiler turns
+// into vector code.
+//
+// The walk ends at a CoveredBlock (triangle_block.h): which pixels of the block are covered and
+// passed the early test, and their depths. The sink decides what happens next; by default it is
+// the reference path below (emitBlockFragments), which interpolates every varying.
 #include <algorithm>
 
-#include "depth_value.h"
+#include "glass/raster/depth_value.h"
 #include "edge_functions.h"
 #include "glass/raster/framebuffer.h"
 #include "glass/raster/triangle.h"
+#include "glass/raster/triangle_block.h"
 
 namespace glass::raster {
 namespace {
 
-constexpr int kBlockSize = 8;
-
-struct BlockFragments {
-  Fragment fragments[kBlockSize * kBlockSize];
-  int count = 0;
-};
-
-// The columns [x0, x1) and rows [y0, y1) of a block whose lower-left pixel is (bx, by).
-struct BlockSpan {
-  int bx, by, x0, x1, y0, y1;
-};
+constexpr int kBlockSize = CoveredBlock::kSize;
 
 // The depth plane at the block's pixel centres, split as described at the top of the file.
+// Only the columns [i0, i1) and rows [j0, j1) of the block inside the triangle's box are set.
 struct BlockDepth {
   double column[kBlockSize], row[kBlockSize];
 
-  BlockDepth(const TriangleSetup& setup, const BlockSpan& span) {
-    for (int i = span.x0 - span.bx; i < span.x1 - span.bx; ++i)
-      column[i] = setup.z0 + setup.zdx * (span.bx + i + 0.5);
-    for (int j = span.y0 - span.by; j < span.y1 - span.by; ++j)
-      row[j] = setup.zdy * (span.by + j + 0.5);
+  BlockDepth(const TriangleSetup& setup, int bx, int by, int i0, int i1, int j0, int j1) {
+    for (int i = i0; i < i1; ++i) column[i] = setup.z0 + setup.zdx * (bx + i + 0.5);
+    for (int j = j0; j < j1; ++j) row[j] = setup.zdy * (by + j + 0.5);
   }
+  uint32_t at(int i, int j) const { return depthValue(column[i] + row[j]); }
 };
 
-// Interpolates the varyings of the block's fragments (whose position and depth are set), then
-// hands them to the sink.
-void interpolateAndEmit(const TriangleSetup& setup, const BlockSpan& span, BlockFragments& block,
-                        FragmentSink& sink) {
-  const double columnX0 = span.bx + 0.5, rowY0 = span.by + 0.5;  // centres of column/row 0
-  const int kept = block.count;
-  block.count = 0;
-  const AttributePlanes& planes = setup.planes;
-  const int varyingCount = setup.varyingCount;
-  // q = 1/w (or 1), and p = varying / w, per column and row as above; a varying is p / q.
-  double qColumn[kBlockSize], qRow[kBlockSize];
-  double pColumn[kBlockSize][kMaxVaryings], pRow[kBlockSize][kMaxVaryings];
-  for (int i = span.x0 - span.bx; i < span.x1 - span.bx; ++i) {
-    const double x = columnX0 + i;
-    qColumn[i] = planes.invW0 + planes.invWdx * x;
-    for (int k = 0; k < varyingCount; ++k) pColumn[i][k] = planes.a0[k] + planes.dx[k] * x;
-  }
-  for (int j = span.y0 - span.by; j < span.y1 - span.by; ++j) {
-    const double y = rowY0 + j;
-    qRow[j] = planes.invWdy * y;
-    for (int k = 0; k < varyingCount; ++k) pRow[j][k] = planes.dy[k] * y;
-  }
-  for (int f = 0; f < kept; ++f) {
-    Fragment& fragment = block.fragments[f];
-    const int i = fragment.x - span.bx, j = fragment.y - span.by;
-    const double q = qColumn[i] + qRow[j];
-    for (int k = 0; k < varyingCount; ++k)
-      fragment.varyings[k] = static_cast<float>((pColumn[i][k] + pRow[j][k]) / q);
-  }
+// Bits i0 <= i < i1.
+unsigned columnMask(int i0, int i1) { return (0xFFu << i0) & (0xFFu >> (kBlockSize - i1)); }
 
-  FragmentBatch batch;
-  batch.fragments = block.fragments;
-  batch.count = kept;
-  batch.varyingCount = varyingCount;
-  batch.frontFacing = setup.frontFacing;
-  batch.planes = &setup.planes;
-  sink.processFragments(batch);
+// Bit i, for i0 <= i < i1: the centre of pixel (bx + i, y) is inside the three edges
+// (edge_functions.h). Stepping from column to column is exact (64-bit integers).
+unsigned rowCoverage(const PixelEdgeFunctions& edges, int bx, int y, int i0, int i1) {
+  int64_t e0 = edges.at(0, bx + i0, y), e1 = edges.at(1, bx + i0, y), e2 = edges.at(2, bx + i0, y);
+  unsigned mask = 0;
+  for (int i = i0; i < i1; ++i) {
+    mask |= static_cast<unsigned>((static_cast<uint64_t>(e0 | e1 | e2) >> 63) ^ 1u) << i;
+    e0 += edges.stepX[0];
+    e1 += edges.stepX[1];
+    e2 += edges.stepX[2];
+  }
+  return mask;
 }
 
-}  // namespace
+// The smallest and largest stored depth over columns [x0, x1) of rows [y0, y1).
+void storedDepthRange(const Framebuffer& fb, int x0, int x1, int y0, int y1, uint32_t& lowest,
+                      uint32_t& highest) {
+  lowest = kDepthMax;
+  highest = 0;
+  for (int y = y0; y < y1; ++y) {
+    const uint32_t* stored = fb.depthAt(0, y);
+    for (int x = x0; x < x1; ++x) {
+      lowest = std::min(lowest, stored[x]);
+      highest = std::max(highest, stored[x]);
+    }
+  }
+}
 
-void rasterizeTriangle(const TriangleSetup& setup, FragmentSink& sink) {
+// What the early depth test decides for a whole block from its depth range and the stored
+// range (see "Hidden blocks" above).
+enum class BlockDepthOutcome { AllFail, AllPass, PerPixel };
+
+template <DepthCompare kCompare>
+BlockDepthOutcome blockDepthOutcome(const BlockDepth& depth, const Framebuffer& fb, int bx, int by,
+                                    int x0, int x1, int y0, int y1) {
+  constexpr bool kNearerPasses = kCompare == DepthCompare::Less || kCompare == DepthCompare::LessEqual;
+  constexpr bool kFartherPasses =
+      kCompare == DepthCompare::Greater || kCompare == DepthCompare::GreaterEqual;
+  if constexpr (!kNearerPasses && !kFartherPasses) {
+    return BlockDepthOutcome::PerPixel;
+  } else {
+    const int i0 = x0 - bx, i1 = x1 - 1 - bx, j0 = y0 - by, j1 = y1 - 1 - by;
+    const uint32_t corners[4] = {depth.at(i0, j0), depth.at(i1, j0), depth.at(i0, j1), depth.at(i1, j1)};
+    const uint32_t zMin = *std::min_element(corners, corners + 4);
+    const uint32_t zMax = *std::max_element(corners, corners + 4);
+    uint32_t storedMin, storedMax;
+    storedDepthRange(fb, x0, x1, y0, y1, storedMin, storedMax);
+    // The pixel least likely to pass against the stored value most favourable to it, and the
+    // other way round.
+    const uint32_t worstZ = kNearerPasses ? zMax : zMin, bestZ = kNearerPasses ? zMin : zMax;
+    const uint32_t worstStored = kNearerPasses ? storedMin : storedMax;
+    const uint32_t bestStored = kNearerPasses ? storedMax : storedMin;
+    if (!passesDepthCompare(kCompare, bestZ, bestStored)) return BlockDepthOutcome::AllFail;
+    if (passesDepthCompare(kCompare, worstZ, worstStored)) return BlockDepthOutcome::AllPass;
+    return BlockDepthOutcome::PerPixel;
+  }
+}
+
+// The walk of rasterizeTriangle for one early depth comparison (kEarly false: no early test).
+template <bool kEarly, DepthCompare kCompare>
+void walkTriangle(const TriangleSetup& setup, FragmentSink& sink) {
   const PixelRect& box = setup.box;
-  if (box.empty()) return;
   const PixelEdgeFunctions edges(setup);
   const Framebuffer* earlyDepth = setup.earlyDepth.buffer;
-  const DepthCompare compare = setup.earlyDepth.compare;
+  const bool largeTriangle = box.x1 - box.x0 >= 4 * kBlockSize && box.y1 - box.y0 >= 4 * kBlockSize;
 
-  BlockFragments block;
+  CoveredBlock block;
   const int firstBlockX = box.x0 & ~(kBlockSize - 1), firstBlockY = box.y0 & ~(kBlockSize - 1);
   for (int by = firstBlockY; by < box.y1; by += kBlockSize) {
     const int y0 = std::max(by, box.y0), y1 = std::min(by + kBlockSize, box.y1);
@@ -120,35 +149,114 @@ void rasterizeTriangle(const TriangleSetup& setup, FragmentSink& sink) {
       for (int i = 0; i < 3; ++i)
         if (edges.minOver(i, bx, by, kBlockSize, kBlockSize) < 0) accepted = false;
 
-      // Coverage and depth, row by row. A covered pixel's depth is computed at once, and a
-      // fragment that fails the early depth test goes no further.
-      const BlockSpan span{bx, by, x0, x1, y0, y1};
-      const BlockDepth depth(setup, span);
-      for (int y = y0; y < y1; ++y) {
-        const double zRow = depth.row[y - by];
-        const uint32_t* stored = earlyDepth ? earlyDepth->depthAt(0, y) : nullptr;
-        auto cover = [&](int x) {
-          const uint32_t z = depthValue(depth.column[x - bx] + zRow);
-          if (stored && !passesDepthCompare(compare, z, stored[x])) return;
-          Fragment& f = block.fragments[block.count++];
-          f.x = x;
-          f.y = y;
-          f.depth = z;
-        };
-        if (accepted) {
-          for (int x = x0; x < x1; ++x) cover(x);
-          continue;
-        }
-        int64_t e0 = edges.at(0, x0, y), e1 = edges.at(1, x0, y), e2 = edges.at(2, x0, y);
-        for (int x = x0; x < x1; ++x) {
-          if ((e0 | e1 | e2) >= 0) cover(x);
-          e0 += edges.stepX[0];
-          e1 += edges.stepX[1];
-          e2 += edges.stepX[2];
+      const int i0 = x0 - bx, i1 = x1 - bx;
+      const BlockDepth depth(setup, bx, by, i0, i1, y0 - by, y1 - by);
+      bool test = kEarly;
+      if constexpr (kEarly) {
+        // Not for small triangles: their blocks have too few pixels to repay the look at the
+        // stored range.
+        if (largeTriangle || accepted) {
+          const BlockDepthOutcome outcome =
+              blockDepthOutcome<kCompare>(depth, *earlyDepth, bx, by, x0, x1, y0, y1);
+          if (outcome == BlockDepthOutcome::AllFail) continue;
+          test = outcome == BlockDepthOutcome::PerPixel;
         }
       }
-      if (block.count > 0) interpolateAndEmit(setup, span, block, sink);
+
+      // Coverage and depth, row by row; a fragment that fails the early depth test goes no
+      // further.
+      block.bx = bx;
+      block.by = by;
+      const unsigned columns = columnMask(i0, i1);
+      bool any = false;
+      for (int j = 0; j < kBlockSize; ++j) {
+        const int y = by + j;
+        unsigned mask = 0;
+        if (y >= y0 && y < y1) {
+          mask = accepted ? columns : rowCoverage(edges, bx, y, i0, i1);
+          uint32_t* z = block.depth[j];
+          for (int i = i0; i < i1; ++i) z[i] = depth.at(i, j);
+          if constexpr (kEarly) {
+            if (test && mask != 0) {
+              const uint32_t* stored = earlyDepth->depthAt(bx, y);
+              for (int i = i0; i < i1; ++i)
+                if ((mask & (1u << i)) && !passesDepthCompare(kCompare, z[i], stored[i]))
+                  mask &= ~(1u << i);
+            }
+          }
+        }
+        block.rowMask[j] = static_cast<uint8_t>(mask);
+        any |= mask != 0;
+      }
+      if (any) sink.processTriangleBlock(setup, block);
     }
+  }
+}
+
+}  // namespace
+
+void emitBlockFragments(const TriangleSetup& setup, const CoveredBlock& block, FragmentSink& sink) {
+  Fragment fragments[kBlockSize * kBlockSize];
+  const int bx = block.bx, by = block.by;
+  const double columnX0 = bx + 0.5, rowY0 = by + 0.5;  // centres of column/row 0
+  const AttributePlanes& planes = setup.planes;
+  const int varyingCount = setup.varyingCount;
+  // q = 1/w (or 1), and p = varying / w, per column and row as above; a varying is p / q.
+  double qColumn[kBlockSize], qRow[kBlockSize];
+  double pColumn[kBlockSize][kMaxVaryings], pRow[kBlockSize][kMaxVaryings];
+  unsigned columns = 0;  // the columns with a pixel in some row
+  for (const uint8_t mask : block.rowMask) columns |= mask;
+  for (int i = 0; i < kBlockSize; ++i) {
+    if (!(columns & (1u << i))) continue;
+    const double x = columnX0 + i;
+    qColumn[i] = planes.invW0 + planes.invWdx * x;
+    for (int k = 0; k < varyingCount; ++k) pColumn[i][k] = planes.a0[k] + planes.dx[k] * x;
+  }
+  int count = 0;
+  for (int j = 0; j < kBlockSize; ++j) {
+    const unsigned mask = block.rowMask[j];
+    if (mask == 0) continue;
+    const double y = rowY0 + j;
+    qRow[j] = planes.invWdy * y;
+    for (int k = 0; k < varyingCount; ++k) pRow[j][k] = planes.dy[k] * y;
+    for (int i = 0; i < kBlockSize; ++i) {
+      if (!(mask & (1u << i))) continue;
+      Fragment& fragment = fragments[count++];
+      fragment.x = bx + i;
+      fragment.y = by + j;
+      fragment.depth = block.depth[j][i];
+      const double q = qColumn[i] + qRow[j];
+      for (int k = 0; k < varyingCount; ++k)
+        fragment.varyings[k] = static_cast<float>((pColumn[i][k] + pRow[j][k]) / q);
+    }
+  }
+
+  FragmentBatch batch;
+  batch.fragments = fragments;
+  batch.count = count;
+  batch.varyingCount = varyingCount;
+  batch.frontFacing = setup.frontFacing;
+  batch.planes = &setup.planes;
+  sink.processFragments(batch);
+}
+
+void FragmentSink::processTriangleBlock(const TriangleSetup& setup, const CoveredBlock& block) {
+  emitBlockFragments(setup, block, *this);
+}
+
+void rasterizeTriangle(const TriangleSetup& setup, FragmentSink& sink) {
+  if (setup.box.empty()) return;
+  if (setup.earlyDepth.buffer == nullptr) return walkTriangle<false, DepthCompare::Always>(setup, sink);
+  switch (setup.earlyDepth.compare) {
+    case DepthCompare::Never: return;  // every fragment fails
+    case DepthCompare::Less: return walkTriangle<true, DepthCompare::Less>(setup, sink);
+    case DepthCompare::Equal: return walkTriangle<true, DepthCompare::Equal>(setup, sink);
+    case DepthCompare::LessEqual: return walkTriangle<true, DepthCompare::LessEqual>(setup, sink);
+    case DepthCompare::Greater: return walkTriangle<true, DepthCompare::Greater>(setup, sink);
+    case DepthCompare::NotEqual: return walkTriangle<true, DepthCompare::NotEqual>(setup, sink);
+    case DepthCompare::GreaterEqual:
+      return walkTriangle<true, DepthCompare::GreaterEqual>(setup, sink);
+    case DepthCompare::Always: return walkTriangle<false, DepthCompare::Always>(setup, sink);
   }
 }
 

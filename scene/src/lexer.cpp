@@ -19,7 +19,9 @@ public:
       : file_(file), text_(file.text()), diagnostics_(diagnostics) {}
 
   std::vector<Token> run() {
-    while (pos_ < text_.size()) {
+    // Past the error limit nothing more would be shown: stop reading (a file of random bytes is
+    // an error every few bytes, and lexing all of a large one would only cost time and memory).
+    while (pos_ < text_.size() && !diagnostics_.full()) {
       char c = text_[pos_];
       if (isSpace(c)) {
         advance();

@@ -1,5 +1,6 @@
 // Per-fragment lighting (glShadeModel(GL_PHONG_WIN)) against the lighting equation evaluated
-// analytically at every pixel centre.
+// analytically at every pixel centre: the equation of spec 2.14.1 written out here in double,
+// independently of glass's own lighting code.
 //
 // A square at z = 0 fills a 64 x 64 viewport under glOrtho(-1, 1, -1, 1, -1, 1), so the eye-space
 // position of pixel (i, j) is exactly (-1 + (i + 0.5) / 32, -1 + (j + 0.5) / 32, 0) and its
@@ -11,74 +12,121 @@
 #include <GL/gl.h>
 #include <glass/context.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdlib>
 #include <vector>
-
-#include "lighting/color_material.h"
-#include "lighting/lighting_equation.h"
 
 namespace {
 
 constexpr int kSize = 64;
 
+using Vec3 = std::array<double, 3>;
+using Rgba = std::array<float, 4>;
+
+double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+Vec3 normalized(const Vec3& v) {
+  const double length = std::sqrt(dot(v, v));
+  return {v[0] / length, v[1] / length, v[2] / length};
+}
+
+struct MaterialSpec {  // with the defaults of table 6.10 (GL 1.5)
+  Rgba ambient{0.2f, 0.2f, 0.2f, 1.0f}, diffuse{0.8f, 0.8f, 0.8f, 1.0f};
+  Rgba specular{0.0f, 0.0f, 0.0f, 1.0f}, emission{0.0f, 0.0f, 0.0f, 1.0f};
+  float shininess = 0.0f;
+};
+
+struct LightSpec {  // a positional light in eye coordinates (the modelview is the identity)
+  Rgba ambient{0.0f, 0.0f, 0.0f, 1.0f}, diffuse{0.0f, 0.0f, 0.0f, 1.0f};
+  Rgba specular{0.0f, 0.0f, 0.0f, 1.0f};
+  Rgba position{0.0f, 0.0f, 1.0f, 1.0f};
+  float spotDirection[3] = {0.0f, 0.0f, -1.0f};
+  float spotCutoff = 180.0f, spotExponent = 0.0f;
+  float constantAttenuation = 1.0f, linearAttenuation = 0.0f, quadraticAttenuation = 0.0f;
+};
+
+// Spec 2.14.1, with an infinite viewer (GL_LIGHT_MODEL_LOCAL_VIEWER false) and positional lights:
+//   c = e_cm + a_cm a_cs + sum_i att_i spot_i (a_cm a_cli + (n . VP_pli) d_cm d_cli
+//                                              + f_i (n . h_i)^s_rm s_cm s_cli)
+// with VP_pli the unit vector to the light, h_i = VP_pli + (0, 0, 1) normalized, f_i = 1 where
+// n . VP_pli is positive, att_i = 1 / (k0 + k1 d + k2 d^2), spot_i = (-VP_pli . s_dli)^s_rli
+// inside the cone and 0 outside. Each colour is clamped to [0, 1].
+std::array<double, 3> litColor(const MaterialSpec& m, const Rgba& sceneAmbient,
+                               const std::vector<LightSpec>& lights, const Vec3& point,
+                               const Vec3& normal) {
+  std::array<double, 3> c;
+  for (int k = 0; k < 3; ++k) c[k] = double(m.emission[k]) + double(m.ambient[k]) * sceneAmbient[k];
+  for (const LightSpec& l : lights) {
+    const Vec3 toLight{l.position[0] - point[0], l.position[1] - point[1], l.position[2] - point[2]};
+    const double distance = std::sqrt(dot(toLight, toLight));
+    const Vec3 vp = normalized(toLight);
+    const double attenuation =
+        1.0 / (l.constantAttenuation + l.linearAttenuation * distance +
+               l.quadraticAttenuation * distance * distance);
+    double spot = 1.0;
+    if (l.spotCutoff != 180.0f) {
+      const Vec3 axis = normalized({l.spotDirection[0], l.spotDirection[1], l.spotDirection[2]});
+      const double cosine = -dot(vp, axis);
+      spot = cosine >= std::cos(l.spotCutoff * M_PI / 180.0) ? std::pow(cosine, l.spotExponent) : 0.0;
+    }
+    const double diffuse = std::max(dot(normal, vp), 0.0);
+    const Vec3 h = normalized({vp[0], vp[1], vp[2] + 1.0});
+    const double specular = diffuse > 0.0 ? std::pow(std::max(dot(normal, h), 0.0), m.shininess) : 0.0;
+    for (int k = 0; k < 3; ++k) {
+      c[k] += attenuation * spot *
+              (double(m.ambient[k]) * l.ambient[k] + diffuse * m.diffuse[k] * l.diffuse[k] +
+               specular * m.specular[k] * l.specular[k]);
+    }
+  }
+  for (double& v : c) v = std::clamp(v, 0.0, 1.0);
+  return c;
+}
+
 struct Scene {
-  glass::gl::LightingState state;  // the same lighting, set here by hand for the expectation
+  MaterialSpec front, back;
+  Rgba modelAmbient{0.1f, 0.1f, 0.1f, 1.0f};
+  std::vector<LightSpec> lights;
 
   Scene() {
-    using glass::gl::LightSource;
-    glass::gl::Material& m = state.materials[glass::gl::kFrontMaterial];
-    set(m.ambient, 0.2f, 0.1f, 0.1f, 1.0f);
-    set(m.diffuse, 0.8f, 0.6f, 0.3f, 1.0f);
-    set(m.specular, 0.9f, 0.9f, 0.9f, 1.0f);
-    m.shininess = 50.0f;
-    glass::gl::Material& back = state.materials[glass::gl::kBackMaterial];
-    set(back.diffuse, 0.2f, 0.4f, 0.9f, 1.0f);
-    set(state.model.ambient, 0.1f, 0.1f, 0.1f, 1.0f);
+    front.ambient = {0.2f, 0.1f, 0.1f, 1.0f};
+    front.diffuse = {0.8f, 0.6f, 0.3f, 1.0f};
+    front.specular = {0.9f, 0.9f, 0.9f, 1.0f};
+    front.shininess = 50.0f;
+    back.diffuse = {0.2f, 0.4f, 0.9f, 1.0f};
 
-    LightSource& point = state.lights[0];
-    point.enabled = true;
-    set(point.position, 0.3f, -0.2f, 0.6f, 1.0f);
+    LightSpec point;  // GL_LIGHT0: white diffuse and specular by default
+    point.diffuse = {1.0f, 1.0f, 1.0f, 1.0f};
+    point.specular = {1.0f, 1.0f, 1.0f, 1.0f};
+    point.position = {0.3f, -0.2f, 0.6f, 1.0f};
     point.constantAttenuation = 0.5f;
     point.quadraticAttenuation = 1.5f;
+    lights.push_back(point);
 
-    LightSource& spot = state.lights[1];
-    spot.enabled = true;
-    set(spot.diffuse, 0.3f, 0.5f, 0.8f, 1.0f);
-    set(spot.specular, 0.0f, 0.0f, 0.0f, 1.0f);
-    set(spot.position, -0.5f, 0.5f, 1.0f, 1.0f);
-    spot.spotDirection[0] = 0.0f;
-    spot.spotDirection[1] = 0.0f;
-    spot.spotDirection[2] = -1.0f;
+    LightSpec spot;
+    spot.diffuse = {0.3f, 0.5f, 0.8f, 1.0f};
+    spot.position = {-0.5f, 0.5f, 1.0f, 1.0f};
     spot.spotCutoff = 25.0f;
     spot.spotExponent = 3.0f;
-  }
-
-  static void set(float* c, float r, float g, float b, float a) {
-    c[0] = r;
-    c[1] = g;
-    c[2] = b;
-    c[3] = a;
+    lights.push_back(spot);
   }
 
   // The same state through the GL (with the identity modelview, eye coordinates = as given).
   void apply() const {
-    const glass::gl::Material& m = state.materials[0];
-    const glass::gl::Material& back = state.materials[1];
-    glMaterialfv(GL_FRONT, GL_AMBIENT, m.ambient);
-    glMaterialfv(GL_FRONT, GL_DIFFUSE, m.diffuse);
-    glMaterialfv(GL_FRONT, GL_SPECULAR, m.specular);
-    glMaterialf(GL_FRONT, GL_SHININESS, m.shininess);
-    glMaterialfv(GL_BACK, GL_DIFFUSE, back.diffuse);
-    glLightModelfv(GL_LIGHT_MODEL_AMBIENT, state.model.ambient);
-    const glass::gl::LightSource& point = state.lights[0];
-    glLightfv(GL_LIGHT0, GL_POSITION, point.position);
+    glMaterialfv(GL_FRONT, GL_AMBIENT, front.ambient.data());
+    glMaterialfv(GL_FRONT, GL_DIFFUSE, front.diffuse.data());
+    glMaterialfv(GL_FRONT, GL_SPECULAR, front.specular.data());
+    glMaterialf(GL_FRONT, GL_SHININESS, front.shininess);
+    glMaterialfv(GL_BACK, GL_DIFFUSE, back.diffuse.data());
+    glLightModelfv(GL_LIGHT_MODEL_AMBIENT, modelAmbient.data());
+    const LightSpec& point = lights[0];
+    glLightfv(GL_LIGHT0, GL_POSITION, point.position.data());
     glLightf(GL_LIGHT0, GL_CONSTANT_ATTENUATION, point.constantAttenuation);
     glLightf(GL_LIGHT0, GL_QUADRATIC_ATTENUATION, point.quadraticAttenuation);
-    const glass::gl::LightSource& spot = state.lights[1];
-    glLightfv(GL_LIGHT1, GL_DIFFUSE, spot.diffuse);
-    glLightfv(GL_LIGHT1, GL_SPECULAR, spot.specular);
-    glLightfv(GL_LIGHT1, GL_POSITION, spot.position);
+    const LightSpec& spot = lights[1];
+    glLightfv(GL_LIGHT1, GL_DIFFUSE, spot.diffuse.data());
+    glLightfv(GL_LIGHT1, GL_SPECULAR, spot.specular.data());
+    glLightfv(GL_LIGHT1, GL_POSITION, spot.position.data());
     glLightfv(GL_LIGHT1, GL_SPOT_DIRECTION, spot.spotDirection);
     glLightf(GL_LIGHT1, GL_SPOT_CUTOFF, spot.spotCutoff);
     glLightf(GL_LIGHT1, GL_SPOT_EXPONENT, spot.spotExponent);
@@ -125,19 +173,18 @@ std::vector<unsigned char> render(const Scene& scene, GLenum shadeModel, bool ba
   return pixels;
 }
 
-int toByte(float c) { return static_cast<int>(std::floor(c * 255.0f + 0.5f)); }
+int toByte(double c) { return static_cast<int>(std::floor(c * 255.0 + 0.5)); }
 
 // The largest difference, over every pixel and channel, between the picture and the equation.
 int largestError(const Scene& scene, const std::vector<unsigned char>& pixels, bool back) {
   int worst = 0;
-  const float normal[3] = {0.0f, 0.0f, back ? -1.0f : 1.0f};
-  const glass::gl::Material& material = scene.state.materials[back ? 1 : 0];
+  const Vec3 normal{0.0, 0.0, back ? -1.0 : 1.0};
+  const MaterialSpec& material = back ? scene.back : scene.front;
   for (int j = 0; j < kSize; ++j) {
     for (int i = 0; i < kSize; ++i) {
-      const float point[3] = {-1.0f + (static_cast<float>(i) + 0.5f) / 32.0f,
-                              -1.0f + (static_cast<float>(j) + 0.5f) / 32.0f, 0.0f};
-      float primary[4], secondary[4];
-      glass::gl::evaluateLighting(scene.state, material, point, normal, primary, secondary);
+      const Vec3 point{-1.0 + (i + 0.5) / 32.0, -1.0 + (j + 0.5) / 32.0, 0.0};
+      const std::array<double, 3> primary =
+          litColor(material, scene.modelAmbient, scene.lights, point, normal);
       for (int c = 0; c < 3; ++c) {
         const int got = pixels[(j * kSize + i) * 4 + c];
         worst = std::max(worst, std::abs(got - toByte(primary[c])));
@@ -207,22 +254,18 @@ TEST_CASE("Phong shading: colour material takes each fragment's interpolated col
   glassMakeCurrent(nullptr);
   glassDestroyContext(ctx);
 
-  glass::gl::LightingState state = scene.state;
-  state.colorMaterial.enabled = true;
-  state.colorMaterial.face = GL_FRONT;
-  state.colorMaterial.mode = GL_DIFFUSE;
+  // Colour material (spec 2.14.3): the diffuse reflectance is the fragment's colour, linear
+  // across the square in x.
   int worst = 0;
-  const float normal[3] = {0.0f, 0.0f, 1.0f};
+  const Vec3 normal{0.0, 0.0, 1.0};
   for (int j = 0; j < kSize; ++j) {
     for (int i = 0; i < kSize; ++i) {
-      const float t = (static_cast<float>(i) + 0.5f) / kSize;
-      const float color[4] = {t, 1.0f - t, 0.5f, 1.0f};
-      const float y = -1.0f + (static_cast<float>(j) + 0.5f) / 32.0f;
-      const float point[3] = {-1.0f + 2.0f * t, y, 0.0f};
-      const glass::gl::Material m =
-          glass::gl::materialWithColor(state, glass::gl::kFrontMaterial, color);
-      float primary[4], secondary[4];
-      glass::gl::evaluateLighting(state, m, point, normal, primary, secondary);
+      const double t = (i + 0.5) / kSize;
+      MaterialSpec m = scene.front;
+      m.diffuse = {static_cast<float>(t), static_cast<float>(1.0 - t), 0.5f, 1.0f};
+      const Vec3 point{-1.0 + 2.0 * t, -1.0 + (j + 0.5) / 32.0, 0.0};
+      const std::array<double, 3> primary =
+          litColor(m, scene.modelAmbient, scene.lights, point, normal);
       for (int c = 0; c < 3; ++c) {
         worst = std::max(worst, std::abs(pixels[(j * kSize + i) * 4 + c] - toByte(primary[c])));
       }

@@ -114,6 +114,41 @@ TEST_CASE("scene diagnostics: the parser stops at 20 errors and says so") {
   CHECK(diagnostics.format().find("20 errors (stopped at the limit of 20)") != std::string::npos);
 }
 
+TEST_CASE("scene diagnostics: errors past the limit are neither counted nor shown") {
+  // Lexer errors (moved over in source order) and several errors of one statement can arrive
+  // after the limit is reached; the count and the list must still stop at it.
+  std::string text;
+  for (int i = 0; i < 30; ++i) text += "bogus \"unterminated\n";
+  for (int i = 0; i < 30; ++i) text += "translate x y z\n";
+  Diagnostics diagnostics;
+  parseSceneText("many.scene", text, diagnostics);
+  CHECK(diagnostics.errorCount() == 20);
+  const std::string messages = diagnostics.format();
+  std::size_t shown = 0;
+  for (std::size_t at = messages.find(": error: "); at != std::string::npos;
+       at = messages.find(": error: ", at + 1))
+    ++shown;
+  CHECK(shown == 20);
+  CHECK(messages.find("20 errors (stopped at the limit of 20)") != std::string::npos);
+}
+
+TEST_CASE("scene diagnostics: bytes a terminal would act on are shown escaped") {
+  // An ESC sequence (set the colour red), a C1 control (U+009B, CSI) and a stray byte that is not
+  // UTF-8; valid UTF-8 stays as it is, and the caret still lines up under the escaped bytes.
+  const std::string messages =
+      parseMessages("\x1b[31mred 1\n# caf\xc3\xa9\nbad\xc2\x9b\xff 2\n");
+  CHECK(messages.find('\x1b') == std::string::npos);
+  CHECK(messages.find("\xc2\x9b") == std::string::npos);
+  CHECK(messages.find('\xff') == std::string::npos);
+  // The ESC byte is underlined by 4 columns, and what follows it moves 3 columns on.
+  CHECK(messages.find("test.scene:1:1: error: unexpected character byte 27\n    1 | \\x1b[31mred 1\n"
+                      "      | ^~~~\n") != std::string::npos);
+  CHECK(messages.find("test.scene:1:3: error: malformed number '31mred'\n    1 | \\x1b[31mred 1\n"
+                      "      |      ^~~~~~\n") != std::string::npos);
+  CHECK(messages.find("bad\\xc2\\x9b\\xff 2") != std::string::npos);
+  CHECK(printable("caf\xc3\xa9\t\x7f\n") == "caf\xc3\xa9\t\\x7f\\x0a");
+}
+
 TEST_CASE("scene parser: includes nested too deep are reported") {
   const fs::path directory = fs::temp_directory_path() / "glass_scene_include_depth";
   fs::create_directories(directory);

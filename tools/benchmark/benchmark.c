@@ -1,26 +1,36 @@
 /* Frame times on heavy frames at 1920 x 1080, for glass (benchmark) and for Mesa
  * (benchmark_mesa, the same source). Not a test: the numbers depend on the machine.
  *
- * Frames, each drawn from client vertex arrays with glDrawArrays, smooth colours, no lighting:
+ * Frames, smooth colours, drawn from client vertex arrays with glDrawArrays unless named otherwise:
  *   small_triangles  250,000 triangles of about 18 pixels scattered with random depths, depth test
  *   large_triangles  64 triangles of about half the screen each, tilted in depth, depth test
+ *   gouraud_quads    96 quads of a third to two thirds of the screen each way, tilted in depth,
+ *                    depth test: about 25 fragments for every pixel (GL_QUADS)
  *   lines            200,000 width-1 lines up to 64 pixels long
+ *   lines_immediate  the same lines through glBegin/glColor4ubv/glVertex3fv/glEnd
  *   lit_spheres      48 spheres of 3,132 triangles (150,336 in all), smooth shaded and lit by a
  *                    directional and a positional light with a specular highlight, colour
  *                    material from a colour array, depth test
+ *   lit_spheres_immediate  the same triangles through glBegin/glColor4ubv/glNormal3fv/glVertex3fv
+ *   lit_spheres_indexed    the same spheres with shared vertices (1,711 each), by glDrawElements
  *   textured_scene   a floor with its 256 x 256 texture repeated 30 times each way and 24 textured
  *                    cubes, in perspective, lit by a directional light, GL_MODULATE, mipmapped
  *                    (GL_GENERATE_MIPMAP) and filtered trilinearly (GL_LINEAR_MIPMAP_LINEAR)
- * A frame is glClear, the draw call and glFinish. Each frame is drawn once to warm up, then RUNS
- * times; the median time is reported, with the fastest and slowest.
+ * A frame is glClear, the draw and glFinish. Each frame is drawn once to warm up, then RUNS
+ * times; the median time is reported, with the fastest and slowest. The last line gives the
+ * process's peak memory (maximum resident set size).
  *
- * Usage: benchmark [--png DIR]   (--png also writes each frame to DIR/<frame>.png, to look at) */
+ * Usage: benchmark [--png DIR] [--runs N] [FRAME...]
+ *   --png DIR  also writes each frame to DIR/<frame>.png, to look at
+ *   --runs N   timed draws per frame (default 7)
+ *   FRAME      draw only the frames named (default: all) */
 #include <GL/gl.h>
 
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/resource.h>
 #include <time.h>
 #include <unistd.h>
 
@@ -28,7 +38,10 @@
 
 #include "lcg.h"
 
-enum { WIDTH = 1920, HEIGHT = 1080, RUNS = 7 };
+enum { WIDTH = 1920, HEIGHT = 1080, DEFAULT_RUNS = 7, MAX_RUNS = 101 };
+
+/* How a frame sends its vertices. */
+typedef enum { ARRAYS, IMMEDIATE, ELEMENTS } Submission;
 
 typedef struct {
   const char *name;
@@ -36,21 +49,32 @@ typedef struct {
   int primitives;
   int verticesPerPrimitive;
   int depthTest;
+  Submission submission;
+  int vertexCount;    /* vertices in the arrays: primitives * verticesPerPrimitive, or fewer
+                         when ELEMENTS shares them */
+  GLuint *indices;    /* ELEMENTS: primitives * verticesPerPrimitive indices; NULL otherwise */
   GLfloat *positions; /* x, y, z per vertex */
   GLubyte *colors;    /* r, g, b, a per vertex */
   GLfloat *normals;   /* x, y, z per vertex, for lit frames; NULL otherwise */
   GLfloat *texCoords; /* s, t per vertex, for textured frames; NULL otherwise */
 } Frame;
 
-static void allocate(Frame *frame)
+static void *allocateOrExit(size_t bytes)
 {
-  const size_t vertices = (size_t)frame->primitives * (size_t)frame->verticesPerPrimitive;
-  frame->positions = malloc(vertices * 3 * sizeof(GLfloat));
-  frame->colors = malloc(vertices * 4);
-  if (!frame->positions || !frame->colors) {
+  void *p = malloc(bytes);
+  if (!p) {
     fprintf(stderr, "benchmark: out of memory\n");
     exit(1);
   }
+  return p;
+}
+
+static void allocate(Frame *frame)
+{
+  const size_t vertices = (size_t)frame->primitives * (size_t)frame->verticesPerPrimitive;
+  frame->vertexCount = (int)vertices;
+  frame->positions = allocateOrExit(vertices * 3 * sizeof(GLfloat));
+  frame->colors = allocateOrExit(vertices * 4);
 }
 
 static void setVertex(Frame *frame, size_t v, float x, float y, float z, Lcg *random)
@@ -65,7 +89,7 @@ static void setVertex(Frame *frame, size_t v, float x, float y, float z, Lcg *ra
 /* Triangles about 6 pixels across at random places and depths (z in [-1, 1], ortho). */
 static Frame smallTriangles(void)
 {
-  Frame frame = {"small_triangles", GL_TRIANGLES, 250000, 3, 1, NULL, NULL, NULL, NULL};
+  Frame frame = {"small_triangles", GL_TRIANGLES, 250000, 3, 1, ARRAYS, 0, NULL, NULL, NULL, NULL, NULL};
   Lcg random = {1u};
   allocate(&frame);
   for (int t = 0; t < frame.primitives; ++t) {
@@ -82,7 +106,7 @@ static Frame smallTriangles(void)
  * cut through each other and the depth test decides most pixels many times over. */
 static Frame largeTriangles(void)
 {
-  Frame frame = {"large_triangles", GL_TRIANGLES, 64, 3, 1, NULL, NULL, NULL, NULL};
+  Frame frame = {"large_triangles", GL_TRIANGLES, 64, 3, 1, ARRAYS, 0, NULL, NULL, NULL, NULL, NULL};
   Lcg random = {2u};
   allocate(&frame);
   for (int t = 0; t < frame.primitives; ++t)
@@ -93,9 +117,31 @@ static Frame largeTriangles(void)
   return frame;
 }
 
+/* Quads a third to two thirds of the screen wide and high, each a plane tilted in depth, so that
+ * they cut through each other: about 25 depth-tested fragments for every pixel of the screen. */
+static Frame gouraudQuads(void)
+{
+  Frame frame = {"gouraud_quads", GL_QUADS, 96, 4, 1, ARRAYS, 0, NULL, NULL, NULL, NULL, NULL};
+  Lcg random = {5u};
+  allocate(&frame);
+  for (int q = 0; q < frame.primitives; ++q) {
+    const float w = lcg_range(&random, WIDTH / 3.0f, 2.0f * WIDTH / 3.0f);
+    const float h = lcg_range(&random, HEIGHT / 3.0f, 2.0f * HEIGHT / 3.0f);
+    const float x = lcg_range(&random, 0.0f, WIDTH - w), y = lcg_range(&random, 0.0f, HEIGHT - h);
+    /* z = z0 + dzdx * (corner x) + dzdy * (corner y), corners at 0 or 1 of the quad's size. */
+    const float z0 = lcg_range(&random, -0.5f, 0.5f);
+    const float dzdx = lcg_range(&random, -0.4f, 0.4f), dzdy = lcg_range(&random, -0.4f, 0.4f);
+    static const int corner[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+    for (int k = 0; k < 4; ++k)
+      setVertex(&frame, 4 * (size_t)q + k, x + w * (float)corner[k][0], y + h * (float)corner[k][1],
+                z0 + dzdx * (float)corner[k][0] + dzdy * (float)corner[k][1], &random);
+  }
+  return frame;
+}
+
 static Frame lines(void)
 {
-  Frame frame = {"lines", GL_LINES, 200000, 2, 0, NULL, NULL, NULL, NULL};
+  Frame frame = {"lines", GL_LINES, 200000, 2, 0, ARRAYS, 0, NULL, NULL, NULL, NULL, NULL};
   Lcg random = {3u};
   allocate(&frame);
   for (int l = 0; l < frame.primitives; ++l) {
@@ -132,18 +178,14 @@ static void sphereVertex(Frame *frame, size_t v, float cx, float cy, float r, in
 static Frame litSpheres(void)
 {
   const int perSphere = 2 * SPHERE_SLICES * (SPHERE_STACKS - 1);
-  Frame frame = {"lit_spheres", GL_TRIANGLES, SPHERE_COLUMNS * SPHERE_ROWS * perSphere, 3, 1,
-                 NULL, NULL, NULL, NULL};
+  Frame frame = {"lit_spheres", GL_TRIANGLES, SPHERE_COLUMNS * SPHERE_ROWS * perSphere, 3, 1, ARRAYS, 0,
+                 NULL, NULL, NULL, NULL, NULL};
   const float cellW = (float)WIDTH / SPHERE_COLUMNS, cellH = (float)HEIGHT / SPHERE_ROWS;
   const float r = 0.45f * (cellW < cellH ? cellW : cellH);
   Lcg random = {4u};
   size_t v = 0;
   allocate(&frame);
-  frame.normals = malloc((size_t)frame.primitives * 3 * 3 * sizeof(GLfloat));
-  if (!frame.normals) {
-    fprintf(stderr, "benchmark: out of memory\n");
-    exit(1);
-  }
+  frame.normals = allocateOrExit((size_t)frame.vertexCount * 3 * sizeof(GLfloat));
   for (int row = 0; row < SPHERE_ROWS; ++row)
     for (int column = 0; column < SPHERE_COLUMNS; ++column) {
       const float cx = cellW * ((float)column + 0.5f), cy = cellH * ((float)row + 0.5f);
@@ -164,6 +206,60 @@ static Frame litSpheres(void)
           }
         }
     }
+  return frame;
+}
+
+/* The same 48 spheres with each grid vertex stored once, (SPHERE_SLICES + 1) x (SPHERE_STACKS + 1)
+ * per sphere, and the triangles of litSpheres as indices into them, for glDrawElements. */
+static Frame litSpheresIndexed(void)
+{
+  const int perSphere = 2 * SPHERE_SLICES * (SPHERE_STACKS - 1);
+  const int gridVertices = (SPHERE_SLICES + 1) * (SPHERE_STACKS + 1);
+  const int spheres = SPHERE_COLUMNS * SPHERE_ROWS;
+  Frame frame = {"lit_spheres_indexed", GL_TRIANGLES, spheres * perSphere, 3, 1, ELEMENTS, 0,
+                 NULL, NULL, NULL, NULL, NULL};
+  const float cellW = (float)WIDTH / SPHERE_COLUMNS, cellH = (float)HEIGHT / SPHERE_ROWS;
+  const float r = 0.45f * (cellW < cellH ? cellW : cellH);
+  Lcg random = {4u};
+  size_t index = 0;
+  frame.vertexCount = spheres * gridVertices;
+  frame.positions = allocateOrExit((size_t)frame.vertexCount * 3 * sizeof(GLfloat));
+  frame.colors = allocateOrExit((size_t)frame.vertexCount * 4);
+  frame.normals = allocateOrExit((size_t)frame.vertexCount * 3 * sizeof(GLfloat));
+  frame.indices = allocateOrExit((size_t)frame.primitives * 3 * sizeof(GLuint));
+  for (int row = 0; row < SPHERE_ROWS; ++row)
+    for (int column = 0; column < SPHERE_COLUMNS; ++column) {
+      const float cx = cellW * ((float)column + 0.5f), cy = cellH * ((float)row + 0.5f);
+      const GLuint base = (GLuint)((row * SPHERE_COLUMNS + column) * gridVertices);
+      GLubyte color[3];
+      for (int c = 0; c < 3; ++c) color[c] = (GLubyte)(60 + lcg_below(&random, 196));
+      for (int j = 0; j <= SPHERE_STACKS; ++j)
+        for (int i = 0; i <= SPHERE_SLICES; ++i)
+          sphereVertex(&frame, base + (size_t)(j * (SPHERE_SLICES + 1) + i), cx, cy, r, i, j, color);
+#define GRID(i, j) (base + (GLuint)((j) * (SPHERE_SLICES + 1) + (i)))
+      for (int j = 0; j < SPHERE_STACKS; ++j)
+        for (int i = 0; i < SPHERE_SLICES; ++i) {
+          if (j != 0) {
+            frame.indices[index++] = GRID(i, j);
+            frame.indices[index++] = GRID(i, j + 1);
+            frame.indices[index++] = GRID(i + 1, j);
+          }
+          if (j != SPHERE_STACKS - 1) {
+            frame.indices[index++] = GRID(i + 1, j);
+            frame.indices[index++] = GRID(i, j + 1);
+            frame.indices[index++] = GRID(i + 1, j + 1);
+          }
+        }
+#undef GRID
+    }
+  return frame;
+}
+
+/* A frame drawn through glBegin/glEnd instead of arrays, from the same data. */
+static Frame immediately(Frame frame, const char *name)
+{
+  frame.name = name;
+  frame.submission = IMMEDIATE;
   return frame;
 }
 
@@ -190,15 +286,11 @@ static void texturedQuad(Frame *frame, size_t v, const float corners[4][3], cons
  * 6 x 4 cubes of side 2 standing on it, each face carrying the whole texture once. */
 static Frame texturedScene(void)
 {
-  Frame frame = {"textured_scene", GL_QUADS, 1 + 6 * SCENE_CUBES_X * SCENE_CUBES_Z, 4, 1,
-                 NULL, NULL, NULL, NULL};
+  Frame frame = {"textured_scene", GL_QUADS, 1 + 6 * SCENE_CUBES_X * SCENE_CUBES_Z, 4, 1, ARRAYS, 0,
+                 NULL, NULL, NULL, NULL, NULL};
   allocate(&frame);
-  frame.normals = malloc((size_t)frame.primitives * 4 * 3 * sizeof(GLfloat));
-  frame.texCoords = malloc((size_t)frame.primitives * 4 * 2 * sizeof(GLfloat));
-  if (!frame.normals || !frame.texCoords) {
-    fprintf(stderr, "benchmark: out of memory\n");
-    exit(1);
-  }
+  frame.normals = allocateOrExit((size_t)frame.vertexCount * 3 * sizeof(GLfloat));
+  frame.texCoords = allocateOrExit((size_t)frame.vertexCount * 2 * sizeof(GLfloat));
   static const float up[3] = {0, 1, 0};
   const float floorCorners[4][3] = {{-30, 0, 30}, {30, 0, 30}, {30, 0, -30}, {-30, 0, -30}};
   size_t v = 0;
@@ -284,6 +376,11 @@ static void prepareFrameState(int lit)
   glLoadIdentity();
   glOrtho(0.0, WIDTH, 0.0, HEIGHT, lit ? -WIDTH : -1.0, lit ? WIDTH : 1.0);
   glMatrixMode(GL_MODELVIEW);
+  glLoadIdentity();
+  /* What the textured frame may have left on, when frames are chosen in another order. */
+  glDisable(GL_TEXTURE_2D);
+  glDisable(GL_CULL_FACE);
+  glDisableClientState(GL_TEXTURE_COORD_ARRAY);
   static const GLfloat direction[4] = {-0.4f, 0.5f, 0.8f, 0.0f};
   static const GLfloat lamp[4] = {0.9f * WIDTH, 0.9f * HEIGHT, 600.0f, 1.0f};
   static const GLfloat warm[4] = {0.6f, 0.5f, 0.3f, 1.0f};
@@ -316,19 +413,42 @@ static double now_ms(void)
   return (double)t.tv_sec * 1e3 + (double)t.tv_nsec * 1e-6;
 }
 
+/* glBegin/glEnd with the attributes of every vertex as glColor4ubv, glNormal3fv, glTexCoord2fv
+ * and glVertex3fv, in the order of the arrays. */
+static void drawImmediately(const Frame *frame)
+{
+  const int count = frame->primitives * frame->verticesPerPrimitive;
+  glBegin(frame->mode);
+  for (int v = 0; v < count; ++v) {
+    glColor4ubv(frame->colors + 4 * (size_t)v);
+    if (frame->normals) glNormal3fv(frame->normals + 3 * (size_t)v);
+    if (frame->texCoords) glTexCoord2fv(frame->texCoords + 2 * (size_t)v);
+    glVertex3fv(frame->positions + 3 * (size_t)v);
+  }
+  glEnd();
+}
+
 static double drawFrame(const Frame *frame)
 {
   const double start = now_ms();
+  const int count = frame->primitives * frame->verticesPerPrimitive;
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   if (frame->depthTest)
     glEnable(GL_DEPTH_TEST);
   else
     glDisable(GL_DEPTH_TEST);
-  glVertexPointer(3, GL_FLOAT, 0, frame->positions);
-  glColorPointer(4, GL_UNSIGNED_BYTE, 0, frame->colors);
-  if (frame->normals) glNormalPointer(GL_FLOAT, 0, frame->normals);
-  if (frame->texCoords) glTexCoordPointer(2, GL_FLOAT, 0, frame->texCoords);
-  glDrawArrays(frame->mode, 0, frame->primitives * frame->verticesPerPrimitive);
+  if (frame->submission == IMMEDIATE) {
+    drawImmediately(frame);
+  } else {
+    glVertexPointer(3, GL_FLOAT, 0, frame->positions);
+    glColorPointer(4, GL_UNSIGNED_BYTE, 0, frame->colors);
+    if (frame->normals) glNormalPointer(GL_FLOAT, 0, frame->normals);
+    if (frame->texCoords) glTexCoordPointer(2, GL_FLOAT, 0, frame->texCoords);
+    if (frame->submission == ELEMENTS)
+      glDrawElements(frame->mode, count, GL_UNSIGNED_INT, frame->indices);
+    else
+      glDrawArrays(frame->mode, 0, count);
+  }
   glFinish();
   return now_ms() - start;
 }
@@ -357,19 +477,69 @@ static void cpuModel(char *model, size_t size)
   fclose(cpuinfo);
 }
 
+/* The process's peak resident memory in MiB (Linux reports ru_maxrss in KiB). */
+static double peakMemoryMiB(void)
+{
+  struct rusage usage;
+  if (getrusage(RUSAGE_SELF, &usage) != 0) return 0.0;
+  return (double)usage.ru_maxrss / 1024.0;
+}
+
+enum { FRAME_COUNT = 9 };
+static const char *const frameNames[FRAME_COUNT + 1] = {
+    "small_triangles", "large_triangles",       "gouraud_quads",       "lines",          "lines_immediate",
+    "lit_spheres",     "lit_spheres_immediate", "lit_spheres_indexed", "textured_scene", NULL};
+
+/* Builds frame `name`; returns 0 for a name no frame has. */
+static int makeFrame(const char *name, Frame *frame)
+{
+  if (strcmp(name, "small_triangles") == 0) *frame = smallTriangles();
+  else if (strcmp(name, "large_triangles") == 0) *frame = largeTriangles();
+  else if (strcmp(name, "gouraud_quads") == 0) *frame = gouraudQuads();
+  else if (strcmp(name, "lines") == 0) *frame = lines();
+  else if (strcmp(name, "lines_immediate") == 0) *frame = immediately(lines(), "lines_immediate");
+  else if (strcmp(name, "lit_spheres") == 0) *frame = litSpheres();
+  else if (strcmp(name, "lit_spheres_immediate") == 0)
+    *frame = immediately(litSpheres(), "lit_spheres_immediate");
+  else if (strcmp(name, "lit_spheres_indexed") == 0) *frame = litSpheresIndexed();
+  else if (strcmp(name, "textured_scene") == 0) *frame = texturedScene();
+  else return 0;
+  return 1;
+}
+
+static int usage(const char *program)
+{
+  fprintf(stderr, "usage: %s [--png DIR] [--runs N] [FRAME...]\nframes:", program);
+  for (int f = 0; frameNames[f]; ++f) fprintf(stderr, " %s", frameNames[f]);
+  fprintf(stderr, "\n");
+  return 2;
+}
+
 int main(int argc, char **argv)
 {
   const char *pngDir = NULL;
+  const char *selected[FRAME_COUNT];
+  int selectedCount = 0, runs = DEFAULT_RUNS;
   char model[256], path[1024];
   GlassContext *ctx;
-  Frame frames[5];
 
-  if (argc == 3 && strcmp(argv[1], "--png") == 0)
-    pngDir = argv[2];
-  else if (argc != 1) {
-    fprintf(stderr, "usage: %s [--png DIR]\n", argv[0]);
-    return 2;
+  for (int a = 1; a < argc; ++a) {
+    if (strcmp(argv[a], "--png") == 0 && a + 1 < argc) {
+      pngDir = argv[++a];
+    } else if (strcmp(argv[a], "--runs") == 0 && a + 1 < argc) {
+      char *end = NULL;
+      const long n = strtol(argv[++a], &end, 10);
+      if (*end != '\0' || n < 1 || n > MAX_RUNS) return usage(argv[0]);
+      runs = (int)n;
+    } else {
+      int known = 0;
+      for (int f = 0; frameNames[f]; ++f) known |= strcmp(argv[a], frameNames[f]) == 0;
+      if (!known || selectedCount == FRAME_COUNT) return usage(argv[0]);
+      selected[selectedCount++] = argv[a];
+    }
   }
+  if (selectedCount == 0)
+    for (int f = 0; frameNames[f]; ++f) selected[selectedCount++] = frameNames[f];
 
   ctx = glassCreateContext(WIDTH, HEIGHT);
   if (!ctx || !glassMakeCurrent(ctx)) {
@@ -394,34 +564,33 @@ int main(int argc, char **argv)
   printf("threads:    LP_NUM_THREADS=%s GLASS_THREADS=%s\n",
          getenv("LP_NUM_THREADS") ? getenv("LP_NUM_THREADS") : "(unset)",
          getenv("GLASS_THREADS") ? getenv("GLASS_THREADS") : "(unset)");
-  printf("timing:     median of %d frames after 1 warm-up frame, ms\n", RUNS);
+  printf("timing:     median of %d frames after 1 warm-up frame, ms\n", runs);
 
-  frames[0] = smallTriangles();
-  frames[1] = largeTriangles();
-  frames[2] = lines();
-  frames[3] = litSpheres();
-  frames[4] = texturedScene();
-  for (int f = 0; f < 5; ++f) {
-    double times[RUNS];
-    if (frames[f].texCoords)
+  for (int f = 0; f < selectedCount; ++f) {
+    double times[MAX_RUNS];
+    Frame frame;
+    makeFrame(selected[f], &frame);
+    if (frame.texCoords)
       prepareTexturedFrameState();
     else
-      prepareFrameState(frames[f].normals != NULL);
-    drawFrame(&frames[f]);
-    for (int r = 0; r < RUNS; ++r) times[r] = drawFrame(&frames[f]);
-    qsort(times, RUNS, sizeof times[0], byValue);
-    printf("frame %-16s %8d primitives  median %9.2f ms  (min %.2f, max %.2f)\n", frames[f].name,
-           frames[f].primitives, times[RUNS / 2], times[0], times[RUNS - 1]);
+      prepareFrameState(frame.normals != NULL);
+    drawFrame(&frame);
+    for (int r = 0; r < runs; ++r) times[r] = drawFrame(&frame);
+    qsort(times, (size_t)runs, sizeof times[0], byValue);
+    printf("frame %-22s %8d primitives  median %9.2f ms  (min %.2f, max %.2f)\n", frame.name,
+           frame.primitives, times[runs / 2], times[0], times[runs - 1]);
     fflush(stdout);
     if (pngDir) {
-      snprintf(path, sizeof path, "%s/%s.png", pngDir, frames[f].name);
+      snprintf(path, sizeof path, "%s/%s.png", pngDir, frame.name);
       if (!glassWritePNG(ctx, path)) fprintf(stderr, "benchmark: cannot write %s\n", path);
     }
-    free(frames[f].positions);
-    free(frames[f].colors);
-    free(frames[f].normals);
-    free(frames[f].texCoords);
+    free(frame.positions);
+    free(frame.colors);
+    free(frame.normals);
+    free(frame.texCoords);
+    free(frame.indices);
   }
+  printf("peak memory: %.1f MiB\n", peakMemoryMiB());
 
   glassDestroyContext(ctx);
   return 0;

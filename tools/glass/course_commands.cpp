@@ -12,10 +12,12 @@ namespace {
 
 int runLines(const std::vector<std::string> &args) { return course::runLinesCommand(args, std::cout, std::cerr); }
 int runIfs(const std::vector<std::string> &args) { return course::runIfsCommand(args, std::cout, std::cerr); }
+int runIfs3d(const std::vector<std::string> &args) { return course::runIfs3dCommand(args, std::cout, std::cerr); }
 int runMath(const std::vector<std::string> &args) { return course::runMathCommand(args, std::cout, std::cerr); }
 
 const bool linesRegistered = registerCommand({"lines", course::kLinesSummary, runLines});
 const bool ifsRegistered = registerCommand({"ifs", course::kIfsSummary, runIfs});
+const bool ifs3dRegistered = registerCommand({"ifs3d", course::kIfs3dSummary, runIfs3d});
 const bool mathRegistered = registerCommand({"math", course::kMathSummary, runMath});
 
 } // namespace

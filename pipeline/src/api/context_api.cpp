@@ -4,8 +4,6 @@
 
 #include <new>
 
-#include "api/flush_callback.h"
-
 #include "core/context.h"
 #include "core/png_writer.h"
 #include "core/transform_state.h"
@@ -14,8 +12,6 @@
 
 struct GlassContext {
   glass::gl::Context gl;
-  GlassFlushCallback flushCallback = nullptr;
-  void* flushUserData = nullptr;
   GlassContext(int width, int height) : gl(width, height) {}
 };
 
@@ -89,15 +85,13 @@ int glassResizeContext(GlassContext* ctx, int width, int height) {
 
 void glassSetFlushCallback(GlassContext* ctx, GlassFlushCallback callback, void* userData) {
   if (!ctx) return;
-  ctx->flushCallback = callback;
-  ctx->flushUserData = userData;
+  if (!callback) {
+    ctx->gl.afterFlush = nullptr;
+    return;
+  }
+  ctx->gl.afterFlush = [ctx, callback, userData](glass::gl::Context&) { callback(ctx, userData); };
 }
 
 int glassWritePixelsPNG(const char* path, int width, int height, const unsigned char* rgba) {
   return glass::gl::writeRGBAPixelsPNG(rgba, width, height, path) ? 1 : 0;
-}
-
-void glass::gl::runFlushCallback() {
-  GlassContext* ctx = currentGlassContext;
-  if (ctx && ctx->flushCallback) ctx->flushCallback(ctx, ctx->flushUserData);
 }

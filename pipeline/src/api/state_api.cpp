@@ -5,7 +5,6 @@
 #include <cmath>
 #include <limits>
 
-#include "api/flush_callback.h"
 #include "core/capabilities.h"
 #include "core/context.h"
 #include "core/gl_strings.h"
@@ -45,12 +44,14 @@ bool lookUp(Context& ctx, GLenum pname, StateValue& value) {
 // i = ((2^32 - 1) c - 1) / 2, rounded to nearest with halves upward, so that 0.0 gives 0.
 GLint normalizedToInteger(double value) {
   const double scaled = std::floor(4294967295.0 * value / 2.0);
+  if (std::isnan(scaled)) return 0;  // converting NaN is undefined; a NaN state value reads as 0
   if (scaled >= 2147483647.0) return std::numeric_limits<GLint>::max();
   if (scaled <= -2147483648.0) return std::numeric_limits<GLint>::min();
   return static_cast<GLint>(scaled);
 }
 
 GLint floatToInteger(double value) {
+  if (std::isnan(value)) return 0;
   if (value >= 2147483647.0) return std::numeric_limits<GLint>::max();
   if (value <= -2147483648.0) return std::numeric_limits<GLint>::min();
   return static_cast<GLint>(std::lround(value));
@@ -146,22 +147,20 @@ void glHint(GLenum target, GLenum mode) {
 // Draws are queued and rasterized later (primitive/queued_drawing.h). Both commands rasterize
 // what is queued and return when it is in the framebuffer: glFinish must (spec 5.5), and glFlush,
 // which need only start it, does the same, since nothing else would start it in finite time.
-// Then a window system's flush callback may show the picture (a single-buffered GLUT window), or
-// an embedding that shows the framebuffer elsewhere copy it there (OSMesa's caller's buffer).
+// Then the embedding that shows the framebuffer elsewhere is told, through the one hook
+// Context::afterFlush: a single-buffered GLUT window shows its picture (glassSetFlushCallback),
+// an OSMesa context fills the caller's buffer.
 namespace {
-void finishAndRunFlushCallback() {
-  bool finished = false;
-  executeNow([&finished](Context& ctx) {
+void finishAndShow() {
+  executeNow([](Context& ctx) {
     if (rejectInsideBeginEnd(ctx)) return;
     glass::gl::finishQueuedDrawing(ctx);
     if (ctx.afterFlush) ctx.afterFlush(ctx);
-    finished = true;
   });
-  if (finished) glass::gl::runFlushCallback();
 }
 }  // namespace
 
-void glFinish(void) { finishAndRunFlushCallback(); }
-void glFlush(void) { finishAndRunFlushCallback(); }
+void glFinish(void) { finishAndShow(); }
+void glFlush(void) { finishAndShow(); }
 
 }  // extern "C"

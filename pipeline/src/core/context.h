@@ -87,8 +87,9 @@ struct Context {
   std::unique_ptr<DrawPipeline> draw;
 
   // Set by an embedding that shows the framebuffer elsewhere (an OSMesa context copies it into
-  // the caller's buffer, pipeline/src/osmesa/): called by glFlush and glFinish once the queued
-  // drawing is in the framebuffer.
+  // the caller's buffer, pipeline/src/osmesa/; a single-buffered GLUT window shows it, through
+  // glassSetFlushCallback): called by glFlush and glFinish once the queued drawing is in the
+  // framebuffer, with the context current.
   std::function<void(Context&)> afterFlush;
 };
 

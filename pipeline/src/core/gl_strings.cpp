@@ -1,13 +1,31 @@
 #include "core/gl_strings.h"
 
+#include <string>
+
+#include "core/fast_paths.h"
+
 namespace glass::gl {
+
+namespace {
+
+// "glass software rasterizer (SIMD: <target>)", or "(fast paths off)" with GLASS_FAST_PATHS=0:
+// what a benchmark of the renderer should report beside its figures.
+const char* rendererString() {
+  static const std::string renderer =
+      std::string("glass software rasterizer (") +
+      (fastPathsEnabled() ? std::string("SIMD: ") + simdTargetName() : std::string("fast paths off")) +
+      ")";
+  return renderer.c_str();
+}
+
+}  // namespace
 
 const char* glString(GLenum name) {
   switch (name) {
     case GL_VENDOR:
       return "glass";
     case GL_RENDERER:
-      return "glass software rasterizer";
+      return rendererString();
     case GL_VERSION:
       // "<major>.<minor> <vendor information>" (spec 6.1.11). glass implements the OpenGL 1.3
       // fixed-function pipeline in part; the README lists what works.

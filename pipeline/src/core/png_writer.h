@@ -5,9 +5,8 @@
 
 namespace glass::gl {
 
-// Writes an RGB PNG, top row first (the framebuffer's last row), alpha left out. The PNG goes to
-// a temporary file in the directory of path, renamed over path once complete; on any failure the
-// temporary file is removed and path is untouched. Returns false on failure.
+// Writes an RGB PNG, top row first (the framebuffer's last row), alpha left out, whole or not at
+// all (glass/image_io/write_image_file.h). Returns false on failure.
 bool writeColorBufferPNG(const raster::Framebuffer& framebuffer, const char* path);
 
 // The same for width * height RGBA8 pixels, bottom row first, rows packed (a copy of a colour

@@ -6,6 +6,7 @@
 #include "core/context.h"
 #include "fragment/buffer_selection.h"
 #include "fragment/color_conversion.h"
+#include "glass/raster/depth_value.h"
 #include "glass/raster/fragment.h"
 #include "primitive/queued_drawing.h"
 #include "teaching/teaching_view.h"
@@ -42,10 +43,7 @@ void clearBuffers(Context& ctx, GLbitfield mask) {
     }
   }
   if ((mask & GL_DEPTH_BUFFER_BIT) && f.depthMask) {
-    // Window depth in [0, 1] to the 24-bit buffer, rounded to nearest as the rasterizer rounds
-    // fragment depths, so that a fragment at the clear depth compares equal.
-    const uint32_t depth =
-        static_cast<uint32_t>(f.clearDepth * static_cast<double>(raster::kDepthMax) + 0.5);
+    const uint32_t depth = raster::depthValue(f.clearDepth);
     for (int y = y0; y < y1; ++y) std::fill(fb.depthAt(x0, y), fb.depthAt(x0, y) + (x1 - x0), depth);
   }
   if (mask & GL_ACCUM_BUFFER_BIT) clearAccumulationBuffer(ctx, x0, y0, x1, y1);

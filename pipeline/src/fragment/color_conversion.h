@@ -23,6 +23,15 @@ inline uint8_t floatToColorByte(float c) {
   return static_cast<uint8_t>(std::bit_cast<uint32_t>(sum) & 0xFFu);
 }
 
-inline float colorByteToFloat(uint8_t c) { return static_cast<float>(c) * (1.0f / 255.0f); }
+// The 32-bit word whose bytes in memory are r, g, b, a (the colour buffer's order), so that a
+// pixel is written with one store. (Four byte stores read back as a word would stall until the
+// processor had merged them.)
+inline uint32_t packColorBytes(uint8_t r, uint8_t g, uint8_t b, uint8_t a) {
+  if constexpr (std::endian::native == std::endian::little) {
+    return uint32_t{r} | uint32_t{g} << 8 | uint32_t{b} << 16 | uint32_t{a} << 24;
+  } else {
+    return uint32_t{r} << 24 | uint32_t{g} << 16 | uint32_t{b} << 8 | uint32_t{a};
+  }
+}
 
 }  // namespace glass::gl

@@ -1,15 +1,16 @@
 #include "fragment/fragment_processor.h"
 
-#include <bit>
 #include <cstdint>
 #include <cstring>
 
 #include "core/context.h"
+#include "core/fast_paths.h"
 #include "fragment/buffer_selection.h"
 #include "fragment/color_conversion.h"
 #include "fragment/color_sum.h"
 #include "fragment/comparison.h"
 #include "fragment/fog_hooks.h"
+#include "glass/raster/triangle.h"
 #include "fragment/logic_op.h"
 #include "fragment/stencil_operation.h"
 #include "lighting/lighting_hooks.h"
@@ -18,18 +19,6 @@
 #include "vertex/varyings.h"
 
 namespace glass::gl {
-namespace {
-
-// The 32-bit word whose bytes in memory are r, g, b, a (the colour buffer's order).
-uint32_t packColorBytes(uint8_t r, uint8_t g, uint8_t b, uint8_t a) {
-  if constexpr (std::endian::native == std::endian::little) {
-    return uint32_t{r} | uint32_t{g} << 8 | uint32_t{b} << 16 | uint32_t{a} << 24;
-  } else {
-    return uint32_t{r} << 24 | uint32_t{g} << 16 | uint32_t{b} << 8 | uint32_t{a};
-  }
-}
-
-}  // namespace
 
 void FragmentProcessor::prepare(Context& ctx, bool phong) {
   ctx_ = &ctx;
@@ -83,6 +72,35 @@ void FragmentProcessor::prepare(Context& ctx, bool phong) {
   if (TeachingCanvas* canvas = teachingCanvasFor(ctx); canvas && !canvas->fragmentCounts.empty()) {
     s_.fragmentCounts = canvas->fragmentCounts.data();
     s_.fragmentCountsWidth = canvas->width;
+  }
+  kernel_ = chooseKernel();
+  kernelNeedsEarlyDepth_ = s_.depthTest && s_.depthFunc != GL_ALWAYS;
+}
+
+BlockKernel FragmentProcessor::chooseKernel() const {
+  if (!fastPathsEnabled()) return nullptr;
+  // The overdraw view counts fragments in the general path (teaching/teaching_hooks.h).
+  if (s_.fragmentCounts != nullptr) return nullptr;
+  // What no kernel does (block_kernels.h).
+  if (s_.phong || s_.colorSum || s_.fog || s_.alphaTest || s_.stencilTest || s_.blend ||
+      s_.logicOp || (s_.writesColor && !s_.allChannels))
+    return nullptr;
+  BlockKernelKey key;
+  key.writeDepth = s_.depthTest && s_.depthMask;
+  key.writeColor = s_.writesColor;
+  if (s_.texturing) {
+    if (singleTexture2D(*ctx_) == nullptr) return nullptr;
+    key.texturing = KernelTexturing::Single2D;
+  }
+  return blockKernelFor(key);
+}
+
+void FragmentProcessor::processTriangleBlock(const raster::TriangleSetup& setup,
+                                             const raster::CoveredBlock& block) {
+  if (kernel_ != nullptr && (!kernelNeedsEarlyDepth_ || setup.earlyDepth.buffer != nullptr)) {
+    kernel_(*ctx_, setup, block);
+  } else {
+    raster::FragmentSink::processTriangleBlock(setup, block);
   }
 }
 

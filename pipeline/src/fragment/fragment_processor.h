@@ -14,6 +14,7 @@
 #include <cstdint>
 
 #include "fragment/blending.h"
+#include "fragment/block_kernels.h"
 #include "glass/raster/fragment.h"
 
 namespace glass::gl {
@@ -31,6 +32,10 @@ class FragmentProcessor final : public raster::FragmentSink {
   // multiplies the alpha of fragment i once its colour is final (spec 3.11, "Antialiasing
   // Application").
   void processFragments(const raster::FragmentBatch& batch, const float* coverage);
+  // A covered block of a triangle: the kernel prepare() chose for the draw's state
+  // (block_kernels.h), or the reference path when there is none.
+  void processTriangleBlock(const raster::TriangleSetup& setup,
+                            const raster::CoveredBlock& block) override;
 
   // Texturing, fog and per-fragment lighting read their GL state from the context for each
   // fragment, not from a copy made by prepare(): while fragments of such a draw are queued,
@@ -40,7 +45,7 @@ class FragmentProcessor final : public raster::FragmentSink {
   bool readsLighting() const { return s_.phong; }
   // Whether two processors treat every fragment the same way.
   bool sameSettings(const FragmentProcessor& other) const {
-    return ctx_ == other.ctx_ && s_ == other.s_;
+    return ctx_ == other.ctx_ && s_ == other.s_ && kernel_ == other.kernel_;
   }
 
  private:
@@ -83,8 +88,15 @@ class FragmentProcessor final : public raster::FragmentSink {
     bool operator==(const Settings&) const = default;
   };
 
+  // The fast path's kernel for the settings, or null (block_kernels.h).
+  BlockKernel chooseKernel() const;
+
   Context* ctx_ = nullptr;
   Settings s_;
+  BlockKernel kernel_ = nullptr;
+  // The kernel relies on the triangle walk's early depth test (the depth test is on and not
+  // GL_ALWAYS); a triangle set up without it goes the reference way.
+  bool kernelNeedsEarlyDepth_ = false;
 };
 
 }  // namespace glass::gl

@@ -88,7 +88,6 @@ class SphereTables {
   void texCoord(PrimitiveEmitter& out, int i, int j) const {
     out.texCoord(oneMinusFraction(i, slices_), oneMinusFraction(j, stacks_));
   }
-  float poleZ(int j) const { return posCos_[j]; }
 
  private:
   int slices_, stacks_;

@@ -78,7 +78,6 @@ struct GLUtesselator {
     }
   }
   bool hasEdgeFlagCallback() const { return edgeFlag || edgeFlagData; }
-  bool hasCombineCallback() const { return combine || combineData; }
   void callCombine(GLdouble coords[3], void* data[4], GLfloat weights[4], void** out) {
     if (combineData) {
       combineData(coords, data, weights, out, polygonData);

@@ -249,12 +249,8 @@ void glGetLightiv(GLenum light, GLenum pname, GLint* params) {
   glass::gl::executeNow([=](Context& ctx) {
     float values[4];
     const int n = glass::gl::getLight(ctx, light, pname, values);
-    for (int i = 0; i < n && params; ++i) {
-      // Colours as integers map [-1, 1] onto the whole range; the rest round to the nearest.
-      params[i] = glass::gl::isLightColor(pname)
-                      ? glass::gl::colorToInteger(values[i])
-                      : static_cast<GLint>(std::lround(static_cast<double>(values[i])));
-    }
+    const bool isColor = glass::gl::isLightColor(pname);
+    for (int i = 0; i < n && params; ++i) params[i] = glass::gl::queriedInteger(values[i], isColor);
   });
 }
 

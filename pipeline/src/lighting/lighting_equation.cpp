@@ -14,25 +14,15 @@
 #include "lighting/lighting_equation.h"
 
 #include <cmath>
-#include <numbers>
+
+#include "lighting/lighting_math.h"
 
 namespace glass::gl {
 namespace {
 
-float dot3(const float a[3], const float b[3]) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-
-// Scales v to unit length; a zero vector stays zero (no direction to give it).
-void normalize3(float v[3]) {
-  const float lengthSquared = dot3(v, v);
-  if (lengthSquared > 0.0f) {
-    const float inverseLength = 1.0f / std::sqrt(lengthSquared);
-    v[0] *= inverseLength;
-    v[1] *= inverseLength;
-    v[2] *= inverseLength;
-  }
-}
-
-float clamp01(float x) { return x < 0.0f ? 0.0f : (x > 1.0f ? 1.0f : x); }
+using lighting_math::clamp01;
+using lighting_math::dot3;
+using lighting_math::normalize3;
 
 // The geometry of one light seen from the point V: the unit vector VP to the light, its
 // attenuation att and spotlight factor spot.
@@ -48,10 +38,7 @@ LightGeometry lightGeometry(const LightSource& light, const float eyePoint[3]) {
   if (p[3] == 0.0f) {
     // Directional light: the position is a direction towards the light, the same at every point,
     // and att_i = 1.
-    g.toLight[0] = p[0];
-    g.toLight[1] = p[1];
-    g.toLight[2] = p[2];
-    normalize3(g.toLight);
+    lighting_math::directionalToLight(light, g.toLight);
     g.attenuation = 1.0f;
   } else {
     // Positional light at P / w: VP = P - V, and
@@ -73,16 +60,11 @@ LightGeometry lightGeometry(const LightSource& light, const float eyePoint[3]) {
   // direction s_d is used as a unit vector.
   g.spot = 1.0f;
   if (light.spotCutoff != 180.0f) {
-    float direction[3] = {light.spotDirection[0], light.spotDirection[1], light.spotDirection[2]};
-    normalize3(direction);
+    float direction[3];
+    lighting_math::unitSpotDirection(light, direction);
     const float cosine = -dot3(g.toLight, direction);
-    const double cutoffRadians = static_cast<double>(light.spotCutoff) * std::numbers::pi / 180.0;
-    const float cosCutoff = static_cast<float>(std::cos(cutoffRadians));
-    if (cosine < cosCutoff) {
-      g.spot = 0.0f;
-    } else {
-      g.spot = std::pow(cosine > 0.0f ? cosine : 0.0f, light.spotExponent);
-    }
+    g.spot = lighting_math::spotFactor(cosine, lighting_math::spotCosCutoff(light),
+                                       light.spotExponent);
   }
   return g;
 }
@@ -138,24 +120,22 @@ void evaluateLighting(const LightingState& state, const Material& material,
     if (nDotL > 0.0f) {
       float half[3] = {g.toLight[0] + toEye[0], g.toLight[1] + toEye[1], g.toLight[2] + toEye[2]};
       normalize3(half);
-      const float nDotH = dot3(normal, half);
-      specularFactor = std::pow(nDotH > 0.0f ? nDotH : 0.0f, material.shininess);
+      specularFactor = lighting_math::specularFactor(dot3(normal, half), material.shininess);
     }
 
     for (int c = 0; c < 3; ++c) {
-      const float ambient = material.ambient[c] * light.ambient[c];
-      const float diffuse = diffuseFactor * material.diffuse[c] * light.diffuse[c];
-      const float specular = specularFactor * material.specular[c] * light.specular[c];
-      sum[c] += scale * (ambient + diffuse);
-      specularSum[c] += scale * specular;
+      const lighting_math::LightChannelTerms terms = lighting_math::lightChannelTerms(
+          scale, diffuseFactor, specularFactor, material.ambient[c], material.diffuse[c],
+          material.specular[c], light.ambient[c], light.diffuse[c], light.specular[c]);
+      sum[c] += terms.lit;
+      specularSum[c] += terms.specular;
     }
   }
 
   // Single colour: everything in c_pri. Separate specular: the specular sum is c_sec (alpha 0).
   const bool separate = state.model.separateSpecular;
   for (int c = 0; c < 3; ++c) {
-    primary[c] = clamp01(separate ? sum[c] : sum[c] + specularSum[c]);
-    secondary[c] = separate ? clamp01(specularSum[c]) : 0.0f;
+    lighting_math::finishChannel(separate, sum[c], specularSum[c], primary[c], secondary[c]);
   }
   // The alpha of a lit colour is the alpha of the material's diffuse reflectance.
   primary[3] = clamp01(material.diffuse[3]);

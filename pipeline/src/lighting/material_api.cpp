@@ -189,11 +189,8 @@ void glGetMaterialiv(GLenum face, GLenum pname, GLint* params) {
   glass::gl::executeNow([=](Context& ctx) {
     float values[4];
     const int n = glass::gl::getMaterial(ctx, face, pname, values);
-    for (int i = 0; i < n && params; ++i) {
-      params[i] = glass::gl::isMaterialColor(pname)
-                      ? glass::gl::colorToInteger(values[i])
-                      : static_cast<GLint>(std::lround(static_cast<double>(values[i])));
-    }
+    const bool isColor = glass::gl::isMaterialColor(pname);
+    for (int i = 0; i < n && params; ++i) params[i] = glass::gl::queriedInteger(values[i], isColor);
   });
 }
 

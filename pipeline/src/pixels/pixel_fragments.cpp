@@ -6,6 +6,7 @@
 #include "core/context.h"
 #include "core/float_to_int.h"
 #include "fragment/fragment_processor.h"
+#include "glass/raster/depth_value.h"
 #include "glass/raster/fragment.h"
 #include "vertex/varyings.h"
 
@@ -27,12 +28,6 @@ raster::PixelRect writableRect(const Context& ctx) {
   return r;
 }
 
-// Window depth to the 24-bit depth buffer, rounded as the rasterizer rounds fragment depths.
-uint32_t depthBufferValue(float z) {
-  if (!(z > 0.0f)) return 0;
-  if (z >= 1.0f) return raster::kDepthMax;
-  return static_cast<uint32_t>(static_cast<double>(z) * raster::kDepthMax + 0.5);
-}
 
 // One axis of a zoomed image: image pixels 0 .. count-1 from the pixel corner `origin`, each
 // `zoom` pixels wide (negative: towards smaller coordinates).
@@ -69,7 +64,7 @@ class FragmentEmitter {
   explicit FragmentEmitter(Context& ctx) {
     processor_.prepare(ctx, false);
     const RasterPositionState& r = ctx.rasterPosition;
-    prototype_.depth = depthBufferValue(r.window[2]);
+    prototype_.depth = raster::depthValue(r.window[2]);
     for (float& v : prototype_.varyings) v = 0.0f;
     for (int k = 0; k < 4; ++k) {
       prototype_.varyings[varying::kPrimaryColor + k] = r.color[k];
@@ -142,7 +137,7 @@ void drawImageFragments(Context& ctx, const FragmentImage& image) {
       if (image.colors) {
         for (int k = 0; k < 4; ++k) f.varyings[varying::kPrimaryColor + k] = image.colors[pixel * 4 + k];
       }
-      if (image.depths) f.depth = depthBufferValue(image.depths[pixel]);
+      if (image.depths) f.depth = raster::depthValue(image.depths[pixel]);
     }
   }
 }

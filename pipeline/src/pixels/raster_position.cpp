@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/context.h"
+#include "glass/raster/clip.h"
 #include "lighting/lighting_hooks.h"
 #include "primitive/viewport_transform.h"
 #include "select/render_mode.h"
@@ -11,19 +12,6 @@
 #include "vertex/vertex_stage.h"
 
 namespace glass::gl {
-
-namespace {
-
-// Spec 2.12: a point is inside the view volume when -w_c <= x_c, y_c, z_c <= w_c.
-bool insideViewVolume(const float clip[4]) {
-  const float w = clip[3];
-  for (int i = 0; i < 3; ++i) {
-    if (clip[i] > w || clip[i] < -w) return false;
-  }
-  return true;
-}
-
-}  // namespace
 
 void setRasterPosition(Context& ctx, const float object[4]) {
   RasterPositionState& r = ctx.rasterPosition;
@@ -56,21 +44,18 @@ void setRasterPosition(Context& ctx, const float object[4]) {
   const float* clip = vertex.clip.clip;
 
   // Spec 2.13: the raster position is clipped like a point; outside any plane it becomes invalid
-  // and the rest of the raster state keeps its values.
-  bool inside = insideViewVolume(clip);
-  for (int i = 0; i < raster::kMaxUserClipPlanes && inside; ++i) {
-    if ((setup.clipPlaneMask & (1u << i)) && vertex.clip.userClipDistance[i] < 0.0f) inside = false;
-  }
-  if (!inside) {
+  // and the rest of the raster state keeps its values. So it does, like a point, where it has no
+  // window position (w_c = 0, or coordinates that are not finite; see toWindow).
+  raster::ClipSettings clipping;
+  clipping.userPlaneMask = setup.clipPlaneMask;
+  raster::WindowVertex window;
+  if (!raster::pointInside(vertex.clip, clipping) ||
+      !toWindow(makeViewportTransform(ctx.transform.viewport, ctx.transform.depthNear,
+                                      ctx.transform.depthFar),
+                vertex.clip, 0, window)) {
     r.valid = false;
     return;
   }
-
-  // Perspective division and the viewport (spec 2.11.1), exactly as for vertices; w_c is kept.
-  raster::WindowVertex window;
-  toWindow(makeViewportTransform(ctx.transform.viewport, ctx.transform.depthNear,
-                                 ctx.transform.depthFar),
-           vertex.clip, 0, window);
   r.window[0] = window.x;
   r.window[1] = window.y;
   r.window[2] = window.z;

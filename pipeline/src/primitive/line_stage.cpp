@@ -25,8 +25,9 @@ void DrawPipeline::rasterizeSegment(raster::ClipVertex a, raster::ClipVertex b, 
   if (oa & ob) return;
   if ((oa | ob) && !raster::clipLine(a, b, clip_)) return;
   raster::WindowVertex wa, wb;
-  toWindow(viewport_, a, clip_.varyingCount, wa);
-  toWindow(viewport_, b, clip_.varyingCount, wb);
+  if (!toWindow(viewport_, a, clip_.varyingCount, wa) ||
+      !toWindow(viewport_, b, clip_.varyingCount, wb))
+    return;
   if (recording_) {
     recorder_.line(wa, wb, lineReset_);
     lineReset_ = false;

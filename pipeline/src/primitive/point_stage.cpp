@@ -29,7 +29,7 @@ float DrawPipeline::pointSizeAt(const raster::ClipVertex& v) const {
 void DrawPipeline::rasterizeVertexPoint(const raster::ClipVertex& v, double depthBias) {
   if (!raster::pointInside(v, clip_)) return;
   raster::WindowVertex w;
-  toWindow(viewport_, v, clip_.varyingCount, w);
+  if (!toWindow(viewport_, v, clip_.varyingCount, w)) return;
   if (recording_) return recorder_.point(w);
   const float size = pointSizeAt(v);
   // Smooth ones are rasterized at once (smooth_stage.cpp), not queued: what is queued goes

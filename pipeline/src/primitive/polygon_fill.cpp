@@ -20,7 +20,8 @@ int DrawPipeline::clipToWindow(const raster::ClipVertex (&v)[3], raster::WindowV
     polygon = clipped_;
   }
   if (count < 3) return 0;
-  for (int i = 0; i < count; ++i) toWindow(viewport_, polygon[i], clip_.varyingCount, out[i]);
+  for (int i = 0; i < count; ++i)
+    if (!toWindow(viewport_, polygon[i], clip_.varyingCount, out[i])) return 0;
   return count;
 }
 

@@ -1,5 +1,7 @@
 #include "primitive/viewport_transform.h"
 
+#include <cmath>
+
 #include "core/transform_state.h"
 
 namespace glass::gl {
@@ -15,14 +17,17 @@ ViewportTransform makeViewportTransform(const Viewport& v, double depthNear, dou
   return t;
 }
 
-void toWindow(const ViewportTransform& t, const raster::ClipVertex& in, int varyingCount,
+bool toWindow(const ViewportTransform& t, const raster::ClipVertex& in, int varyingCount,
               raster::WindowVertex& out) {
+  if (in.clip[3] == 0.0f) return false;
   const float invW = 1.0f / in.clip[3];
   out.x = in.clip[0] * invW * t.scale[0] + t.offset[0];
   out.y = in.clip[1] * invW * t.scale[1] + t.offset[1];
   out.z = in.clip[2] * invW * t.scale[2] + t.offset[2];
   out.invW = invW;
   for (int i = 0; i < varyingCount; ++i) out.varyings[i] = in.varyings[i];
+  return std::isfinite(out.x) && std::isfinite(out.y) && std::isfinite(out.z) &&
+         std::isfinite(invW);
 }
 
 }  // namespace glass::gl

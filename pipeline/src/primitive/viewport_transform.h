@@ -16,7 +16,13 @@ struct ViewportTransform {
 struct Viewport;
 ViewportTransform makeViewportTransform(const Viewport& viewport, double depthNear, double depthFar);
 
-void toWindow(const ViewportTransform& transform, const raster::ClipVertex& in, int varyingCount,
-              raster::WindowVertex& out);
+// False when the vertex has no window position: w_c = 0, or a result that is not finite. Clipping
+// leaves w_c = 0 only at the clip-space origin (0, 0, 0, 0), which lies on every frustum plane:
+// every other point of a segment or polygon through it has the window position of the other
+// vertices' points (t v projects where v does), so such a primitive has no length or area and
+// rasterizes to nothing, and a point there has no position at all. Callers draw nothing then.
+// A clipped vertex whose w_c is only rounding away from 0 may overflow float in the division.
+[[nodiscard]] bool toWindow(const ViewportTransform& transform, const raster::ClipVertex& in,
+                            int varyingCount, raster::WindowVertex& out);
 
 }  // namespace glass::gl

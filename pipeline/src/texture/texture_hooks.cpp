@@ -167,8 +167,7 @@ void sampleCubeMap(const Context& ctx, const TextureObject& texture, int slot, f
   const float* tc = f.varyings + slot;
   const CubeFaceCoordinates c = cubeFaceCoordinates(tc[0], tc[1], tc[2]);
   const SamplerParameters& p = texture.params;
-  const bool needLambda = isMipmapFilter(p.minFilter) || p.minFilter != p.magFilter;
-  if (!needLambda || batch.planes == nullptr) {
+  if (!needsLevelOfDetail(texture) || batch.planes == nullptr) {
     sampleTextureMagnified(texture, c.s, c.t, texel, c.face);
     return;
   }
@@ -210,39 +209,56 @@ void sampleUnit(const Context& ctx, const TextureObject& texture, int slot, floa
   const float* tc = f.varyings + slot;
   const float q = tc[3];
   const float s = tc[0] / q, t = tc[1] / q, r = tc[2] / q;
-  const bool threeD = texture.target == GL_TEXTURE_3D;
-  const bool twoD = texture.target == GL_TEXTURE_2D || threeD;
-  const SamplerParameters& p = texture.params;
-  // Lambda only matters when the minification and magnification lookups differ.
-  const bool needLambda = isMipmapFilter(p.minFilter) || p.minFilter != p.magFilter;
-  if (!needLambda || batch.planes == nullptr) {
+  if (!needsLevelOfDetail(texture) || batch.planes == nullptr) {
     // Points and lines carry no derivatives: the base level, magnified (spec 3.8.9).
     sampleTextureMagnified(texture, s, t, texel, 0, r);
     return;
   }
+  const float lambda = quadLevelOfDetail(ctx, texture, slot, unitBias, *batch.planes, f.x, f.y);
+  sampleTexture(texture, s, t, lambda, texel, 0, r);
+}
+
+}  // namespace
+
+bool needsLevelOfDetail(const TextureObject& texture) {
+  // Lambda only matters when the minification and magnification lookups differ.
+  const SamplerParameters& p = texture.params;
+  return isMipmapFilter(p.minFilter) || p.minFilter != p.magFilter;
+}
+
+float quadLevelOfDetail(const Context& ctx, const TextureObject& texture, int slot, float unitBias,
+                        const raster::AttributePlanes& planes, int x, int y) {
+  const bool threeD = texture.target == GL_TEXTURE_3D;
+  const bool twoD = texture.target == GL_TEXTURE_2D || threeD;
+  const SamplerParameters& p = texture.params;
   // One lambda per 2x2 pixel quad (texture_lod.h): every fragment of the quad computes the
   // same value from the same upper-left pixel.
-  const PixelQuad quad = pixelQuadOf(f.x, f.y, ctx.framebuffer.height());
+  const PixelQuad quad = pixelQuadOf(x, y, ctx.framebuffer.height());
   const TexCoordDerivatives d =
-      quadTexCoordDifferences(*batch.planes, slot, slot + 1, slot + 3, quad, twoD);
+      quadTexCoordDifferences(planes, slot, slot + 1, slot + 3, quad, twoD);
   const TextureImage& base = texture.baseImage();
   double rhoSquared = textureScaleFactorSquared(d, base.width, twoD ? base.height : 0);
   if (threeD) {
     // Equation 3.21 with the w terms: the differences of r/q, times the depth, join u's and v's.
     const TexCoordDerivatives dr =
-        quadTexCoordDifferences(*batch.planes, slot + 2, slot + 1, slot + 3, quad, false);
+        quadTexCoordDifferences(planes, slot + 2, slot + 1, slot + 3, quad, false);
     const double dwdx = dr.dsdx * base.depth, dwdy = dr.dsdy * base.depth;
     const double u2x = d.dsdx * base.width, v2x = d.dtdx * base.height;
     const double u2y = d.dsdy * base.width, v2y = d.dtdy * base.height;
     rhoSquared =
         std::max(u2x * u2x + v2x * v2x + dwdx * dwdx, u2y * u2y + v2y * v2y + dwdy * dwdy);
   }
-  const float lambda =
-      levelOfDetailFromSquaredScale(rhoSquared, p.minLod, p.maxLod, lodBias(unitBias, p));
-  sampleTexture(texture, s, t, lambda, texel, 0, r);
+  return levelOfDetailFromSquaredScale(rhoSquared, p.minLod, p.maxLod, lodBias(unitBias, p));
 }
 
-}  // namespace
+const TextureObject* singleTexture2D(const Context& ctx) {
+  if (textureUnitsInUse(ctx) != 1 || ctx.texture.bumpMap.enabled) return nullptr;
+  const TextureUnit& unit = ctx.texture.units[0];
+  const TextureObject* texture = unit.activeTexture();
+  if (texture == nullptr || texture->target != GL_TEXTURE_2D || unit.env.mode == GL_COMBINE)
+    return nullptr;
+  return texture;
+}
 
 void applyTexturing(const Context& ctx, const raster::FragmentBatch& batch, int fragmentIndex,
                     float color[4]) {

@@ -40,6 +40,22 @@ void computeTexCoords(const Context& ctx, int units, const float objectPosition[
 void applyTexturing(const Context& ctx, const raster::FragmentBatch& batch, int fragmentIndex,
                     float color[4]);
 
+struct TextureObject;
+
+// The lookup's minification and magnification differ, so it needs a level of detail.
+bool needsLevelOfDetail(const TextureObject& texture);
+// Lambda (spec 3.8.8) of `texture` at pixel (x, y) of a triangle with attribute planes `planes`,
+// the unit's coordinates from varying `slot` and its bias `unitBias`: one value for the whole
+// 2x2 quad of the pixel (texture_lod.h). Not for cube maps.
+float quadLevelOfDetail(const Context& ctx, const TextureObject& texture, int slot, float unitBias,
+                        const raster::AttributePlanes& planes, int x, int y);
+// For the fragment stage's fast kernels (fragment/block_kernels.h): when texturing is exactly one
+// complete 2D texture on unit 0 with a texture environment other than GL_COMBINE and no bump
+// mapping, that texture; then applyTexturing amounts to sampleTexture (texture_sampler.h) at
+// (s/q, t/q) with quadLevelOfDetail's lambda (or sampleTextureMagnified when the texture needs
+// no level of detail), then applyTextureEnvironment with unit 0's environment. Null otherwise.
+const TextureObject* singleTexture2D(const Context& ctx);
+
 // GL_GLASS_bump_map (docs/texturing.md): bump mapping is on and its height map is a complete 2D
 // texture. Only per-fragment lighting (GL_PHONG_WIN) uses it.
 bool bumpMappingActive(const Context& ctx);

@@ -1,14 +1,15 @@
 #include "vertex/vertex_arrays.h"
 
-#include <cstring>
 #include <memory>
 #include <vector>
 
 #include "core/context.h"
+#include "core/fast_paths.h"
 #include "lists/command_recording.h"
 #include "vertex/array_draw.h"
 #include "vertex/attribute_conversion.h"
 #include "vertex/immediate_mode.h"
+#include "vertex/vertex_batch.h"
 
 namespace glass::gl {
 
@@ -22,51 +23,30 @@ int arrayTypeBytes(GLenum type) {
   }
 }
 
-namespace {
-
-template <class T>
-T load(const unsigned char* p) {
-  T value;
-  std::memcpy(&value, p, sizeof(T));
-  return value;
+int arrayElementStride(const ClientArray& a) {
+  return a.stride != 0 ? a.stride : a.size * arrayTypeBytes(a.type);
 }
+
+namespace {
 
 // Component i of an element as float: normalized by table 2.9 (colours, normals) or as a number.
 float component(const unsigned char* element, GLenum type, int i, bool normalized) {
   switch (type) {
-    case GL_BYTE: {
-      const GLbyte v = load<GLbyte>(element + i);
-      return normalized ? normalizedToFloat(v) : static_cast<float>(v);
-    }
-    case GL_UNSIGNED_BYTE: {
-      const GLubyte v = load<GLubyte>(element + i);
-      return normalized ? normalizedToFloat(v) : static_cast<float>(v);
-    }
-    case GL_SHORT: {
-      const GLshort v = load<GLshort>(element + 2 * i);
-      return normalized ? normalizedToFloat(v) : static_cast<float>(v);
-    }
-    case GL_UNSIGNED_SHORT: {
-      const GLushort v = load<GLushort>(element + 2 * i);
-      return normalized ? normalizedToFloat(v) : static_cast<float>(v);
-    }
-    case GL_INT: {
-      const GLint v = load<GLint>(element + 4 * i);
-      return normalized ? normalizedToFloat(v) : static_cast<float>(v);
-    }
-    case GL_UNSIGNED_INT: {
-      const GLuint v = load<GLuint>(element + 4 * i);
-      return normalized ? normalizedToFloat(v) : static_cast<float>(v);
-    }
-    case GL_FLOAT: return load<GLfloat>(element + 4 * i);
-    case GL_DOUBLE: return static_cast<float>(load<GLdouble>(element + 8 * i));
+    case GL_BYTE: return arrayComponentToFloat(loadUnaligned<GLbyte>(element + i), normalized);
+    case GL_UNSIGNED_BYTE: return arrayComponentToFloat(loadUnaligned<GLubyte>(element + i), normalized);
+    case GL_SHORT: return arrayComponentToFloat(loadUnaligned<GLshort>(element + 2 * i), normalized);
+    case GL_UNSIGNED_SHORT: return arrayComponentToFloat(loadUnaligned<GLushort>(element + 2 * i), normalized);
+    case GL_INT: return arrayComponentToFloat(loadUnaligned<GLint>(element + 4 * i), normalized);
+    case GL_UNSIGNED_INT: return arrayComponentToFloat(loadUnaligned<GLuint>(element + 4 * i), normalized);
+    case GL_FLOAT: return loadUnaligned<GLfloat>(element + 4 * i);
+    case GL_DOUBLE: return static_cast<float>(loadUnaligned<GLdouble>(element + 8 * i));
     default: return 0.0f;
   }
 }
 
 const unsigned char* elementAddress(const ClientArray& a, int index) {
-  const int stride = a.stride != 0 ? a.stride : a.size * arrayTypeBytes(a.type);
-  return static_cast<const unsigned char*>(a.pointer) + static_cast<long long>(index) * stride;
+  return static_cast<const unsigned char*>(a.pointer) +
+         static_cast<long long>(index) * arrayElementStride(a);
 }
 
 // Reads `size` components and fills the rest from `defaults` (spec 2.8: missing coordinates
@@ -155,6 +135,11 @@ void drawArrayElements(Context& ctx, GLenum mode, const int* indices, int first,
   }
   beginCommand(ctx, mode);
   if (!ctx.assembly.active) return;
+  if (fastPathsEnabled() && layout.vertex) {
+    drawArrayElementsBatched(ctx, layout, indices, first, count);
+    endCommand(ctx);
+    return;
+  }
   ArrayElementValues values;
   for (int i = 0; i < count; ++i) {
     readElement(ctx.arrays, layout, indices ? indices[i] : first + i, values);

@@ -39,5 +39,7 @@ void arrayElement(Context& ctx, int index);
 
 // Bytes per component of an array type, 0 for a type arrays do not accept.
 int arrayTypeBytes(GLenum type);
+// Bytes from one element of the array to the next: the stride given, or the element's size.
+int arrayElementStride(const ClientArray& a);
 
 }  // namespace glass::gl

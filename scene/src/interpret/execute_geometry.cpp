@@ -1,5 +1,8 @@
-// Geometry sent vertex by vertex: begin/end, rect, indexed meshes and OBJ models.
+// Geometry sent vertex by vertex: begin/end, rect, indexed meshes, OBJ and Wings3D models.
 #include "interpret/executor.h"
+#include "load/wings_model.h"
+
+#include <sstream>
 
 namespace glass::scene {
 
@@ -88,12 +91,31 @@ void Interpreter::Executor::run(const Mesh &s) {
 
 void Interpreter::Executor::run(const DrawModel &s) {
   const Model &model = program_.models[static_cast<std::size_t>(s.model)];
+  if (s.round && model.roundable != nullptr) {
+    const double radius = value(*s.round);
+    std::vector<ModelPart> rounded;
+    try {
+      if (!(radius >= 0.0)) throw geometry::RoundingError("the radius must be 0 or more");
+      rounded = roundedWingsParts(*model.roundable, radius);
+    } catch (const geometry::RoundingError &error) {
+      std::ostringstream text;
+      text.precision(6);
+      text << "cannot round the model with radius " << radius << ": " << error.what();
+      fail(text.str());
+    }
+    drawModelParts(model, rounded, s);
+    return;
+  }
+  drawModelParts(model, model.parts, s);
+}
+
+void Interpreter::Executor::drawModelParts(const Model &model, const std::vector<ModelPart> &parts, const DrawModel &s) {
   VertexTracer *tracer = options_.tracer;
   // The model's materials and textures are its own: the state before it comes back after it.
   if (tracer != nullptr && tracer->pending()) tracer->capture();
   saveCurrentValues();
   glPushAttrib(GL_CURRENT_BIT | GL_LIGHTING_BIT | GL_ENABLE_BIT | GL_TEXTURE_BIT);
-  for (const ModelPart &part : model.parts) {
+  for (const ModelPart &part : parts) {
     if (s.useMaterials && part.material >= 0) {
       const ModelMaterial &m = model.materials[static_cast<std::size_t>(part.material)];
       glMaterialfv(GL_FRONT_AND_BACK, GL_AMBIENT, m.ambient.data());
@@ -115,9 +137,11 @@ void Interpreter::Executor::run(const DrawModel &s) {
       if (m.texture >= 0) {
         glEnable(GL_TEXTURE_2D);
         glBindTexture(GL_TEXTURE_2D, textures_[static_cast<std::size_t>(m.texture)]);
-      } else {
+      } else if (model.roundable == nullptr) {
         glDisable(GL_TEXTURE_2D);
       }
+      // A .wings model's materials carry no image (glass does not read Wings' embedded images):
+      // the texture the scene has bound and enabled textures it, through the faces' charts.
     }
     std::size_t count = part.positions.size() / 3;
     if (tracer != nullptr && tracer->pending()) {

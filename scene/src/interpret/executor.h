@@ -92,6 +92,7 @@ public:
   void run(const Rect &s);
   void run(const Mesh &s);
   void run(const DrawModel &s);
+  void drawModelParts(const Model &model, const std::vector<ModelPart> &parts, const DrawModel &s);
   void run(const Sphere &s);
   void run(const Cylinder &s);
   void run(const Disk &s);
@@ -101,6 +102,7 @@ public:
   void run(const BezierCurve &s);
   void run(const BezierPatch &s);
   void run(const Ifs &s);
+  void run(const Ifs3d &s);
   void run(const Instance &s);
 
   double value(const Number &n) const { return values_(n); }

@@ -63,7 +63,8 @@ const char *glFunctionOf(const Statement &statement) {
           [](const ParametricTorus &) { return "glBegin(GL_QUAD_STRIP)"; },
           [](const BezierCurve &) { return "glMap1d/glEvalMesh1"; },
           [](const BezierPatch &) { return "glMap2d/glEvalMesh2"; },
-          [](const Ifs &) { return "the ifs drawing"; }, [](const Instance &) { return "glCallList"; }},
+          [](const Ifs &) { return "the ifs drawing"; }, [](const Instance &) { return "glCallList"; },
+          [](const Ifs3d &) { return "the ifs3d drawing"; }},
       statement.body);
 }
 

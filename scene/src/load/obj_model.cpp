@@ -6,9 +6,13 @@
 #include <tiny_obj_loader.h>
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
+#include <fstream>
 #include <map>
+#include <sstream>
 
 namespace glass::scene {
 
@@ -48,39 +52,65 @@ std::string faultInWarnings(const std::string &warnings) {
   return {};
 }
 
-// Every face's vertex, normal and texture coordinate index must name an element the file has.
-// tinyobjloader reads the positions of the faces it triangulates without checking the indices,
-// so this runs on an untriangulated read before the real one.
-bool checkFaceIndices(const std::string &path, const tinyobj::ObjReaderConfig &triangulating,
-                      std::string &reason) {
-  tinyobj::ObjReaderConfig config = triangulating;
-  config.triangulate = false;
-  tinyobj::ObjReader reader;
-  if (!reader.ParseFromFile(path, config)) return true; // the real read reports it
-  const tinyobj::attrib_t &attrib = reader.GetAttrib();
-  struct Kind {
-    const char *name;
-    std::size_t count;
-    bool optional; // -1: the face gives none
+// Every vertex, texture coordinate and normal index of a face (f), line (l) or point (p) must name
+// an element the file has: 1 to the count, or -1 back to minus the count read so far. The indices
+// are checked here as written, before tinyobjloader reads the file: it converts them to int
+// without overflow checks (vertex 2147483648 would become a negative index) and reads the
+// positions of the faces it triangulates without range checks.
+bool checkFaceIndices(const std::string &path, std::string &reason) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return true;  // the real read reports it
+  static const char *const kKindNames[3] = {"vertex", "texture coordinate", "normal"};
+  std::uint64_t counts[3] = {0, 0, 0};  // v, vt, vn read so far
+  struct Pending {                      // an absolute index, checked once the counts are known
+    int kind;
+    std::string written;
+    std::uint64_t value;
   };
-  const Kind kinds[3] = {{"vertex", attrib.vertices.size() / 3, false},
-                         {"normal", attrib.normals.size() / 3, true},
-                         {"texture coordinate", attrib.texcoords.size() / 2, true}};
-  for (const tinyobj::shape_t &shape : reader.GetShapes()) {
-    for (const tinyobj::index_t &index : shape.mesh.indices) {
-      const int values[3] = {index.vertex_index, index.normal_index, index.texcoord_index};
-      for (int k = 0; k < 3; ++k) {
-        int value = values[k];
-        if ((kinds[k].optional && value == -1) ||
-            (value >= 0 && static_cast<std::size_t>(value) < kinds[k].count)) {
-          continue;
+  std::vector<Pending> pending;
+  const auto fail = [&](int kind, const std::string &written, std::uint64_t have) {
+    reason = "a face names " + std::string(kKindNames[kind]) + " " + written + ", but the file has " +
+             std::to_string(have) + " (OBJ counts from 1)";
+    return false;
+  };
+  std::string line;
+  while (std::getline(in, line)) {
+    std::istringstream words(line.substr(0, line.find('#')));
+    std::string keyword;
+    if (!(words >> keyword)) continue;
+    if (keyword == "v") ++counts[0];
+    else if (keyword == "vt") ++counts[1];
+    else if (keyword == "vn") ++counts[2];
+    if (keyword != "f" && keyword != "l" && keyword != "p") continue;
+    std::string corner;
+    while (words >> corner) {
+      std::size_t start = 0;
+      for (int kind = 0; kind < 3 && start <= corner.size(); ++kind) {
+        std::size_t slash = corner.find('/', start);
+        if (slash == std::string::npos) slash = corner.size();
+        const std::string written = corner.substr(start, slash - start);
+        start = slash + 1;
+        if (written.empty()) continue;  // v//vn: no texture coordinate
+        const bool relative = written[0] == '-';
+        const char *digits = written.c_str() + (relative || written[0] == '+' ? 1 : 0);
+        std::uint64_t value = 0;
+        const char *last = written.c_str() + written.size();
+        const auto [end, error] = std::from_chars(digits, last, value);
+        if (error == std::errc::result_out_of_range) value = UINT64_MAX;  // beyond any count
+        else if (error != std::errc() || end != last) {
+          reason = "a face corner '" + corner + "' is not a vertex index";
+          return false;
         }
-        reason = "a face names " + std::string(kinds[k].name) + " " + std::to_string(value + 1) +
-                 ", but the file has " + std::to_string(kinds[k].count) + " (OBJ counts from 1)";
-        return false;
+        if (relative) {  // -k: the k-th element before this line
+          if (value == 0 || value > counts[kind]) return fail(kind, written, counts[kind]);
+        } else {
+          pending.push_back({kind, written, value});
+        }
       }
     }
   }
+  for (const Pending &p : pending)
+    if (p.value == 0 || p.value > counts[p.kind]) return fail(p.kind, p.written, counts[p.kind]);
   return true;
 }
 
@@ -99,7 +129,7 @@ bool loadObjModel(const std::string &path, Model &model, std::vector<TextureDefi
     reason = std::filesystem::exists(path, ec) ? "not a regular file" : "no such file";
     return false;
   }
-  if (!checkFaceIndices(path, config, reason)) return false;
+  if (!checkFaceIndices(path, reason)) return false;
   if (!reader.ParseFromFile(path, config)) {
     reason = reader.Error().empty() ? "not a readable OBJ file" : reader.Error();
     while (!reason.empty() && (reason.back() == '\n' || reason.back() == '\r')) reason.pop_back();

@@ -1,9 +1,12 @@
-// Geometry given vertex by vertex: begin/end, rect, indexed meshes, OBJ models.
+// Geometry given vertex by vertex: begin/end, rect, indexed meshes, OBJ and Wings3D models.
 #include "gl_api.h"
 #include "load/obj_model.h"
+#include "load/wings_model.h"
 #include "parser_impl.h"
 
+#include <cctype>
 #include <optional>
+#include <sstream>
 
 namespace glass::scene {
 
@@ -142,16 +145,37 @@ void Parser::parseMesh(StatementReader &r) {
   emit(r, mesh);
 }
 
+namespace {
+
+bool isWingsPath(const std::string &path) {
+  const std::string suffix = ".wings";
+  if (path.size() < suffix.size()) return false;
+  for (std::size_t i = 0; i < suffix.size(); ++i)
+    if (std::tolower(static_cast<unsigned char>(path[path.size() - suffix.size() + i])) != suffix[i]) return false;
+  return true;
+}
+
+std::string formatRadius(double radius) {
+  std::ostringstream text;
+  text.precision(6);
+  text << radius;
+  return text.str();
+}
+
+} // namespace
+
 void Parser::parseModel(StatementReader &r) {
   static const ParamSpec specs[] = {
       {"materials", ParamKind::Boolean, 1, 1, {}, ""},
+      {"round", ParamKind::Numbers, 1, 1, {}, "radius"},
   };
   const Token &pathToken = r.peek();
-  const std::string written = r.string("the OBJ file");
+  const std::string written = r.string("the model file (.obj or .wings)");
   std::string path = resolvePath(written, pathToken.where);
   NamedParams params = NamedParams::read(r, specs);
   DrawModel draw;
   draw.useMaterials = params.booleanOr("materials", true);
+  const bool wings = isWingsPath(path);
   // One load per file, however often the scene draws it.
   for (std::size_t i = 0; i < program_.models.size(); ++i) {
     if (program_.models[i].path == path) draw.model = static_cast<int>(i);
@@ -159,12 +183,25 @@ void Parser::parseModel(StatementReader &r) {
   if (draw.model < 0) {
     Model model;
     std::string reason;
-    std::vector<TextureDefinition> textures;
-    if (!loadObjModel(path, model, program_.textures, reason)) {
-      r.fail(pathToken, "cannot load model '" + written + "': " + reason);
-    }
+    const bool loaded = wings ? loadWingsModel(path, model, reason) : loadObjModel(path, model, program_.textures, reason);
+    if (!loaded) r.fail(pathToken, "cannot load model '" + written + "': " + reason);
     draw.model = static_cast<int>(program_.models.size());
     program_.models.push_back(std::move(model));
+  }
+  if (const ParamValue *round = params.take("round")) {
+    if (!wings) r.fail(round->where, round->length, "'round' rounds the marked edges of a Wings3D (.wings) model; '" + written + "' is not one");
+    draw.round = round->numbers[0];
+    // A constant radius is checked now; one from a parameter when each frame is drawn.
+    if (draw.round->isConstant()) {
+      const double radius = draw.round->constant;
+      const Model &model = program_.models[static_cast<std::size_t>(draw.model)];
+      try {
+        if (radius < 0.0) throw geometry::RoundingError("the radius must be 0 or more");
+        if (radius > 0.0) roundedWingsParts(*model.roundable, radius);
+      } catch (const geometry::RoundingError &error) {
+        r.fail(round->where, round->length, "cannot round '" + written + "' with radius " + formatRadius(radius) + ": " + error.what());
+      }
+    }
   }
   emit(r, draw);
 }

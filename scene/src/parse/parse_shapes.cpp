@@ -27,6 +27,8 @@ Number positive(StatementReader &r, std::string_view what, bool allowZero = fals
 
 // The largest evaluator order GL guarantees (GL_MAX_EVAL_ORDER is at least 8).
 constexpr int kMaxEvalOrder = 8;
+// Slices, stacks, loops, rings and Bezier segments: docs/scene-format.md, "Limits".
+constexpr int kMaxDivisions = 4096;
 
 void checkWeights(const StatementReader &r, const ParamValue &weights) {
   for (const Number &w : weights.numbers) {
@@ -50,8 +52,8 @@ QuadricStyle Parser::readQuadricStyle(NamedParams &params) {
 void Parser::parseSphere(StatementReader &r) {
   Sphere s;
   s.radius = positive(r, "radius", true);
-  if (r.peekIsNumber()) s.slices = r.integer("slices", 3, 4096);
-  if (r.peekIsNumber()) s.stacks = r.integer("stacks", 2, 4096);
+  if (r.peekIsNumber()) s.slices = r.integer("slices", 3, kMaxDivisions);
+  if (r.peekIsNumber()) s.stacks = r.integer("stacks", 2, kMaxDivisions);
   NamedParams params = NamedParams::read(r, kQuadricSpecs);
   s.style = readQuadricStyle(params);
   emit(r, s);
@@ -62,8 +64,8 @@ void Parser::parseCylinder(StatementReader &r) {
   c.base = positive(r, "base radius", true);
   c.top = positive(r, "top radius", true);
   c.height = positive(r, "height", true);
-  if (r.peekIsNumber()) c.slices = r.integer("slices", 3, 4096);
-  if (r.peekIsNumber()) c.stacks = r.integer("stacks", 1, 4096);
+  if (r.peekIsNumber()) c.slices = r.integer("slices", 3, kMaxDivisions);
+  if (r.peekIsNumber()) c.stacks = r.integer("stacks", 1, kMaxDivisions);
   NamedParams params = NamedParams::read(r, kQuadricSpecs);
   c.style = readQuadricStyle(params);
   emit(r, c);
@@ -76,8 +78,8 @@ void Parser::parseDisk(StatementReader &r) {
   if (d.inner.isConstant() && d.outer.isConstant() && d.inner.constant >= d.outer.constant) {
     r.fail(r.statementToken(), "the inner radius of 'disk' must be smaller than the outer radius");
   }
-  if (r.peekIsNumber()) d.slices = r.integer("slices", 3, 4096);
-  if (r.peekIsNumber()) d.loops = r.integer("loops", 1, 4096);
+  if (r.peekIsNumber()) d.slices = r.integer("slices", 3, kMaxDivisions);
+  if (r.peekIsNumber()) d.loops = r.integer("loops", 1, kMaxDivisions);
   NamedParams params = NamedParams::read(r, kQuadricSpecs);
   d.style = readQuadricStyle(params);
   emit(r, d);
@@ -87,8 +89,8 @@ void Parser::parsePartialDisk(StatementReader &r) {
   PartialDisk d;
   d.inner = positive(r, "inner radius", true);
   d.outer = positive(r, "outer radius");
-  d.slices = r.integer("slices", 3, 4096);
-  d.loops = r.integer("loops", 1, 4096);
+  d.slices = r.integer("slices", 3, kMaxDivisions);
+  d.loops = r.integer("loops", 1, kMaxDivisions);
   d.start = r.number("start angle in degrees");
   d.sweep = r.number("sweep angle in degrees");
   NamedParams params = NamedParams::read(r, kQuadricSpecs);
@@ -108,18 +110,18 @@ void Parser::parseGlutShape(StatementReader &r) {
   } else if (kind == "sphere") {
     shape.kind = K::Sphere;
     shape.sizes = {positive(r, "radius")};
-    shape.slices = r.integer("slices", 3, 4096);
-    shape.stacks = r.integer("stacks", 2, 4096);
+    shape.slices = r.integer("slices", 3, kMaxDivisions);
+    shape.stacks = r.integer("stacks", 2, kMaxDivisions);
   } else if (kind == "cone") {
     shape.kind = K::Cone;
     shape.sizes = {positive(r, "base radius"), positive(r, "height")};
-    shape.slices = r.integer("slices", 3, 4096);
-    shape.stacks = r.integer("stacks", 1, 4096);
+    shape.slices = r.integer("slices", 3, kMaxDivisions);
+    shape.stacks = r.integer("stacks", 1, kMaxDivisions);
   } else if (kind == "torus") {
     shape.kind = K::Torus;
     shape.sizes = {positive(r, "inner (tube) radius"), positive(r, "outer (ring) radius")};
-    shape.slices = r.integer("sides", 3, 4096);
-    shape.stacks = r.integer("rings", 3, 4096);
+    shape.slices = r.integer("sides", 3, kMaxDivisions);
+    shape.stacks = r.integer("rings", 3, kMaxDivisions);
   } else if (kind == "teapot") {
     shape.kind = K::Teapot;
     shape.sizes = {positive(r, "size")};
@@ -139,8 +141,8 @@ void Parser::parseParametricTorus(StatementReader &r) {
   ParametricTorus t;
   t.major = positive(r, "major radius R");
   t.minor = positive(r, "minor radius r");
-  if (r.peekIsNumber()) t.slices = r.integer("slices", 3, 4096);
-  if (r.peekIsNumber()) t.rings = r.integer("rings", 3, 4096);
+  if (r.peekIsNumber()) t.slices = r.integer("slices", 3, kMaxDivisions);
+  if (r.peekIsNumber()) t.rings = r.integer("rings", 3, kMaxDivisions);
   emit(r, t);
 }
 
@@ -148,7 +150,7 @@ void Parser::parseBezierCurve(StatementReader &r) {
   static const ParamSpec specs[] = {
       {"points", ParamKind::List, 3, 3, {}, ""},
       {"weights", ParamKind::List, 1, 1, {}, ""},
-      {"segments", ParamKind::Integer, 1, 100000, {}, ""},
+      {"segments", ParamKind::Integer, 1, kMaxDivisions, {}, ""},
       {"mode", ParamKind::Word, 1, 1, names::curveModes, ""},
   };
   NamedParams params = NamedParams::read(r, specs);
@@ -218,8 +220,9 @@ void Parser::parseBezierPatch(StatementReader &r) {
     int values[2] = {0, 0};
     for (std::size_t i = 0; i < segments->numbers.size(); ++i) {
       const Number &n = segments->numbers[i];
-      if (!n.isConstant() || n.constant != std::floor(n.constant) || n.constant < 1 || n.constant > 4096) {
-        r.fail(segments->where, segments->length, "segments must be whole numbers from 1 to 4096");
+      if (!n.isConstant() || n.constant != std::floor(n.constant) || n.constant < 1 || n.constant > kMaxDivisions) {
+        r.fail(segments->where, segments->length,
+               "segments must be whole numbers from 1 to " + std::to_string(kMaxDivisions));
       }
       values[i] = static_cast<int>(n.constant);
     }

@@ -144,6 +144,7 @@ std::span<const Parser::StatementKind> Parser::statementKinds() {
       // Iterated function systems.
       {"ifs", &Parser::parseIfs, P::Scene},
       {"map", &Parser::parseMap, P::IfsMap},
+      {"ifs3d", &Parser::parseIfs3d, P::Scene},
   };
   return kinds;
 }
@@ -213,7 +214,8 @@ void Parser::parseFile(const SourceFile &file) {
   // The lexer's messages wait in their own list and join the others in source order, as the
   // parser reaches their statement. A statement with a lexer error is not parsed: its parse
   // errors would only repeat the problem ("needs 3 numbers" after a malformed number).
-  Diagnostics lexerMessages(1 << 30);
+  // The lexer stops where the parser will have reached the error limit anyway.
+  Diagnostics lexerMessages(std::max(1, diagnostics_.errorLimit() - diagnostics_.errorCount()));
   TokenCursor cursor(tokenize(file, lexerMessages));
   const std::vector<Diagnostic> &pending = lexerMessages.all();
   std::size_t nextPending = 0;

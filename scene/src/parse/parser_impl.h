@@ -169,6 +169,7 @@ private:
   // Iterated function systems (parse_ifs.cpp).
   void parseIfs(StatementReader &r);
   void parseMap(StatementReader &r);
+  void parseIfs3d(StatementReader &r); // parse_ifs3d.cpp
 
   QuadricStyle readQuadricStyle(NamedParams &params);
 

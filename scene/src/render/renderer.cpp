@@ -7,6 +7,8 @@
 
 #include <glass/context.h>
 
+#include <utility>
+
 namespace glass::scene {
 
 namespace {
@@ -84,7 +86,7 @@ bool renderFrame(const Program &program, int frame, const RenderOptions &options
   case View::Wireframe: {
     std::vector<std::uint8_t> rgba(static_cast<std::size_t>(w) * static_cast<std::size_t>(h) * 4);
     glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
-    image = imageFromGlRows(rgba, w, h);
+    image = imageFromGlRows(std::move(rgba), w, h);
     break;
   }
   case View::Depth: {
@@ -107,7 +109,7 @@ bool renderFrame(const Program &program, int frame, const RenderOptions &options
                                                                            : "colour buffer (glReadPixels GL_RGBA)"));
     return false;
   }
-  result.image = boxDownsample(image, factor);
+  result.image = boxDownsample(std::move(image), factor);
   return true;
 }
 

@@ -3,20 +3,22 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <utility>
 
 #include "glass/geometry/teaching_scales.h"
 
 namespace glass::scene {
 
-Image imageFromGlRows(const std::vector<std::uint8_t> &rgba, int width, int height) {
+Image imageFromGlRows(std::vector<std::uint8_t> rgba, int width, int height) {
   Image image;
   image.width = width;
   image.height = height;
-  image.rgba.resize(rgba.size());
-  std::size_t rowBytes = static_cast<std::size_t>(width) * 4;
-  for (int y = 0; y < height; ++y) {
-    std::copy_n(&rgba[static_cast<std::size_t>(height - 1 - y) * rowBytes], rowBytes,
-                &image.rgba[static_cast<std::size_t>(y) * rowBytes]);
+  image.rgba = std::move(rgba);
+  const std::size_t rowBytes = static_cast<std::size_t>(width) * 4;
+  for (int y = 0, other = height - 1; y < other; ++y, --other) {
+    std::swap_ranges(&image.rgba[static_cast<std::size_t>(y) * rowBytes],
+                     &image.rgba[static_cast<std::size_t>(y) * rowBytes] + rowBytes,
+                     &image.rgba[static_cast<std::size_t>(other) * rowBytes]);
   }
   return image;
 }
@@ -87,7 +89,7 @@ Image overdrawImage(const std::vector<std::uint8_t> &counts, int width, int heig
   return image;
 }
 
-Image boxDownsample(const Image &image, int factor) {
+Image boxDownsample(Image image, int factor) {
   if (factor <= 1) return image;
   Image out;
   out.width = image.width / factor;

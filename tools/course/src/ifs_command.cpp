@@ -5,6 +5,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "box_counting_table.h"
 #include "command_arguments.h"
 #include "glass/course/commands.h"
 #include "glass/course/exact_number.h"
@@ -84,18 +85,7 @@ void printDimension(const g::IteratedFunctionSystem& ifs, const g::IfsDimensionR
     const g::BoxCountingEstimate& box = *report.boxCounting;
     out << "  Not every map is a similarity, so the Moran equation does not apply. Box counting on " << points
         << " chaos-game points:\n";
-    out << "    level  box side     boxes N\n";
-    for (const g::BoxCount& count : box.counts) {
-      char text[128];
-      std::snprintf(text, sizeof text, "    %5d  %-11.4g  %8zu%s\n", count.level, count.boxSide, count.boxes,
-                    count.level >= box.firstFittedLevel && count.level <= box.lastFittedLevel ? "  fitted" : "");
-      out << text;
-    }
-    char text[160];
-    std::snprintf(text, sizeof text,
-                  "  d is about %.3f: the slope of log2 N against the level, levels %d to %d (least squares)\n",
-                  box.dimension, box.firstFittedLevel, box.lastFittedLevel);
-    out << text;
+    printBoxCountingTable(box, out);
     return;
   }
   out << "  No dimension: " << report.problem << "\n";

@@ -32,14 +32,7 @@ struct Affine2 {
   glm::dvec2 apply(const glm::dvec2& p) const {
     return {m[0][0] * p.x + m[0][1] * p.y + m[0][2], m[1][0] * p.x + m[1][1] * p.y + m[1][2]};
   }
-  // The linear part acting on a vector (differences of points ignore the translation).
-  glm::dvec2 applyLinear(const glm::dvec2& v) const {
-    return {m[0][0] * v.x + m[0][1] * v.y, m[1][0] * v.x + m[1][1] * v.y};
-  }
   double determinant() const { return m[0][0] * m[1][1] - m[0][1] * m[1][0]; }
-  glm::dvec2 translationPart() const { return {m[0][2], m[1][2]}; }
-  // The map with the translation removed: L in the guide's A = T_u L (equation 3).
-  Affine2 linearPart() const { return fromRows(m[0][0], m[0][1], 0, m[1][0], m[1][1], 0); }
 
   // The same map as a 4x4 matrix acting on (x, y, z, 1) with z unchanged, column-major, ready
   // for glMultMatrixd / glLoadMatrixd (glm's dmat4 memory layout is GL's).

@@ -18,6 +18,8 @@
 // color r g b (each in [0, 1]) and probability p (p >= 0; all maps or none).
 #pragma once
 
+#include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -43,8 +45,14 @@ IfsParseResult parseIfs(std::string_view text);
 // Reads and parses a file; a file that cannot be read gives one error at line 0.
 IfsParseResult loadIfsFile(const std::string& path);
 
+// The whole file as text, or nothing when it cannot be read.
+std::optional<std::string> readIfsText(const std::string& path);
+
 // "file:line:col: message" lines, with the offending source line and a caret under the column.
 std::string formatIfsErrors(const IfsParseResult& result, std::string_view fileName,
+                            std::string_view text);
+// The same for any list of errors (the .ifs3 format's too, ifs3d_format.h).
+std::string formatIfsErrors(std::span<const IfsParseError> errors, std::string_view fileName,
                             std::string_view text);
 
 }  // namespace glass::geometry

@@ -28,7 +28,10 @@ bool clipLine(ClipVertex& a, ClipVertex& b, const ClipSettings& settings);
 bool pointInside(const ClipVertex& v, const ClipSettings& settings);
 
 // Bit mask of planes a vertex lies outside of (bits 0-5 frustum, 6-11 user planes), for trivial
-// accept (all masks zero) and reject (the AND of the masks non-zero).
+// accept (all masks zero) and reject (the AND of the masks non-zero). A vertex with an infinite
+// or NaN clip coordinate is outside every enabled plane and has kNotFinite set as well; clipLine
+// and clipPolygon then remove the whole primitive.
+inline constexpr unsigned kNotFinite = 1u << 31;
 unsigned outcode(const ClipVertex& v, const ClipSettings& settings);
 
 }  // namespace glass::raster

@@ -11,6 +11,9 @@
 
 namespace glass::raster {
 
+struct CoveredBlock;
+struct TriangleSetup;
+
 // The depth buffer holds 24-bit unsigned integers: window z in [0, 1] maps to [0, 2^24 - 1].
 inline constexpr uint32_t kDepthMax = (1u << 24) - 1u;
 
@@ -45,6 +48,10 @@ class FragmentSink {
  public:
   virtual ~FragmentSink() = default;
   virtual void processFragments(const FragmentBatch& batch) = 0;
+  // A triangle's 8x8 block after coverage and the early depth test (triangle_block.h). By
+  // default the reference path, emitBlockFragments; a sink may override it with a kernel made
+  // for its state that writes the same bytes.
+  virtual void processTriangleBlock(const TriangleSetup& setup, const CoveredBlock& block);
 };
 
 }  // namespace glass::raster

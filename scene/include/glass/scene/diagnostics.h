@@ -29,6 +29,8 @@ class Diagnostics {
 public:
   explicit Diagnostics(int errorLimit = 20) : errorLimit_(errorLimit) {}
 
+  // Once the limit is reached, further errors and warnings are dropped (the returned message
+  // goes nowhere), so that the count and the list agree and the run stops at the limit.
   Diagnostic &error(SourceLocation at, std::string message, int length = 1);
   Diagnostic &warning(SourceLocation at, std::string message, int length = 1);
   // Adds a message made elsewhere (the lexer's, moved over in source order).
@@ -54,11 +56,16 @@ private:
   int errorLimit_;
   int errorCount_ = 0;
   std::vector<Diagnostic> list_;
+  Diagnostic discarded_;  // what error() and warning() return past the limit
   std::vector<std::shared_ptr<const SourceSet>> sources_;
 };
 
 // One message with its source line and caret, as the command line prints it.
 std::string formatDiagnostic(const Diagnostic &diagnostic);
+
+// The text with every byte a terminal could act on (control characters such as ESC, DEL, C1
+// controls, bytes that are not UTF-8) written as \xHH; tabs and valid UTF-8 stay as they are.
+std::string printable(std::string_view text);
 
 // "file:line:col" for a location (or "file" / "<unknown>" when parts are missing).
 std::string describeLocation(SourceLocation at);

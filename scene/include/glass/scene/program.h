@@ -16,6 +16,10 @@
 #include <variant>
 #include <vector>
 
+namespace glass::geometry {
+struct IteratedFunctionSystem3;
+}
+
 namespace glass::scene {
 
 using GLenumValue = unsigned int;
@@ -136,7 +140,11 @@ struct Mesh {                                               // vertex arrays + g
   std::vector<std::uint32_t> indices;
   bool indexed = false;
 };
-struct DrawModel { int model = -1; bool useMaterials = true; }; // index into Program::models
+struct DrawModel {                                          // index into Program::models
+  int model = -1;
+  bool useMaterials = true;
+  std::optional<Number> round; // .wings models: round the marked edges with this radius
+};
 struct QuadricStyle {                                       // gluQuadric* settings
   GLenumValue drawStyle = 0, normals = 0, orientation = 0;
   bool texture = false;
@@ -197,6 +205,16 @@ struct Ifs {
   StatementList base; // the shape drawn at depth 0 (recursive mode)
 };
 
+// `ifs3d`: the polyhedral rebuild of a 3D IFS file (geometry/include/glass/geometry/ifs3d.h),
+// optionally moved by one map's animation as translation x rotation x scaling.
+struct Ifs3d {
+  std::shared_ptr<const geometry::IteratedFunctionSystem3> system;
+  int depth = 3;
+  bool partColors = true;
+  int animatedMap = -1; // 0-based; -1: drawn in place
+  Number step;          // 0..1 along the animation of animatedMap
+};
+
 struct Instance { int definition = -1; }; // glCallList of a `define`d block
 
 struct Statement {
@@ -210,7 +228,7 @@ struct Statement {
                CullFace, FrontFace, PolygonMode, PolygonOffset, ClipPlane, LineWidth, PointSize,
                Scissor, LogicOp, BindTexture, TexEnv, TexGen, Begin, Rect, Mesh, DrawModel,
                Sphere, Cylinder, Disk, PartialDisk, GlutShape, ParametricTorus, BezierCurve,
-               BezierPatch, Ifs, Instance>
+               BezierPatch, Ifs, Instance, Ifs3d>
       body;
 };
 
@@ -233,7 +251,7 @@ struct TextureDefinition {
   SourceLocation where;
 };
 
-// A Wavefront OBJ file, flattened to triangles grouped by material.
+// A Wavefront OBJ file or a Wings3D file, flattened to triangles grouped by material.
 struct ModelMaterial {
   std::array<float, 4> ambient{0.2f, 0.2f, 0.2f, 1.0f};
   std::array<float, 4> diffuse{0.8f, 0.8f, 0.8f, 1.0f};
@@ -246,8 +264,10 @@ struct ModelPart {
   int material = -1; // index into Model::materials, or -1 for the current GL material
   std::vector<float> positions, normals, texcoords; // 3, 3 and 2 per vertex; 3 vertices a triangle
 };
+struct RoundableModel; // a .wings model's polyhedra, rounded when drawn (scene/src/load/wings_model.h)
 struct Model {
   std::string path;
+  std::shared_ptr<const RoundableModel> roundable; // .wings models only
   std::vector<ModelMaterial> materials;
   std::vector<ModelPart> parts;
   bool hasNormals = false;

@@ -1,0 +1,156 @@
+// Rounding the marked (hard) edges of a polyhedron "made of cubes" with radius R, built from
+// rational Bezier patches (study guide, homeworks 4-5 and Figure 2.8; the patches are those of
+// section 2.4: rational quadratic arcs and the surfaces swept by them).
+//
+// What is built, for a radius R > 0:
+// - every marked edge becomes a strip that is an exact quarter of a cylinder of radius R: a
+//   rational patch of bi-degree (2, 1), the arc (end weights 1, middle weight sqrt(2)/2) swept
+//   along the edge. It touches its two faces along lines at distance R from the edge, where its
+//   normal is the face's normal, so normals are continuous;
+// - every corner where three marked edges meet becomes an eighth of a sphere of radius R: a
+//   rational bi-quadratic patch of revolution whose three boundary curves are the ends of the
+//   three strips (one side collapses to a pole);
+// - where two marked edges meet and the third edge at the corner is sharp, the two strips end on
+//   the corner's bisecting plane (a mitre): both end in the same rational quadratic (an ellipse
+//   arc, the strip's arc projected along the edge onto that plane), so no further patch is
+//   needed;
+// - where one marked edge ends at a corner whose other edges are sharp, the strip ends in the
+//   plane of the face across it, and that face loses its corner to the same quarter arc;
+// - every face shrinks by R away from its marked edges; it is a fan of flat patches from its
+//   centre to the pieces of its boundary (segments of degree 1, arcs of degree 2).
+//
+// Every boundary curve two patches share is built once, from the same points in the same order
+// of operations, so both patches hold the same control points bit for bit; the adaptive
+// tessellator (tessellation.h) then meets them without cracks at any depth.
+//
+// Texture coordinates continue across the rounding by arc length: each strip and corner patch is
+// split in the middle (the strip at 45 degrees, the corner into four) and each half belongs to the
+// face it touches; a point at arc length s from that face's line gets the face's texture
+// coordinates at distance s * 4 / pi beyond the line, so the quarter arc (length pi R / 2) takes
+// exactly the 2 R of texture the sharp edge took, and a texture that runs on across the sharp
+// edge runs on across the rounded one.
+//
+// What is supported, for R > 0: marked edges between two faces at a right angle and convex;
+// corners where a marked edge ends have three edges at right angles (a corner of a cube) or two
+// marked edges in one straight line with flat edges across (where coplanar faces of two cubes
+// meet); faces next to a marked edge have right angles there; every face is convex. Anything
+// else is refused with a message naming the edge, vertex or face. R = 0 gives the sharp object.
+#pragma once
+
+#include "glass/geometry/bezier_surface.h"
+#include "glass/geometry/tessellation.h"
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include <array>
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace glass::geometry {
+
+// A closed polyhedron with some edges marked for rounding.
+struct MarkedPolyhedron {
+  struct Face {
+    std::vector<std::uint32_t> vertices;  // counter-clockwise seen from outside
+    std::vector<glm::dvec2> uvs;          // texture coordinates at each vertex, or empty
+    int material = -1;
+  };
+  std::vector<glm::dvec3> vertices;
+  std::vector<Face> faces;
+  std::vector<std::array<std::uint32_t, 2>> markedEdges;  // vertex pairs
+};
+
+// A polyhedron the rounding cannot handle, or a radius out of range; what() names the edge,
+// vertex or face.
+class RoundingError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// How one patch of the rounded surface gets its texture coordinates: the face's chart (an affine
+// map from the face's plane to (s, t)), either directly (a flat piece of the face) or after
+// unrolling a rounded piece onto the face's plane (see the file comment).
+struct RoundedPatchInfo {
+  int face = -1;      // the face whose chart and material the patch takes
+  bool rounded = false;
+  // For rounded pieces: the centre is the point `centre` (sphere) or the line through it along
+  // `axis` (cylinder, axis of unit length); faceNormal points to the face, acrossNormals to the
+  // other faces of the rounding (one for a strip, two for a sphere piece).
+  glm::dvec3 centre{0.0};
+  glm::dvec3 axis{0.0};
+  bool alongAxis = false;
+  glm::dvec3 faceNormal{0.0};
+  std::vector<glm::dvec3> acrossNormals;
+  // Strips mitred at a sharp corner: the strip's line on its face runs from lineStart to lineEnd;
+  // at an end with a mitre, mitreStart or mitreEnd is the unit vector from that end into the
+  // strip (zero otherwise). There the unrolled point slides along the strip by
+  // R sin(angle) - (4 / pi) angle R, so that two mitred strips unroll onto the same diagonal, as
+  // the sharp corner's faces do; the slide fades linearly towards the other end.
+  glm::dvec3 lineStart{0.0}, lineEnd{0.0};
+  glm::dvec3 mitreStart{0.0}, mitreEnd{0.0};
+};
+
+// A side of a rounded patch: where it meets a face.
+struct PatchSideRef {
+  std::size_t patch = 0;
+  PatchSide side = PatchSide::UMin;
+};
+
+// The outline of a face next to the rounding, counter-clockwise: segments and quarter arcs, each
+// with the sides of the rounded patches that run along it (none for a side whose edge is sharp).
+struct FaceOutline {
+  struct Piece {
+    glm::dvec3 start{0.0}, end{0.0};
+    std::vector<PatchSideRef> along;
+  };
+  int face = -1;
+  std::vector<Piece> pieces;
+};
+
+struct RoundedSurface {
+  double radius = 0.0;
+  // The rounded pieces (strips, sphere corners) and each face as a fan of flat patches from its
+  // centre to its outline; together a closed surface.
+  std::vector<BezierSurface> patches;
+  std::vector<RoundedPatchInfo> info;  // one per patch
+  std::vector<FaceOutline> outlines;   // the faces next to the rounding
+};
+
+// The largest radius the object can be rounded with: half the shortest side of a face next to a
+// marked edge (or next to a corner a marked edge ends at). `limit` gets what sets it.
+// Infinite when nothing is marked.
+double maximumRoundingRadius(const MarkedPolyhedron& polyhedron, std::string* limit = nullptr);
+
+// The patches of the object with its marked edges rounded with `radius` (0: the sharp object).
+// Throws RoundingError.
+RoundedSurface roundMarkedEdges(const MarkedPolyhedron& polyhedron, double radius);
+
+// Triangles of a rounded surface: positions, unit normals, texture coordinates from the faces'
+// charts, and the face each triangle belongs to (for its material). The rounded patches are
+// tessellated adaptively (crack-free among themselves); each face is a flat polygon through its
+// outline and every vertex those patches put on it, so the faces meet them without cracks too.
+struct RoundedMesh {
+  TriangleMesh mesh;
+  std::vector<int> triangleFaces;
+};
+RoundedMesh tessellateRounded(const MarkedPolyhedron& polyhedron, const RoundedSurface& surface,
+                              const AdaptiveOptions& options);
+
+// The texture coordinates a face gives to a point of its plane: from its vertices' uvs (the affine
+// map that fits them best), or, without uvs, a projection along the face's normal with the world's
+// y axis (z for horizontal faces) as t.
+struct FaceChart {
+  glm::dvec3 origin{0.0};
+  glm::dvec3 sAxis{1.0, 0.0, 0.0}, tAxis{0.0, 1.0, 0.0};  // s = s0 + dot(p - origin, sAxis)
+  glm::dvec2 atOrigin{0.0};
+  glm::dvec2 at(const glm::dvec3& p) const;
+};
+FaceChart faceChart(const MarkedPolyhedron& polyhedron, std::size_t face);
+
+// The texture coordinates of point p of a patch with this info.
+glm::dvec2 roundedTexCoord(const RoundedPatchInfo& info, const FaceChart& chart, double radius, const glm::dvec3& p);
+
+}  // namespace glass::geometry

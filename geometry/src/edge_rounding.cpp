@@ -1,0 +1,767 @@
+// Rounding marked edges with rational Bezier patches (see edge_rounding.h for the construction).
+#include "glass/geometry/edge_rounding.h"
+
+#include "glass/geometry/polygon_tessellation.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <numbers>
+#include <optional>
+#include <sstream>
+
+namespace glass::geometry {
+
+namespace {
+
+// Directions are unit vectors; dot products below this count as zero (a right angle), above
+// 1 - this as parallel. Modelled objects carry rounding noise in their coordinates.
+constexpr double kAngleTolerance = 1e-6;
+
+// The middle weight of a quarter circle as a rational quadratic: cos(45 degrees).
+double quarterArcWeight() { return std::sqrt(0.5); }
+
+std::string describeVertex(std::uint32_t v) { return "vertex " + std::to_string(v); }
+
+struct EdgeRecord {
+  std::uint32_t from = 0, to = 0;  // as the left face runs along it
+  int left = -1;                   // the face running from -> to
+  int right = -1;                  // the face running to -> from
+  bool marked = false;
+  bool rounded = false;  // marked, and convex at a right angle (flat marked edges are not rounded)
+};
+
+std::string describeEdge(const EdgeRecord& e) {
+  return "edge " + std::to_string(e.from) + "-" + std::to_string(e.to);
+}
+
+glm::dvec3 newellNormal(const MarkedPolyhedron& poly, const MarkedPolyhedron::Face& face) {
+  glm::dvec3 n(0.0);
+  const std::size_t count = face.vertices.size();
+  for (std::size_t i = 0; i < count; ++i) {
+    const glm::dvec3& a = poly.vertices[face.vertices[i]];
+    const glm::dvec3& b = poly.vertices[face.vertices[(i + 1) % count]];
+    n += glm::dvec3((a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x), (a.x - b.x) * (a.y + b.y));
+  }
+  const double length = glm::length(n);
+  return length > 0.0 ? n / length : n;
+}
+
+// The topology of the polyhedron: edges with their two faces, edges around each vertex, face
+// normals. Built once per rounding.
+class Topology {
+ public:
+  explicit Topology(const MarkedPolyhedron& poly) : poly_(poly), vertexEdges_(poly.vertices.size()) {
+    for (std::size_t f = 0; f < poly.faces.size(); ++f) {
+      const auto& face = poly.faces[f];
+      if (face.vertices.size() < 3)
+        throw RoundingError("face " + std::to_string(f) + " has " + std::to_string(face.vertices.size()) +
+                            " vertices; a face needs at least 3");
+      for (std::uint32_t v : face.vertices)
+        if (v >= poly.vertices.size())
+          throw RoundingError("face " + std::to_string(f) + " names vertex " + std::to_string(v) + ", but there are " +
+                              std::to_string(poly.vertices.size()) + " vertices");
+      normals_.push_back(newellNormal(poly, face));
+      for (std::size_t i = 0; i < face.vertices.size(); ++i) {
+        const std::uint32_t a = face.vertices[i], b = face.vertices[(i + 1) % face.vertices.size()];
+        if (a == b) throw RoundingError("face " + std::to_string(f) + " repeats " + describeVertex(a));
+        const auto key = std::minmax(a, b);
+        auto found = edgeIndex_.find(key);
+        if (found == edgeIndex_.end()) {
+          edgeIndex_.emplace(key, edges_.size());
+          vertexEdges_[a].push_back(edges_.size());
+          vertexEdges_[b].push_back(edges_.size());
+          edges_.push_back(EdgeRecord{a, b, static_cast<int>(f), -1, false, false});
+        } else {
+          EdgeRecord& e = edges_[found->second];
+          if (e.from == a || e.right >= 0)
+            throw RoundingError(describeEdge(e) + " is used by more than two faces or twice in one direction (faces " +
+                                std::to_string(e.left) + " and " + std::to_string(f) +
+                                "): the faces are not consistently oriented");
+          e.right = static_cast<int>(f);
+        }
+      }
+    }
+    for (const auto& [a, b] : poly.markedEdges) {
+      auto found = edgeIndex_.find(std::minmax(a, b));
+      if (found == edgeIndex_.end())
+        throw RoundingError("marked edge " + std::to_string(a) + "-" + std::to_string(b) + " is not an edge of any face");
+      edges_[found->second].marked = true;
+    }
+  }
+
+  const MarkedPolyhedron& poly() const { return poly_; }
+  std::vector<EdgeRecord>& edges() { return edges_; }
+  const std::vector<EdgeRecord>& edges() const { return edges_; }
+  const std::vector<std::size_t>& edgesAt(std::uint32_t v) const { return vertexEdges_[v]; }
+  const glm::dvec3& normal(std::size_t face) const { return normals_[face]; }
+  std::size_t edgeBetween(std::uint32_t a, std::uint32_t b) const { return edgeIndex_.at(std::minmax(a, b)); }
+  std::uint32_t otherEnd(std::size_t edge, std::uint32_t v) const {
+    return edges_[edge].from == v ? edges_[edge].to : edges_[edge].from;
+  }
+  // The unit vector from v along the edge. One expression for every use, so that points built
+  // from it by different faces and patches agree bit for bit.
+  glm::dvec3 direction(std::uint32_t v, std::size_t edge) const {
+    return glm::normalize(poly_.vertices[otherEnd(edge, v)] - poly_.vertices[v]);
+  }
+  glm::dvec3 centroid(std::size_t face) const {
+    glm::dvec3 sum(0.0);
+    for (std::uint32_t v : poly_.faces[face].vertices) sum += poly_.vertices[v];
+    return sum / static_cast<double>(poly_.faces[face].vertices.size());
+  }
+
+ private:
+  const MarkedPolyhedron& poly_;
+  std::vector<EdgeRecord> edges_;
+  std::map<std::pair<std::uint32_t, std::uint32_t>, std::size_t> edgeIndex_;
+  std::vector<std::vector<std::size_t>> vertexEdges_;
+  std::vector<glm::dvec3> normals_;
+};
+
+enum class Dihedral { Convex, Flat, Concave };
+
+// The sign of the far side of the right face seen from the left face's plane: below it for a
+// convex edge. Measured at the right face's centroid, relative to the edge's length.
+Dihedral dihedralOf(const Topology& topo, const EdgeRecord& e) {
+  const glm::dvec3& origin = topo.poly().vertices[e.from];
+  const double scale = glm::length(topo.poly().vertices[e.to] - origin);
+  const glm::dvec3 toFar = topo.centroid(static_cast<std::size_t>(e.right)) - origin;
+  const double height = glm::dot(topo.normal(static_cast<std::size_t>(e.left)), toFar) / scale;
+  if (std::abs(height) < kAngleTolerance) return Dihedral::Flat;
+  return height < 0.0 ? Dihedral::Convex : Dihedral::Concave;
+}
+
+// Decides which marked edges are rounded and checks every corner a rounded edge ends at.
+void classifyForRounding(Topology& topo) {
+  for (EdgeRecord& e : topo.edges()) {
+    if (!e.marked) continue;
+    if (e.right < 0) throw RoundingError("marked " + describeEdge(e) + " borders only face " + std::to_string(e.left) + ": the object is open there");
+    const Dihedral dihedral = dihedralOf(topo, e);
+    if (dihedral == Dihedral::Flat) continue;  // nothing to round between coplanar faces
+    if (dihedral == Dihedral::Concave)
+      throw RoundingError("marked " + describeEdge(e) + " is concave (faces " + std::to_string(e.left) + " and " +
+                          std::to_string(e.right) + "); rounding supports convex edges only");
+    const double cosine = glm::dot(topo.normal(static_cast<std::size_t>(e.left)), topo.normal(static_cast<std::size_t>(e.right)));
+    if (std::abs(cosine) > kAngleTolerance) {
+      std::ostringstream angle;
+      angle.precision(4);
+      angle << 180.0 - std::acos(std::clamp(cosine, -1.0, 1.0)) * 180.0 / std::numbers::pi;
+      throw RoundingError("marked " + describeEdge(e) + " joins faces " + std::to_string(e.left) + " and " +
+                          std::to_string(e.right) + " at " + angle.str() +
+                          " degrees; rounding supports right angles only (an object made of cubes)");
+    }
+    e.rounded = true;
+  }
+}
+
+bool touchesRounding(const Topology& topo, std::uint32_t v) {
+  for (std::size_t e : topo.edgesAt(v))
+    if (topo.edges()[e].rounded) return true;
+  return false;
+}
+
+void checkCorner(const Topology& topo, std::uint32_t v) {
+  const auto& all = topo.edgesAt(v);
+  std::vector<std::size_t> creases;
+  for (std::size_t e : all) {
+    const EdgeRecord& edge = topo.edges()[e];
+    if (edge.right < 0)
+      throw RoundingError(describeVertex(v) + ", where a rounded edge ends, lies on the open " + describeEdge(edge));
+    const Dihedral dihedral = dihedralOf(topo, edge);
+    if (dihedral == Dihedral::Concave)
+      throw RoundingError(describeVertex(v) + ", where a rounded edge ends, has the concave " + describeEdge(edge) +
+                          "; rounding supports convex corners only");
+    if (dihedral == Dihedral::Convex) creases.push_back(e);
+  }
+  auto perpendicular = [&](std::size_t a, std::size_t b) {
+    return std::abs(glm::dot(topo.direction(v, a), topo.direction(v, b))) < kAngleTolerance;
+  };
+  if (creases.size() == 3 && all.size() == 3 && perpendicular(creases[0], creases[1]) &&
+      perpendicular(creases[1], creases[2]) && perpendicular(creases[0], creases[2]))
+    return;  // the corner of a cube
+  if (creases.size() == 2 &&
+      glm::dot(topo.direction(v, creases[0]), topo.direction(v, creases[1])) < -1.0 + kAngleTolerance) {
+    const EdgeRecord& a = topo.edges()[creases[0]];
+    const EdgeRecord& b = topo.edges()[creases[1]];
+    if (a.rounded != b.rounded)
+      throw RoundingError("rounded " + describeEdge(a.rounded ? a : b) + " ends at " + describeVertex(v) +
+                          " in the middle of a straight crease; mark " + describeEdge(a.rounded ? b : a) + " too");
+    return;  // a crease running straight through, with flat edges across
+  }
+  throw RoundingError(describeVertex(v) + ", where a rounded edge ends, is not the corner of a cube: it has " +
+                      std::to_string(creases.size()) + " creases and " + std::to_string(all.size()) +
+                      " edges; rounding supports corners of three edges at right angles");
+}
+
+void checkFaceCorners(const Topology& topo, std::size_t f, const std::vector<bool>& touched) {
+  const auto& face = topo.poly().faces[f];
+  const std::size_t count = face.vertices.size();
+  for (std::size_t i = 0; i < count; ++i) {
+    const std::uint32_t v = face.vertices[i];
+    if (!touched[v]) continue;
+    const std::uint32_t previous = face.vertices[(i + count - 1) % count], next = face.vertices[(i + 1) % count];
+    const double cosine = glm::dot(topo.direction(v, topo.edgeBetween(v, previous)), topo.direction(v, topo.edgeBetween(v, next)));
+    if (std::abs(cosine) > kAngleTolerance) {
+      std::ostringstream angle;
+      angle.precision(4);
+      angle << std::acos(std::clamp(cosine, -1.0, 1.0)) * 180.0 / std::numbers::pi;
+      throw RoundingError("face " + std::to_string(f) + " has an angle of " + angle.str() + " degrees at " +
+                          describeVertex(v) + ", where a rounded edge ends; rounding needs right angles there");
+    }
+  }
+}
+
+bool isConvex(const Topology& topo, std::size_t f) {
+  const auto& face = topo.poly().faces[f];
+  const auto& points = topo.poly().vertices;
+  const std::size_t count = face.vertices.size();
+  for (std::size_t i = 0; i < count; ++i) {
+    const glm::dvec3& a = points[face.vertices[(i + count - 1) % count]];
+    const glm::dvec3& b = points[face.vertices[i]];
+    const glm::dvec3& c = points[face.vertices[(i + 1) % count]];
+    const glm::dvec3 turn = glm::cross(glm::normalize(b - a), glm::normalize(c - b));
+    if (glm::dot(turn, topo.normal(f)) < -kAngleTolerance) return false;
+  }
+  return true;
+}
+
+// A piece of a face's boundary at one of its corners: the corner itself, moved in by the rounding,
+// or a quarter arc where the face is the end face of a rounded edge.
+struct CornerPiece {
+  bool arc = false;
+  glm::dvec3 start{0.0}, end{0.0}, middle{0.0};  // a point corner has start == end
+  std::vector<std::size_t> terms;                  // the edges the point is moved along (point corners)
+};
+
+class RoundingBuilder {
+ public:
+  RoundingBuilder(Topology& topo, double radius) : topo_(topo), radius_(radius), weight_(quarterArcWeight()) {
+    touched_.assign(topo.poly().vertices.size(), false);
+    if (radius > 0.0) {
+      for (std::uint32_t v = 0; v < touched_.size(); ++v) touched_[v] = touchesRounding(topo, v);
+    }
+  }
+
+  const std::vector<bool>& touched() const { return touched_; }
+
+  // v moved by `radius` along each listed edge, summed in the order of the edges' numbers.
+  glm::dvec3 offsetPoint(std::uint32_t v, std::vector<std::size_t> edges) const {
+    std::sort(edges.begin(), edges.end());
+    glm::dvec3 p = topo_.poly().vertices[v];
+    for (std::size_t e : edges) p = p + radius_ * topo_.direction(v, e);
+    return p;
+  }
+
+  CornerPiece corner(std::size_t f, std::size_t i) const {
+    const auto& face = topo_.poly().faces[f];
+    const std::size_t count = face.vertices.size();
+    const std::uint32_t v = face.vertices[i];
+    const std::size_t previous = topo_.edgeBetween(v, face.vertices[(i + count - 1) % count]);
+    const std::size_t next = topo_.edgeBetween(v, face.vertices[(i + 1) % count]);
+    const bool previousRounded = topo_.edges()[previous].rounded, nextRounded = topo_.edges()[next].rounded;
+    CornerPiece piece;
+    if (previousRounded || nextRounded) {
+      // A rounded edge's line moves into the face by R, along the face's other edge there.
+      if (previousRounded) piece.terms.push_back(next);
+      if (nextRounded) piece.terms.push_back(previous);
+      piece.start = piece.end = offsetPoint(v, piece.terms);
+    } else if (touched_[v]) {
+      piece.arc = true;
+      piece.start = offsetPoint(v, {previous});
+      piece.middle = offsetPoint(v, {});
+      piece.end = offsetPoint(v, {next});
+    } else {
+      piece.start = piece.end = offsetPoint(v, {});
+    }
+    return piece;
+  }
+
+  CornerPiece cornerAt(std::size_t f, std::uint32_t v) const {
+    const auto& vertices = topo_.poly().faces[f].vertices;
+    const auto at = std::find(vertices.begin(), vertices.end(), v);
+    return corner(f, static_cast<std::size_t>(at - vertices.begin()));
+  }
+
+  void addFace(std::size_t f) {
+    const auto& face = topo_.poly().faces[f];
+    const std::size_t count = face.vertices.size();
+    std::vector<CornerPiece> corners;
+    for (std::size_t i = 0; i < count; ++i) corners.push_back(corner(f, i));
+    glm::dvec3 centre(0.0);
+    for (const CornerPiece& c : corners) centre += c.start + c.end;
+    centre /= static_cast<double>(2 * count);
+    const glm::dvec3 normal = topo_.normal(f);
+    RoundedPatchInfo info;
+    info.face = static_cast<int>(f);
+    FaceOutline outline;
+    outline.face = static_cast<int>(f);
+    for (std::size_t i = 0; i < count; ++i) {
+      const CornerPiece& c = corners[i];
+      if (c.arc) {
+        const std::uint32_t v = face.vertices[i];
+        outline.pieces.push_back({c.start, c.end, {}});
+        pendingArcs_.push_back({surface_.outlines.size(), outline.pieces.size() - 1, v, roundedEdgeAt(v)});
+        const glm::dvec3 points[] = {c.start, centre, c.middle, centre, c.end, centre};
+        const double weights[] = {1.0, 1.0, weight_, weight_, 1.0, 1.0};
+        const auto [first, second] = BezierSurface(2, 1, points, weights).subdivideU(0.5);
+        add(first, info, normal);
+        add(second, info, normal);
+      }
+      const glm::dvec3& a = c.end;
+      const glm::dvec3& b = corners[(i + 1) % count].start;
+      if (a == b) continue;  // the side is used up by the rounding at both its ends
+      const std::size_t edge = topo_.edgeBetween(face.vertices[i], face.vertices[(i + 1) % count]);
+      outline.pieces.push_back({a, b, {}});
+      if (topo_.edges()[edge].rounded) pendingSides_.push_back({surface_.outlines.size(), outline.pieces.size() - 1, edge, f});
+      const glm::dvec3 points[] = {a, centre, b, centre};
+      add(BezierSurface(1, 1, points), info, normal);
+    }
+    surface_.outlines.push_back(std::move(outline));
+  }
+
+  // Fills in which rounded patch sides run along each outline piece.
+  void linkOutlines() {
+    for (const PendingSide& p : pendingSides_) {
+      const auto found = stripSides_.find({p.edge, p.face});
+      if (found != stripSides_.end()) surface_.outlines[p.outline].pieces[p.piece].along.push_back(found->second);
+    }
+    for (const PendingArc& p : pendingArcs_) {
+      const auto found = stripEnds_.find({p.edge, p.vertex});
+      if (found != stripEnds_.end()) surface_.outlines[p.outline].pieces[p.piece].along = found->second;
+    }
+  }
+
+  void addStrip(std::size_t edgeIndex) {
+    const EdgeRecord& e = topo_.edges()[edgeIndex];
+    const auto left = static_cast<std::size_t>(e.left), right = static_cast<std::size_t>(e.right);
+    // Whether a face's corner at v moved along this edge.
+    auto movedAlong = [&](const CornerPiece& c) { return std::count(c.terms.begin(), c.terms.end(), edgeIndex) > 0; };
+    auto end = [&](std::uint32_t v, glm::dvec3& onLeft, glm::dvec3& middle, glm::dvec3& onRight) {
+      const CornerPiece l = cornerAt(left, v), r = cornerAt(right, v);
+      onLeft = l.start;
+      onRight = r.start;
+      // The arc's middle control point lies on the edge: R in from v where both faces' corners
+      // moved along the edge (a sphere corner), at v where the strip ends at a mitre or a face.
+      const bool moved = movedAlong(l) && movedAlong(r);
+      middle = moved ? offsetPoint(v, {edgeIndex}) : offsetPoint(v, {});
+    };
+    glm::dvec3 l0, m0, r0, l1, m1, r1;
+    end(e.from, l0, m0, r0);
+    end(e.to, l1, m1, r1);
+    if (l0 == l1 && r0 == r1) return;  // no length left
+    const glm::dvec3 points[] = {l0, l1, m0, m1, r0, r1};
+    const double weights[] = {1.0, 1.0, weight_, weight_, 1.0, 1.0};
+    const auto [nearLeft, nearRight] = BezierSurface(2, 1, points, weights).subdivideU(0.5);
+    const glm::dvec3 axisPoint = l0 - radius_ * topo_.normal(left);
+    RoundedPatchInfo info;
+    info.rounded = true;
+    info.alongAxis = true;
+    info.centre = axisPoint;
+    info.axis = topo_.direction(e.from, edgeIndex);
+    // Each half touches its face along u = 0 (nearLeft) or u = 1 (nearRight), and ends at e.from
+    // along v = 0, at e.to along v = 1 (swapped when add() turns the patch round).
+    auto record = [&](const BezierSurface& half, PatchSide faceSide, std::size_t face) {
+      const bool flipped = add(half, info);
+      const std::size_t k = surface_.patches.size() - 1;
+      stripSides_[{edgeIndex, face}] = PatchSideRef{k, faceSide};
+      stripEnds_[{edgeIndex, e.from}].push_back({k, flipped ? PatchSide::VMax : PatchSide::VMin});
+      stripEnds_[{edgeIndex, e.to}].push_back({k, flipped ? PatchSide::VMin : PatchSide::VMax});
+    };
+    // A mitre at v: only one of the two faces' corners moved along the edge; the half on that
+    // face (which holds the other rounded edge) slides.
+    auto mitre = [&](std::uint32_t v, std::size_t face, std::size_t other) {
+      const bool here = movedAlong(cornerAt(face, v)), there = movedAlong(cornerAt(other, v));
+      return here && !there ? topo_.direction(v, edgeIndex) : glm::dvec3(0.0);
+    };
+    info.face = e.left;
+    info.faceNormal = topo_.normal(left);
+    info.acrossNormals = {topo_.normal(right)};
+    info.lineStart = l0;
+    info.lineEnd = l1;
+    info.mitreStart = mitre(e.from, left, right);
+    info.mitreEnd = mitre(e.to, left, right);
+    record(nearLeft, PatchSide::UMin, left);
+    info.face = e.right;
+    info.faceNormal = topo_.normal(right);
+    info.acrossNormals = {topo_.normal(left)};
+    info.lineStart = r0;
+    info.lineEnd = r1;
+    info.mitreStart = mitre(e.from, right, left);
+    info.mitreEnd = mitre(e.to, right, left);
+    record(nearRight, PatchSide::UMax, right);
+  }
+
+  // The eighth of a sphere where the rounded edges a, b, c (all of v's edges) meet.
+  void addSphereCorner(std::uint32_t v) {
+    const auto& edges = topo_.edgesAt(v);
+    const std::size_t a = edges[0], b = edges[1], c = edges[2];
+    const std::size_t faceAB = faceWithEdges(v, a, b), faceCA = faceWithEdges(v, c, a), faceBC = faceWithEdges(v, b, c);
+    const glm::dvec3 pole = cornerAt(faceAB, v).start;
+    const glm::dvec3 points[] = {pole,
+                                 pole,
+                                 pole,
+                                 offsetPoint(v, {a}),
+                                 offsetPoint(v, {}),
+                                 offsetPoint(v, {b}),
+                                 cornerAt(faceCA, v).start,
+                                 offsetPoint(v, {c}),
+                                 cornerAt(faceBC, v).start};
+    const double w = weight_;
+    const double weights[] = {1.0, w, 1.0, w, w * w, w, 1.0, w, 1.0};
+    const auto [nearPole, nearEquator] = BezierSurface(2, 2, points, weights).subdivideU(0.5);
+    const auto [poleA, poleB] = nearPole.subdivideV(0.5);
+    const auto [equatorA, equatorB] = nearEquator.subdivideV(0.5);
+    RoundedPatchInfo info;
+    info.rounded = true;
+    info.centre = offsetPoint(v, {a, b, c});
+    auto forFace = [&](std::size_t face, std::size_t other1, std::size_t other2) {
+      info.face = static_cast<int>(face);
+      info.faceNormal = topo_.normal(face);
+      info.acrossNormals = {topo_.normal(other1), topo_.normal(other2)};
+      return info;
+    };
+    add(poleA, forFace(faceAB, faceCA, faceBC));
+    add(poleB, forFace(faceAB, faceCA, faceBC));
+    add(equatorA, forFace(faceCA, faceAB, faceBC));
+    add(equatorB, forFace(faceBC, faceAB, faceCA));
+  }
+
+  RoundedSurface take() { return std::move(surface_); }
+
+ private:
+  std::size_t faceWithEdges(std::uint32_t v, std::size_t e1, std::size_t e2) const {
+    for (std::size_t f : {topo_.edges()[e1].left, topo_.edges()[e1].right}) {
+      const EdgeRecord& other = topo_.edges()[e2];
+      if (static_cast<int>(f) == other.left || static_cast<int>(f) == other.right) return f;
+    }
+    throw RoundingError(describeVertex(v) + ": no face holds both of two of its edges");
+  }
+
+  // Adds a patch whose normals point away from the solid: for a rounded piece, away from its
+  // centre (line); for a flat one, along the face's normal. A patch that comes out the other way
+  // round has its v direction reversed (its boundary curves are unchanged).
+  // Returns whether the patch was turned round.
+  bool add(const BezierSurface& patch, const RoundedPatchInfo& info, const glm::dvec3& flatNormal = {}) {
+    const glm::dvec3 probe = patch.evaluate(0.5, 0.5);
+    glm::dvec3 outward = flatNormal;
+    if (info.rounded) {
+      glm::dvec3 centre = info.centre;
+      if (info.alongAxis) centre += info.axis * glm::dot(probe - info.centre, info.axis);
+      outward = probe - centre;
+    }
+    BezierSurface oriented = patch;
+    const bool flip = glm::dot(patch.normal(0.5, 0.5), outward) < 0.0;
+    if (flip) {
+      const int rows = patch.degreeU() + 1, columns = patch.degreeV() + 1;
+      std::vector<glm::dvec4> net;
+      for (int i = 0; i < rows; ++i)
+        for (int j = columns - 1; j >= 0; --j) net.push_back(patch.homogeneousControlPoint(i, j));
+      oriented = BezierSurface::fromHomogeneous(patch.degreeU(), patch.degreeV(), std::move(net));
+    }
+    surface_.patches.push_back(std::move(oriented));
+    surface_.info.push_back(info);
+    return flip;
+  }
+
+  // The rounded edge at a corner whose face has an arc there (the corner's third edge).
+  std::size_t roundedEdgeAt(std::uint32_t v) const {
+    for (std::size_t e : topo_.edgesAt(v))
+      if (topo_.edges()[e].rounded) return e;
+    return 0;
+  }
+
+  struct PendingSide {
+    std::size_t outline, piece, edge, face;
+  };
+  struct PendingArc {
+    std::size_t outline, piece;
+    std::uint32_t vertex;
+    std::size_t edge;
+  };
+  std::vector<PendingSide> pendingSides_;
+  std::vector<PendingArc> pendingArcs_;
+  std::map<std::pair<std::size_t, std::size_t>, PatchSideRef> stripSides_;
+  std::map<std::pair<std::size_t, std::uint32_t>, std::vector<PatchSideRef>> stripEnds_;
+
+  Topology& topo_;
+  double radius_;
+  double weight_;
+  std::vector<bool> touched_;
+  RoundedSurface surface_;
+};
+
+double shortestSideLimit(const Topology& topo, const std::vector<bool>& touched, std::string* limit) {
+  double best = std::numeric_limits<double>::infinity();
+  const auto& poly = topo.poly();
+  for (std::size_t f = 0; f < poly.faces.size(); ++f) {
+    const auto& face = poly.faces[f];
+    const bool near = std::any_of(face.vertices.begin(), face.vertices.end(), [&](std::uint32_t v) { return touched[v]; });
+    if (!near) continue;
+    for (std::size_t i = 0; i < face.vertices.size(); ++i) {
+      const std::uint32_t a = face.vertices[i], b = face.vertices[(i + 1) % face.vertices.size()];
+      const double half = glm::length(poly.vertices[b] - poly.vertices[a]) / 2.0;
+      if (half < best) {
+        best = half;
+        if (limit != nullptr) {
+          std::ostringstream text;
+          text.precision(6);
+          text << "half the side " << a << "-" << b << " (length " << 2.0 * half << ") of face " << f
+               << ", next to a rounded edge";
+          *limit = text.str();
+        }
+      }
+    }
+  }
+  return best;
+}
+
+}  // namespace
+
+glm::dvec2 FaceChart::at(const glm::dvec3& p) const {
+  const glm::dvec3 d = p - origin;
+  return atOrigin + glm::dvec2(glm::dot(d, sAxis), glm::dot(d, tAxis));
+}
+
+FaceChart faceChart(const MarkedPolyhedron& poly, std::size_t f) {
+  const auto& face = poly.faces[f];
+  const glm::dvec3 normal = newellNormal(poly, face);
+  FaceChart chart;
+  chart.origin = poly.vertices[face.vertices[0]];
+  // An orthonormal frame (x, y) of the face's plane: y along the world's up direction projected,
+  // or along -z for faces that look up or down.
+  glm::dvec3 up = std::abs(normal.y) > 0.7071 ? glm::dvec3(0.0, 0.0, normal.y > 0.0 ? -1.0 : 1.0) : glm::dvec3(0.0, 1.0, 0.0);
+  glm::dvec3 y = up - normal * glm::dot(up, normal);
+  if (glm::length(y) == 0.0) y = glm::dvec3(0.0, 0.0, 1.0);
+  y = glm::normalize(y);
+  const glm::dvec3 x = glm::cross(y, normal);
+  if (face.uvs.size() != face.vertices.size()) {
+    chart.sAxis = x;
+    chart.tAxis = y;
+    chart.atOrigin = glm::dvec2(glm::dot(chart.origin, x), glm::dot(chart.origin, y));
+    return chart;
+  }
+  // Least squares: uv = c + A (px, py) over the face's corners, with (px, py) the corner in the
+  // frame; the normal equations of [px py 1] for each of s and t.
+  double m[3][3] = {};
+  glm::dvec3 rs(0.0), rt(0.0);
+  for (std::size_t i = 0; i < face.vertices.size(); ++i) {
+    const glm::dvec3 d = poly.vertices[face.vertices[i]] - chart.origin;
+    const double row[3] = {glm::dot(d, x), glm::dot(d, y), 1.0};
+    for (int r = 0; r < 3; ++r) {
+      for (int c = 0; c < 3; ++c) m[r][c] += row[r] * row[c];
+      rs[r] += row[r] * face.uvs[i].x;
+      rt[r] += row[r] * face.uvs[i].y;
+    }
+  }
+  // Cramer's rule on the 3 x 3 system.
+  auto det3 = [](const double a[3][3]) {
+    return a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1]) - a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0]) +
+           a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0]);
+  };
+  const double det = det3(m);
+  auto solve = [&](const glm::dvec3& rhs) {
+    glm::dvec3 out(0.0);
+    if (std::abs(det) < 1e-300) return out;
+    for (int k = 0; k < 3; ++k) {
+      double copy[3][3];
+      for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c) copy[r][c] = c == k ? rhs[r] : m[r][c];
+      out[k] = det3(copy) / det;
+    }
+    return out;
+  };
+  const glm::dvec3 s = solve(rs), t = solve(rt);
+  chart.sAxis = s.x * x + s.y * y;
+  chart.tAxis = t.x * x + t.y * y;
+  chart.atOrigin = glm::dvec2(s.z, t.z);
+  return chart;
+}
+
+glm::dvec2 roundedTexCoord(const RoundedPatchInfo& info, const FaceChart& chart, double radius, const glm::dvec3& p) {
+  if (!info.rounded) return chart.at(p);
+  glm::dvec3 centre = info.centre;
+  if (info.alongAxis) centre += info.axis * glm::dot(p - info.centre, info.axis);
+  const glm::dvec3 direction = glm::normalize(p - centre);
+  // Unroll onto the face's plane: the touching point (centre + R n_face), then towards each other
+  // face of the rounding by 4 / pi times the arc length asin(direction . n) R.
+  glm::dvec3 flat = centre + radius * info.faceNormal;
+  for (const glm::dvec3& across : info.acrossNormals) {
+    const double sine = std::clamp(glm::dot(direction, across), -1.0, 1.0);
+    const double unrolled = (4.0 / std::numbers::pi) * std::asin(sine) * radius;
+    flat += unrolled * across;
+    if (info.alongAxis) {
+      const glm::dvec3 line = info.lineEnd - info.lineStart;
+      const double t = std::clamp(glm::dot(p - info.lineStart, line) / glm::dot(line, line), 0.0, 1.0);
+      const double slide = radius * sine - unrolled;
+      flat += slide * ((1.0 - t) * info.mitreStart + t * info.mitreEnd);
+    }
+  }
+  return chart.at(flat);
+}
+
+double maximumRoundingRadius(const MarkedPolyhedron& poly, std::string* limit) {
+  Topology topo(poly);
+  classifyForRounding(topo);
+  std::vector<bool> touched(poly.vertices.size(), false);
+  for (std::uint32_t v = 0; v < touched.size(); ++v) touched[v] = touchesRounding(topo, v);
+  return shortestSideLimit(topo, touched, limit);
+}
+
+RoundedSurface roundMarkedEdges(const MarkedPolyhedron& poly, double radius) {
+  if (!(radius >= 0.0) || !std::isfinite(radius)) throw RoundingError("the rounding radius must be 0 or more");
+  Topology topo(poly);
+  if (radius > 0.0) classifyForRounding(topo);
+  RoundingBuilder builder(topo, radius);
+  const std::vector<bool>& touched = builder.touched();
+  if (radius > 0.0) {
+    std::string limit;
+    const double largest = shortestSideLimit(topo, touched, &limit);
+    if (radius > largest) {
+      std::ostringstream text;
+      text.precision(6);
+      text << "radius " << radius << " is too large: the largest is " << largest << ", " << limit;
+      throw RoundingError(text.str());
+    }
+    for (std::uint32_t v = 0; v < touched.size(); ++v)
+      if (touched[v]) checkCorner(topo, v);
+  }
+  for (std::size_t f = 0; f < poly.faces.size(); ++f) {
+    const auto& face = poly.faces[f];
+    const bool near = std::any_of(face.vertices.begin(), face.vertices.end(), [&](std::uint32_t v) { return touched[v]; });
+    if (!near) continue;  // drawn as a polygon by tessellateRounded
+    checkFaceCorners(topo, f, touched);
+    if (!isConvex(topo, f))
+      throw RoundingError("face " + std::to_string(f) + ", next to a rounded edge, is not convex");
+    builder.addFace(f);
+  }
+  for (std::size_t e = 0; e < topo.edges().size(); ++e)
+    if (topo.edges()[e].rounded) builder.addStrip(e);
+  for (std::uint32_t v = 0; v < touched.size(); ++v) {
+    if (!touched[v] || topo.edgesAt(v).size() != 3) continue;
+    const auto& edges = topo.edgesAt(v);
+    if (std::all_of(edges.begin(), edges.end(), [&](std::size_t e) { return topo.edges()[e].rounded; }))
+      builder.addSphereCorner(v);
+  }
+  builder.linkOutlines();
+  RoundedSurface surface = builder.take();
+  surface.radius = radius;
+  return surface;
+}
+
+namespace {
+
+// A flat face as triangles: the polygon through `contour` (counter-clockwise seen from outside,
+// in the face's plane), triangulated in that plane, with the face's normal and chart.
+void appendFlatPolygon(const MarkedPolyhedron& poly, std::size_t f, const std::vector<glm::dvec3>& contour, RoundedMesh& out) {
+  const glm::dvec3 normal = newellNormal(poly, poly.faces[f]);
+  const FaceChart chart = faceChart(poly, f);
+  const glm::dvec3 origin = contour[0];
+  glm::dvec3 x = poly.vertices[poly.faces[f].vertices[1]] - poly.vertices[poly.faces[f].vertices[0]];
+  x = glm::normalize(x - normal * glm::dot(x, normal));
+  const glm::dvec3 y = glm::cross(normal, x);
+  std::vector<PlanarPoint> planar;
+  std::vector<glm::dvec3> points = contour;
+  for (const glm::dvec3& p : contour) planar.push_back({glm::dot(p - origin, x), glm::dot(p - origin, y)});
+  const PolygonTessellation tess = tessellatePolygon({planar}, WindingRule::NonZero, false);
+  for (const CreatedVertex& created : tess.created) {
+    glm::dvec3 p(0.0);
+    for (int k = 0; k < 4; ++k)
+      if (created.sources[k] >= 0) p += created.weights[k] * points[static_cast<std::size_t>(created.sources[k])];
+    points.push_back(p);
+  }
+  const auto base = static_cast<std::uint32_t>(out.mesh.positions.size());
+  for (const glm::dvec3& p : points) {
+    out.mesh.positions.push_back(p);
+    out.mesh.normals.push_back(normal);
+    out.mesh.texCoords.push_back(chart.at(p));
+  }
+  for (const TessellatedTriangle& t : tess.triangles) {
+    for (int k : t.vertices) out.mesh.indices.push_back(base + static_cast<std::uint32_t>(k));
+    out.triangleFaces.push_back(static_cast<int>(f));
+  }
+}
+
+bool onSide(PatchSide side, const glm::dvec2& uv) {
+  switch (side) {
+    case PatchSide::UMin: return uv.x == 0.0;
+    case PatchSide::UMax: return uv.x == 1.0;
+    case PatchSide::VMin: return uv.y == 0.0;
+    case PatchSide::VMax: return uv.y == 1.0;
+  }
+  return false;
+}
+
+}  // namespace
+
+RoundedMesh tessellateRounded(const MarkedPolyhedron& poly, const RoundedSurface& surface, const AdaptiveOptions& options) {
+  // The rounded patches only: faces are drawn as polygons below. Each patch's parameters come
+  // back as texture coordinates offset by 4 x its number among them (s = 4 k + u, t = v, exact
+  // binary fractions), so that every vertex can be traced to its patch and place on it.
+  std::vector<BezierSurface> rounded;
+  std::vector<std::size_t> surfaceIndex;
+  std::vector<std::size_t> roundedIndex(surface.patches.size(), 0);
+  std::vector<TextureRect> tags;
+  for (std::size_t k = 0; k < surface.patches.size(); ++k) {
+    if (!surface.info[k].rounded) continue;
+    roundedIndex[k] = rounded.size();
+    tags.push_back({glm::dvec2(4.0 * static_cast<double>(rounded.size()), 0.0), glm::dvec2(1.0)});
+    rounded.push_back(surface.patches[k]);
+    surfaceIndex.push_back(k);
+  }
+  RoundedMesh out;
+  out.mesh = tessellateAdaptive(rounded, options, tags);
+  const std::size_t meshVertices = out.mesh.positions.size();
+  std::vector<std::size_t> vertexPatch(meshVertices);
+  std::vector<glm::dvec2> vertexUv(meshVertices);
+  std::vector<std::optional<FaceChart>> charts(poly.faces.size());
+  for (std::size_t i = 0; i < meshVertices; ++i) {
+    const glm::dvec2 tag = out.mesh.texCoords[i];
+    const double k = std::floor(tag.x / 4.0);
+    vertexPatch[i] = static_cast<std::size_t>(k);
+    vertexUv[i] = glm::dvec2(tag.x - 4.0 * k, tag.y);
+    const RoundedPatchInfo& info = surface.info[surfaceIndex[vertexPatch[i]]];
+    const auto f = static_cast<std::size_t>(info.face);
+    if (!charts[f]) charts[f] = faceChart(poly, f);
+    out.mesh.texCoords[i] = roundedTexCoord(info, *charts[f], surface.radius, out.mesh.positions[i]);
+  }
+  for (std::size_t t = 0; t < out.mesh.indices.size(); t += 3)
+    out.triangleFaces.push_back(surface.info[surfaceIndex[vertexPatch[out.mesh.indices[t]]]].face);
+
+  // Faces next to the rounding: their outlines, with every vertex the rounded patches have there.
+  std::vector<bool> outlined(poly.faces.size(), false);
+  for (const FaceOutline& outline : surface.outlines) {
+    outlined[static_cast<std::size_t>(outline.face)] = true;
+    std::vector<glm::dvec3> contour;
+    for (const FaceOutline::Piece& piece : outline.pieces) {
+      contour.push_back(piece.start);
+      std::vector<std::pair<double, glm::dvec3>> inside;
+      const glm::dvec3 direction = piece.end - piece.start;
+      for (const PatchSideRef& ref : piece.along) {
+        const std::size_t k = roundedIndex[ref.patch];
+        for (std::size_t i = 0; i < meshVertices; ++i) {
+          if (vertexPatch[i] != k || !onSide(ref.side, vertexUv[i])) continue;
+          const glm::dvec3& p = out.mesh.positions[i];
+          if (p == piece.start || p == piece.end) continue;
+          inside.emplace_back(glm::dot(p - piece.start, direction), p);
+        }
+      }
+      std::sort(inside.begin(), inside.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+      for (std::size_t j = 0; j < inside.size(); ++j)
+        if (j == 0 || inside[j].second != inside[j - 1].second) contour.push_back(inside[j].second);
+    }
+    appendFlatPolygon(poly, static_cast<std::size_t>(outline.face), contour, out);
+  }
+  // The faces no rounding reaches, as they are.
+  for (std::size_t f = 0; f < poly.faces.size(); ++f) {
+    if (outlined[f]) continue;
+    std::vector<glm::dvec3> contour;
+    for (std::uint32_t v : poly.faces[f].vertices) contour.push_back(poly.vertices[v]);
+    appendFlatPolygon(poly, f, contour, out);
+  }
+  return out;
+}
+
+}  // namespace glass::geometry

@@ -1,0 +1,49 @@
+// Fast paths of the fragment stage for filled triangles (docs/pipeline.md, "Fast paths").
+//
+// The reference path interpolates every varying of a covered pixel into a raster::Fragment and
+// runs the whole of chapter 4.1 on it (FragmentProcessor::processFragments), testing each piece
+// of state per fragment. For the states most drawing uses, FragmentProcessor::prepare derives a
+// key once per draw and picks a kernel compiled for it: the triangle walk's covered blocks
+// (glass/raster/triangle_block.h) go straight to the kernel, which interpolates only the
+// varyings the key needs and does only the work the key says. Every kernel computes each value
+// with the same operations in the same order as the reference path, so it writes the same bytes;
+// the test fast_paths_match_reference renders every image test program both ways and compares.
+//
+// GLASS_FAST_PATHS=0 in the environment switches the kernels off (the reference path draws
+// everything), for that test and for anyone who suspects a kernel.
+#pragma once
+
+#include <cstdint>
+
+#include "glass/raster/triangle_block.h"
+
+namespace glass::gl {
+
+struct Context;
+
+// What the texturing stage does for a kernel.
+enum class KernelTexturing : uint8_t {
+  None,      // no texturing: the colour is the interpolated primary colour
+  Single2D,  // texture_hooks.h's singleTexture2D: one 2D texture on unit 0, any filter, any
+             // environment but GL_COMBINE
+};
+
+// The state a kernel is compiled for. Kernels exist only for draws whose fragments need no
+// per-fragment lighting, colour sum, fog, alpha or stencil test, blending or logic op, and
+// write either all four colour channels or none; FragmentProcessor::prepare checks that. The
+// depth test, when on, is the triangle walk's early test (glass/raster/depth_test.h), so a
+// kernel sees only fragments that passed it and writes their depth when the depth mask is on.
+struct BlockKernelKey {
+  bool writeDepth = false;
+  bool writeColor = false;
+  KernelTexturing texturing = KernelTexturing::None;
+};
+
+// Shades and writes the pixels of one covered block of a triangle.
+using BlockKernel = void (*)(Context& ctx, const raster::TriangleSetup& setup,
+                             const raster::CoveredBlock& block);
+
+// The kernel compiled for the key.
+BlockKernel blockKernelFor(const BlockKernelKey& key);
+
+}  // namespace glass::gl

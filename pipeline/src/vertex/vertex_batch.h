@@ -1,0 +1,28 @@
+// The vertex fast path (docs/pipeline.md, "The vertex fast path"): glDrawArrays and
+// glDrawElements run the vertex stage over batches of up to 64 elements instead of one glVertex
+// at a time. A batch reads each enabled array once per batch (array_fetch.h), transforms the
+// positions and normals and lights the vertices in loops over the batch, one row of values per
+// component (batched_lighting.h), and hands the vertices to primitive assembly in order.
+// glDrawElements keeps the vertices it has processed in a post-transform cache keyed by index, so
+// an index that comes again soon (a mesh's shared vertex) is transformed and lit once.
+//
+// The reference path is drawArrayElements's loop: applyElement for each element, which sets the
+// current attributes and calls processVertex (vertex_stage.h). The fast path evaluates the same
+// float operations in the same order, so it writes the same bytes; GLASS_FAST_PATHS=0 turns it off
+// and tests/image/fast_paths.cmake compares the two on every image test.
+#pragma once
+
+#include "vertex/array_draw.h"
+
+namespace glass::gl {
+
+struct Context;
+
+// The vertices of a glDrawArrays (indices null: elements first .. first + count - 1) or
+// glDrawElements (indices[0 .. count)), between beginCommand and endCommand, with
+// layout.vertex set and no display list being compiled. Afterwards the current attributes are
+// those the last element set, as after the reference path.
+void drawArrayElementsBatched(Context& ctx, const ArrayElementLayout& layout, const int* indices,
+                              int first, int count);
+
+}  // namespace glass::gl

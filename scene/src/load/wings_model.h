@@ -1,0 +1,29 @@
+// Wings3D models in scenes: the objects of a .wings file (glass/scene/wings_file.h), drawn sharp or
+// with their marked edges rounded (glass/geometry/edge_rounding.h) at the radius of the frame.
+#pragma once
+
+#include "glass/scene/program.h"
+#include "glass/scene/wings_file.h"
+
+#include <string>
+#include <vector>
+
+namespace glass::scene {
+
+struct RoundableModel {
+  std::vector<WingsObject> objects;
+};
+
+// Reads `path` into `model`: its materials, its objects drawn sharp as model.parts, and the
+// objects themselves in model.roundable. Returns false with a reason (naming the object and field,
+// not the file) on failure.
+bool loadWingsModel(const std::string &path, Model &model, std::string &reason);
+
+// The triangles of every object rounded with `radius`, grouped by material (indices into the
+// model's materials). Throws geometry::RoundingError, its message naming the object.
+std::vector<ModelPart> roundedWingsParts(const RoundableModel &model, double radius);
+
+// The largest radius every object can be rounded with, and what limits it.
+double largestWingsRadius(const RoundableModel &model, std::string &limit);
+
+} // namespace glass::scene

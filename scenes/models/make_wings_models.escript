@@ -1,0 +1,177 @@
+#!/usr/bin/env escript
+%% Writes the Wings3D (.wings) files of the scenes and of the unit tests with Erlang's own encoder
+%% (term_to_binary), in the layout Wings3D's src/wings_ff_wings.erl saves:
+%%   "#!WINGS-1.0\r\n\032\04", <<Size:32>>, term_to_binary({wings, 2, {Shapes, Materials, Props}}, [compressed])
+%% with each shape {object, Name, {winged, Edges, Faces, Vertices, HardEdges}, Props} in Wings'
+%% winged-edge form (see scene/include/glass/scene/wings_file.h).
+%%
+%% Usage: escript scenes/models/make_wings_models.escript REPOSITORY_ROOT
+%% Writes scenes/models/*.wings and tests/unit/data/wings/*.wings and *.term.
+
+main([Root]) ->
+    Models = filename:join(Root, "scenes/models"),
+    Tests = filename:join(Root, "tests/unit/data/wings"),
+    ok = filelib:ensure_dir(filename:join(Tests, "x")),
+    Materials = [material(wood, {0.85, 0.75, 0.6, 1.0}, 0.1),
+                 material(paint, {0.75, 0.15, 0.1, 1.0}, 0.5)],
+    %% The homework's object: a block of 2 x 2 x 2 cubes (so its faces are split by flat edges),
+    %% its four top edges and one upright edge marked: a sphere corner, three mitres, and one
+    %% marked edge that ends at a sharp corner.
+    {BlockVs, BlockFs} = cubes([{X, Y, Z} || X <- [0, 1], Y <- [0, 1], Z <- [0, 1]], 0.75, {-0.75, 0.0, -0.75}),
+    BlockHard = fun(A, B) -> top_ring_and_upright(A, B, 1.5, {-0.75, 0.0, -0.75}) end,
+    write(filename:join(Models, "block.wings"),
+          [object("Block", BlockVs, BlockFs, BlockHard, top_paint, true)], Materials, []),
+    %% Unit test files.
+    {CubeVs, CubeFs} = cubes([{0, 0, 0}], 1.0, {0.0, 0.0, 0.0}),
+    All = fun(_, _) -> true end,
+    None = fun(_, _) -> false end,
+    write(filename:join(Tests, "cube_all_hard.wings"),
+          [object("Cube", CubeVs, CubeFs, All, top_paint, true)], Materials, []),
+    write(filename:join(Tests, "cube_no_uvs.wings"),
+          [object("Plain", CubeVs, CubeFs, None, none, false)], [], []),
+    TopRing = fun(A, B) -> top_ring_and_upright(A, B, 1.0, {0.0, 0.0, 0.0}) end,
+    write(filename:join(Tests, "cube_top_ring.wings"),
+          [object("Ring", CubeVs, CubeFs, TopRing, top_paint, true)], Materials, []),
+    OneEdge = fun(A, B) -> one_edge(A, B) end,
+    write(filename:join(Tests, "cube_one_edge.wings"),
+          [object("One", CubeVs, CubeFs, OneEdge, top_paint, true)], Materials, []),
+    write(filename:join(Tests, "block.wings"),
+          [object("Block", BlockVs, BlockFs, BlockHard, top_paint, true)], Materials, []),
+    %% Two objects in one file, one named with a binary and one with characters beyond Latin-1.
+    write(filename:join(Tests, "two_objects.wings"),
+          [object(<<"First">>, CubeVs, CubeFs, None, none, false),
+           object([16#43, 16#FC, 16#3B1], shifted(CubeVs, {3.0, 0.0, 0.0}), CubeFs, All, none, false)],
+          Materials, []),
+    %% An L of three cubes: its inner edges are concave.
+    {LVs, LFs} = cubes([{0, 0, 0}, {1, 0, 0}, {0, 1, 0}], 1.0, {0.0, 0.0, 0.0}),
+    write(filename:join(Tests, "concave_l.wings"),
+          [object("L", LVs, LFs, All, none, false)], Materials, []),
+    %% Broken and unsupported files.
+    Cube = object("Cube", CubeVs, CubeFs, All, top_paint, true),
+    write_term(filename:join(Tests, "version_3.wings"), {wings, 3, {[Cube], Materials, []}}),
+    write_term(filename:join(Tests, "not_a_tuple.wings"), [wings, 2]),
+    {object, N, {winged, Es, Fs, Vs, He}, P} = Cube,
+    write_term(filename:join(Tests, "face_out_of_range.wings"),
+               {wings, 2, {[{object, N, {winged, set_face(Es, 3, 99), Fs, Vs, He}, P}], Materials, []}}),
+    write_term(filename:join(Tests, "short_vertex.wings"),
+               {wings, 2, {[{object, N, {winged, Es, Fs, [[<<1.0/float>>] | tl(Vs)], He}, P}], Materials, []}}),
+    write_term(filename:join(Tests, "hard_edge_out_of_range.wings"),
+               {wings, 2, {[{object, N, {winged, Es, Fs, Vs, [1000]}, P}], Materials, []}}),
+    write_term(filename:join(Tests, "no_edge_record.wings"),
+               {wings, 2, {[{object, N, {winged, [[{color_lt, <<0:96>>}] | tl(Es)], Fs, Vs, He}, P}], Materials, []}}),
+    write_term(filename:join(Tests, "bad_shininess.wings"),
+               {wings, 2, {[Cube], [material(shiny, {1.0, 1.0, 1.0, 1.0}, 7.0)], []}}),
+    %% Every term shape the decoder reads, with each encoding Erlang offers for it.
+    Shapes = {0, 255, 256, -1, 2147483647, -2147483648, 1 bsl 40, -(1 bsl 40), 1.5, -0.25,
+              atom, 'ünï', "text", [1000, 2000], [], <<1, 2, 3>>, {}, #{key => value},
+              list_to_tuple(lists:seq(1, 300)), lists:seq(1, 300)},
+    ok = file:write_file(filename:join(Tests, "shapes.term"), term_to_binary(Shapes)),
+    ok = file:write_file(filename:join(Tests, "shapes_compressed.term"), term_to_binary(Shapes, [compressed])),
+    ok = file:write_file(filename:join(Tests, "shapes_old_floats.term"), term_to_binary(Shapes, [{minor_version, 0}])),
+    ok.
+
+material(Name, Diffuse, Shininess) ->
+    {Name, [{maps, []},
+            {opengl, [{diffuse, Diffuse}, {ambient, {0.3, 0.3, 0.3, 1.0}}, {specular, {0.2, 0.2, 0.2, 1.0}},
+                      {emission, {0.0, 0.0, 0.0, 1.0}}, {shininess, Shininess}, {vertex_colors, ignore}]}]}.
+
+%% The outside faces of a set of cubes, as {Vertices, Faces}: vertices merged, faces
+%% counter-clockwise seen from outside, each {Normal, [VertexIndex]}.
+cubes(Cells, Size, {OX, OY, OZ}) ->
+    Sides = [{{1, 0, 0}, [{1, 0, 0}, {1, 1, 0}, {1, 1, 1}, {1, 0, 1}]},
+             {{-1, 0, 0}, [{0, 0, 0}, {0, 0, 1}, {0, 1, 1}, {0, 1, 0}]},
+             {{0, 1, 0}, [{0, 1, 0}, {0, 1, 1}, {1, 1, 1}, {1, 1, 0}]},
+             {{0, -1, 0}, [{0, 0, 0}, {1, 0, 0}, {1, 0, 1}, {0, 0, 1}]},
+             {{0, 0, 1}, [{0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}]},
+             {{0, 0, -1}, [{0, 0, 0}, {0, 1, 0}, {1, 1, 0}, {1, 0, 0}]}],
+    Quads = [{N, [{(X + CX) * Size + OX, (Y + CY) * Size + OY, (Z + CZ) * Size + OZ} || {CX, CY, CZ} <- Corners]}
+             || {X, Y, Z} <- Cells, {{NX, NY, NZ} = N, Corners} <- Sides,
+                not lists:member({X + NX, Y + NY, Z + NZ}, Cells)],
+    Points = lists:usort(lists:append([Ps || {_, Ps} <- Quads])),
+    Index = maps:from_list(lists:zip(Points, lists:seq(0, length(Points) - 1))),
+    {Points, [{N, [maps:get(P, Index) || P <- Ps]} || {N, Ps} <- Quads]}.
+
+shifted(Points, {DX, DY, DZ}) -> [{X + DX, Y + DY, Z + DZ} || {X, Y, Z} <- Points].
+
+top_ring_and_upright({AX, AY, AZ}, {BX, BY, BZ}, Top, {OX, _, OZ}) ->
+    (AY == Top andalso BY == Top) orelse (AX == OX andalso BX == OX andalso AZ == OZ andalso BZ == OZ).
+
+one_edge({AX, AY, _}, {BX, BY, _}) -> AX == 1.0 andalso BX == 1.0 andalso AY == 1.0 andalso BY == 1.0.
+
+%% The texture coordinates of a point of a face: its position across the face's plane, with t
+%% up (or along -z on horizontal faces), one unit of texture to a unit of length.
+uv({1, 0, 0}, {_, Y, Z}) -> {-Z, Y};
+uv({-1, 0, 0}, {_, Y, Z}) -> {Z, Y};
+uv({0, 0, 1}, {X, Y, _}) -> {X, Y};
+uv({0, 0, -1}, {X, Y, _}) -> {-X, Y};
+uv({0, 1, 0}, {X, _, Z}) -> {X, -Z};
+uv({0, -1, 0}, {X, _, Z}) -> {X, Z}.
+
+%% A Wings object from vertices and counter-clockwise faces. Edge (A -> B) belongs to the face
+%% that meets it first as its left face (Vs = A, Ve = B), to the other as its right face. In a
+%% face, the successor of the edge from v(k) to v(k+1) is the edge from v(k-1) to v(k) (the walk
+%% by successors runs clockwise), and each edge records v(k): Vs for the left face, Ve for the
+%% right, with that corner's texture coordinates as uv_lt or uv_rt.
+object(Name, Points, Faces, Hard, MaterialRule, WithUvs) ->
+    Position = list_to_tuple(Points),
+    Loops = [Vs || {_, Vs} <- Faces],
+    Directed = lists:append([pairs(Vs) || Vs <- Loops]),
+    Keys = lists:foldl(fun({A, B}, Acc) ->
+                               K = {min(A, B), max(A, B)},
+                               case lists:keymember(K, 1, Acc) of
+                                   true -> Acc;
+                                   false -> Acc ++ [{K, {A, B}}]
+                               end
+                       end, [], Directed),
+    EdgeIndex = maps:from_list(lists:zip([K || {K, _} <- Keys], lists:seq(0, length(Keys) - 1))),
+    Edge = fun(A, B) -> maps:get({min(A, B), max(A, B)}, EdgeIndex) end,
+    Empty = maps:from_list([{I, #{vs => A, ve => B}} || {{_, {A, B}}, I} <- lists:zip(Keys, lists:seq(0, length(Keys) - 1))]),
+    Table = lists:foldl(
+              fun({F, {Normal, Vs}}, T0) ->
+                      N = length(Vs),
+                      At = fun(K) -> lists:nth(((K rem N) + N) rem N + 1, Vs) end,
+                      lists:foldl(
+                        fun(K, T) ->
+                                A = At(K), B = At(K + 1),
+                                E = Edge(A, B),
+                                Prev = Edge(At(K - 1), A),
+                                Next = Edge(B, At(K + 2)),
+                                UV = uv(Normal, element(A + 1, Position)),
+                                R = maps:get(E, T),
+                                case maps:get(vs, R) of
+                                    A -> T#{E => R#{lf => F, ltsu => Prev, ltpr => Next, uv_lt => UV}};
+                                    B -> T#{E => R#{rf => F, rtsu => Prev, rtpr => Next, uv_rt => UV}}
+                                end
+                        end, T0, lists:seq(0, N - 1))
+              end, Empty, lists:zip(lists:seq(0, length(Faces) - 1), Faces)),
+    Es = [edge_term(maps:get(I, Table), WithUvs) || I <- lists:seq(0, length(Keys) - 1)],
+    Fs = [face_material(MaterialRule, Normal) || {Normal, _} <- Faces],
+    VsTerm = [[<<X/float, Y/float, Z/float>>] || {X, Y, Z} <- Points],
+    He = [I || {{_, {A, B}}, I} <- lists:zip(Keys, lists:seq(0, length(Keys) - 1)),
+               Hard(element(A + 1, Position), element(B + 1, Position))],
+    {object, Name, {winged, Es, Fs, VsTerm, He}, [{plugin_states, []}]}.
+
+pairs(Vs) -> lists:zip(Vs, tl(Vs) ++ [hd(Vs)]).
+
+edge_term(#{vs := Vs, ve := Ve, lf := Lf, rf := Rf, ltpr := Ltpr, ltsu := Ltsu, rtpr := Rtpr, rtsu := Rtsu} = R, WithUvs) ->
+    Record = {edge, Vs, Ve, Lf, Rf, Ltpr, Ltsu, Rtpr, Rtsu},
+    case WithUvs of
+        true ->
+            {U1, V1} = maps:get(uv_lt, R),
+            {U2, V2} = maps:get(uv_rt, R),
+            [Record, {uv_lt, <<U1/float, V1/float>>}, {uv_rt, <<U2/float, V2/float>>}];
+        false -> [Record]
+    end.
+
+face_material(none, _) -> [];
+face_material(top_paint, {0, 1, 0}) -> [{material, paint}];
+face_material(top_paint, _) -> [{material, wood}].
+
+set_face([First | Rest], Position, Face) -> [[setelement(Position + 1, hd(First), Face) | tl(First)] | Rest].
+
+write(Path, Shapes, Materials, Props) -> write_term(Path, {wings, 2, {Shapes, Materials, Props}}).
+
+write_term(Path, Term) ->
+    Bin = term_to_binary(Term, [compressed]),
+    ok = file:write_file(Path, <<"#!WINGS-1.0\r\n\032\04", (byte_size(Bin)):32, Bin/binary>>),
+    io:format("wrote ~s~n", [Path]).

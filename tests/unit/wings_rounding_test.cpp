@@ -1,0 +1,304 @@
+// Rounding marked edges with rational Bezier patches: exact seams, continuous normals and texture
+// coordinates, the strips on their cylinders, crack-free meshes at every depth, and the refusals.
+#include <doctest/doctest.h>
+
+#include "glass/geometry/edge_rounding.h"
+#include "glass/scene/wings_file.h"
+
+#include <glm/geometric.hpp>
+
+#include <cmath>
+#include <map>
+#include <numbers>
+#include <string>
+#include <tuple>
+#include <vector>
+
+using namespace glass::geometry;
+
+namespace {
+
+MarkedPolyhedron readShape(const std::string &name) {
+  const auto file = glass::scene::readWingsFile(std::string(GLASS_SOURCE_DIR) + "/tests/unit/data/wings/" + name);
+  REQUIRE(file.objects.size() == 1);
+  return file.objects[0].shape;
+}
+
+constexpr PatchSide kSides[] = {PatchSide::UMin, PatchSide::UMax, PatchSide::VMin, PatchSide::VMax};
+constexpr double kSamples[] = {0.0, 0.125, 0.25, 0.5, 0.75, 0.875, 1.0};
+
+// (u, v) of the point at parameter t along a side.
+glm::dvec2 onSide(PatchSide side, double t) {
+  switch (side) {
+  case PatchSide::UMin: return {0.0, t};
+  case PatchSide::UMax: return {1.0, t};
+  case PatchSide::VMin: return {t, 0.0};
+  case PatchSide::VMax: return {t, 1.0};
+  }
+  return {};
+}
+
+struct SideMatch {
+  std::size_t patch;
+  PatchSide side;
+  bool reversed;
+};
+
+bool collapsed(const BezierSurface &patch, PatchSide side) {
+  const glm::dvec2 a = onSide(side, 0.0), b = onSide(side, 0.5), c = onSide(side, 1.0);
+  const glm::dvec3 pa = patch.evaluate(a.x, a.y), pb = patch.evaluate(b.x, b.y), pc = patch.evaluate(c.x, c.y);
+  return glm::length(pa - pb) < 1e-12 && glm::length(pb - pc) < 1e-12;
+}
+
+// The other patch side whose points equal this side's to `tolerance`, in either direction.
+std::vector<SideMatch> neighboursOf(const RoundedSurface &s, std::size_t p, PatchSide side, double tolerance) {
+  std::vector<SideMatch> found;
+  for (std::size_t q = 0; q < s.patches.size(); ++q) {
+    for (PatchSide other : kSides) {
+      if (q == p && other == side) continue;
+      for (bool reversed : {false, true}) {
+        bool all = true;
+        for (double t : kSamples) {
+          const glm::dvec2 a = onSide(side, t), b = onSide(other, reversed ? 1.0 - t : t);
+          if (glm::length(s.patches[p].evaluate(a.x, a.y) - s.patches[q].evaluate(b.x, b.y)) > tolerance) all = false;
+        }
+        if (all) found.push_back({q, other, reversed});
+      }
+    }
+  }
+  return found;
+}
+
+bool onPolygonFaces(const MarkedPolyhedron &poly, const RoundedSurface &s, const glm::dvec3 &p) {
+  std::vector<bool> patched(poly.faces.size(), false);
+  for (const auto &info : s.info)
+    if (!info.rounded) patched[static_cast<std::size_t>(info.face)] = true;
+  for (std::size_t f = 0; f < poly.faces.size(); ++f) {
+    if (patched[f]) continue;
+    const auto &vs = poly.faces[f].vertices;
+    for (std::size_t i = 0; i < vs.size(); ++i) {
+      const glm::dvec3 a = poly.vertices[vs[i]], b = poly.vertices[vs[(i + 1) % vs.size()]];
+      const double t = std::clamp(glm::dot(p - a, b - a) / glm::dot(b - a, b - a), 0.0, 1.0);
+      if (glm::length(a + t * (b - a) - p) < 1e-12) return true;
+    }
+  }
+  return false;
+}
+
+// Every side of every patch either collapses to a point, lies on a face drawn as a polygon, or
+// is shared with exactly one other patch: the same curve to 1e-12, the same normals to 1e-9 (but
+// for the creases of edges left sharp), and (for two pieces of one face's chart) the same texture
+// coordinates to 1e-9.
+void checkSeams(const MarkedPolyhedron &poly, const RoundedSurface &s) {
+  std::map<int, FaceChart> charts;
+  for (std::size_t f = 0; f < poly.faces.size(); ++f) charts[static_cast<int>(f)] = faceChart(poly, f);
+  int shared = 0;
+  for (std::size_t p = 0; p < s.patches.size(); ++p) {
+    for (PatchSide side : kSides) {
+      if (collapsed(s.patches[p], side)) continue;
+      const auto found = neighboursOf(s, p, side, 1e-12);
+      if (found.empty()) {
+        bool onPolygon = true;
+        for (double t : kSamples) {
+          const glm::dvec2 a = onSide(side, t);
+          onPolygon = onPolygon && onPolygonFaces(poly, s, s.patches[p].evaluate(a.x, a.y));
+        }
+        CAPTURE(p);
+        CHECK(onPolygon);
+        continue;
+      }
+      CAPTURE(p);
+      CAPTURE(static_cast<int>(side));
+      if (found.size() != 1) {
+        for (const auto &f : found) MESSAGE("matches patch " << f.patch << " side " << static_cast<int>(f.side) << (f.reversed ? " reversed" : ""));
+        const glm::dvec2 a = onSide(side, 0.0), b = onSide(side, 1.0);
+        const glm::dvec3 pa = s.patches[p].evaluate(a.x, a.y), pb = s.patches[p].evaluate(b.x, b.y);
+        MESSAGE("from " << pa.x << " " << pa.y << " " << pa.z << " to " << pb.x << " " << pb.y << " " << pb.z);
+      }
+      REQUIRE(found.size() == 1);
+      ++shared;
+      const SideMatch &m = found[0];
+      // Edges left sharp stay creases: two faces along a sharp edge, a strip ending on a sharp
+      // face (along a quarter arc), two strips mitred at a sharp corner.
+      const RoundedPatchInfo &a = s.info[p], &b = s.info[m.patch];
+      const glm::dvec2 u0 = onSide(side, 0.0), u1 = onSide(side, 1.0), uh = onSide(side, 0.5);
+      const glm::dvec3 p0 = s.patches[p].evaluate(u0.x, u0.y), p1 = s.patches[p].evaluate(u1.x, u1.y);
+      const glm::dvec3 ph = s.patches[p].evaluate(uh.x, uh.y);
+      const bool curved = glm::length(ph - (p0 + p1) / 2.0) > 1e-9;
+      const bool mitre = a.alongAxis && b.alongAxis && glm::length(glm::cross(a.axis, b.axis)) > 1e-9;
+      const bool stripEnd = a.rounded != b.rounded && curved;
+      const bool sharpEdge = !a.rounded && !b.rounded && a.face != b.face;
+      for (double t : kSamples) {
+        const glm::dvec2 ua = onSide(side, t), ub = onSide(m.side, m.reversed ? 1.0 - t : t);
+        const glm::dvec3 pa = s.patches[p].evaluate(ua.x, ua.y), pb = s.patches[m.patch].evaluate(ub.x, ub.y);
+        const glm::dvec3 na = s.patches[p].normal(ua.x, ua.y), nb = s.patches[m.patch].normal(ub.x, ub.y);
+        // Cubes' faces meet at right angles, or are coplanar (a flat edge).
+        if (stripEnd) CHECK(std::abs(glm::dot(na, nb)) < 1e-9);
+        else if (sharpEdge) CHECK((std::abs(glm::dot(na, nb)) < 1e-9 || glm::length(na - nb) < 1e-9));
+        else if (!mitre) CHECK(glm::length(na - nb) < 1e-9);
+        if (a.face == b.face) {
+          const FaceChart &chart = charts[a.face];
+          const glm::dvec2 ta = roundedTexCoord(a, chart, s.radius, pa);
+          const glm::dvec2 tb = roundedTexCoord(b, chart, s.radius, pb);
+          CHECK(glm::length(ta - tb) < 1e-9);
+        }
+      }
+    }
+  }
+  CHECK(shared > 0);
+}
+
+// Every point of a strip lies at distance R from its axis, of a sphere piece at R from its centre.
+void checkRadius(const RoundedSurface &s) {
+  for (std::size_t p = 0; p < s.patches.size(); ++p) {
+    const RoundedPatchInfo &info = s.info[p];
+    if (!info.rounded) continue;
+    for (double u : kSamples)
+      for (double v : kSamples) {
+        const glm::dvec3 point = s.patches[p].evaluate(u, v);
+        glm::dvec3 centre = info.centre;
+        if (info.alongAxis) centre += info.axis * glm::dot(point - info.centre, info.axis);
+        CHECK(std::abs(glm::length(point - centre) - s.radius) < 1e-9);
+        // The normal points straight away from the centre.
+        CHECK(glm::length(s.patches[p].normal(u, v) - (point - centre) / s.radius) < 1e-9);
+      }
+  }
+}
+
+// Every triangle edge of the mesh is met by exactly one triangle edge running the other way, with
+// endpoints equal bit for bit: no cracks and no T-junctions. Returns the number of triangles.
+std::size_t checkWatertight(const RoundedMesh &rounded) {
+  using Point = std::tuple<double, double, double>;
+  auto key = [&](std::uint32_t i) {
+    const glm::dvec3 &p = rounded.mesh.positions[i];
+    return Point{p.x, p.y, p.z};
+  };
+  std::map<std::pair<Point, Point>, int> edges;
+  const auto &idx = rounded.mesh.indices;
+  for (std::size_t t = 0; t < idx.size(); t += 3)
+    for (int k = 0; k < 3; ++k) ++edges[{key(idx[t + k]), key(idx[t + (k + 1) % 3])}];
+  int unmatched = 0;
+  for (const auto &[edge, count] : edges) {
+    const auto back = edges.find({edge.second, edge.first});
+    if (count != 1 || back == edges.end() || back->second != 1) ++unmatched;
+  }
+  CHECK(unmatched == 0);
+  return idx.size() / 3;
+}
+
+} // namespace
+
+TEST_CASE("Rounding: every seam is exact, with continuous normals and texture coordinates") {
+  for (std::string name : {"cube_all_hard.wings", "cube_top_ring.wings", "cube_one_edge.wings", "block.wings"}) {
+    for (double radius : {0.05, 0.2, 0.375}) {
+      CAPTURE(name);
+      CAPTURE(radius);
+      const MarkedPolyhedron poly = readShape(name);
+      const RoundedSurface s = roundMarkedEdges(poly, radius);
+      CHECK(s.radius == radius);
+      checkSeams(poly, s);
+      checkRadius(s);
+    }
+  }
+}
+
+TEST_CASE("Rounding: closed meshes without cracks at every tessellation depth") {
+  for (std::string name : {"cube_all_hard.wings", "cube_top_ring.wings", "cube_one_edge.wings", "block.wings"}) {
+    const MarkedPolyhedron poly = readShape(name);
+    const RoundedSurface s = roundMarkedEdges(poly, 0.25);
+    std::size_t previous = 0;
+    for (int depth = 0; depth <= 6; ++depth) {
+      CAPTURE(name);
+      CAPTURE(depth);
+      AdaptiveOptions options;
+      options.criterion = ObjectSpaceTolerance{1e-6};
+      options.maxDepth = depth;
+      const RoundedMesh mesh = tessellateRounded(poly, s, options);
+      const std::size_t triangles = checkWatertight(mesh);
+      CHECK(triangles >= previous);
+      previous = triangles;
+      for (const glm::dvec3 &n : mesh.mesh.normals) CHECK(std::abs(glm::length(n) - 1.0) < 1e-9);
+    }
+  }
+}
+
+TEST_CASE("Rounding: the corner kinds, and R = 0 gives the sharp object") {
+  auto count = [](const RoundedSurface &s, bool rounded) {
+    std::size_t n = 0;
+    for (const auto &info : s.info) n += info.rounded == rounded ? 1 : 0;
+    return n;
+  };
+  const MarkedPolyhedron cube = readShape("cube_all_hard.wings");
+  // 12 strips of two halves, 8 sphere corners of four pieces.
+  CHECK(count(roundMarkedEdges(cube, 0.1), true) == 12 * 2 + 8 * 4);
+  // The top ring and one upright: 5 strips, one sphere corner; the other top corners are mitres
+  // and the upright's foot is a corner of the front and left faces cut by a quarter arc.
+  const MarkedPolyhedron ring = readShape("cube_top_ring.wings");
+  CHECK(count(roundMarkedEdges(ring, 0.1), true) == 5 * 2 + 4);
+  const RoundedSurface sharp = roundMarkedEdges(cube, 0.0);
+  CHECK(sharp.patches.empty());
+  const RoundedMesh mesh = tessellateRounded(cube, sharp, {});
+  CHECK(mesh.mesh.triangleCount() == 12);
+  checkWatertight(mesh);
+}
+
+TEST_CASE("Rounding: texture coordinates run on through a strip by arc length") {
+  // The front (z = 1) and top (y = 1) faces of a unit cube, charted so that the texture runs on
+  // across their edge: t = y on the front, t = 2 - z on top.
+  MarkedPolyhedron cube = readShape("cube_top_ring.wings");
+  for (auto &face : cube.faces) {
+    const glm::dvec3 a = cube.vertices[face.vertices[0]], b = cube.vertices[face.vertices[1]], c = cube.vertices[face.vertices[2]];
+    const glm::dvec3 n = glm::cross(b - a, c - a);
+    face.uvs.clear();
+    for (std::uint32_t v : face.vertices) {
+      const glm::dvec3 p = cube.vertices[v];
+      if (n.z > 0.5) face.uvs.emplace_back(p.x, p.y);
+      else if (n.y > 0.5) face.uvs.emplace_back(p.x, 2.0 - p.z);
+    }
+  }
+  const double radius = 0.2;
+  const RoundedSurface s = roundMarkedEdges(cube, radius);
+  bool found = false;
+  for (std::size_t p = 0; p < s.patches.size(); ++p) {
+    const RoundedPatchInfo &info = s.info[p];
+    if (!info.alongAxis || info.axis.y != 0.0 || info.axis.z != 0.0) continue;
+    if (glm::length(info.faceNormal - glm::dvec3(0, 0, 1)) > 1e-12 && glm::length(info.faceNormal - glm::dvec3(0, 1, 0)) > 1e-12) continue;
+    // The strip along the top front edge, whose axis runs through y = z = 1 - R.
+    if (std::abs(info.centre.y - (1.0 - radius)) > 1e-12 || std::abs(info.centre.z - (1.0 - radius)) > 1e-12) continue;
+    const FaceChart chart = faceChart(cube, static_cast<std::size_t>(info.face));
+    // The strip along the top front edge: points at angle a from the front face.
+    const glm::dvec3 centre(0.5, 1.0 - radius, 1.0 - radius);
+    for (double degrees : {0.0, 22.5, 45.0, 67.5, 90.0}) {
+      const double a = degrees * std::numbers::pi / 180.0;
+      const glm::dvec3 point = centre + radius * glm::dvec3(0.0, std::sin(a), std::cos(a));
+      const bool nearFront = info.faceNormal.z > 0.5;
+      if ((nearFront && degrees > 45.0) || (!nearFront && degrees < 45.0)) continue;
+      const glm::dvec2 st = roundedTexCoord(info, chart, radius, point);
+      // From t = 1 - R at the front face to 1 + R on top, in proportion to the angle.
+      CHECK(st.y == doctest::Approx(1.0 - radius + 2.0 * radius * degrees / 90.0).epsilon(1e-12));
+      CHECK(st.x == doctest::Approx(0.5).epsilon(1e-12));
+      found = true;
+    }
+  }
+  CHECK(found);
+}
+
+TEST_CASE("Rounding: radius limits and unsupported objects are refused with a reason") {
+  const MarkedPolyhedron cube = readShape("cube_all_hard.wings");
+  std::string limit;
+  CHECK(maximumRoundingRadius(cube, &limit) == 0.5);
+  CHECK(limit.find("half the side") != std::string::npos);
+  CHECK_NOTHROW(roundMarkedEdges(cube, 0.5));
+  CHECK_THROWS_WITH_AS(roundMarkedEdges(cube, 0.6), doctest::Contains("radius 0.6 is too large: the largest is 0.5"),
+                       RoundingError);
+  CHECK_THROWS_AS(roundMarkedEdges(cube, -1.0), RoundingError);
+  const MarkedPolyhedron block = readShape("block.wings");
+  CHECK(maximumRoundingRadius(block) == 0.375);
+  const MarkedPolyhedron l = readShape("concave_l.wings");
+  CHECK_NOTHROW(roundMarkedEdges(l, 0.0));
+  CHECK_THROWS_WITH_AS(roundMarkedEdges(l, 0.1), doctest::Contains("is concave"), RoundingError);
+  // The Wings3D file's object has slanted edges.
+  const MarkedPolyhedron axes = readShape("wings3d_axes.wings");
+  CHECK_NOTHROW(roundMarkedEdges(axes, 0.0));
+  CHECK_THROWS_AS(roundMarkedEdges(axes, 0.01), RoundingError);
+}

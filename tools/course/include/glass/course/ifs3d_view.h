@@ -1,0 +1,30 @@
+// Pictures of a 3D IFS for `glass ifs3d render` and `animate`: a scene in the scene language
+// (docs/scene-format.md) around the `ifs3d` statement, so that the command line, scene files and
+// the Mesa reference draw through the same code.
+#pragma once
+
+#include <string>
+
+#include "glass/geometry/ifs3d.h"
+
+namespace glass::course {
+
+struct Ifs3View {
+  int width = 800, height = 800;
+  double azimuth = 35.0;    // degrees about the vertical (y) axis, from +z towards +x
+  double elevation = 25.0;  // degrees above the horizontal plane
+  int depth = 3;
+  int animatedMap = -1;     // 0-based; -1: the rebuild in place
+  double step = 0.0;        // 0..1 along the animation
+};
+
+// The scene text: a perspective camera looking at the centre of the attractor from the view's
+// direction, far enough for the whole attractor (and, when animating, the base polyhedron it
+// starts from) to fit; one directional light from above the viewer's left shoulder; flat
+// shading with colour material. `ifsPath` is written into the scene as given (no quotes in it).
+std::string ifs3SceneText(const geometry::IteratedFunctionSystem3& ifs, const std::string& ifsPath, const Ifs3View& view);
+
+// Renders the scene text to a PNG (written whole or not at all). Empty on success, else why not.
+std::string renderIfs3Picture(const std::string& sceneText, const std::string& scenePath, const std::string& output);
+
+}  // namespace glass::course
