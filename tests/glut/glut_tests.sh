@@ -167,6 +167,37 @@ errors)
   expect_text err.txt "freeglut (glut_glut_errors): failed to open display ''"
   expect_text err.txt "GLASS_GLUT_SNAPSHOT"
   ;;
+teaching_views)
+  # GLASS_VIEW on the unchanged Listing 5 (step 4), headless: the Sierpinski triangles share
+  # edges but, by the fill rule, no pixel, so the overdraw view has only counts 0 and 1 and as
+  # many pixels of count 1 (dark blue) as the program's picture has white ones.
+  "$bin/glut_listing5_offscreen" 4 offscreen.png
+  probe offscreen.png count 255 255 255 20000 200000
+  for view in overdraw depth wireframe; do
+    GLASS_VIEW=$view run glut_listing5 "key space
+key space
+key space
+key space
+"
+    [ "$status" -eq 0 ] || fail "listing5 with GLASS_VIEW=$view exited with $status"
+    mv snapshot.png "$view.png"
+    probe "$view.png" size 500 500 differ offscreen.png
+  done
+  probe overdraw.png count 0 120 210 0 0 count 0 180 120 0 0 count 30 40 140 20000 200000
+  GLASS_VIEW=overdraw "$bin/glut_listing5_offscreen" 4 overdraw_offscreen.png
+  probe overdraw.png same overdraw_offscreen.png
+  # The triangles lie in the plane z = 0: one depth, drawn black; the rest is white.
+  probe depth.png count 0 0 0 20000 200000 count 255 255 255 20000 250000
+  # The wireframe: edges only, far fewer pixels than the filled triangles.
+  probe wireframe.png count 255 255 255 2000 20000
+  # Unset again, the program's own picture.
+  run glut_listing5 "key space
+key space
+key space
+key space
+"
+  probe snapshot.png same offscreen.png
+  ;;
 *)
   fail "unknown case $case_name"
   ;;

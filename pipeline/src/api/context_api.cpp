@@ -8,6 +8,7 @@
 #include "core/png_writer.h"
 #include "core/transform_state.h"
 #include "primitive/queued_drawing.h"
+#include "teaching/teaching_view.h"
 
 struct GlassContext {
   glass::gl::Context gl;
@@ -45,6 +46,10 @@ void glassDestroyContext(GlassContext* ctx) {
 int glassWritePNG(GlassContext* ctx, const char* path) {
   if (!ctx) return 0;
   glass::gl::finishQueuedDrawing(ctx->gl);
+  if (const unsigned char* view = glass::gl::presentTeachingView(ctx->gl)) {
+    return glass::gl::writeRGBAPixelsPNG(view, ctx->gl.framebuffer.width(),
+                                         ctx->gl.framebuffer.height(), path) ? 1 : 0;
+  }
   return glass::gl::writeColorBufferPNG(ctx->gl.framebuffer, path) ? 1 : 0;
 }
 
@@ -58,6 +63,10 @@ const unsigned char* glassGetColorBuffer(const GlassContext* ctx) {
   // The caller reads the pixels: queued draws must be in them. Finishing queued work changes no
   // GL state, so the context stays logically const.
   glass::gl::finishQueuedDrawing(const_cast<GlassContext*>(ctx)->gl);
+  // With GLASS_VIEW the reader sees the view's picture (teaching/teaching_view.h).
+  if (const unsigned char* view = glass::gl::presentTeachingView(const_cast<GlassContext*>(ctx)->gl)) {
+    return view;
+  }
   return ctx->gl.framebuffer.colorAt(0, 0);
 }
 

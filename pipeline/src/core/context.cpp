@@ -2,6 +2,7 @@
 
 #include "primitive/draw_pipeline.h"
 #include "primitive/queued_drawing.h"
+#include "teaching/teaching_view.h"
 
 namespace glass::gl {
 
@@ -10,9 +11,10 @@ Context::Context(int width, int height)
   // Spec 2.11.1 and 4.1.2: the viewport and the scissor box start as the whole window.
   transform.viewport = Viewport{0, 0, width, height};
   fragment.scissor = ScissorBox{0, 0, width, height};
+  attachTeachingViewFromEnvironment(*this);
 }
 
-Context::~Context() = default;
+Context::~Context() { detachTeachingView(*this); }
 
 void resizeFramebuffer(Context& ctx, int width, int height) {
   finishQueuedDrawing(ctx);

@@ -9,6 +9,7 @@
 #include "glass/raster/depth_value.h"
 #include "glass/raster/fragment.h"
 #include "primitive/queued_drawing.h"
+#include "teaching/teaching_view.h"
 
 namespace glass::gl {
 
@@ -28,6 +29,7 @@ void clearBuffers(Context& ctx, GLbitfield mask) {
   if (x0 >= x1 || y0 >= y1) return;
 
   if ((mask & GL_COLOR_BUFFER_BIT) && drawsColor(f.drawBuffer)) {
+    restartTeachingFrame(ctx);
     uint8_t color[4];
     for (int c = 0; c < 4; ++c) color[c] = floatToColorByte(f.clearColor[c]);
     const bool all = f.colorMask[0] && f.colorMask[1] && f.colorMask[2] && f.colorMask[3];

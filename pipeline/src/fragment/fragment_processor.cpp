@@ -14,6 +14,7 @@
 #include "fragment/logic_op.h"
 #include "fragment/stencil_operation.h"
 #include "lighting/lighting_hooks.h"
+#include "teaching/teaching_hooks.h"
 #include "texture/texture_hooks.h"
 #include "vertex/varyings.h"
 
@@ -66,12 +67,20 @@ void FragmentProcessor::prepare(Context& ctx, bool phong) {
   s_.writesColor = drawsColor(f.drawBuffer) &&
                    (s_.colorMask[0] || s_.colorMask[1] || s_.colorMask[2] || s_.colorMask[3]);
   s_.allChannels = s_.colorMask[0] && s_.colorMask[1] && s_.colorMask[2] && s_.colorMask[3];
+
+  s_.fragmentCounts = nullptr;
+  if (TeachingCanvas* canvas = teachingCanvasFor(ctx); canvas && !canvas->fragmentCounts.empty()) {
+    s_.fragmentCounts = canvas->fragmentCounts.data();
+    s_.fragmentCountsWidth = canvas->width;
+  }
   kernel_ = chooseKernel();
   kernelNeedsEarlyDepth_ = s_.depthTest && s_.depthFunc != GL_ALWAYS;
 }
 
 BlockKernel FragmentProcessor::chooseKernel() const {
   if (!fastPathsEnabled()) return nullptr;
+  // The overdraw view counts fragments in the general path (teaching/teaching_hooks.h).
+  if (s_.fragmentCounts != nullptr) return nullptr;
   // What no kernel does (block_kernels.h).
   if (s_.phong || s_.colorSum || s_.fog || s_.alphaTest || s_.stencilTest || s_.blend ||
       s_.logicOp || (s_.writesColor && !s_.allChannels))
@@ -103,6 +112,7 @@ void FragmentProcessor::processFragments(const raster::FragmentBatch& batch,
                                          const float* coverage) {
   const Context& ctx = *ctx_;
   raster::Framebuffer& fb = ctx_->framebuffer;
+  if (s_.fragmentCounts) countFragments(s_.fragmentCounts, s_.fragmentCountsWidth, batch);
 
   for (int i = 0; i < batch.count; ++i) {
     const raster::Fragment& fragment = batch.fragments[i];

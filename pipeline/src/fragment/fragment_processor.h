@@ -81,6 +81,10 @@ class FragmentProcessor final : public raster::FragmentSink {
     bool writesColor = true;        // some channel unmasked and glDrawBuffer not GL_NONE
     bool allChannels = true;
 
+    // GLASS_VIEW=overdraw (teaching/teaching_view.h): every fragment is counted on its pixel.
+    std::uint16_t* fragmentCounts = nullptr;
+    int fragmentCountsWidth = 0;
+
     bool operator==(const Settings&) const = default;
   };
 

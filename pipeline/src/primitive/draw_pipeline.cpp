@@ -89,6 +89,9 @@ void DrawPipeline::prepare() {
   triangleSettings_.varyingCount = vertex_.varyingCount;
   triangleSettings_.perspectiveCorrect = perspective;
   triangleSettings_.earlyDepth = earlyDepthTest(ctx);
+  teaching_ = teachingCanvasFor(ctx);
+  // The overdraw view counts every fragment rasterized: none may be dropped before the count.
+  if (teaching_ && teaching_->view == TeachingView::Overdraw) triangleSettings_.earlyDepth = {};
 
   lineSettings_ = raster::LineSettings{};
   lineSettings_.bounds = bounds;

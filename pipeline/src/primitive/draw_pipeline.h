@@ -42,6 +42,7 @@
 #include "primitive/polygon_stipple.h"
 #include "primitive/viewport_transform.h"
 #include "select/primitive_recorder.h"
+#include "teaching/teaching_view.h"
 #include "vertex/pipeline_vertex.h"
 #include "vertex/vertex_stage.h"
 
@@ -118,6 +119,7 @@ class DrawPipeline {
   bool pointDistanceAttenuated_ = false;  // ... by distance, not only by GL_POINT_SIZE_MIN/MAX
   Matrix4 projectionInverse_;        // eye = P^-1 clip, for the points' eye distance
   bool flat_ = false;
+  TeachingCanvas* teaching_ = nullptr;  // the context's GLASS_VIEW, if any (teaching/)
   bool drawReadsContext_ = false;  // this draw's fragments read GL state by reference
   int stippleCounter_ = 0;
   PolygonStippleFilter polygonStipple_;

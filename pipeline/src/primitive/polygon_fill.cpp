@@ -3,6 +3,7 @@
 #include "core/context.h"
 #include "primitive/draw_pipeline.h"
 #include "primitive/polygon_offset.h"
+#include "teaching/teaching_hooks.h"
 
 namespace glass::gl {
 
@@ -47,6 +48,7 @@ void DrawPipeline::fillTriangle(const raster::ClipVertex (&v)[3], bool frontFaci
 
   raster::TriangleSetup setup;
   for (int i = 1; i + 1 < count; ++i) {
+    if (teaching_) markTriangleEdges(*teaching_, window_[0], window_[i], window_[i + 1]);
     if (raster::setupTriangle(window_[0], window_[i], window_[i + 1], triangleSettings_, setup)) {
       tiles_.triangle(setup, *polygonSink_);
     }

@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <utility>
 
+#include "glass/geometry/teaching_scales.h"
+
 namespace glass::scene {
 
 Image imageFromGlRows(std::vector<std::uint8_t> rgba, int width, int height) {
@@ -56,22 +58,7 @@ Image depthImage(const std::vector<float> &depth, int width, int height, std::st
   return image;
 }
 
-std::array<std::uint8_t, 3> overdrawColor(int count) {
-  // One step per count, dark to bright, so that a pixel's count can be read off the picture.
-  static const std::array<std::uint8_t, 3> scale[] = {
-      {0, 0, 0},       // 0: nothing drawn
-      {30, 40, 140},   // 1
-      {0, 120, 210},   // 2
-      {0, 180, 120},   // 3
-      {120, 210, 0},   // 4
-      {240, 220, 0},   // 5
-      {250, 140, 0},   // 6
-      {230, 40, 30},   // 7
-      {255, 255, 255}, // 8 or more
-  };
-  int last = static_cast<int>(std::size(scale)) - 1;
-  return scale[std::clamp(count, 0, last)];
-}
+std::array<std::uint8_t, 3> overdrawColor(int count) { return geometry::overdrawScaleColor(count); }
 
 Image overdrawImage(const std::vector<std::uint8_t> &counts, int width, int height, std::string &notes) {
   Image image;
