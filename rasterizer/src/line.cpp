@@ -27,6 +27,7 @@
 #include "glass/raster/depth_value.h"
 #include "glass/raster/line.h"
 #include "line_quad.h"
+#include "line_section.h"
 #include "line_quad_walk.h"
 #include "subpixel.h"
 
@@ -35,6 +36,9 @@ namespace {
 
 constexpr int kBatchSize = 64;
 
+// Fragments in batches, with their attributes. Every fragment of a run (one column of an x-major
+// line, one row of a y-major one) has the same t and so the same depth and varyings: they are
+// computed once per run.
 class LineFragmentWriter {
  public:
   LineFragmentWriter(const WindowVertex& a, const WindowVertex& b, const LineSettings& settings,
@@ -48,24 +52,15 @@ class LineFragmentWriter {
   }
   ~LineFragmentWriter() { flush(); }
 
+  // (x, y) must lie within settings.bounds (the walk is clipped to them).
   void emit(int x, int y) {
-    const PixelRect& r = settings_.bounds;
-    if (x < r.x0 || x >= r.x1 || y < r.y0 || y >= r.y1) return;
-    const double centre = (xMajor_ ? x : y) + 0.5;
-    double t = (centre - start_) / length_;
-    // The weights of the two ends, (1 - t) q_a / q and t q_b / q, sum to one.
-    double wa = (1.0 - t) * qa_, wb = t * qb_, q = wa + wb;
-    if (!(q > 0.0)) {
-      t = std::clamp(t, 0.0, 1.0);
-      wa = (1.0 - t) * qa_, wb = t * qb_, q = wa + wb;
-    }
+    const int major = xMajor_ ? x : y;
+    if (major != runMajor_) startRun(major);
     Fragment& f = fragments_[count_++];
     f.x = x;
     f.y = y;
-    f.depth = depthValue((1.0 - t) * a_.z + t * b_.z + settings_.depthBias);
-    const double weightA = wa / q, weightB = wb / q;
-    for (int k = 0; k < varyingCount_; ++k)
-      f.varyings[k] = static_cast<float>(weightA * a_.varyings[k] + weightB * b_.varyings[k]);
+    f.depth = run_.depth;
+    std::copy(run_.varyings, run_.varyings + varyingCount_, f.varyings);
     if (count_ == kBatchSize) flush();
   }
 
@@ -80,6 +75,26 @@ class LineFragmentWriter {
   }
 
  private:
+  void startRun(int major) {
+    runMajor_ = major;
+    const double centre = major + 0.5;
+    double t = (centre - start_) / length_;
+    // The weights of the two ends, (1 - t) q_a / q and t q_b / q, sum to one.
+    double wa = (1.0 - t) * qa_, wb = t * qb_, q = wa + wb;
+    if (!(q > 0.0)) {
+      t = std::clamp(t, 0.0, 1.0);
+      wa = (1.0 - t) * qa_, wb = t * qb_, q = wa + wb;
+    }
+    run_.depth = depthValue((1.0 - t) * a_.z + t * b_.z + settings_.depthBias);
+    // Without perspective (q_a = q_b = 1) q is (1 - t) + t, which is exactly 1 for almost every
+    // t; w / 1 is w exactly (IEEE 754 division is correctly rounded), so the divisions are skipped
+    // only where they cannot change a bit.
+    const bool unit = q == 1.0;
+    const double weightA = unit ? wa : wa / q, weightB = unit ? wb : wb / q;
+    for (int k = 0; k < varyingCount_; ++k)
+      run_.varyings[k] = static_cast<float>(weightA * a_.varyings[k] + weightB * b_.varyings[k]);
+  }
+
   const WindowVertex& a_;
   const WindowVertex& b_;
   const LineSettings& settings_;
@@ -87,14 +102,16 @@ class LineFragmentWriter {
   bool xMajor_;
   int varyingCount_;
   double start_, length_, qa_, qb_;
+  int runMajor_ = INT_MIN;
+  Fragment run_{};  // depth and varyings of the current run
   Fragment fragments_[kBatchSize];
   int count_ = 0;
 };
 
-}  // namespace
-
-void rasterizeLine(const WindowVertex& a, const WindowVertex& b, const LineSettings& settings,
-                   FragmentSink& sink) {
+// Draws the segment's fragments inside settings.bounds. The stipple counter starts at
+// stippleStart; when stippleEnd is set, it receives the counter after the whole segment.
+void drawLine(const WindowVertex& a, const WindowVertex& b, const LineSettings& settings,
+              int stippleStart, int* stippleEnd, FragmentSink& sink) {
   if (!isRasterizableCoordinate(a.x) || !isRasterizableCoordinate(a.y) ||
       !isRasterizableCoordinate(b.x) || !isRasterizableCoordinate(b.y))
     return;
@@ -102,22 +119,43 @@ void rasterizeLine(const WindowVertex& a, const WindowVertex& b, const LineSetti
   if (!makeLineQuad(a.x, a.y, b.x, b.y, settings.width, settings.framebufferHeight, quad)) return;
   LineFragmentWriter writer(a, b, settings, quad.xMajor, sink);
 
-  const bool stippled = settings.stippleFactor > 0;
-  int counter = (stippled && settings.stippleCounter) ? *settings.stippleCounter : 0;
-  const int factor = std::max(settings.stippleFactor, 1);
+  const PixelRect& r = settings.bounds;
+  LineQuadClip clip;
+  clip.majorLow = quad.xMajor ? r.x0 : r.y0;
+  clip.majorHigh = int64_t{quad.xMajor ? r.x1 : r.y1} - 1;
+  clip.minorLow = quad.xMajor ? r.y0 : r.x0;
+  clip.minorHigh = int64_t{quad.xMajor ? r.y1 : r.x1} - 1;
   const bool increasing = quad.xMajor ? b.x > a.x : b.y > a.y;
-  bool keep = true;
-  int lastMajor = INT32_MIN;
-  walkLineQuad(quad, increasing, [&](int x, int y) {
-    const int major = quad.xMajor ? x : y;
-    if (stippled && major != lastMajor) {  // a new run: one step of the stipple counter
-      keep = (settings.stipplePattern >> ((counter / factor) % 16)) & 1u;
-      ++counter;
-      lastMajor = major;
-    }
-    if (keep) writer.emit(x, y);
-  });
-  if (stippled && settings.stippleCounter) *settings.stippleCounter = counter;
+  if (settings.stippleFactor <= 0) {
+    walkLineQuad(quad, increasing, clip, RunCount::None,
+                 [&](int x, int y, int64_t) { writer.emit(x, y); });
+    return;
+  }
+  // The counter steps once per run, inside the bounds or not, so the runs before the bounds are
+  // counted (and those after them too when the caller wants the counter at the end).
+  const int factor = settings.stippleFactor;
+  const unsigned pattern = settings.stipplePattern;
+  const int64_t runs = walkLineQuad(
+      quad, increasing, clip, stippleEnd ? RunCount::All : RunCount::ThroughClip,
+      [&](int x, int y, int64_t run) {
+        const int64_t counter = stippleStart + run;
+        if ((pattern >> ((counter / factor) % 16)) & 1u) writer.emit(x, y);
+      });
+  if (stippleEnd) *stippleEnd = static_cast<int>(stippleStart + runs);
+}
+
+}  // namespace
+
+void rasterizeLine(const WindowVertex& a, const WindowVertex& b, const LineSettings& settings,
+                   FragmentSink& sink) {
+  const bool counted = settings.stippleFactor > 0 && settings.stippleCounter != nullptr;
+  drawLine(a, b, settings, counted ? *settings.stippleCounter : 0,
+           counted ? settings.stippleCounter : nullptr, sink);
+}
+
+void rasterizeLineSection(const WindowVertex& a, const WindowVertex& b,
+                          const LineSettings& settings, int stippleStart, FragmentSink& sink) {
+  drawLine(a, b, settings, stippleStart, nullptr, sink);
 }
 
 }  // namespace glass::raster

@@ -38,14 +38,32 @@ struct SteppedFloorDivision {
 };
 }  // namespace line_quad_detail
 
-// Calls visit(x, y) for each pixel whose centre the quad covers, with the same edge functions
-// and ownership rule as triangles (left and bottom edges own their centres). Pixels are visited
-// in runs across the major axis (one run per column of an x-major line, per row of a y-major
-// one); runs go in increasing major coordinate when `increasing` is true, decreasing otherwise,
-// and each run goes in increasing minor coordinate. The work is proportional to the number of
-// runs: each run's extent comes from the four edges by exact integer division.
+// The runs and pixels a walk visits: runs with major coordinate in [majorLow, majorHigh], and in
+// them the pixels with minor coordinate in [minorLow, minorHigh] (a tile, or the scissor box).
+struct LineQuadClip {
+  int64_t majorLow = INT64_MIN, majorHigh = INT64_MAX, minorLow = INT64_MIN, minorHigh = INT64_MAX;
+};
+
+// How far a walk must count the runs that hold a pixel (the stipple counter steps once per run,
+// inside the clip or not): not at all, up to the clip's last run, or to the end of the segment.
+enum class RunCount { None, ThroughClip, All };
+
+// Calls visit(x, y, run) for each pixel inside the clip whose centre the quad covers, with the
+// same edge functions and ownership rule as triangles (left and bottom edges own their centres).
+// Pixels are visited in runs across the major axis (one run per column of an x-major line, per
+// row of a y-major one); runs go in increasing major coordinate when `increasing` is true,
+// decreasing otherwise, and each run goes in increasing minor coordinate. `run` is the number of
+// non-empty runs before this pixel's run in order of travel, counted from the segment's start
+// when `count` is not RunCount::None (0 otherwise). Returns the number of non-empty runs counted.
+//
+// Each run's extent comes from the four edges by exact integer division, and the walk starts at
+// the first run the clip and the count need, so the work is proportional to those runs: with
+// RunCount::None a segment drawn tile by tile is walked once in all. Starting later changes no
+// pixel: each bound is floor(n_k / d) for the exact integer n_k of its run k, computed directly at
+// the first run and kept exact by SteppedFloorDivision from there on.
 template <class Visit>
-void walkLineQuad(const LineQuad& quad, bool increasing, Visit&& visit) {
+int64_t walkLineQuad(const LineQuad& quad, bool increasing, const LineQuadClip& clip,
+                     RunCount count, Visit&& visit) {
   using namespace line_quad_detail;
   int64_t X[4], Y[4];
   const int64_t area2 = (quad.x[1] - quad.x[0]) * (quad.y[2] - quad.y[0]) -
@@ -55,7 +73,7 @@ void walkLineQuad(const LineQuad& quad, bool increasing, Visit&& visit) {
   // makeLineQuad gives the corners counter-clockwise. When the moves of the ends cross over (a
   // segment shorter than a pixel), the quad is turned inside out: its edge functions, as Mesa
   // evaluates them, then have no pixel centre inside all four, and nothing is drawn.
-  if (area2 <= 0) return;
+  if (area2 <= 0) return 0;
   for (int i = 0; i < 4; ++i) {
     X[i] = quad.x[i];
     Y[i] = quad.y[i];
@@ -75,8 +93,26 @@ void walkLineQuad(const LineQuad& quad, bool increasing, Visit&& visit) {
   const int64_t* majorCoord = quad.xMajor ? X : Y;
   const int64_t lowMajor = ceilDiv(*std::min_element(majorCoord, majorCoord + 4), 256);
   const int64_t highMajor = floorDiv(*std::max_element(majorCoord, majorCoord + 4), 256);
-  if (lowMajor > highMajor) return;
-  const int64_t firstK = increasing ? lowMajor : highMajor, dk = increasing ? 1 : -1;
+  if (lowMajor > highMajor) return 0;
+  // The runs to walk, as positions n = 0 .. runs - 1 in order of travel: the clipped ones, from
+  // the segment's start when runs before them are counted, to its end when all are counted.
+  const int64_t runs = highMajor - lowMajor + 1;
+  const int64_t clipLow = std::max(lowMajor, clip.majorLow);
+  const int64_t clipHigh = std::min(highMajor, clip.majorHigh);
+  int64_t firstN = 0, lastN = runs - 1;  // RunCount::All
+  if (count != RunCount::All) {
+    if (clipLow > clipHigh) {
+      if (count == RunCount::None) return 0;
+      // Nothing to visit; count the runs that lie before the clip in order of travel.
+      lastN = increasing ? std::min(runs, clipLow - lowMajor) - 1
+                         : std::min(runs, highMajor - clipHigh) - 1;
+    } else {
+      lastN = increasing ? clipHigh - lowMajor : highMajor - clipLow;
+    }
+    if (count == RunCount::None) firstN = increasing ? clipLow - lowMajor : highMajor - clipHigh;
+  }
+  const int64_t dk = increasing ? 1 : -1;
+  const int64_t firstK = (increasing ? lowMajor : highMajor) + dk * firstN;
 
   // Edge i at run k: need Q * 256 m + P * 256 k + C >= 0. With Q > 0 that is a lower bound
   // m >= ceil(-(P 256 k + C) / (256 Q)), with Q < 0 an upper bound m <= floor((P 256 k + C) /
@@ -98,7 +134,8 @@ void walkLineQuad(const LineQuad& quad, bool increasing, Visit&& visit) {
       ++constantCount;
     }
   }
-  for (int64_t n = 0, k = firstK; n <= highMajor - lowMajor; ++n, k += dk) {
+  int64_t counted = 0;
+  for (int64_t n = firstN, k = firstK; n <= lastN; ++n, k += dk) {
     int64_t lo = INT64_MIN, hi = INT64_MAX;
     for (int i = 0; i < lowerCount; ++i) {
       lo = std::max(lo, lower[i].quotient);
@@ -112,10 +149,16 @@ void walkLineQuad(const LineQuad& quad, bool increasing, Visit&& visit) {
       if (constantEdges[i][0] < 0) hi = INT64_MIN;
       constantEdges[i][0] += constantEdges[i][1];
     }
-    for (int64_t m = lo; m <= hi; ++m)
-      quad.xMajor ? visit(static_cast<int>(k), static_cast<int>(m))
-                  : visit(static_cast<int>(m), static_cast<int>(k));
+    if (lo > hi) continue;
+    const int64_t run = counted;
+    if (count != RunCount::None) ++counted;
+    if (k < clip.majorLow || k > clip.majorHigh) continue;
+    const int64_t mEnd = std::min(hi, clip.minorHigh);
+    for (int64_t m = std::max(lo, clip.minorLow); m <= mEnd; ++m)
+      quad.xMajor ? visit(static_cast<int>(k), static_cast<int>(m), run)
+                  : visit(static_cast<int>(m), static_cast<int>(k), run);
   }
+  return counted;
 }
 
 }  // namespace glass::raster

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "edge_functions.h"
+#include "line_section.h"
 #include "glass/raster/tiled_rasterizer.h"
 #include "subpixel.h"
 
@@ -241,9 +242,7 @@ void TileScene::runTile(int activeIndex) const {
         varyings += 2 * n;
         LineSettings settings = r.settings;
         settings.bounds = intersect(settings.bounds, rect);
-        int stippleCounter = r.stippleStart;
-        settings.stippleCounter = &stippleCounter;
-        rasterizeLine(a, b, settings, *r.sink);
+        rasterizeLineSection(a, b, settings, r.stippleStart, *r.sink);
         break;
       }
       case Kind::Point: {

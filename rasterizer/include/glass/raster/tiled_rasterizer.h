@@ -11,9 +11,11 @@
 // Why clipping to a tile changes nothing: triangle coverage walks 8 x 8 blocks aligned to
 // multiples of 8 and evaluates every attribute directly from its plane at the pixel centre
 // (triangle_rasterize.cpp), and a tile's edges are multiples of 64, so a tile sees exactly the
-// blocks and fragments the whole triangle would give it. Lines and points are rasterized whole
-// for each tile they touch, with the tile as their bounds: their fragments are computed from the
-// primitive alone (the stipple counter runs outside the bounds too), and the bounds only filter.
+// blocks and fragments the whole triangle would give it. Lines and points are rasterized for each
+// tile they touch, with the tile as their bounds: their fragments are computed from the primitive
+// alone (the stipple counter runs outside the bounds too), and the bounds only select them; a
+// line walks only its runs inside the tile, each found by exact integer arithmetic from the
+// segment's edges (rasterizer/src/line_quad_walk.h).
 //
 // Two scenes alternate: while the pool rasterizes one, the submitting thread fills the next.
 // The next scene starts only when the previous one has finished, so the order per pixel holds
