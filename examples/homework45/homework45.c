@@ -211,9 +211,9 @@ static void surface(int index)
 static void light_position(float position[4])
 {
   if (light == DIRECTIONAL) {
-    position[0] = 1.0f; position[1] = 1.5f; position[2] = 0.8f; position[3] = 0.0f;
+    position[0] = 1.0f; position[1] = 0.5f; position[2] = 0.7f; position[3] = 0.0f;
   } else {
-    position[0] = 3.0f; position[1] = 3.5f; position[2] = 2.5f; position[3] = 1.0f;
+    position[0] = 3.0f; position[1] = 1.6f; position[2] = 2.5f; position[3] = 1.0f;
   }
 }
 
