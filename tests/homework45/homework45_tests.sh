@@ -1,0 +1,72 @@
+#!/bin/sh
+# Homework 4-5's program headless (SDL_VIDEODRIVER=dummy, set by ctest), driven by
+# GLASS_GLUT_EVENTS; its snapshots compared with png_probe's same/differ.
+#   homework45_tests.sh PROGRAM PNG_PROBE WORK_DIR
+set -eu
+program=$1
+probe=$2
+work=$3
+rm -rf "$work"
+mkdir -p "$work"
+cd "$work"
+
+fail() {
+  echo "FAIL: $*" >&2
+  exit 1
+}
+
+# repeat N LINE: the event line N times.
+repeat() {
+  n=$1
+  while [ "$n" -gt 0 ]; do
+    echo "$2"
+    n=$((n - 1))
+  done
+}
+
+{
+  echo "snapshot sharp.png"
+  repeat 5 "key R"
+  echo "snapshot round.png"
+  repeat 5 "key r"
+  echo "snapshot sharp_again.png"
+  # Viewpoint 2 stands beside the block looking at the back wall: 26 steps reach it.
+  echo "key 2"
+  echo "snapshot start.png"
+  repeat 30 "special up"
+  echo "snapshot at_wall.png"
+  repeat 10 "special up"
+  echo "snapshot still_at_wall.png"
+  # Turned 15 degrees to the left, each step into the wall slides along it.
+  repeat 3 "special left"
+  echo "snapshot turned.png"
+  repeat 5 "special up"
+  echo "snapshot slid.png"
+  for viewpoint in 1 2 3 4 5; do
+    echo "key $viewpoint"
+    echo "snapshot viewpoint$viewpoint.png"
+  done
+  echo "menu 6"
+  echo "snapshot orthographic.png"
+  echo "menu 6"
+  echo "snapshot perspective.png"
+} >events.txt
+
+status=0
+GLASS_GLUT_SNAPSHOT=last.png GLASS_GLUT_EVENTS=events.txt "$program" >out.txt 2>err.txt || status=$?
+cat err.txt >&2
+[ "$status" -eq 0 ] || fail "the program exited with $status"
+
+"$probe" sharp.png size 400 300 differ round.png same sharp_again.png || fail "keys R and r"
+"$probe" start.png differ at_wall.png || fail "walking did not move"
+# At the wall it fills the view (no pixel of the background, 26 26 38, beyond it).
+"$probe" at_wall.png count 26 26 38 0 0 same still_at_wall.png || fail "walked through the wall"
+"$probe" turned.png differ slid.png || fail "did not slide along the wall"
+for a in 1 2 3 4 5; do
+  for b in 1 2 3 4 5; do
+    [ "$a" -lt "$b" ] || continue
+    "$probe" viewpoint$a.png differ viewpoint$b.png || fail "viewpoints $a and $b look the same"
+  done
+done
+"$probe" viewpoint5.png differ orthographic.png same perspective.png || fail "projection switch"
+echo "homework45: all checks passed"
