@@ -201,7 +201,10 @@ TEST_CASE("non-finite vertices: a raster position without a window position is i
     glRasterPos4f(bad.x, bad.y, bad.z, bad.w);
     glGetBooleanv(GL_CURRENT_RASTER_POSITION_VALID, &valid);
     CHECK(valid == GL_FALSE);
-    const GLubyte bitmap[8] = {0xFF, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF};
+    // 8 rows of one byte each, every row padded to GL_UNPACK_ALIGNMENT (4 by default, GL 1.4
+    // section 3.6.4): glBitmap reads 8 x 4 bytes.
+    GLubyte bitmap[8 * 4];
+    for (GLubyte& row : bitmap) row = 0xFF;
     glBitmap(8, 8, 0, 0, 4, 4, bitmap);
     const GLubyte image[4 * 4 * 4] = {255, 255, 255, 255};
     glDrawPixels(4, 4, GL_RGBA, GL_UNSIGNED_BYTE, image);
