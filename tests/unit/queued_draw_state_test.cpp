@@ -361,7 +361,9 @@ void framebufferCommands(const FrameRecorder& frame, FrameRecorder& out) {
   glCopyPixels(10, 10, 50, 40, GL_COLOR);
   overlappingQuad(6);
   frame.drawn();
-  const GLubyte bitmap[8] = {0xFF, 0x81, 0xBD, 0xA5, 0xA5, 0xBD, 0x81, 0xFF};
+  // Rows of 4 bytes: the default GL_UNPACK_ALIGNMENT of 4 pads each 1-byte row (spec 3.6.4).
+  const GLubyte bitmap[8 * 4] = {0xFF, 0, 0, 0, 0x81, 0, 0, 0, 0xBD, 0, 0, 0, 0xA5, 0, 0, 0,
+                                 0xA5, 0, 0, 0, 0xBD, 0, 0, 0, 0x81, 0, 0, 0, 0xFF, 0, 0, 0};
   glRasterPos2i(70, 70);
   glBitmap(8, 8, 0, 0, 0, 0, bitmap);
   overlappingQuad(8);
