@@ -2,6 +2,7 @@
 #pragma once
 
 #include <map>
+#include <mutex>
 #include <utility>
 #include <vector>
 
@@ -10,10 +11,12 @@
 
 namespace glass::raster::test {
 
-// Counts how many times each pixel is written, and keeps every fragment and batch size.
+// Counts how many times each pixel is written, and keeps every fragment and batch size. The
+// tiled rasterizer calls it from several threads at once (one per tile), hence the lock.
 class RecordingSink : public FragmentSink {
  public:
   void processFragments(const FragmentBatch& batch) override {
+    std::lock_guard<std::mutex> lock(mutex_);
     ++batches;
     batchSizes.push_back(batch.count);
     for (int i = 0; i < batch.count; ++i) {
@@ -40,6 +43,9 @@ class RecordingSink : public FragmentSink {
   std::vector<int> batchSizes;
   std::vector<bool> frontFacing;
   int batches = 0;
+
+ private:
+  std::mutex mutex_;
 };
 
 inline WindowVertex windowVertex(float x, float y, float z = 0.5f, float invW = 1.0f) {

@@ -89,9 +89,10 @@ TEST_CASE("texture errors: objects, images and sub-images") {
       {"glTexImage2D(bad format)",
        [] { glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 4, 4, 0, GL_RGBA8, GL_UNSIGNED_BYTE, kTexels); },
        GL_INVALID_ENUM},
+      // Depth data for a colour internal format (GL 1.4, 3.8.1; ARB_depth_texture).
       {"glTexImage2D(GL_DEPTH_COMPONENT)",
        [] { glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 4, 4, 0, GL_DEPTH_COMPONENT, GL_UNSIGNED_BYTE, kTexels); },
-       GL_INVALID_ENUM},
+       GL_INVALID_OPERATION},
       {"glTexImage2D(bad type)",
        [] { glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 4, 4, 0, GL_RGBA, GL_RGBA, kTexels); }, GL_INVALID_ENUM},
       {"glTexImage2D(5_6_5 with RGBA)",
