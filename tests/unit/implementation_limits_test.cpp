@@ -158,7 +158,9 @@ TEST_CASE("implementation limits: counts and sizes are the ones the commands tak
   CHECK(width == 0);
 
   GLint viewport[4];
-  const GLint maxViewport = integer(GL_MAX_VIEWPORT_DIMS);
+  GLint maxViewportDims[2] = {-1, -1};  // width and height: two values
+  glGetIntegerv(GL_MAX_VIEWPORT_DIMS, maxViewportDims);
+  const GLint maxViewport = maxViewportDims[0];
   glViewport(0, 0, maxViewport + 100, maxViewport + 100);
   glGetIntegerv(GL_VIEWPORT, viewport);
   CHECK(viewport[2] == maxViewport);
