@@ -7,21 +7,12 @@ file(REMOVE_RECURSE "${WORK}")
 file(MAKE_DIRECTORY "${WORK}")
 string(ASCII 27 escape)
 
-# render(<expected status> <output variable> <scene>)
-function(render expected out scene)
-  execute_process(COMMAND "${GLASS}" render "${scene}" -o "${WORK}/out.png" --size 64x64
-                  RESULT_VARIABLE status OUTPUT_VARIABLE stdout ERROR_VARIABLE stderr)
-  if(NOT status STREQUAL "${expected}")
-    message(FATAL_ERROR "glass render ${scene}: expected status ${expected}, got ${status}\n${stdout}${stderr}")
-  endif()
-  set(${out} "${stdout}${stderr}" PARENT_SCOPE)
-endfunction()
+include(${CMAKE_CURRENT_LIST_DIR}/glass_command_checks.cmake)  # run(), expect_text()
 
-function(expect_text text haystack what)
-  string(FIND "${haystack}" "${text}" at)
-  if(at EQUAL -1)
-    message(FATAL_ERROR "${what}: expected to find\n  ${text}\nin\n${haystack}")
-  endif()
+# render(<expected status> <output variable> <scene>): a 64 x 64 render of the scene.
+function(render expected out scene)
+  run(${expected} text render "${scene}" -o "${WORK}/out.png" --size 64x64)
+  set(${out} "${text}" PARENT_SCOPE)
 endfunction()
 
 function(expect_no_escape haystack what)
