@@ -164,6 +164,12 @@ constexpr EnumName kMagFilters[] = {
     {"linear", GL_LINEAR},
 };
 
+constexpr EnumName kDepthTextureModes[] = {
+    {"luminance", GL_LUMINANCE},
+    {"intensity", GL_INTENSITY},
+    {"alpha", GL_ALPHA},
+};
+
 constexpr EnumName kWrapModes[] = {
     {"repeat", GL_REPEAT},
     {"clamp", GL_CLAMP},
@@ -234,6 +240,7 @@ const EnumTable colorControls{kColorControls};
 const EnumTable logicOps{kLogicOps};
 const EnumTable minFilters{kMinFilters};
 const EnumTable magFilters{kMagFilters};
+const EnumTable depthTextureModes{kDepthTextureModes};
 const EnumTable wrapModes{kWrapModes};
 const EnumTable texEnvModes{kTexEnvModes};
 const EnumTable texGenCoords{kTexGenCoords};

@@ -35,6 +35,7 @@ extern const EnumTable colorControls;     // single_color, separate_specular_col
 extern const EnumTable logicOps;
 extern const EnumTable minFilters;
 extern const EnumTable magFilters;
+extern const EnumTable depthTextureModes; // luminance, intensity, alpha (GL_DEPTH_TEXTURE_MODE)
 extern const EnumTable wrapModes;
 extern const EnumTable texEnvModes;
 extern const EnumTable texGenCoords;      // s, t, r, q

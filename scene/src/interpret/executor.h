@@ -104,6 +104,8 @@ public:
   void run(const Ifs &s);
   void run(const Ifs3d &s);
   void run(const Instance &s);
+  void run(const ShadowMap &s);    // execute_shadow_map.cpp
+  void run(const ShadowTexGen &s);
 
   double value(const Number &n) const { return values_(n); }
   std::vector<double> values(const Numbers &numbers) const;
@@ -118,6 +120,13 @@ public:
 private:
   void setUpFrame();
   void uploadTextures();
+  // A shadow map's texels a side: its `size`, at most the frame's width and height, since the
+  // depth is drawn into the frame's depth buffer and copied from there.
+  int shadowMapSize(const TextureDefinition &texture) const;
+  void makeDepthTexture(const TextureDefinition &texture);
+  // M = bias x gluPerspective(light) x gluLookAt(light), column-major, computed by the GL's own
+  // matrix calls on the texture stack (which is left as it was).
+  void lightTextureMatrix(const LightView &light, GLdouble m[16]);
   void compileDefinitions();
   // Reports GL errors raised by the statement just run.
   void checkGlErrors(const Statement &statement);

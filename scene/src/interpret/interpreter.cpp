@@ -64,7 +64,9 @@ const char *glFunctionOf(const Statement &statement) {
           [](const BezierCurve &) { return "glMap1d/glEvalMesh1"; },
           [](const BezierPatch &) { return "glMap2d/glEvalMesh2"; },
           [](const Ifs &) { return "the ifs drawing"; }, [](const Instance &) { return "glCallList"; },
-          [](const Ifs3d &) { return "the ifs3d drawing"; }},
+          [](const Ifs3d &) { return "the ifs3d drawing"; },
+          [](const ShadowMap &) { return "the shadow map"; },
+          [](const ShadowTexGen &) { return "the shadow map's glTexGen"; }},
       statement.body);
 }
 
@@ -160,19 +162,25 @@ void Interpreter::Executor::uploadTextures() {
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
   for (std::size_t i = 0; i < program_.textures.size(); ++i) {
     const TextureDefinition &texture = program_.textures[i];
-    const Image &image = texture.image;
-    // Image files start with the top row; GL's texture rows start at t = 0, the bottom.
-    std::vector<std::uint8_t> rows(image.rgba.size());
-    std::size_t rowBytes = static_cast<std::size_t>(image.width) * 4;
-    for (int y = 0; y < image.height; ++y) {
-      std::copy_n(&image.rgba[static_cast<std::size_t>(image.height - 1 - y) * rowBytes], rowBytes,
-                  &rows[static_cast<std::size_t>(y) * rowBytes]);
-    }
     glBindTexture(GL_TEXTURE_2D, textures_[i]);
-    if (texture.mipmaps) {
-      gluBuild2DMipmaps(GL_TEXTURE_2D, GL_RGBA, image.width, image.height, GL_RGBA, GL_UNSIGNED_BYTE, rows.data());
+    const Image &image = texture.image;
+    int width = image.width, height = image.height;
+    if (texture.depth) {
+      width = height = shadowMapSize(texture);
+      makeDepthTexture(texture);
     } else {
-      glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, image.width, image.height, 0, GL_RGBA, GL_UNSIGNED_BYTE, rows.data());
+      // Image files start with the top row; GL's texture rows start at t = 0, the bottom.
+      std::vector<std::uint8_t> rows(image.rgba.size());
+      std::size_t rowBytes = static_cast<std::size_t>(image.width) * 4;
+      for (int y = 0; y < image.height; ++y) {
+        std::copy_n(&image.rgba[static_cast<std::size_t>(image.height - 1 - y) * rowBytes], rowBytes,
+                    &rows[static_cast<std::size_t>(y) * rowBytes]);
+      }
+      if (texture.mipmaps) {
+        gluBuild2DMipmaps(GL_TEXTURE_2D, GL_RGBA, image.width, image.height, GL_RGBA, GL_UNSIGNED_BYTE, rows.data());
+      } else {
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, image.width, image.height, 0, GL_RGBA, GL_UNSIGNED_BYTE, rows.data());
+      }
     }
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, static_cast<GLint>(texture.minFilter));
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, static_cast<GLint>(texture.magFilter));
@@ -185,8 +193,8 @@ void Interpreter::Executor::uploadTextures() {
     for (GLenum error = glGetError(); error != GL_NO_ERROR; error = glGetError()) {
       RuntimeError failure{texture.where, 7,
                            std::string("the GL reported ") + glErrorName(error) + " while loading texture '" +
-                               texture.name + "' (" + std::to_string(image.width) + "x" +
-                               std::to_string(image.height) + ")"};
+                               texture.name + "' (" + std::to_string(width) + "x" +
+                               std::to_string(height) + ")"};
       throw failure;
     }
   }

@@ -93,6 +93,10 @@ void Parser::parseBindTexture(StatementReader &r) {
     emit(r, BindTexture{-1});
     return;
   }
+  emit(r, BindTexture{findTexture(r, nameToken, name)});
+}
+
+int Parser::findTexture(StatementReader &r, const Token &nameToken, const std::string &name) {
   auto it = textureIndex_.find(name);
   if (it == textureIndex_.end()) {
     std::vector<std::string_view> known;
@@ -101,7 +105,7 @@ void Parser::parseBindTexture(StatementReader &r) {
     r.fail(nameToken, "no texture called '" + name + "'" +
                           (hint.empty() ? " (define it first with 'texture " + name + " \"file.png\"')" : "; " + hint));
   }
-  emit(r, BindTexture{it->second});
+  return it->second;
 }
 
 void Parser::parseTexEnv(StatementReader &r) {

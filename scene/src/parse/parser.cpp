@@ -111,6 +111,8 @@ std::span<const Parser::StatementKind> Parser::statementKinds() {
       {"bind_texture", &Parser::parseBindTexture, P::Scene},
       {"tex_env", &Parser::parseTexEnv, P::Scene},
       {"tex_gen", &Parser::parseTexGen, P::Scene},
+      {"shadow_map", &Parser::parseShadowMap, P::TopLevel},
+      {"shadow_texgen", &Parser::parseShadowTexGen, P::Scene},
       // Geometry.
       {"begin", &Parser::parseBegin, P::Scene},
       {"rect", &Parser::parseRect, P::Scene},

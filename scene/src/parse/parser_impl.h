@@ -151,6 +151,11 @@ private:
   void parseBindTexture(StatementReader &r);
   void parseTexEnv(StatementReader &r);
   void parseTexGen(StatementReader &r);
+  // Shadow mapping (parse_shadow_map.cpp).
+  void parseShadowMap(StatementReader &r);
+  void parseShadowTexGen(StatementReader &r);
+  // The texture named `nameToken`, or an error that names the defined ones.
+  int findTexture(StatementReader &r, const Token &nameToken, const std::string &name);
 
   // Geometry (parse_geometry.cpp, parse_shapes.cpp).
   void parseBegin(StatementReader &r);
@@ -182,6 +187,7 @@ private:
   std::vector<SourceLocation> includeSites_;
   std::map<std::string, int, std::less<>> definitionIndex_;
   std::map<std::string, int, std::less<>> textureIndex_;
+  std::map<int, LightView> shadowLights_; // by texture index: the light of each `shadow_map`
   std::vector<SourceLocation> constantUses_; // per parameter: where first used as a constant
   std::vector<bool> overrideUsed_;
   bool sizeSeen_ = false, framesSeen_ = false;

@@ -128,6 +128,17 @@ struct BindTexture { int texture = -1; };                // index into Program::
 struct TexEnv { std::optional<GLenumValue> mode; Numbers color; };
 struct TexGen { GLenumValue coord = 0; std::optional<GLenumValue> mode; Numbers objectPlane, eyePlane; };
 
+// Shadow mapping (docs/scene-format.md, "shadow_map"): the light's view is
+// gluPerspective(fovy, 1, near, far) x gluLookAt(from, to, up).
+struct LightView { Numbers from, to, up; Number fovy, zNear, zFar; };
+struct ShadowMap {               // the depth of a definition seen from the light, into a depth texture
+  int texture = -1;              // index into Program::textures (a depth texture)
+  int definition = -1;           // index into Program::definitions: what casts shadows
+  LightView light;
+  Number offsetFactor, offsetUnits; // glPolygonOffset while drawing the depth
+};
+struct ShadowTexGen { int texture = -1; LightView light; }; // binds it, eye-linear texgen of the light's view
+
 // Geometry.
 struct Begin { GLenumValue mode = 0; StatementList body; };  // glBegin ... glEnd
 struct Rect { Numbers corners; };                           // glRect
@@ -228,7 +239,7 @@ struct Statement {
                CullFace, FrontFace, PolygonMode, PolygonOffset, ClipPlane, LineWidth, PointSize,
                Scissor, LogicOp, BindTexture, TexEnv, TexGen, Begin, Rect, Mesh, DrawModel,
                Sphere, Cylinder, Disk, PartialDisk, GlutShape, ParametricTorus, BezierCurve,
-               BezierPatch, Ifs, Instance, Ifs3d>
+               BezierPatch, Ifs, Instance, Ifs3d, ShadowMap, ShadowTexGen>
       body;
 };
 
@@ -249,6 +260,11 @@ struct TextureDefinition {
   Numbers borderColor;
   bool mipmaps = false; // built with gluBuild2DMipmaps because minFilter needs them
   SourceLocation where;
+  // A shadow map's depth texture (`shadow_map`): no image, GL_DEPTH_COMPONENT of `depthSize`
+  // texels a side, compared with r (GL_COMPARE_R_TO_TEXTURE) by compareFunction.
+  bool depth = false;
+  int depthSize = 0;
+  GLenumValue compareFunction = 0, depthTextureMode = 0;
 };
 
 // A Wavefront OBJ file or a Wings3D file, flattened to triangles grouped by material.
