@@ -247,6 +247,20 @@ TEST_CASE("Rounding: closed meshes without cracks at every tessellation depth") 
   }
 }
 
+TEST_CASE("Rounding: the L at its largest radius, where faces one cube wide are used up, is closed") {
+  const MarkedPolyhedron l = readShape("l_block.wings");
+  REQUIRE(maximumRoundingRadius(l) == 0.375);
+  const RoundedSurface s = roundMarkedEdges(l, 0.375);
+  checkRadius(s);
+  for (int depth : {0, 3, 5}) {
+    CAPTURE(depth);
+    AdaptiveOptions options;
+    options.criterion = ObjectSpaceTolerance{1e-6};
+    options.maxDepth = depth;
+    CHECK(checkWatertight(tessellateRounded(l, s, options)) > 0);
+  }
+}
+
 TEST_CASE("Rounding: the corner kinds, and R = 0 gives the sharp object") {
   auto count = [](const RoundedSurface &s, bool rounded) {
     std::size_t n = 0;
