@@ -1,9 +1,12 @@
 /* Homework 4-5 of the study guide, a model answer with GL, GLU and GLUT only: a room corner
- * (floor and two walls), a block of two cubes in the middle whose vertical edges are rounded by
- * rational quadratic Bezier patches (glMap2f, GL_MAP2_VERTEX_4, GL_AUTO_NORMAL), a texture that
- * runs on across the rounded strips, planar shadows of the block on the floor and both walls
- * (shadow matrices, kept on their surface by the stencil buffer), walk mode with collisions,
- * examine mode, three kinds of light, five viewpoints, orthographic or perspective projection.
+ * (floor and two walls), an object made of cubes in the middle, read from a Wings3D file (by
+ * default the L of three cubes l_block.wings; another file may be named on the command line),
+ * whose upright edges marked hard in Wings3D are rounded by rational quadratic Bezier patches
+ * (glMap2f, GL_MAP2_VERTEX_4, GL_AUTO_NORMAL): quarter cylinders at its convex corners, concave
+ * fillets filling its inner corners. A texture runs on across the rounded strips, planar shadows
+ * of the object fall on the floor and both walls (shadow matrices, kept on their surface by the
+ * stencil buffer); walk mode with collisions, examine mode, three kinds of light, five
+ * viewpoints, orthographic or perspective projection.
  *
  * Keys: arrows walk (up/down) and turn (left/right); R/r round more/less; 1-5 viewpoints;
  * w walk mode, e examine mode (drag with the left button); d/p/s directional/point/spot light;
@@ -13,16 +16,19 @@
 #include <stdlib.h>
 #include <GL/glut.h>
 
+#include "wings_plan.h"
+
 #define PI 3.14159265358979323846
 
 /* The room: floor y = 0 and walls x = -ROOM, z = -ROOM, up to WALL_HEIGHT. */
 #define ROOM 5.0f
 #define WALL_HEIGHT 4.0f
-/* The block: two unit cubes side by side along x, standing on the floor. */
-static const float block_min[3] = {-1.0f, 0.0f, -0.5f};
-static const float block_max[3] = {1.0f, 1.0f, 0.5f};
-#define MAX_RADIUS 0.5f
+/* The object: its floor plan from the Wings3D file, and its bounding box. */
+static struct floor_plan plan;
+static float block_min[3], block_max[3];
 #define RADIUS_STEP 0.08f
+/* Steps along each quarter arc, on the strips and on the top's outline alike. */
+#define ARC_STEPS 8
 /* How close the walker may come to a wall or to the block. */
 #define WALKER_RADIUS 0.3f
 #define STEP 0.25f
@@ -102,22 +108,21 @@ static void grid(const float corner[3], const float edge_s[3], const float edge_
   }
 }
 
-/* A quarter cylinder of the current radius around the vertical edge whose axis passes through
- * (center_x, center_z), from outward direction (ax, az) to (bx, bz), counter-clockwise seen from
- * above so that GL_AUTO_NORMAL's dP/du x dP/dv points outwards. The middle control point is the
- * corner of the square weighted by sqrt(2)/2, which makes the quadratic an exact circle arc. The
- * texture s runs from s0 to s0 + the arc's length, so the checkerboard continues from the face. */
-static void rounded_edge(float center_x, float center_z, float ax, float az, float bx, float bz,
-                         float s0)
+/* A quarter cylinder of the current radius around the upright edge at `corner`, from the point
+ * `from` on one side to `to` on the next, walked counter-clockwise seen from above so that
+ * GL_AUTO_NORMAL's dP/du x dP/dv points out of the solid. The middle control point is the corner
+ * itself weighted by sqrt(2)/2, which makes the quadratic an exact circle arc: around an axis
+ * inside the solid at a convex corner, outside it (a fillet filling the corner) at a concave one;
+ * the control points are the same. The texture s runs from s0 to s0 + the arc's length, so the
+ * checkerboard continues from the face. */
+static void rounded_edge(const float from[2], const float corner[2], const float to[2], float s0)
 {
   const float w = (float)(sqrt(2.0) / 2.0);
   const float y0 = block_min[1], y1 = block_max[1];
   float points[2][3][4]; /* [v][u][xyzw] */
   for (int v = 0; v < 2; ++v) {
     float y = v ? y1 : y0;
-    float corners[3][2] = {{center_x + radius * ax, center_z + radius * az},
-                           {center_x + radius * (ax + bx), center_z + radius * (az + bz)},
-                           {center_x + radius * bx, center_z + radius * bz}};
+    const float *corners[3] = {from, corner, to};
     for (int u = 0; u < 3; ++u) {
       float weight = u == 1 ? w : 1.0f;
       points[v][u][0] = corners[u][0] * weight;
@@ -133,57 +138,112 @@ static void rounded_edge(float center_x, float center_z, float ax, float az, flo
   glMap2f(GL_MAP2_TEXTURE_COORD_2, 0, 1, 2, 3, 0, 1, 6, 2, &texture_points[0][0][0]);
   glEnable(GL_MAP2_VERTEX_4);
   glEnable(GL_MAP2_TEXTURE_COORD_2);
-  glMapGrid2f(8, 0, 1, 4, 0, 1);
-  glEvalMesh2(GL_FILL, 0, 8, 0, 4);
+  glMapGrid2f(ARC_STEPS, 0, 1, 4, 0, 1);
+  glEvalMesh2(GL_FILL, 0, ARC_STEPS, 0, 4);
   glDisable(GL_MAP2_VERTEX_4);
   glDisable(GL_MAP2_TEXTURE_COORD_2);
 }
 
-/* The top of the block: its rectangle with the corners cut by the same arcs. */
-static void block_top(void)
+/* Where the outline leaves and reaches corner i: R along its sides from the corner when the
+ * upright there is rounded, the corner itself otherwise. */
+static void corner_ends(int i, float from[2], float to[2])
 {
-  const float x0 = block_min[0] + radius, x1 = block_max[0] - radius;
-  const float z0 = block_min[2] + radius, z1 = block_max[2] - radius;
-  const float centers[4][2] = {{x1, z1}, {x1, z0}, {x0, z0}, {x0, z1}};
-  glNormal3f(0, 1, 0);
-  glBegin(GL_POLYGON);
-  for (int corner = 0; corner < 4; ++corner)
-    for (int step = 0; step <= 8; ++step) {
-      /* Corner k turns from direction k to k+1 of +z, +x, -z, -x: counter-clockwise from above. */
-      double angle = PI / 2.0 * (corner + step / 8.0);
-      float x = centers[corner][0] + radius * (float)sin(angle);
-      float z = centers[corner][1] + radius * (float)cos(angle);
-      glTexCoord2f(x, z);
-      glVertex3f(x, block_max[1], z);
-    }
-  glEnd();
+  const int n = plan.corners;
+  const double *here = plan.xz[i], *before = plan.xz[(i + n - 1) % n], *after = plan.xz[(i + 1) % n];
+  const double r = plan.rounded[i] ? radius : 0.0;
+  const double to_before = hypot(before[0] - here[0], before[1] - here[1]);
+  const double to_after = hypot(after[0] - here[0], after[1] - here[1]);
+  for (int k = 0; k < 2; ++k) {
+    from[k] = (float)(here[k] + r * (before[k] - here[k]) / to_before);
+    to[k] = (float)(here[k] + r * (after[k] - here[k]) / to_after);
+  }
 }
 
-/* The block: its four sides and four rounded edges, in order around it so that the texture's s
- * is the length walked around it; then the top. */
+/* The point at parameter u of the arc from `from` to `to` around `corner`: the same rational
+ * quadratic the evaluator draws, so that the top meets the strips' vertices. */
+static void arc_point(const float from[2], const float corner[2], const float to[2], double u, double out[3])
+{
+  const double w = sqrt(2.0) / 2.0;
+  const double b0 = (1 - u) * (1 - u), b1 = 2 * u * (1 - u) * w, b2 = u * u;
+  const double sum = b0 + b1 + b2;
+  out[0] = (b0 * from[0] + b1 * corner[0] + b2 * to[0]) / sum;
+  out[1] = block_max[1];
+  out[2] = (b0 * from[1] + b1 * corner[1] + b2 * to[1]) / sum;
+}
+
+static void GLAPIENTRY top_vertex(void *data)
+{
+  const GLdouble *p = data;
+  glTexCoord2d(p[0], p[2]);
+  glVertex3dv(p);
+}
+
+/* The top: the outline with its rounded corners, which may be concave, so GLU's tessellator cuts
+ * it into triangles (facing up: the normal is given). */
+static void block_top(void)
+{
+  static GLUtesselator *tess;
+  static GLdouble (*outline)[3];
+  static int capacity;
+  const int needed = plan.corners * (ARC_STEPS + 1);
+  if (!tess) {
+    tess = gluNewTess();
+    gluTessCallback(tess, GLU_TESS_BEGIN, (void (GLAPIENTRY *)(void))glBegin);
+    gluTessCallback(tess, GLU_TESS_VERTEX, (void (GLAPIENTRY *)(void))top_vertex);
+    gluTessCallback(tess, GLU_TESS_END, (void (GLAPIENTRY *)(void))glEnd);
+    gluTessNormal(tess, 0, 1, 0);
+  }
+  if (capacity < needed) {
+    free(outline);
+    outline = malloc((size_t)needed * sizeof *outline);
+    if (!outline) exit(1);
+    capacity = needed;
+  }
+  int count = 0;
+  for (int i = 0; i < plan.corners; ++i) {
+    float from[2], to[2], corner[2] = {(float)plan.xz[i][0], (float)plan.xz[i][1]};
+    corner_ends(i, from, to);
+    const int steps = plan.rounded[i] && radius > 0 ? ARC_STEPS : 0;
+    for (int step = 0; step <= steps; ++step) arc_point(from, corner, to, (double)step / ARC_STEPS, outline[count++]);
+  }
+  glNormal3f(0, 1, 0);
+  gluTessBeginPolygon(tess, NULL);
+  gluTessBeginContour(tess);
+  for (int k = 0; k < count; ++k) gluTessVertex(tess, outline[k], outline[k]);
+  gluTessEndContour(tess);
+  gluTessEndPolygon(tess);
+}
+
+/* The object: its sides and rounded edges, in order around it so that the texture's s is the
+ * length walked around it; then the top. */
 static void block(int textured)
 {
-  const float x0 = block_min[0], x1 = block_max[0], z0 = block_min[2], z1 = block_max[2];
   const float height = block_max[1] - block_min[1];
-  const float width = x1 - x0 - 2 * radius, depth = z1 - z0 - 2 * radius;
   const float up[3] = {0, height, 0};
   float s = 0;
   if (textured) {
     glEnable(GL_TEXTURE_2D);
     glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
   }
-  { const float corner[3] = {x0 + radius, 0, z1}, along[3] = {width, 0, 0}, n[3] = {0, 0, 1};
-    grid(corner, along, up, n, 4, s, s + width); s += width; }
-  if (radius > 0) { rounded_edge(x1 - radius, z1 - radius, 0, 1, 1, 0, s); s += (float)(PI / 2) * radius; }
-  { const float corner[3] = {x1, 0, z1 - radius}, along[3] = {0, 0, -depth}, n[3] = {1, 0, 0};
-    grid(corner, along, up, n, 4, s, s + depth); s += depth; }
-  if (radius > 0) { rounded_edge(x1 - radius, z0 + radius, 1, 0, 0, -1, s); s += (float)(PI / 2) * radius; }
-  { const float corner[3] = {x1 - radius, 0, z0}, along[3] = {-width, 0, 0}, n[3] = {0, 0, -1};
-    grid(corner, along, up, n, 4, s, s + width); s += width; }
-  if (radius > 0) { rounded_edge(x0 + radius, z0 + radius, 0, -1, -1, 0, s); s += (float)(PI / 2) * radius; }
-  { const float corner[3] = {x0, 0, z0 + radius}, along[3] = {0, 0, depth}, n[3] = {-1, 0, 0};
-    grid(corner, along, up, n, 4, s, s + depth); s += depth; }
-  if (radius > 0) rounded_edge(x0 + radius, z1 - radius, -1, 0, 0, 1, s);
+  for (int i = 0; i < plan.corners; ++i) {
+    const int next = (i + 1) % plan.corners;
+    float from[2], to[2], next_from[2], unused[2];
+    float corner[2] = {(float)plan.xz[i][0], (float)plan.xz[i][1]};
+    corner_ends(i, from, to);
+    corner_ends(next, next_from, unused);
+    if (plan.rounded[i] && radius > 0) {
+      rounded_edge(from, corner, to, s);
+      s += (float)(PI / 2) * radius;
+    }
+    /* The side from this corner to the next; outwards is to the right of the walk. */
+    const float along[3] = {next_from[0] - to[0], 0, next_from[1] - to[1]};
+    const float length = sqrtf(along[0] * along[0] + along[2] * along[2]);
+    if (length <= 0) continue;
+    const float base[3] = {to[0], block_min[1], to[1]};
+    const float normal[3] = {-along[2] / length, 0, along[0] / length};
+    grid(base, along, up, normal, 4, s, s + length);
+    s += length;
+  }
   block_top();
   if (textured) glDisable(GL_TEXTURE_2D);
 }
@@ -361,7 +421,7 @@ static void change_radius(float change)
 {
   radius += change;
   if (radius < 0) radius = 0;
-  if (radius > MAX_RADIUS) radius = MAX_RADIUS;
+  if (radius > (float)plan.max_radius) radius = (float)plan.max_radius;
 }
 
 static void change_field_of_view(float change)
@@ -446,9 +506,27 @@ static void motion(int x, int y)
   glutPostRedisplay();
 }
 
+/* The object's file: the first argument GLUT leaves, or the L beside this program's source. */
+static void load_object(int argc, char **argv)
+{
+  const char *path = argc > 1 ? argv[1] : HOMEWORK45_MODEL;
+  char error[300];
+  if (!wings_read_floor_plan(path, &plan, error, sizeof error)) {
+    fprintf(stderr, "homework45: %s: %s\n", path, error);
+    exit(1);
+  }
+  if (plan.sharp_hard_edges > 0)
+    fprintf(stderr, "homework45: %s: %d hard edges are not upright; they stay sharp (only upright edges "
+            "are rounded here)\n", path, plan.sharp_hard_edges);
+  block_min[0] = (float)plan.min_x, block_max[0] = (float)plan.max_x;
+  block_min[1] = (float)plan.bottom, block_max[1] = (float)plan.top;
+  block_min[2] = (float)plan.min_z, block_max[2] = (float)plan.max_z;
+}
+
 int main(int argc, char **argv)
 {
   glutInit(&argc, argv);
+  load_object(argc, argv);
   glutInitDisplayMode(GLUT_DOUBLE | GLUT_RGB | GLUT_DEPTH | GLUT_STENCIL);
   glutInitWindowSize(window_width, window_height);
   glutCreateWindow("Homework 4-5");

@@ -31,7 +31,8 @@ struct EdgeRecord {
   int left = -1;                   // the face running from -> to
   int right = -1;                  // the face running to -> from
   bool marked = false;
-  bool rounded = false;  // marked, and convex at a right angle (flat marked edges are not rounded)
+  bool rounded = false;  // marked, at a right angle (flat marked edges are not rounded)
+  bool concave = false;  // rounded, and concave: a fillet outside the faces
 };
 
 std::string describeEdge(const EdgeRecord& e) {
@@ -141,9 +142,6 @@ void classifyForRounding(Topology& topo) {
     if (e.right < 0) throw RoundingError("marked " + describeEdge(e) + " borders only face " + std::to_string(e.left) + ": the object is open there");
     const Dihedral dihedral = dihedralOf(topo, e);
     if (dihedral == Dihedral::Flat) continue;  // nothing to round between coplanar faces
-    if (dihedral == Dihedral::Concave)
-      throw RoundingError("marked " + describeEdge(e) + " is concave (faces " + std::to_string(e.left) + " and " +
-                          std::to_string(e.right) + "); rounding supports convex edges only");
     const double cosine = glm::dot(topo.normal(static_cast<std::size_t>(e.left)), topo.normal(static_cast<std::size_t>(e.right)));
     if (std::abs(cosine) > kAngleTolerance) {
       std::ostringstream angle;
@@ -154,6 +152,7 @@ void classifyForRounding(Topology& topo) {
                           " degrees; rounding supports right angles only (an object made of cubes)");
     }
     e.rounded = true;
+    e.concave = dihedral == Dihedral::Concave;
   }
 }
 
@@ -163,27 +162,60 @@ bool touchesRounding(const Topology& topo, std::uint32_t v) {
   return false;
 }
 
+// The concave rounded edge that ends at v, where its web fills the corner; none when v has no
+// rounded edge, more than one (a crease running straight through) or a convex one.
+std::optional<std::size_t> concaveEndAt(const Topology& topo, std::uint32_t v) {
+  std::optional<std::size_t> found;
+  for (std::size_t e : topo.edgesAt(v)) {
+    if (!topo.edges()[e].rounded) continue;
+    if (found || !topo.edges()[e].concave) return std::nullopt;
+    found = e;
+  }
+  return found;
+}
+
+bool faceHasEdge(const Topology& topo, std::size_t face, std::size_t edge) {
+  return topo.edges()[edge].left == static_cast<int>(face) || topo.edges()[edge].right == static_cast<int>(face);
+}
+
 void checkCorner(const Topology& topo, std::uint32_t v) {
   const auto& all = topo.edgesAt(v);
   std::vector<std::size_t> creases;
+  std::vector<std::size_t> concave;
   for (std::size_t e : all) {
     const EdgeRecord& edge = topo.edges()[e];
     if (edge.right < 0)
       throw RoundingError(describeVertex(v) + ", where a rounded edge ends, lies on the open " + describeEdge(edge));
     const Dihedral dihedral = dihedralOf(topo, edge);
-    if (dihedral == Dihedral::Concave)
-      throw RoundingError(describeVertex(v) + ", where a rounded edge ends, has the concave " + describeEdge(edge) +
-                          "; rounding supports convex corners only");
-    if (dihedral == Dihedral::Convex) creases.push_back(e);
+    if (dihedral != Dihedral::Flat) creases.push_back(e);
+    if (dihedral == Dihedral::Concave) concave.push_back(e);
   }
   auto perpendicular = [&](std::size_t a, std::size_t b) {
     return std::abs(glm::dot(topo.direction(v, a), topo.direction(v, b))) < kAngleTolerance;
   };
+  if (concaveEndAt(topo, v) && concave.size() == 1 && creases.size() == 3) {
+    // A concave fillet ending where two sharp convex edges leave at right angles: its web.
+    std::vector<std::size_t> others;
+    for (std::size_t e : creases)
+      if (e != concave[0]) others.push_back(e);
+    if (perpendicular(others[0], others[1]) && perpendicular(others[0], concave[0]) &&
+        perpendicular(others[1], concave[0]))
+      return;
+  }
+  const bool straight = creases.size() == 2 &&
+                        glm::dot(topo.direction(v, creases[0]), topo.direction(v, creases[1])) < -1.0 + kAngleTolerance;
+  if (!concave.empty() && !(straight && concave.size() == 2)) {
+    const EdgeRecord& edge = topo.edges()[concave[0]];
+    throw RoundingError(describeVertex(v) + ", where a rounded edge ends, has the concave " + describeEdge(edge) +
+                        (edge.rounded ? " and other creases that are rounded or not at right angles"
+                                      : ", which is not rounded") +
+                        "; a rounded concave edge must end where its two other creases are sharp, convex and at "
+                        "right angles, and rounded convex edges cannot meet concave ones");
+  }
   if (creases.size() == 3 && all.size() == 3 && perpendicular(creases[0], creases[1]) &&
       perpendicular(creases[1], creases[2]) && perpendicular(creases[0], creases[2]))
     return;  // the corner of a cube
-  if (creases.size() == 2 &&
-      glm::dot(topo.direction(v, creases[0]), topo.direction(v, creases[1])) < -1.0 + kAngleTolerance) {
+  if (straight) {
     const EdgeRecord& a = topo.edges()[creases[0]];
     const EdgeRecord& b = topo.edges()[creases[1]];
     if (a.rounded != b.rounded)
@@ -268,7 +300,9 @@ class RoundingBuilder {
       if (previousRounded) piece.terms.push_back(next);
       if (nextRounded) piece.terms.push_back(previous);
       piece.start = piece.end = offsetPoint(v, piece.terms);
-    } else if (touched_[v]) {
+    } else if (touched_[v] && !concaveEndAt(topo_, v)) {
+      // The face across the end of a convex rounded edge loses its corner to the strip's end arc.
+      // (At the end of a concave one the corner stays, and the web fills in beside it.)
       piece.arc = true;
       piece.start = offsetPoint(v, {previous});
       piece.middle = offsetPoint(v, {});
@@ -313,11 +347,24 @@ class RoundingBuilder {
       const glm::dvec3& a = c.end;
       const glm::dvec3& b = corners[(i + 1) % count].start;
       if (a == b) continue;  // the side is used up by the rounding at both its ends
-      const std::size_t edge = topo_.edgeBetween(face.vertices[i], face.vertices[(i + 1) % count]);
-      outline.pieces.push_back({a, b, {}});
-      if (topo_.edges()[edge].rounded) pendingSides_.push_back({surface_.outlines.size(), outline.pieces.size() - 1, edge, f});
-      const glm::dvec3 points[] = {a, centre, b, centre};
-      add(BezierSurface(1, 1, points), info, normal);
+      const std::uint32_t from = face.vertices[i], to = face.vertices[(i + 1) % count];
+      const std::size_t edge = topo_.edgeBetween(from, to);
+      // A side along a sharp edge that leaves the end of a concave fillet is split where the web
+      // beside it ends, so that the two meet at the same point.
+      std::vector<glm::dvec3> stops{a};
+      for (std::uint32_t end : {from, to}) {
+        const auto concave = concaveEndAt(topo_, end);
+        if (!concave || faceHasEdge(topo_, f, *concave) || dihedralOf(topo_, topo_.edges()[edge]) == Dihedral::Flat)
+          continue;
+        stops.push_back(offsetPoint(end, {edge}));  // from's split first, then to's: in order
+      }
+      stops.push_back(b);
+      for (std::size_t k = 0; k + 1 < stops.size(); ++k) {
+        outline.pieces.push_back({stops[k], stops[k + 1], {}});
+        if (topo_.edges()[edge].rounded) pendingSides_.push_back({surface_.outlines.size(), outline.pieces.size() - 1, edge, f});
+        const glm::dvec3 points[] = {stops[k], centre, stops[k + 1], centre};
+        add(BezierSurface(1, 1, points), info, normal);
+      }
     }
     surface_.outlines.push_back(std::move(outline));
   }
@@ -355,9 +402,14 @@ class RoundingBuilder {
     const glm::dvec3 points[] = {l0, l1, m0, m1, r0, r1};
     const double weights[] = {1.0, 1.0, weight_, weight_, 1.0, 1.0};
     const auto [nearLeft, nearRight] = BezierSurface(2, 1, points, weights).subdivideU(0.5);
-    const glm::dvec3 axisPoint = l0 - radius_ * topo_.normal(left);
+    // The axis: the left face's touching line moved by R into the solid (convex) or out of it
+    // (concave), where both faces' planes moved by R meet. The arc's control points are the same
+    // for both: the touching lines and the edge's point between them.
+    const double side = e.concave ? -1.0 : 1.0;
+    const glm::dvec3 axisPoint = l0 - side * radius_ * topo_.normal(left);
     RoundedPatchInfo info;
     info.rounded = true;
+    info.concave = e.concave;
     info.alongAxis = true;
     info.centre = axisPoint;
     info.axis = topo_.direction(e.from, edgeIndex);
@@ -377,16 +429,16 @@ class RoundingBuilder {
       return here && !there ? topo_.direction(v, edgeIndex) : glm::dvec3(0.0);
     };
     info.face = e.left;
-    info.faceNormal = topo_.normal(left);
-    info.acrossNormals = {topo_.normal(right)};
+    info.faceNormal = side * topo_.normal(left);
+    info.acrossNormals = {side * topo_.normal(right)};
     info.lineStart = l0;
     info.lineEnd = l1;
     info.mitreStart = mitre(e.from, left, right);
     info.mitreEnd = mitre(e.to, left, right);
     record(nearLeft, PatchSide::UMin, left);
     info.face = e.right;
-    info.faceNormal = topo_.normal(right);
-    info.acrossNormals = {topo_.normal(left)};
+    info.faceNormal = side * topo_.normal(right);
+    info.acrossNormals = {side * topo_.normal(left)};
     info.lineStart = r0;
     info.lineEnd = r1;
     info.mitreStart = mitre(e.from, right, left);
@@ -429,6 +481,60 @@ class RoundingBuilder {
     add(equatorB, forFace(faceBC, faceAB, faceCA));
   }
 
+  // The flat web at v, where the concave rounded edge c ends between two sharp edges: the piece
+  // of the end plane between those edges and the strip's end arc (whose middle control point is
+  // v itself), split in the middle as the strip is. It belongs to a face of that plane beside it
+  // (for its chart and material). Each half is ruled between its arc half and the sharp edge's
+  // segment from the arc's end to v (a fan from v would have its rulings along the arc's tangents
+  // at both ends, the web's cusps, and no normal along them). The segment is a rational quadratic
+  // with the arc's end weights w0, w2, middle weight (w0 + w2) / 2 and middle point
+  // (w2 P0 + w0 P2) / (w0 + w2): then its denominator is linear and the point moves along the
+  // segment in proportion to u, as the neighbouring face's side does.
+  void addWeb(std::uint32_t v) {
+    const std::size_t c = *concaveEndAt(topo_, v);
+    std::vector<std::size_t> sharp;
+    for (std::size_t e : topo_.edgesAt(v))
+      if (e != c && dihedralOf(topo_, topo_.edges()[e]) != Dihedral::Flat) sharp.push_back(e);
+    const EdgeRecord& first = topo_.edges()[sharp[0]];
+    const auto face = static_cast<std::size_t>(faceHasEdge(topo_, static_cast<std::size_t>(first.left), c) ? first.right : first.left);
+    const glm::dvec3 normal = topo_.normal(face);
+    const glm::dvec3 corner = offsetPoint(v, {});
+    glm::dvec3 a = offsetPoint(v, {sharp[0]}), b = offsetPoint(v, {sharp[1]});
+    if (glm::dot(glm::cross(a - corner, b - corner), normal) < 0.0) std::swap(a, b);  // counter-clockwise
+    RoundedPatchInfo info;
+    info.face = static_cast<int>(face);
+    FaceOutline outline;
+    outline.face = static_cast<int>(face);
+    outline.pieces.push_back({corner, a, {}});
+    outline.pieces.push_back({a, b, {}});
+    pendingArcs_.push_back({surface_.outlines.size(), 1, v, c});
+    outline.pieces.push_back({b, corner, {}});
+    surface_.outlines.push_back(std::move(outline));
+    const glm::dvec3 points[] = {a, corner, corner, corner, b, corner};
+    const double weights[] = {1.0, 1.0, weight_, weight_, 1.0, 1.0};
+    const auto [nearA, nearB] = BezierSurface(2, 1, points, weights).subdivideU(0.5);
+    // Row v = 1 of each half: from its cusp (a at u = 0, b at u = 1) along the sharp edge to v.
+    // The arc half's middle control point lies on that edge (the arc's tangent at the cusp).
+    auto ruled = [&](const BezierSurface& half, int cusp) {
+      const glm::dvec4 first = half.homogeneousControlPoint(0, 0), last = half.homogeneousControlPoint(2, 0);
+      const double w0 = first.w, w2 = last.w;
+      const glm::dvec3 p0 = cusp == 0 ? glm::dvec3(first) / w0 : corner;
+      const glm::dvec3 p2 = cusp == 0 ? corner : glm::dvec3(last) / w2;
+      const double middleWeight = (w0 + w2) / 2.0;
+      const glm::dvec3 middle = (w2 * p0 + w0 * p2) / (w0 + w2);
+      const glm::dvec4 edgeRow[] = {glm::dvec4(p0 * w0, w0), glm::dvec4(middle * middleWeight, middleWeight),
+                                    glm::dvec4(p2 * w2, w2)};
+      std::vector<glm::dvec4> net;
+      for (int i = 0; i < 3; ++i) {
+        net.push_back(half.homogeneousControlPoint(i, 0));
+        net.push_back(edgeRow[i]);
+      }
+      return BezierSurface::fromHomogeneous(2, 1, std::move(net));
+    };
+    add(ruled(nearA, 0), info, normal);
+    add(ruled(nearB, 2), info, normal);
+  }
+
   RoundedSurface take() { return std::move(surface_); }
 
  private:
@@ -450,7 +556,7 @@ class RoundingBuilder {
     if (info.rounded) {
       glm::dvec3 centre = info.centre;
       if (info.alongAxis) centre += info.axis * glm::dot(probe - info.centre, info.axis);
-      outward = probe - centre;
+      outward = info.concave ? centre - probe : probe - centre;
     }
     BezierSurface oriented = patch;
     const bool flip = glm::dot(patch.normal(0.5, 0.5), outward) < 0.0;
@@ -645,6 +751,8 @@ RoundedSurface roundMarkedEdges(const MarkedPolyhedron& poly, double radius) {
     if (std::all_of(edges.begin(), edges.end(), [&](std::size_t e) { return topo.edges()[e].rounded; }))
       builder.addSphereCorner(v);
   }
+  for (std::uint32_t v = 0; v < touched.size(); ++v)
+    if (touched[v] && concaveEndAt(topo, v)) builder.addWeb(v);
   builder.linkOutlines();
   RoundedSurface surface = builder.take();
   surface.radius = radius;

@@ -6,7 +6,8 @@
 %% winged-edge form (see scene/include/glass/scene/wings_file.h).
 %%
 %% Usage: escript scenes/models/make_wings_models.escript REPOSITORY_ROOT
-%% Writes scenes/models/*.wings and tests/unit/data/wings/*.wings and *.term.
+%% Writes scenes/models/*.wings, examples/homework45/l_block.wings and tests/unit/data/wings/*.wings
+%% and *.term.
 
 main([Root]) ->
     Models = filename:join(Root, "scenes/models"),
@@ -21,6 +22,28 @@ main([Root]) ->
     BlockHard = fun(A, B) -> top_ring_and_upright(A, B, 1.5, {-0.75, 0.0, -0.75}) end,
     write(filename:join(Models, "block.wings"),
           [object("Block", BlockVs, BlockFs, BlockHard, top_paint, true)], Materials, []),
+    %% The homework's L: three cubes with y up, its uprights marked (the inner one concave) and
+    %% the top edges along its outside: sphere corners, mitres, a concave fillet and its webs.
+    {LBlockVs, LBlockFs} = cubes([{0, 0, 0}, {1, 0, 0}, {0, 0, 1}], 0.75, {-0.75, 0.0, -0.75}),
+    LBlockHard = fun(A, B) -> upright(A, B) orelse outer_top(A, B, 0.75, -0.75, 0.75) end,
+    write(filename:join(Models, "l_block.wings"),
+          [object("L", LBlockVs, LBlockFs, LBlockHard, top_paint, true)], Materials, []),
+    write(filename:join(Tests, "l_block.wings"),
+          [object("L", LBlockVs, LBlockFs, LBlockHard, top_paint, true)], Materials, []),
+    %% The same L of unit cubes with only its uprights marked, and one two cubes tall (its
+    %% concave upright runs straight through a corner of four faces).
+    {LVsUp, LFsUp} = cubes([{0, 0, 0}, {1, 0, 0}, {0, 0, 1}], 1.0, {0.0, 0.0, 0.0}),
+    Upright = fun(A, B) -> upright(A, B) end,
+    write(filename:join(Tests, "l_uprights.wings"),
+          [object("L", LVsUp, LFsUp, Upright, top_paint, true)], Materials, []),
+    {LTallVs, LTallFs} = cubes([{X, Y, Z} || {X, Z} <- [{0, 0}, {1, 0}, {0, 1}], Y <- [0, 1]], 1.0, {0.0, 0.0, 0.0}),
+    write(filename:join(Tests, "l_tall_uprights.wings"),
+          [object("L", LTallVs, LTallFs, Upright, top_paint, true)], Materials, []),
+    %% The homework program's object: the L of unit cubes centred on the origin, its uprights
+    %% marked (the program rounds upright edges).
+    {HwVs, HwFs} = cubes([{0, 0, 0}, {1, 0, 0}, {0, 0, 1}], 1.0, {-1.0, 0.0, -1.0}),
+    write(filename:join(Root, "examples/homework45/l_block.wings"),
+          [object("L", HwVs, HwFs, Upright, top_paint, true)], Materials, []),
     %% Unit test files.
     {CubeVs, CubeFs} = cubes([{0, 0, 0}], 1.0, {0.0, 0.0, 0.0}),
     All = fun(_, _) -> true end,
@@ -95,6 +118,15 @@ shifted(Points, {DX, DY, DZ}) -> [{X + DX, Y + DY, Z + DZ} || {X, Y, Z} <- Point
 
 top_ring_and_upright({AX, AY, AZ}, {BX, BY, BZ}, Top, {OX, _, OZ}) ->
     (AY == Top andalso BY == Top) orelse (AX == OX andalso BX == OX andalso AZ == OZ andalso BZ == OZ).
+
+upright({AX, _, AZ}, {BX, _, BZ}) -> AX == BX andalso AZ == BZ.
+
+%% A top edge (y = Top) on the outside of an L of cubes of size Size from Low to Low + 2 Size in
+%% x and z.
+outer_top({AX, AY, AZ}, {BX, BY, BZ}, Top, Low, Size) ->
+    Outside = fun(C) -> C == Low orelse C == Low + 2 * Size end,
+    AY == Top andalso BY == Top andalso
+        ((AX == BX andalso Outside(AX)) orelse (AZ == BZ andalso Outside(AZ))).
 
 one_edge({AX, AY, _}, {BX, BY, _}) -> AX == 1.0 andalso BX == 1.0 andalso AY == 1.0 andalso BY == 1.0.
 

@@ -1,11 +1,12 @@
 #!/bin/sh
 # Homework 4-5's program headless (SDL_VIDEODRIVER=dummy, set by ctest), driven by
 # GLASS_GLUT_EVENTS; its snapshots compared with png_probe's same/differ.
-#   homework45_tests.sh PROGRAM PNG_PROBE WORK_DIR
+#   homework45_tests.sh PROGRAM PNG_PROBE WORK_DIR MODEL
 set -eu
 program=$1
 probe=$2
 work=$3
+model=$4
 rm -rf "$work"
 mkdir -p "$work"
 cd "$work"
@@ -69,4 +70,19 @@ for a in 1 2 3 4 5; do
   done
 done
 "$probe" viewpoint5.png differ orthographic.png same perspective.png || fail "projection switch"
+# The object comes from a Wings3D file: a broken one is named with what is wrong, and nothing runs.
+head -c 60 "$model" >truncated.wings
+status=0
+"$program" truncated.wings >out.txt 2>err.txt || status=$?
+[ "$status" -ne 0 ] || fail "a truncated .wings file was accepted"
+grep -q "^homework45: truncated.wings: the header states [0-9]* bytes of data, the file has 41$" err.txt ||
+  fail "no message naming the truncated file: $(cat err.txt)"
+status=0
+"$program" missing.wings >out.txt 2>err.txt || status=$?
+[ "$status" -ne 0 ] || fail "a missing .wings file was accepted"
+grep -q "^homework45: missing.wings: cannot read the file$" err.txt || fail "no message naming the missing file"
+# The same object named on the command line gives the same picture as the default.
+GLASS_GLUT_SNAPSHOT=named.png "$program" "$model" >out.txt 2>err.txt || fail "the model named on the command line"
+GLASS_GLUT_SNAPSHOT=default.png "$program" >out.txt 2>err.txt || fail "the default model"
+"$probe" named.png same default.png || fail "the named model differs from the default one"
 echo "homework45: all checks passed"

@@ -85,6 +85,25 @@ bool onPolygonFaces(const MarkedPolyhedron &poly, const RoundedSurface &s, const
   return false;
 }
 
+// The unit normal of a face of the polyhedron (its first three corners; the test objects' faces
+// are rectangles).
+glm::dvec3 faceNormal(const MarkedPolyhedron &poly, int face) {
+  const auto &vs = poly.faces[static_cast<std::size_t>(face)].vertices;
+  const glm::dvec3 a = poly.vertices[vs[0]], b = poly.vertices[vs[1]], c = poly.vertices[vs[2]];
+  return glm::normalize(glm::cross(b - a, c - b));
+}
+
+// The normal of a patch at (u, v). A flat piece of a face lies in the face's plane (checked) and
+// takes its normal: the derivatives' cross product has no direction at the cusps of a concave
+// fillet's web, where the arc runs into the sharp edge at a zero angle.
+glm::dvec3 patchNormal(const MarkedPolyhedron &poly, const RoundedSurface &s, std::size_t p, double u, double v) {
+  if (s.info[p].rounded) return s.patches[p].normal(u, v);
+  const glm::dvec3 n = faceNormal(poly, s.info[p].face);
+  const glm::dvec3 corner = poly.vertices[poly.faces[static_cast<std::size_t>(s.info[p].face)].vertices[0]];
+  CHECK(std::abs(glm::dot(s.patches[p].evaluate(u, v) - corner, n)) < 1e-12);
+  return n;
+}
+
 // Every side of every patch either collapses to a point, lies on a face drawn as a polygon, or
 // is shared with exactly one other patch: the same curve to 1e-12, the same normals to 1e-9 (but
 // for the creases of edges left sharp), and (for two pieces of one face's chart) the same texture
@@ -131,7 +150,7 @@ void checkSeams(const MarkedPolyhedron &poly, const RoundedSurface &s) {
       for (double t : kSamples) {
         const glm::dvec2 ua = onSide(side, t), ub = onSide(m.side, m.reversed ? 1.0 - t : t);
         const glm::dvec3 pa = s.patches[p].evaluate(ua.x, ua.y), pb = s.patches[m.patch].evaluate(ub.x, ub.y);
-        const glm::dvec3 na = s.patches[p].normal(ua.x, ua.y), nb = s.patches[m.patch].normal(ub.x, ub.y);
+        const glm::dvec3 na = patchNormal(poly, s, p, ua.x, ua.y), nb = patchNormal(poly, s, m.patch, ub.x, ub.y);
         // Cubes' faces meet at right angles, or are coplanar (a flat edge).
         if (stripEnd) CHECK(std::abs(glm::dot(na, nb)) < 1e-9);
         else if (sharpEdge) CHECK((std::abs(glm::dot(na, nb)) < 1e-9 || glm::length(na - nb) < 1e-9));
@@ -159,8 +178,9 @@ void checkRadius(const RoundedSurface &s) {
         glm::dvec3 centre = info.centre;
         if (info.alongAxis) centre += info.axis * glm::dot(point - info.centre, info.axis);
         CHECK(std::abs(glm::length(point - centre) - s.radius) < 1e-9);
-        // The normal points straight away from the centre.
-        CHECK(glm::length(s.patches[p].normal(u, v) - (point - centre) / s.radius) < 1e-9);
+        // The normal points straight away from the centre (towards it for a concave fillet).
+        const double outward = info.concave ? -1.0 : 1.0;
+        CHECK(glm::length(s.patches[p].normal(u, v) - outward * (point - centre) / s.radius) < 1e-9);
       }
   }
 }
@@ -188,9 +208,14 @@ std::size_t checkWatertight(const RoundedMesh &rounded) {
 
 } // namespace
 
+const char *const kRoundable[] = {"cube_all_hard.wings", "cube_top_ring.wings", "cube_one_edge.wings",   "block.wings",
+                                  "l_uprights.wings",    "l_tall_uprights.wings", "l_block.wings"};
+
 TEST_CASE("Rounding: every seam is exact, with continuous normals and texture coordinates") {
-  for (std::string name : {"cube_all_hard.wings", "cube_top_ring.wings", "cube_one_edge.wings", "block.wings"}) {
-    for (double radius : {0.05, 0.2, 0.375}) {
+  for (std::string name : kRoundable) {
+    // The largest radius, but for l_block, where it leaves nothing of the faces one cube wide
+    // between two rounded uprights (their patches collapse to lines on top of each other).
+    for (double radius : {0.05, 0.2, name == "l_block.wings" ? 0.3 : 0.375}) {
       CAPTURE(name);
       CAPTURE(radius);
       const MarkedPolyhedron poly = readShape(name);
@@ -203,7 +228,7 @@ TEST_CASE("Rounding: every seam is exact, with continuous normals and texture co
 }
 
 TEST_CASE("Rounding: closed meshes without cracks at every tessellation depth") {
-  for (std::string name : {"cube_all_hard.wings", "cube_top_ring.wings", "cube_one_edge.wings", "block.wings"}) {
+  for (std::string name : kRoundable) {
     const MarkedPolyhedron poly = readShape(name);
     const RoundedSurface s = roundMarkedEdges(poly, 0.25);
     std::size_t previous = 0;
@@ -219,6 +244,20 @@ TEST_CASE("Rounding: closed meshes without cracks at every tessellation depth") 
       previous = triangles;
       for (const glm::dvec3 &n : mesh.mesh.normals) CHECK(std::abs(glm::length(n) - 1.0) < 1e-9);
     }
+  }
+}
+
+TEST_CASE("Rounding: the L at its largest radius, where faces one cube wide are used up, is closed") {
+  const MarkedPolyhedron l = readShape("l_block.wings");
+  REQUIRE(maximumRoundingRadius(l) == 0.375);
+  const RoundedSurface s = roundMarkedEdges(l, 0.375);
+  checkRadius(s);
+  for (int depth : {0, 3, 5}) {
+    CAPTURE(depth);
+    AdaptiveOptions options;
+    options.criterion = ObjectSpaceTolerance{1e-6};
+    options.maxDepth = depth;
+    CHECK(checkWatertight(tessellateRounded(l, s, options)) > 0);
   }
 }
 
@@ -294,11 +333,98 @@ TEST_CASE("Rounding: radius limits and unsupported objects are refused with a re
   CHECK_THROWS_AS(roundMarkedEdges(cube, -1.0), RoundingError);
   const MarkedPolyhedron block = readShape("block.wings");
   CHECK(maximumRoundingRadius(block) == 0.375);
+  // Every edge of the L marked: where the concave upright ends, rounded convex edges meet it
+  // (a torus piece, not built).
   const MarkedPolyhedron l = readShape("concave_l.wings");
   CHECK_NOTHROW(roundMarkedEdges(l, 0.0));
-  CHECK_THROWS_WITH_AS(roundMarkedEdges(l, 0.1), doctest::Contains("is concave"), RoundingError);
+  CHECK_THROWS_WITH_AS(roundMarkedEdges(l, 0.1), doctest::Contains("rounded convex edges cannot meet concave ones"),
+                       RoundingError);
   // The Wings3D file's object has slanted edges.
   const MarkedPolyhedron axes = readShape("wings3d_axes.wings");
   CHECK_NOTHROW(roundMarkedEdges(axes, 0.0));
   CHECK_THROWS_AS(roundMarkedEdges(axes, 0.01), RoundingError);
+}
+
+TEST_CASE("Rounding: a concave edge becomes a fillet outside the faces, ending in flat webs") {
+  // The L of unit cubes (x, z in [0, 2], y in [0, 1]) with its uprights marked: the inner one, at
+  // x = z = 1, is concave between the faces z = 1 (x in [1, 2], normal +z) and x = 1 (z in
+  // [1, 2], normal +x).
+  const MarkedPolyhedron l = readShape("l_uprights.wings");
+  for (double radius : {0.05, 0.2, 0.5}) {
+    CAPTURE(radius);
+    const RoundedSurface s = roundMarkedEdges(l, radius);
+    int fillets = 0, webs = 0;
+    for (std::size_t p = 0; p < s.patches.size(); ++p) {
+      const RoundedPatchInfo &info = s.info[p];
+      const glm::dvec3 middle = s.patches[p].evaluate(0.5, 0.5);
+      const bool web = !info.rounded && middle.x > 1.0 && middle.z > 1.0 && middle.x < 1.0 + radius && middle.z < 1.0 + radius;
+      for (double u : kSamples)
+        for (double v : kSamples) {
+          const glm::dvec3 point = s.patches[p].evaluate(u, v);
+          const double x = point.x - 1.0, z = point.z - 1.0;
+          if (info.concave) {
+            // At distance R from both faces' planes moved out by R (the axis x = z = 1 + R), and
+            // in the inner corner, outside both faces: filling it.
+            CHECK(std::hypot(x - radius, z - radius) == doctest::Approx(radius).epsilon(1e-12));
+            CHECK(x >= -1e-15);
+            CHECK(z >= -1e-15);
+            CHECK(x <= radius + 1e-15);
+            CHECK(z <= radius + 1e-15);
+            CHECK(info.centre.x == doctest::Approx(1.0 + radius).epsilon(1e-15));
+            CHECK(info.centre.z == doctest::Approx(1.0 + radius).epsilon(1e-15));
+            // Its normals point out of the solid, into the corner's opening.
+            const glm::dvec3 n = s.patches[p].normal(u, v);
+            CHECK(n.x + n.z > 0.0);
+          } else if (web) {
+            // A web: in the top or bottom plane, between the two sharp edges and the fillet's arc.
+            CHECK((point.y == 0.0 || point.y == 1.0));
+            CHECK(std::hypot(x - radius, z - radius) >= radius * (1.0 - 1e-12));
+            CHECK(x <= radius + 1e-15);
+            CHECK(z <= radius + 1e-15);
+          }
+        }
+      if (info.concave) ++fillets;
+      if (web) ++webs;
+    }
+    // The fillet's two halves; a web of two halves at each end.
+    CHECK(fillets == 2);
+    CHECK(webs == 4);
+  }
+  // The fillet at its touching lines: its normal is the face's, and it is tangent to the face.
+  const RoundedSurface s = roundMarkedEdges(l, 0.25);
+  for (std::size_t p = 0; p < s.patches.size(); ++p) {
+    if (!s.info[p].concave) continue;
+    for (double v : kSamples) {
+      const glm::dvec3 touching[] = {s.patches[p].evaluate(0.0, v), s.patches[p].evaluate(1.0, v)};
+      const glm::dvec3 normals[] = {s.patches[p].normal(0.0, v), s.patches[p].normal(1.0, v)};
+      int onFace = 0;
+      for (int k = 0; k < 2; ++k) {
+        if (std::abs(touching[k].z - 1.0) < 1e-15 && std::abs(touching[k].x - 1.25) < 1e-15) {
+          CHECK(glm::length(normals[k] - glm::dvec3(0.0, 0.0, 1.0)) < 1e-12);
+          ++onFace;
+        }
+        if (std::abs(touching[k].x - 1.0) < 1e-15 && std::abs(touching[k].z - 1.25) < 1e-15) {
+          CHECK(glm::length(normals[k] - glm::dvec3(1.0, 0.0, 0.0)) < 1e-12);
+          ++onFace;
+        }
+      }
+      CHECK(onFace == 1);
+    }
+  }
+  // The rounded mesh holds more volume than the sharp L: the fillet fills (1 - pi / 4) R^2 of
+  // the corner over the height 1, and each convex upright takes as much away.
+  auto volume = [&](double radius) {
+    const RoundedMesh mesh = tessellateRounded(l, roundMarkedEdges(l, radius), {ObjectSpaceTolerance{1e-7}, 8});
+    double sum = 0.0;
+    const auto &idx = mesh.mesh.indices;
+    for (std::size_t t = 0; t < idx.size(); t += 3) {
+      const glm::dvec3 &a = mesh.mesh.positions[idx[t]], &b = mesh.mesh.positions[idx[t + 1]], &c = mesh.mesh.positions[idx[t + 2]];
+      sum += glm::dot(a, glm::cross(b, c)) / 6.0;
+    }
+    return sum;
+  };
+  const double corner = (1.0 - std::numbers::pi / 4.0) * 0.25 * 0.25;
+  // Five convex uprights (at x, z = (0, 0), (2, 0), (2, 1), (1, 2), (0, 2)) and one concave.
+  CHECK(volume(0.25) == doctest::Approx(3.0 - 5.0 * corner + corner).epsilon(1e-6));
+  CHECK(volume(0.0) == doctest::Approx(3.0).epsilon(1e-12));
 }

@@ -16,6 +16,13 @@
 //   needed;
 // - where one marked edge ends at a corner whose other edges are sharp, the strip ends in the
 //   plane of the face across it, and that face loses its corner to the same quarter arc;
+// - a concave marked edge (the inner edge of an L, where two faces meet at 270 degrees seen from
+//   inside) becomes a concave fillet: the same rational quadratic strip, a quarter of a cylinder
+//   of radius R whose axis lies outside the solid (each face's plane moved out by R), touching
+//   both faces along lines at distance R from the edge and filling the inner corner. Its normals
+//   point towards the axis. Where it ends at a corner whose other two edges are sharp (the top of
+//   the L's inner upright), the strip ends in the plane of the faces across, and a flat web of
+//   that plane fills the corner between the two sharp edges and the strip's end arc;
 // - every face shrinks by R away from its marked edges; it is a fan of flat patches from its
 //   centre to the pieces of its boundary (segments of degree 1, arcs of degree 2).
 //
@@ -30,11 +37,21 @@
 // exactly the 2 R of texture the sharp edge took, and a texture that runs on across the sharp
 // edge runs on across the rounded one.
 //
-// What is supported, for R > 0: marked edges between two faces at a right angle and convex;
-// corners where a marked edge ends have three edges at right angles (a corner of a cube) or two
-// marked edges in one straight line with flat edges across (where coplanar faces of two cubes
-// meet); faces next to a marked edge have right angles there; every face is convex. Anything
-// else is refused with a message naming the edge, vertex or face. R = 0 gives the sharp object.
+// Where two rounded convex edges meet and the corner's third edge is sharp, the mitre is the
+// exact rounded solid, not an approximation: the solid with both edges rounded is the
+// intersection of the two rounded slabs, whose boundaries cross in the bisecting plane. The
+// crease along the mitre continues the sharp third edge and fades to nothing at the top, as a
+// rolling-ball blend of those two edges alone gives it (a smooth patch there would round the
+// third edge too, which is not marked).
+//
+// What is supported, for R > 0: marked edges between two faces at a right angle, convex or
+// concave; corners where a convex marked edge ends have three edges at right angles (a corner of
+// a cube) or two marked edges in one straight line with flat edges across (where coplanar faces
+// of two cubes meet); a concave marked edge runs straight through such corners or ends where its
+// two other creases are sharp, convex and at right angles (a torus piece where rounded convex
+// edges meet a concave one is not built); faces next to a marked edge have right angles there;
+// every face is convex. Anything else is refused with a message naming the edge, vertex or face.
+// R = 0 gives the sharp object.
 #pragma once
 
 #include "glass/geometry/bezier_surface.h"
@@ -76,9 +93,13 @@ class RoundingError : public std::runtime_error {
 struct RoundedPatchInfo {
   int face = -1;      // the face whose chart and material the patch takes
   bool rounded = false;
+  // A concave fillet: its centre line lies outside the solid and its normals point towards it;
+  // faceNormal and acrossNormals are then the faces' normals reversed (see below).
+  bool concave = false;
   // For rounded pieces: the centre is the point `centre` (sphere) or the line through it along
-  // `axis` (cylinder, axis of unit length); faceNormal points to the face, acrossNormals to the
-  // other faces of the rounding (one for a strip, two for a sphere piece).
+  // `axis` (cylinder, axis of unit length); faceNormal points from the centre to the face,
+  // acrossNormals from the centre towards the other faces of the rounding (one for a strip, two
+  // for a sphere piece). For convex pieces these are the faces' outward normals.
   glm::dvec3 centre{0.0};
   glm::dvec3 axis{0.0};
   bool alongAxis = false;

@@ -1,0 +1,27 @@
+/* The object of a Wings3D file (.wings) as the homework draws it: a solid made of cubes standing
+ * on the floor, that is a floor plan (a polygon with right-angled corners) raised from a bottom
+ * to a top height, with the upright edges marked hard in Wings3D (its "hard edges") to be
+ * rounded. */
+#ifndef HOMEWORK45_WINGS_PLAN_H
+#define HOMEWORK45_WINGS_PLAN_H
+
+#include <stddef.h>
+
+struct floor_plan {
+  int corners;        /* corners of the outline, collinear vertices left out */
+  double (*xz)[2];    /* x, z of each corner, in the order that makes the outline turn
+                         counter-clockwise seen from above (+y) */
+  int *rounded;       /* whether the upright edge at each corner is hard */
+  int *convex;        /* whether the solid's angle at the corner is 90 (else 270) degrees */
+  double bottom, top; /* heights */
+  double min_x, max_x, min_z, max_z;
+  double max_radius;  /* half the outline's shortest side */
+  int sharp_hard_edges; /* hard edges that are not upright (not rounded by this program) */
+};
+
+/* Reads the first object of a .wings file. Returns 0 and writes the reason into `error` when the
+ * file cannot be read or its object is not such a solid. */
+int wings_read_floor_plan(const char *path, struct floor_plan *plan, char *error, size_t error_size);
+void floor_plan_free(struct floor_plan *plan);
+
+#endif
