@@ -101,6 +101,8 @@ struct Viewer {
   int dragX = -1, dragY = -1;
 
   view::SceneOverrides overrides;  // the menu's shade model, wireframe and lights, R and r
+  int roundingSteps = 0;           // R minus r presses: roundingChange in kRoundingStep steps
+  int lastRoundingPress = 0;       // +1 or -1 until the frame after an R or r is drawn
   std::vector<view::SceneLight> lights;
   int lightsMenu = 0, mainMenu = 0;
   // The program with the overrides made, for overriddenFrame; rebuilt when either changes.
@@ -240,6 +242,18 @@ void display() {
   const bool drawn = viewer.haveProgram &&
                      scene::renderFrame(programToDraw(), viewer.frame, options, rendered, diagnostics);
   glutSetWindow(window);  // renderFrame drew in a context of its own
+  if (!drawn && viewer.lastRoundingPress != 0) {
+    // A radius the model cannot take (docs/scene-format.md, `round`): said on stderr, then back
+    // to the last radius it took; the picture shown stays.
+    diagnostics.print(std::cerr);
+    viewer.roundingSteps -= viewer.lastRoundingPress;
+    viewer.lastRoundingPress = 0;
+    viewer.overrides.roundingChange = viewer.roundingSteps * kRoundingStep;
+    overridesChanged();
+    glutPostRedisplay();
+    return;
+  }
+  viewer.lastRoundingPress = 0;
   if (!drawn) {
     diagnostics.print(std::cerr);
     glClear(GL_COLOR_BUFFER_BIT);
@@ -354,13 +368,15 @@ void switchLight(int number) {
 }
 
 // R and r: every rounded model's radius up or down by kRoundingStep, not below 0. A radius the
-// model cannot take is reported by the frame (file:line:col), and r brings it back.
-void changeRounding(double change) {
+// model cannot take is reported by the frame (file:line:col) and taken back (display()).
+void changeRounding(int press) {
   if (!view::hasRoundedModels(viewer.program)) {
     std::cerr << "glass view: the scene has no rounded model (model ... round R)\n";
     return;
   }
-  viewer.overrides.roundingChange += change;
+  viewer.roundingSteps += press;
+  viewer.lastRoundingPress = press;
+  viewer.overrides.roundingChange = viewer.roundingSteps * kRoundingStep;
   overridesChanged();
 }
 
@@ -419,8 +435,8 @@ void keyboard(unsigned char key, int, int) {
     case '-': choose(kNarrowerView); break;
     case 'v': choose(kColorView + (static_cast<int>(viewer.view) + 1) % 4); break;
     case ' ': choose(kPlayPause); break;
-    case 'R': changeRounding(kRoundingStep); redraw(); break;
-    case 'r': changeRounding(-kRoundingStep); redraw(); break;
+    case 'R': changeRounding(1); redraw(); break;
+    case 'r': changeRounding(-1); redraw(); break;
     case 'c': printCamera(); break;
     case 'q': case 27: choose(kQuit); break;
     default: break;
