@@ -2,6 +2,7 @@
 // colour, or whether it equals another PNG. Pixel coordinates count from the top-left corner, as
 // GLUT's mouse coordinates do.
 //   png_probe FILE [size W H] [pixel X Y R G B] [count R G B MIN MAX] [same OTHER] [differ OTHER]
+//             [darker OTHER]
 // Prints each failed check and exits 1 when one fails, 2 on bad usage or an unreadable file.
 #include <cstdio>
 #include <cstdlib>
@@ -48,7 +49,7 @@ int number(char** argv, int i) { return std::atoi(argv[i]); }
 int main(int argc, char** argv) {
   if (argc < 3) {
     std::fprintf(stderr, "usage: png_probe FILE [size W H] [pixel X Y R G B] [count R G B MIN MAX] "
-                         "[same OTHER] [differ OTHER]\n");
+                         "[same OTHER] [differ OTHER] [darker OTHER]\n");
     return 2;
   }
   Picture picture;
@@ -100,6 +101,23 @@ int main(int argc, char** argv) {
         ++failures;
       }
       i += 6;
+    } else if (check == "darker") {
+      // The mean of R + G + B over the picture is below OTHER's by more than 1 % of OTHER's.
+      need(1);
+      Picture other;
+      if (!load(argv[i + 1], other)) return 2;
+      auto mean = [](const Picture& p) {
+        double sum = 0;
+        for (unsigned char c : p.rgb) sum += c;
+        return p.rgb.empty() ? 0.0 : sum / static_cast<double>(p.rgb.size());
+      };
+      const double mine = mean(picture), theirs = mean(other);
+      if (!(mine < theirs * 0.99)) {
+        std::printf("%s is not darker than %s (mean %.2f against %.2f)\n", argv[1], argv[i + 1], mine,
+                    theirs);
+        ++failures;
+      }
+      i += 2;
     } else if (check == "same" || check == "differ") {
       need(1);
       Picture other;

@@ -1,7 +1,10 @@
 // `glass view`: a scene file in a GLUT window (window/, <GL/freeglut.h>), with a camera of the
-// viewer's own (examine and walk modes, five viewpoints, perspective or orthographic, field of
-// view), the teaching views, animation, a right-button menu, and live reload.
+// viewer's own (examine and walk modes, walking with collisions, five viewpoints, perspective or
+// orthographic, field of view), the teaching views, the shade model, wireframe, lights on and
+// off, the rounding radius, animation, a right-button menu, and live reload.
 #include "command_registry.h"
+#include "view/scene_obstacles.h"
+#include "view/scene_overrides.h"
 
 #include <GL/freeglut.h>
 #include <glass/scene/parser.h>
@@ -27,11 +30,15 @@ Shows a scene file (docs/scene-format.md) in a window, redrawn when the file or 
 includes changes. The frame time is in the title bar.
 
   mouse    left drag: orbit around the scene's centre (examine) or turn (walk);
-           wheel: closer and farther; right button: the menu
+           wheel: closer and farther; right button: the menu (viewpoints, examine or walk,
+           projection, views, shade model, wireframe, each light on or off, play, reload)
   keys     e examine, w walk, 1-5 viewpoints (1 is the scene's own camera), o orthographic or
            perspective, + and - the field of view, v the next view (colour, depth, overdraw,
-           wireframe), space play or pause the animation, r reload, q or Escape quit;
-           walk: arrow keys move and turn at eye height, Page Up and Page Down look up and down
+           wireframe), R and r the rounding radius of rounded models up and down, c print the
+           camera as scene statements, space play or pause the animation, F5 reload, q or
+           Escape quit;
+           walk: arrow keys move and turn at eye height, Page Up and Page Down look up and
+           down; walls and objects stop the walker, who slides along them (docs/glut.md)
 
 options:
   --size WxH            window size (default: the scene's `size`)
@@ -65,7 +72,13 @@ enum MenuValue {
   kPlayPause = 30,
   kReload,
   kQuit,
+  kShadeScene = 40, // .. + 3, in view::ShadeChoice order
+  kWireframe = 50,
+  kLight0 = 60,     // .. + 7, the light's number
 };
+
+// Each R or r press changes the rounding radius by this much (scene units).
+constexpr double kRoundingStep = 0.02;
 
 struct Viewer {
   std::string path;
@@ -86,6 +99,18 @@ struct Viewer {
   double distance = 5, yaw = 0, pitch = 0;  // examine: the eye around the centre
   double heading = 0, lookPitch = 0;        // walk: where the eye looks
   int dragX = -1, dragY = -1;
+
+  view::SceneOverrides overrides;  // the menu's shade model, wireframe and lights, R and r
+  int roundingSteps = 0;           // R minus r presses: roundingChange in kRoundingStep steps
+  int lastRoundingPress = 0;       // +1 or -1 until the frame after an R or r is drawn
+  std::vector<view::SceneLight> lights;
+  int lightsMenu = 0, mainMenu = 0;
+  // The program with the overrides made, for overriddenFrame; rebuilt when either changes.
+  scene::Program overridden;
+  bool overriddenValid = false;
+  int overriddenFrame = -1;
+
+  const view::WalkerBody body;
 };
 
 Viewer viewer;
@@ -118,6 +143,7 @@ void chooseViewpoint(int number) {
   viewer.viewpoint = number;
   viewer.mode = Mode::Examine;
   const scene::SceneCamera &s = viewer.sceneCamera;
+  viewer.camera.zNear = s.hasPerspective ? s.zNear : 0.1; // walking may have moved it closer
   const double *look = s.lookAt;
   std::copy(look + 3, look + 6, viewer.centre);
   const double dx = look[0] - look[3], dy = look[1] - look[4], dz = look[2] - look[5];
@@ -136,14 +162,47 @@ void chooseViewpoint(int number) {
   placeExamineEye();
 }
 
+// The walking eye stands eyeHeight above the scene's ground (scene_obstacles.h).
+view::WalkGround walkGround() {
+  return view::walkGround(view::sceneBoxes(viewer.program, viewer.frame), viewer.body);
+}
+
 void startWalking() {
   viewer.mode = Mode::Walk;
-  const scene::ViewCamera &c = viewer.camera;
+  scene::ViewCamera &c = viewer.camera;
   const double dx = c.centre[0] - c.eye[0], dz = c.centre[2] - c.eye[2];
   viewer.heading = std::atan2(dx, dz) * 180.0 / kPi;
   viewer.lookPitch = 0;
+  c.eye[1] = walkGround().groundY + viewer.body.eyeHeight;
+  c.up[0] = 0;
+  c.up[1] = 1;
+  c.up[2] = 0;
   placeWalkTarget();
 }
+
+// The near plane while walking: close enough that its corners stay within the walker's radius
+// of the eye, so that a wall the walker stands at cannot be cut open by it. A corner of the
+// near plane at distance n is n sqrt(1 + t^2 (1 + a^2)) from the eye, t = tan(fovy / 2) and a
+// the aspect ratio.
+double walkingNearPlane(int width, int height) {
+  const double t = std::tan(radians(viewer.camera.fovy) / 2);
+  const double a = height > 0 ? static_cast<double>(width) / height : 1.0;
+  const double inside = 0.9 * viewer.body.radius / std::sqrt(1 + t * t * (1 + a * a));
+  return std::min(viewer.sceneCamera.hasPerspective ? viewer.sceneCamera.zNear : 0.1, inside);
+}
+
+// The program drawn: the scene's, or a copy with the viewer's overrides.
+const scene::Program &programToDraw() {
+  if (!viewer.overrides.any()) return viewer.program;
+  if (!viewer.overriddenValid || viewer.overriddenFrame != viewer.frame) {
+    viewer.overridden = view::withOverrides(viewer.program, viewer.overrides, viewer.frame);
+    viewer.overriddenValid = true;
+    viewer.overriddenFrame = viewer.frame;
+  }
+  return viewer.overridden;
+}
+
+void overridesChanged() { viewer.overriddenValid = false; }
 
 bool readScene() {
   scene::Diagnostics diagnostics;
@@ -156,6 +215,7 @@ bool readScene() {
   diagnostics.print(std::cerr);
   viewer.program = std::move(program);
   viewer.haveProgram = true;
+  overridesChanged();
   viewer.frame = std::min(viewer.frame, viewer.program.frames - 1);
   viewer.watched.clear();
   for (const std::string &file : viewer.program.sources->paths()) {
@@ -175,12 +235,25 @@ void display() {
   options.view = viewer.view;
   scene::SceneCamera seen;
   options.sceneCamera = &seen;
+  if (viewer.mode == Mode::Walk) viewer.camera.zNear = walkingNearPlane(options.width, options.height);
   options.camera = viewer.sceneCameraKnown ? &viewer.camera : nullptr;
   scene::RenderedFrame rendered;
   scene::Diagnostics diagnostics;
   const bool drawn = viewer.haveProgram &&
-                     scene::renderFrame(viewer.program, viewer.frame, options, rendered, diagnostics);
+                     scene::renderFrame(programToDraw(), viewer.frame, options, rendered, diagnostics);
   glutSetWindow(window);  // renderFrame drew in a context of its own
+  if (!drawn && viewer.lastRoundingPress != 0) {
+    // A radius the model cannot take (docs/scene-format.md, `round`): said on stderr, then back
+    // to the last radius it took; the picture shown stays.
+    diagnostics.print(std::cerr);
+    viewer.roundingSteps -= viewer.lastRoundingPress;
+    viewer.lastRoundingPress = 0;
+    viewer.overrides.roundingChange = viewer.roundingSteps * kRoundingStep;
+    overridesChanged();
+    glutPostRedisplay();
+    return;
+  }
+  viewer.lastRoundingPress = 0;
   if (!drawn) {
     diagnostics.print(std::cerr);
     glClear(GL_COLOR_BUFFER_BIT);
@@ -235,14 +308,76 @@ void setProjection(bool orthographic) {
   redraw();
 }
 
+// A step of walk mode: turned by `turn` degrees, then `forward` steps (1/20 of the scene
+// camera's distance to its centre each) along the heading, stopped by the scene's obstacles and
+// sliding along them (view/walk_collision.h).
 void walk(double forward, double turn) {
   scene::ViewCamera &c = viewer.camera;
   viewer.heading += turn;
-  const double step = forward * std::max(viewer.distance, 1e-3) / 20;
-  c.eye[0] += step * std::sin(radians(viewer.heading));
-  c.eye[2] += step * std::cos(radians(viewer.heading));
+  if (forward != 0.0) {
+    const double step = forward * std::max(viewer.distance, 1e-3) / 20;
+    const view::GroundPoint motion{step * std::sin(radians(viewer.heading)),
+                                   step * std::cos(radians(viewer.heading))};
+    const view::GroundPoint at =
+        view::slideMove({c.eye[0], c.eye[2]}, motion, viewer.body.radius, walkGround().obstacles);
+    c.eye[0] = at.x;
+    c.eye[2] = at.z;
+  }
   placeWalkTarget();
   redraw();
+}
+
+// The camera as scene statements (docs/scene-format.md), to paste into a scene file: the
+// projection with the current field of view and planes, and the lookat.
+void printCamera() {
+  const scene::ViewCamera &c = viewer.camera;
+  const int width = glutGet(GLUT_WINDOW_WIDTH), height = glutGet(GLUT_WINDOW_HEIGHT);
+  if (c.orthographic) {
+    const double halfWidth = c.halfHeight * (height > 0 ? static_cast<double>(width) / height : 1.0);
+    std::printf("ortho %.17g %.17g %.17g %.17g %.17g %.17g\n", -halfWidth, halfWidth, -c.halfHeight,
+                c.halfHeight, c.zNear, c.zFar);
+  } else {
+    std::printf("perspective %.17g auto %.17g %.17g\n", c.fovy, c.zNear, c.zFar);
+  }
+  std::printf("lookat %.17g %.17g %.17g  %.17g %.17g %.17g  %.17g %.17g %.17g\n", c.eye[0], c.eye[1],
+              c.eye[2], c.centre[0], c.centre[1], c.centre[2], c.up[0], c.up[1], c.up[2]);
+  std::fflush(stdout);
+}
+
+// The labels of the menu entries that switch something on and off say its state.
+void labelSwitches() {
+  const int current = glutGetMenu();
+  glutSetMenu(viewer.mainMenu);
+  glutChangeToMenuEntry(7, viewer.overrides.wireframe ? "Wireframe: on" : "Wireframe: off", kWireframe);
+  glutSetMenu(viewer.lightsMenu);
+  while (glutGet(GLUT_MENU_NUM_ITEMS) > 0) glutRemoveMenuItem(1);
+  for (const view::SceneLight &light : viewer.lights) {
+    const bool off = std::count(viewer.overrides.lightsOff.begin(), viewer.overrides.lightsOff.end(), light.number) > 0;
+    const std::string label = "Light " + std::to_string(light.number) + " (" + light.kind + "): " + (off ? "off" : "on");
+    glutAddMenuEntry(label.c_str(), kLight0 + light.number);
+  }
+  if (viewer.lights.empty()) glutAddMenuEntry("(the scene has no lights)", 0);
+  if (current > 0) glutSetMenu(current);
+}
+
+void switchLight(int number) {
+  std::vector<int> &off = viewer.overrides.lightsOff;
+  if (std::erase(off, number) == 0) off.push_back(number);
+  overridesChanged();
+  labelSwitches();
+}
+
+// R and r: every rounded model's radius up or down by kRoundingStep, not below 0. A radius the
+// model cannot take is reported by the frame (file:line:col) and taken back (display()).
+void changeRounding(int press) {
+  if (!view::hasRoundedModels(viewer.program)) {
+    std::cerr << "glass view: the scene has no rounded model (model ... round R)\n";
+    return;
+  }
+  viewer.roundingSteps += press;
+  viewer.lastRoundingPress = press;
+  viewer.overrides.roundingChange = viewer.roundingSteps * kRoundingStep;
+  overridesChanged();
 }
 
 void choose(int value) {
@@ -263,9 +398,28 @@ void choose(int value) {
       case kWiderView: changeFieldOfView(5); break;
       case kNarrowerView: changeFieldOfView(-5); break;
       case kPlayPause: viewer.playing = !viewer.playing; break;
-      case kReload: readScene(); break;
+      case kReload:
+        if (readScene()) {
+          viewer.lights = view::sceneLights(viewer.program);
+          labelSwitches();
+        }
+        break;
+      case kShadeScene:
+      case kShadeScene + 1:
+      case kShadeScene + 2:
+      case kShadeScene + 3:
+        viewer.overrides.shade = static_cast<view::ShadeChoice>(value - kShadeScene);
+        overridesChanged();
+        break;
+      case kWireframe:
+        viewer.overrides.wireframe = !viewer.overrides.wireframe;
+        overridesChanged();
+        labelSwitches();
+        break;
       case kQuit: glutLeaveMainLoop(); break;
-      default: break;
+      default:
+        if (value >= kLight0 && value < kLight0 + 8) switchLight(value - kLight0);
+        break;
     }
   }
   redraw();
@@ -281,13 +435,16 @@ void keyboard(unsigned char key, int, int) {
     case '-': choose(kNarrowerView); break;
     case 'v': choose(kColorView + (static_cast<int>(viewer.view) + 1) % 4); break;
     case ' ': choose(kPlayPause); break;
-    case 'r': choose(kReload); break;
+    case 'R': changeRounding(1); redraw(); break;
+    case 'r': changeRounding(-1); redraw(); break;
+    case 'c': printCamera(); break;
     case 'q': case 27: choose(kQuit); break;
     default: break;
   }
 }
 
 void special(int key, int, int) {
+  if (key == GLUT_KEY_F5) choose(kReload);
   if (viewer.mode != Mode::Walk) return;
   switch (key) {
     case GLUT_KEY_UP: walk(1, 0); break;
@@ -341,7 +498,11 @@ void tick(int) {
     std::error_code ec;
     if (std::filesystem::last_write_time(file, ec) != time) changed = true;
   }
-  if (changed && readScene()) redraw();
+  if (changed && readScene()) {
+    viewer.lights = view::sceneLights(viewer.program);
+    labelSwitches();
+    redraw();
+  }
   if (viewer.playing && viewer.haveProgram && viewer.program.frames > 1) {
     viewer.frame = (viewer.frame + 1) % viewer.program.frames;
     redraw();
@@ -366,16 +527,27 @@ void buildMenu() {
   glutAddMenuEntry("Depth", kColorView + 1);
   glutAddMenuEntry("Overdraw", kColorView + 2);
   glutAddMenuEntry("Wireframe", kColorView + 3);
-  glutCreateMenu(choose);
+  const int shading = glutCreateMenu(choose);
+  glutAddMenuEntry("The scene's own", kShadeScene);
+  glutAddMenuEntry("Flat", kShadeScene + 1);
+  glutAddMenuEntry("Smooth (Gouraud)", kShadeScene + 2);
+  glutAddMenuEntry("Phong (per pixel)", kShadeScene + 3);
+  viewer.lightsMenu = glutCreateMenu(choose);
+  viewer.mainMenu = glutCreateMenu(choose);
   glutAddSubMenu("Viewpoint", viewpoints);
   glutAddMenuEntry("Examine", kExamine);
   glutAddMenuEntry("Walk", kWalk);
   glutAddSubMenu("Projection", projection);
   glutAddSubMenu("View", views);
+  glutAddSubMenu("Shade model", shading);
+  glutAddMenuEntry("Wireframe: off", kWireframe); // entry 7: labelSwitches() keeps its label
+  glutAddSubMenu("Lights", viewer.lightsMenu);
   glutAddMenuEntry("Play / pause", kPlayPause);
   glutAddMenuEntry("Reload", kReload);
   glutAddMenuEntry("Quit", kQuit);
   glutAttachMenu(GLUT_RIGHT_BUTTON);
+  viewer.lights = view::sceneLights(viewer.program);
+  labelSwitches();
 }
 
 int runView(const std::vector<std::string> &args) {
