@@ -202,7 +202,7 @@ key space
 key space
 "
   [ "$status" -eq 0 ] || fail "listing5 with GLASS_STATS exited with $status"
-  expect_text err.txt "glass stats, frame 1:"
+  expect_text err.txt "glass stats, frame 4:"
   expect_text err.txt "  vertices                        243"
   expect_text err.txt "  primitives                       81   (0 points, 0 lines, 81 triangles)"
   expect_text err.txt "  depth test failed                 0"

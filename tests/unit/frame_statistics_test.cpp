@@ -62,6 +62,7 @@ TEST_CASE("GLASS_STATS counts a rectangle's vertices, triangles and the pixels i
   CHECK(s.texelReads == 0);
 
   const std::string text = glass::gl::formatFrameStatistics(s);
+  CHECK(text.find("glass stats, frame 0:\n") == 0);
   CHECK(text.find("  fragments                      1536") != std::string::npos);
   CHECK(text.find("  primitives                        2   (0 points, 0 lines, 2 triangles)") != std::string::npos);
 

@@ -87,8 +87,8 @@ void reportFrameStatistics(Context& ctx) {
   if (s == nullptr) return;
   const bool drew = s->vertices != 0 || s->fragments.load() != 0;
   if (!drew) return;
-  ++s->frame;
   std::fputs(formatFrameStatistics(*s).c_str(), stderr);
+  ++s->frame;
   restart(*s);
 }
 

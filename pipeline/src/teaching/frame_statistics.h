@@ -42,7 +42,7 @@ struct FrameStatistics {
       depthRejected{0};
   std::atomic<std::uint64_t> passed{0};
   std::atomic<std::uint64_t> texelReads{0};
-  std::uint64_t frame = 0;  // frames presented so far
+  std::uint64_t frame = 0;  // frames presented so far: the number of this one, counting from 0
 };
 
 // The fragment stage's counts for one batch, added to the frame's at the batch's end.

@@ -120,10 +120,11 @@ void printMipmapLegend() {
   if (printed) return;
   printed = true;
   std::fprintf(stderr, "glass view mipmap: level");
-  for (int level = 0; level < geometry::kMipmapScaleSteps; ++level) {
-    std::fprintf(stderr, " %d %s%s", level, geometry::mipmapScaleName(level),
-                 level + 1 < geometry::kMipmapScaleSteps ? "," : " or more;");
+  for (int level = 0; level + 1 < geometry::kMipmapScaleSteps; ++level) {
+    std::fprintf(stderr, " %d %s,", level, geometry::mipmapScaleName(level));
   }
+  std::fprintf(stderr, " %d or more %s;", geometry::kMipmapScaleSteps - 1,
+               geometry::mipmapScaleName(geometry::kMipmapScaleSteps - 1));
   std::fprintf(stderr, " untextured grey, nothing drawn black\n");
 }
 
