@@ -3,6 +3,9 @@
 #include <GL/glu.h>
 #include <doctest/doctest.h>
 
+#include <atomic>
+#include <thread>
+
 namespace osmesa_test {
 
 void drawScene(int variant) {
@@ -88,6 +91,35 @@ std::vector<uint8_t> renderRGBA(int width, int height, int variant) {
   CHECK(glGetError() == GL_NO_ERROR);
   OSMesaDestroyContext(ctx);
   return pixels;
+}
+
+std::vector<std::vector<uint8_t>> renderOnThreads(int threads, int width, int height,
+                                                  const std::function<OSMesaContext()>& makeContext,
+                                                  const std::function<void(int)>& draw,
+                                                  std::vector<int>& failures) {
+  std::vector<std::vector<uint8_t>> buffers(static_cast<size_t>(threads));
+  failures.assign(static_cast<size_t>(threads), 0);
+  std::atomic<int> ready{0};
+  std::vector<std::thread> running;
+  for (int i = 0; i < threads; ++i) {
+    running.emplace_back([&, i] {
+      OSMesaContext ctx = makeContext();
+      buffers[i].assign(static_cast<size_t>(width) * height * 4, 0);
+      const bool bound = ctx && OSMesaMakeCurrent(ctx, buffers[i].data(), GL_UNSIGNED_BYTE, width, height);
+      ++ready;
+      if (!bound) {
+        failures[i] = 1;
+        return;
+      }
+      // Start drawing together, so that the threads overlap.
+      while (ready.load() < threads) std::this_thread::yield();
+      draw(i);
+      if (OSMesaGetCurrentContext() != ctx || glGetError() != GL_NO_ERROR) failures[i] = 1;
+      OSMesaDestroyContext(ctx);
+    });
+  }
+  for (std::thread& thread : running) thread.join();
+  return buffers;
 }
 
 }  // namespace osmesa_test

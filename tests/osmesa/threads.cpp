@@ -12,28 +12,13 @@ TEST_CASE("8 threads rendering 8 contexts at once give the serial bytes") {
   std::vector<std::vector<uint8_t>> serial;
   for (int i = 0; i < kThreads; ++i) serial.push_back(osmesa_test::renderRGBA(kWidth, kHeight, i));
 
-  std::vector<std::vector<uint8_t>> parallel(kThreads);
-  std::vector<int> failures(kThreads, 0);
-  std::atomic<int> ready{0};
-  std::vector<std::thread> threads;
-  for (int i = 0; i < kThreads; ++i) {
-    threads.emplace_back([&, i] {
-      OSMesaContext ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 0, nullptr);
-      parallel[i].assign(static_cast<size_t>(kWidth) * kHeight * 4, 0);
-      if (!ctx || !OSMesaMakeCurrent(ctx, parallel[i].data(), GL_UNSIGNED_BYTE, kWidth, kHeight)) {
-        failures[i] = 1;
-        ++ready;
-        return;
-      }
-      // Start drawing together, and draw several frames, so that the threads overlap.
-      ++ready;
-      while (ready.load() < kThreads) std::this_thread::yield();
-      for (int frame = 0; frame < 4; ++frame) osmesa_test::drawScene(i);
-      if (OSMesaGetCurrentContext() != ctx || glGetError() != GL_NO_ERROR) failures[i] = 1;
-      OSMesaDestroyContext(ctx);
-    });
-  }
-  for (std::thread& thread : threads) thread.join();
+  std::vector<int> failures;
+  const auto parallel = osmesa_test::renderOnThreads(
+      kThreads, kWidth, kHeight, [] { return OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 0, nullptr); },
+      [](int i) {
+        for (int frame = 0; frame < 4; ++frame) osmesa_test::drawScene(i);  // several frames overlap
+      },
+      failures);
   for (int i = 0; i < kThreads; ++i) {
     CAPTURE(i);
     CHECK(failures[i] == 0);

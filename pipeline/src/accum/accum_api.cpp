@@ -17,6 +17,7 @@ void glAccum(GLenum op, GLfloat value) {
   glass::gl::compileOrExecute([=](Context& ctx) {
     if (glass::gl::rejectInsideBeginEnd(ctx)) return;
     if (!glass::gl::isAccumOperation(op)) return glass::gl::recordError(ctx, GL_INVALID_ENUM);
+    if (!ctx.buffers.accumulation) return glass::gl::recordError(ctx, GL_INVALID_OPERATION);
     glass::gl::finishQueuedDrawing(ctx);
     glass::gl::accumulate(ctx, op, value);
   });

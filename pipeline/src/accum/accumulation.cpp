@@ -131,7 +131,9 @@ bool queryAccumulationState(const Context& ctx, GLenum pname, StateValue& v) {
     case GL_ACCUM_RED_BITS:
     case GL_ACCUM_GREEN_BITS:
     case GL_ACCUM_BLUE_BITS:
-    case GL_ACCUM_ALPHA_BITS: v.setIntegers({kAccumulationBits}); return true;
+    case GL_ACCUM_ALPHA_BITS:
+      v.setIntegers({ctx.buffers.accumulation ? double(kAccumulationBits) : 0.0});
+      return true;
     default: return false;
   }
 }

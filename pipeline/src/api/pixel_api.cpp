@@ -68,6 +68,7 @@ void glReadPixels(GLint x, GLint y, GLsizei width, GLsizei height, GLenum format
         !glass::gl::readsColor(ctx.pixelTransfer.readBuffer)) {
       return recordError(ctx, GL_INVALID_OPERATION);
     }
+    if (!glass::gl::hasBufferToRead(ctx, format)) return recordError(ctx, GL_INVALID_OPERATION);
     if (!pixels) return;
     glass::gl::finishQueuedDrawing(ctx);
     glass::gl::readPixels(ctx, x, y, width, height, format, type, pixels);

@@ -107,10 +107,10 @@ TextureObject* boundObject(TextureState& t, GLenum target, GLuint name) {
                             : target == GL_TEXTURE_3D ? &t.default3D
                                                       : &t.defaultCube;
   if (name == 0) return fallback;
-  auto found = t.objects.find(name);
+  const std::shared_ptr<TextureObject> found = t.names->find(name);
   // A texture deleted since the push is no longer there: the binding falls back to the default.
-  if (found == t.objects.end() || found->second->target != target) return fallback;
-  return found->second.get();
+  if (!found || found->target != target) return fallback;
+  return found.get();
 }
 
 TextureUnitEnables saveTextureEnables(const TextureUnit& u) {
@@ -183,6 +183,7 @@ void restoreTexture(TextureState& t, const TextureAttributes& a) {
   }
   t.activeUnit = a.activeUnit;
   t.bumpMap = a.bumpMap;
+  t.holdBindings();
 }
 
 std::shared_ptr<const AttribEntry> saveAttributes(const Context& ctx, GLbitfield mask) {

@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "accum/accumulation_state.h"
+#include "core/ancillary_buffers.h"
 #include "core/attrib_stack.h"
 #include "core/errors.h"
 #include "core/hint_state.h"
@@ -84,6 +85,7 @@ struct Context {
   RenderModeState renderMode;
 
   raster::Framebuffer framebuffer;
+  AncillaryBuffers buffers;  // which of depth, stencil and accumulation it has (all by default)
   std::unique_ptr<DrawPipeline> draw;
 
   // Set by an embedding that shows the framebuffer elsewhere (an OSMesa context copies it into

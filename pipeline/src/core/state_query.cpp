@@ -159,10 +159,11 @@ bool queryCoreState(const Context& ctx, GLenum pname, StateValue& v) {
 
     // The framebuffer (table 6.33 and 6.34)
     case GL_RED_BITS: case GL_GREEN_BITS: case GL_BLUE_BITS: case GL_ALPHA_BITS:
-    case GL_STENCIL_BITS: case GL_SUBPIXEL_BITS:
+    case GL_SUBPIXEL_BITS:
       v.setIntegers({8});
       return true;
-    case GL_DEPTH_BITS: v.setIntegers({24}); return true;
+    case GL_STENCIL_BITS: v.setIntegers({ctx.buffers.stencil ? 8.0 : 0.0}); return true;
+    case GL_DEPTH_BITS: v.setIntegers({ctx.buffers.depth ? 24.0 : 0.0}); return true;
     case GL_INDEX_BITS: case GL_AUX_BUFFERS:
       v.setIntegers({0});
       return true;

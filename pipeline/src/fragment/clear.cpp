@@ -42,12 +42,12 @@ void clearBuffers(Context& ctx, GLbitfield mask) {
       }
     }
   }
-  if ((mask & GL_DEPTH_BUFFER_BIT) && f.depthMask) {
+  if ((mask & GL_DEPTH_BUFFER_BIT) && f.depthMask && ctx.buffers.depth) {
     const uint32_t depth = raster::depthValue(f.clearDepth);
     for (int y = y0; y < y1; ++y) std::fill(fb.depthAt(x0, y), fb.depthAt(x0, y) + (x1 - x0), depth);
   }
-  if (mask & GL_ACCUM_BUFFER_BIT) clearAccumulationBuffer(ctx, x0, y0, x1, y1);
-  if (mask & GL_STENCIL_BUFFER_BIT) {
+  if ((mask & GL_ACCUM_BUFFER_BIT) && ctx.buffers.accumulation) clearAccumulationBuffer(ctx, x0, y0, x1, y1);
+  if ((mask & GL_STENCIL_BUFFER_BIT) && ctx.buffers.stencil) {
     const unsigned writeMask = f.stencilWriteMask & 0xFFu;
     const uint8_t value = static_cast<uint8_t>(f.clearStencil & 0xFF);
     for (int y = y0; y < y1; ++y) {

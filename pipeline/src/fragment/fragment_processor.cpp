@@ -40,7 +40,7 @@ void FragmentProcessor::prepare(Context& ctx, bool phong) {
   s_.alphaFunc = f.alphaFunc;
   s_.alphaRefByte = floatToColorByte(f.alphaRef);
 
-  s_.stencilTest = f.stencilTest;
+  s_.stencilTest = stencilTestActive(ctx);
   s_.stencilFunc = f.stencilFunc;
   s_.stencilRef = static_cast<uint8_t>(f.stencilRef);
   s_.stencilValueMask = f.stencilValueMask & 0xFFu;
@@ -49,7 +49,7 @@ void FragmentProcessor::prepare(Context& ctx, bool phong) {
   s_.stencilDepthFail = f.stencilDepthFail;
   s_.stencilDepthPass = f.stencilDepthPass;
 
-  s_.depthTest = f.depthTest;
+  s_.depthTest = depthTestActive(ctx);
   s_.depthFunc = f.depthFunc;
   s_.depthMask = f.depthMask;
 

@@ -37,8 +37,15 @@ OSMesaContext createContext(const int* attributes, OSMesaContext sharelist, cons
   }
   try {
     auto* ctx = new osmesa_context(request.format);
-    // Display lists are shared; texture objects are not (docs/osmesa.md).
-    if (sharelist) ctx->gl.lists.lists = sharelist->gl.lists.lists;
+    // Asking for 0 bits gives no such buffer (core/ancillary_buffers.h).
+    ctx->gl.buffers.depth = request.depthBits > 0;
+    ctx->gl.buffers.stencil = request.stencilBits > 0;
+    ctx->gl.buffers.accumulation = request.accumBits > 0;
+    // Display lists and texture objects are shared (docs/osmesa.md).
+    if (sharelist) {
+      ctx->gl.lists.lists = sharelist->gl.lists.lists;
+      ctx->gl.texture.names = sharelist->gl.texture.names;
+    }
     return ctx;
   } catch (...) {  // no memory, or no threads for the rasterizer
     return nullptr;
@@ -206,7 +213,7 @@ void OSMesaGetIntegerv(GLint pname, GLint* value) {
 
 GLboolean OSMesaGetDepthBuffer(OSMesaContext c, GLint* width, GLint* height, GLint* bytesPerValue,
                                void** buffer) {
-  if (!c || !c->buffer || !width || !height || !bytesPerValue || !buffer) {
+  if (!c || !c->buffer || !c->gl.buffers.depth || !width || !height || !bytesPerValue || !buffer) {
     clearOutputs(width, height, bytesPerValue, buffer);
     return GL_FALSE;
   }

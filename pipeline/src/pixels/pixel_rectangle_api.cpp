@@ -70,6 +70,7 @@ void glCopyPixels(GLint x, GLint y, GLsizei width, GLsizei height, GLenum type) 
       if (type == GL_COLOR && !glass::gl::readsColor(c.pixelTransfer.readBuffer)) {
         return recordError(c, GL_INVALID_OPERATION);
       }
+      if (!glass::gl::hasBufferToRead(c, type)) return recordError(c, GL_INVALID_OPERATION);
       try {
         glass::gl::copyPixels(c, x, y, width, height, type);
       } catch (const std::bad_alloc&) {

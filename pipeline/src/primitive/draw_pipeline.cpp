@@ -28,7 +28,7 @@ int rasterThreadCount() {
 raster::EarlyDepthTest earlyDepthTest(const Context& ctx) {
   const FragmentState& f = ctx.fragment;
   raster::EarlyDepthTest early;
-  if (!f.depthTest || f.stencilTest || f.depthFunc == GL_ALWAYS) return early;
+  if (!depthTestActive(ctx) || stencilTestActive(ctx) || f.depthFunc == GL_ALWAYS) return early;
   switch (f.depthFunc) {
     case GL_NEVER: early.compare = raster::DepthCompare::Never; break;
     case GL_LESS: early.compare = raster::DepthCompare::Less; break;

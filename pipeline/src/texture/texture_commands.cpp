@@ -393,6 +393,7 @@ void copyTexImage(Context& ctx, int dimensions, GLenum target, GLint level, GLen
   // textures only (3.8.1).
   const bool depthImage = isDepthInternalFormat(format);
   if (depthImage && !takesDepthImages(target)) return recordError(ctx, GL_INVALID_OPERATION);
+  if (depthImage && !ctx.buffers.depth) return recordError(ctx, GL_INVALID_OPERATION);
   // No colour buffer to read from after glReadBuffer(GL_NONE), as for glReadPixels (Mesa too).
   if (!depthImage && !readsColor(ctx.pixelTransfer.readBuffer))
     return recordError(ctx, GL_INVALID_OPERATION);
@@ -458,6 +459,7 @@ void copyTexSubImage(Context& ctx, int dimensions, GLenum target, GLint level, G
     return recordError(ctx, GL_INVALID_VALUE);
   if (!image.isDepth() && !readsColor(ctx.pixelTransfer.readBuffer))
     return recordError(ctx, GL_INVALID_OPERATION);
+  if (image.isDepth() && !ctx.buffers.depth) return recordError(ctx, GL_INVALID_OPERATION);
   // A border slice of a 3D image is not stored.
   if (zoffset < 0 || zoffset >= image.depth) return;
   for (int j = 0; j < height; ++j) {

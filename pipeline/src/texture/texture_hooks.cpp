@@ -145,10 +145,9 @@ TexCoordDerivatives texCoordDerivatives(const raster::FragmentBatch& batch, cons
 const TextureObject* bumpHeightMap(const Context& ctx) {
   const BumpMapState& b = ctx.texture.bumpMap;
   if (!b.enabled || b.texture == 0) return nullptr;
-  const auto it = ctx.texture.objects.find(b.texture);
-  if (it == ctx.texture.objects.end()) return nullptr;
-  const TextureObject* t = it->second.get();
-  return t->target == GL_TEXTURE_2D && t->complete ? t : nullptr;
+  const std::shared_ptr<TextureObject> t = ctx.texture.names->find(b.texture);
+  if (!t) return nullptr;
+  return t->target == GL_TEXTURE_2D && t->complete ? t.get() : nullptr;
 }
 
 }  // namespace

@@ -5,6 +5,8 @@
 
 #include <GL/gl.h>
 
+#include <memory>
+
 #include "texture/texture_image.h"
 
 namespace glass::gl {
@@ -43,7 +45,9 @@ inline int cubeFaceOf(GLenum target) {
              : -1;
 }
 
-struct TextureObject {
+// Named objects are made by TextureNames, always in a shared_ptr; the default objects (name 0)
+// are members of TextureState.
+struct TextureObject : std::enable_shared_from_this<TextureObject> {
   GLuint name = 0;
   // GL_TEXTURE_1D, GL_TEXTURE_2D, GL_TEXTURE_3D or GL_TEXTURE_CUBE_MAP once first bound; 0
   // before (spec 3.8.12: a name becomes a texture of the target it is first bound to).

@@ -12,11 +12,6 @@
 namespace glass::gl {
 namespace {
 
-TextureObject* findTexture(Context& ctx, GLuint name) {
-  auto it = ctx.texture.objects.find(name);
-  return it == ctx.texture.objects.end() ? nullptr : it->second.get();
-}
-
 void bindTexture(Context& ctx, GLenum target, GLuint name) {
   if (rejectInsideBeginEnd(ctx)) return;
   TextureState& t = ctx.texture;
@@ -34,38 +29,28 @@ void bindTexture(Context& ctx, GLenum target, GLuint name) {
                                          : &t.defaultCube;
     return;
   }
-  TextureObject* texture = findTexture(ctx, name);
-  if (texture == nullptr) {
-    // First binding: the name becomes a texture of this target (spec 3.8.12).
-    auto created = std::make_unique<TextureObject>();
-    created->name = name;
-    created->target = target;
-    texture = created.get();
-    t.objects.emplace(name, std::move(created));
-    t.reservedNames.erase(name);
-  } else if (texture->target != target) {
-    return recordError(ctx, GL_INVALID_OPERATION);
-  }
-  *binding = texture;
+  const std::shared_ptr<TextureObject> texture = t.names->findOrCreate(name, target);
+  if (texture->target != target) return recordError(ctx, GL_INVALID_OPERATION);
+  *binding = texture.get();
+  t.holdBindings();
 }
 
 void deleteTextures(Context& ctx, const std::vector<GLuint>& names) {
   TextureState& t = ctx.texture;
   for (GLuint name : names) {
     if (name == 0) continue;
-    t.reservedNames.erase(name);
-    auto it = t.objects.find(name);
-    if (it == t.objects.end()) continue;
+    const std::shared_ptr<TextureObject> removed = t.names->remove(name);
+    if (!removed) continue;
     // Spec 3.8.12: deleting a bound texture binds the default texture in its place, in every
-    // texture unit it is bound to.
+    // texture unit it is bound to (of this context: texture_names.h says what other contexts see).
     for (TextureUnit& u : t.units) {
-      if (u.bound1D == it->second.get()) u.bound1D = &t.default1D;
-      if (u.bound2D == it->second.get()) u.bound2D = &t.default2D;
-      if (u.bound3D == it->second.get()) u.bound3D = &t.default3D;
-      if (u.boundCube == it->second.get()) u.boundCube = &t.defaultCube;
+      if (u.bound1D == removed.get()) u.bound1D = &t.default1D;
+      if (u.bound2D == removed.get()) u.bound2D = &t.default2D;
+      if (u.bound3D == removed.get()) u.bound3D = &t.default3D;
+      if (u.boundCube == removed.get()) u.boundCube = &t.defaultCube;
     }
-    t.objects.erase(it);
   }
+  t.holdBindings();
 }
 
 }  // namespace
@@ -77,14 +62,7 @@ void GLAPIENTRY glGenTextures(GLsizei n, GLuint* textures) {
   glass::gl::executeNow([=](Context& ctx) {
     if (glass::gl::rejectInsideBeginEnd(ctx)) return;
     if (n < 0) return glass::gl::recordError(ctx, GL_INVALID_VALUE);
-    glass::gl::TextureState& t = ctx.texture;
-    for (GLsizei i = 0; i < n; ++i) {
-      GLuint name = t.nextName;
-      while (name == 0 || t.objects.count(name) != 0 || t.reservedNames.count(name) != 0) ++name;
-      t.reservedNames.insert(name);
-      t.nextName = name + 1;
-      textures[i] = name;
-    }
+    ctx.texture.names->generate(n, textures);
   });
 }
 
@@ -103,7 +81,7 @@ void GLAPIENTRY glBindTexture(GLenum target, GLuint texture) {
 GLboolean GLAPIENTRY glIsTexture(GLuint texture) {
   return glass::gl::queryNow(GLboolean(GL_FALSE), [=](Context& ctx) -> GLboolean {
     if (glass::gl::rejectInsideBeginEnd(ctx)) return GL_FALSE;
-    return texture != 0 && ctx.texture.objects.count(texture) != 0 ? GL_TRUE : GL_FALSE;
+    return ctx.texture.names->isTexture(texture) ? GL_TRUE : GL_FALSE;
   });
 }
 
@@ -115,7 +93,7 @@ GLboolean GLAPIENTRY glAreTexturesResident(GLsizei n, const GLuint* textures, GL
       return GL_FALSE;
     }
     for (GLsizei i = 0; i < n; ++i) {
-      if (textures[i] == 0 || ctx.texture.objects.count(textures[i]) == 0) {
+      if (!ctx.texture.names->isTexture(textures[i])) {
         glass::gl::recordError(ctx, GL_INVALID_VALUE);
         return GL_FALSE;
       }
@@ -140,7 +118,7 @@ void GLAPIENTRY glPrioritizeTextures(GLsizei n, const GLuint* textures, const GL
   glass::gl::compileOrExecute([names, values](Context& ctx) {
     if (glass::gl::rejectInsideBeginEnd(ctx)) return;
     for (size_t i = 0; i < names.size(); ++i) {
-      if (glass::gl::TextureObject* t = glass::gl::findTexture(ctx, names[i]))
+      if (const auto t = ctx.texture.names->find(names[i]))
         t->params.priority = std::clamp(values[i], 0.0f, 1.0f);
     }
   });

@@ -16,6 +16,17 @@ TextureState::TextureState() {
   }
 }
 
+void TextureState::holdBindings() {
+  std::vector<std::shared_ptr<TextureObject>> held;
+  held.reserve(static_cast<size_t>(kTextureUnitCount) * 4);
+  for (const TextureUnit& u : units) {
+    for (TextureObject* bound : {u.bound1D, u.bound2D, u.bound3D, u.boundCube}) {
+      if (bound->name != 0) held.push_back(bound->shared_from_this());
+    }
+  }
+  heldBindings_ = std::move(held);
+}
+
 const TextureObject* TextureUnit::activeTexture() const {
   const TextureObject* texture = enabledCube ? boundCube
                                 : enabled3D   ? bound3D

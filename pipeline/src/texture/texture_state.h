@@ -8,12 +8,12 @@
 #include <GL/gl.h>
 
 #include <memory>
-#include <unordered_map>
-#include <unordered_set>
+#include <vector>
 
 #include "texture/bump_map_state.h"
 #include "texture/texgen.h"
 #include "texture/texture_environment.h"
+#include "texture/texture_names.h"
 #include "texture/texture_object.h"
 #include "texture/texture_units.h"
 
@@ -51,12 +51,8 @@ struct TextureState {
   TextureObject default2D;
   TextureObject default3D;
   TextureObject defaultCube;
-  // Named objects (glBindTexture creates them); pointers stay valid until glDeleteTextures.
-  std::unordered_map<GLuint, std::unique_ptr<TextureObject>> objects;
-  // Names returned by glGenTextures and not yet bound: in use, but not yet textures (glIsTexture
-  // is false for them, spec 3.8.12).
-  std::unordered_set<GLuint> reservedNames;
-  GLuint nextName = 1;  // where glGenTextures starts looking
+  // Named objects (glBindTexture creates them), shared with the contexts this one shares them with.
+  std::shared_ptr<TextureNames> names = std::make_shared<TextureNames>();
 
   // Proxy textures (spec 3.8.11): only the size and format of each level are kept.
   TextureImage proxy1D[kMaxTextureLevels];
@@ -72,6 +68,13 @@ struct TextureState {
 
   TextureUnit& unit() { return units[activeUnit]; }
   const TextureUnit& unit() const { return units[activeUnit]; }
+
+  // Keeps every named texture the units are bound to alive (texture_names.h) and lets go of the
+  // others; called after every change of bindings.
+  void holdBindings();
+
+ private:
+  std::vector<std::shared_ptr<TextureObject>> heldBindings_;
 };
 
 }  // namespace glass::gl
