@@ -173,7 +173,7 @@ teaching_views)
   # many pixels of count 1 (dark blue) as the program's picture has white ones.
   "$bin/glut_listing5_offscreen" 4 offscreen.png
   probe offscreen.png count 255 255 255 20000 200000
-  for view in overdraw depth wireframe; do
+  for view in overdraw depth wireframe normals mipmap; do
     GLASS_VIEW=$view run glut_listing5 "key space
 key space
 key space
@@ -190,6 +190,27 @@ key space
   probe depth.png count 0 0 0 20000 200000 count 255 255 255 20000 250000
   # The wireframe: edges only, far fewer pixels than the filled triangles.
   probe wireframe.png count 255 255 255 2000 20000
+  # Listing 5 gives no normal: every triangle has the current normal (0, 0, 1), facing the eye,
+  # shown as (128, 128, 255); it has no texture: its fragments are the mipmap view's grey.
+  probe normals.png count 128 128 255 20000 200000 count 0 0 0 20000 250000
+  probe mipmap.png count 96 96 96 20000 200000 count 0 0 0 20000 250000
+  # GLASS_STATS: each glFlush of the single-buffered window ends a frame; step 4 (the last) draws
+  # 3^4 = 81 triangles of 3 vertices, in the plane z = 0 that the depth test never rejects.
+  GLASS_STATS=1 run glut_listing5 "key space
+key space
+key space
+key space
+"
+  [ "$status" -eq 0 ] || fail "listing5 with GLASS_STATS exited with $status"
+  expect_text err.txt "glass stats, frame 4:"
+  expect_text err.txt "  vertices                        243"
+  expect_text err.txt "  primitives                       81   (0 points, 0 lines, 81 triangles)"
+  expect_text err.txt "  depth test failed                 0"
+  # GLASS_TRACE_VERTEX: vertex 0 of frame 0 is the first corner (1, 0, 0) of step 0's triangle.
+  GLASS_TRACE_VERTEX=0 run glut_listing5 ""
+  [ "$status" -eq 0 ] || fail "listing5 with GLASS_TRACE_VERTEX exited with $status"
+  expect_text err.txt "glass trace: vertex 0 of frame 0"
+  expect_text err.txt "  object  (   1.000000,    0.000000,    0.000000,    1.000000)   as given"
   # Unset again, the program's own picture.
   run glut_listing5 "key space
 key space

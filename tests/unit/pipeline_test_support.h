@@ -7,6 +7,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <cstdlib>
 #include <vector>
 
 namespace glass::test {
@@ -69,5 +70,18 @@ inline void pixelProjection(int width, int height) {
 
 // Reads and clears the GL error flag.
 inline GLenum takeError() { return glGetError(); }
+
+// An environment variable set for the lifetime of the object (the teaching tools read theirs
+// when a context is created), unset afterwards.
+class ScopedEnvironment {
+ public:
+  ScopedEnvironment(const char* name, const char* value) : name_(name) { setenv(name, value, 1); }
+  ~ScopedEnvironment() { unsetenv(name_); }
+  ScopedEnvironment(const ScopedEnvironment&) = delete;
+  ScopedEnvironment& operator=(const ScopedEnvironment&) = delete;
+
+ private:
+  const char* name_;
+};
 
 }  // namespace glass::test

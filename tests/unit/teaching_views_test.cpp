@@ -18,12 +18,8 @@
 namespace {
 
 // GLASS_VIEW for the contexts created while the object lives.
-class ScopedView {
- public:
-  explicit ScopedView(const char* name) { setenv("GLASS_VIEW", name, 1); }
-  ~ScopedView() { unsetenv("GLASS_VIEW"); }
-  ScopedView(const ScopedView&) = delete;
-  ScopedView& operator=(const ScopedView&) = delete;
+struct ScopedView : glass::test::ScopedEnvironment {
+  explicit ScopedView(const char* name) : ScopedEnvironment("GLASS_VIEW", name) {}
 };
 
 const unsigned char* pixel(const unsigned char* rgba, int width, int x, int y) {
@@ -179,7 +175,7 @@ TEST_CASE("A view leaves the colour buffer as the program drew it; unset, nothin
     // Unset, the readers get the colour buffer itself.
     CHECK(std::memcmp(glassGetColorBuffer(context.get()), plain.data(), plain.size()) == 0);
   }
-  for (const char* name : {"depth", "overdraw", "wireframe"}) {
+  for (const char* name : {"depth", "overdraw", "wireframe", "normals", "mipmap"}) {
     CAPTURE(name);
     ScopedView view(name);
     glass::test::ScopedContext context(48, 40);
@@ -187,6 +183,175 @@ TEST_CASE("A view leaves the colour buffer as the program drew it; unset, nothin
     viewed = glass::test::readFramebuffer(48, 40);
     CHECK(viewed == plain);
     CHECK(std::memcmp(glassGetColorBuffer(context.get()), plain.data(), plain.size()) != 0);
+  }
+}
+
+namespace {
+
+// The normals view's colour of an eye-space normal: 255 (n / |n| + 1) / 2, computed here in
+// double precision from the definition in docs/teaching.md.
+std::array<int, 3> normalColor(double x, double y, double z) {
+  const double length = std::sqrt(x * x + y * y + z * z);
+  return {static_cast<int>(std::lround(127.5 * (x / length + 1.0))),
+          static_cast<int>(std::lround(127.5 * (y / length + 1.0))),
+          static_cast<int>(std::lround(127.5 * (z / length + 1.0)))};
+}
+
+void checkColor(const unsigned char* p, std::array<int, 3> expected, int tolerance) {
+  CHECK(std::abs(p[0] - expected[0]) <= tolerance);
+  CHECK(std::abs(p[1] - expected[1]) <= tolerance);
+  CHECK(std::abs(p[2] - expected[2]) <= tolerance);
+  CHECK(p[3] == 255);
+}
+
+}  // namespace
+
+TEST_CASE("GLASS_VIEW=normals shows the eye-space normal of the surface each pixel shows") {
+  ScopedView view("normals");
+  glass::test::ScopedContext context(64, 64);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  glEnable(GL_DEPTH_TEST);
+  // Quadrant x < 32, y < 32: normal (0, 0, 1), facing the eye.
+  glNormal3f(0.0f, 0.0f, 1.0f);
+  drawQuadNdc(-1.0f, -1.0f, 0.0f, 0.0f, 0.0f, 0.0f);
+  // Quadrant x >= 32, y < 32: the normal (1, 0, 0) under a modelview rotation of 90 degrees about
+  // z is (0, 1, 0) in eye space (n_e = n_o M^-1); the quad is drawn rotated to cover the quadrant.
+  glMatrixMode(GL_MODELVIEW);
+  glPushMatrix();
+  // A quarter turn about z, (x, y) -> (-y, x), written exactly (glRotatef's cos 90 is not 0).
+  const GLfloat quarterTurn[16] = {0, 1, 0, 0, -1, 0, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+  glMultMatrixf(quarterTurn);
+  glNormal3f(1.0f, 0.0f, 0.0f);
+  drawQuadNdc(-1.0f, -1.0f, 0.0f, 0.0f, 0.0f, 0.0f);
+  glPopMatrix();
+  // Quadrant x < 32, y >= 32: (0, -3, 0), not unit length and GL_NORMALIZE off: shown as (0, -1, 0).
+  glNormal3f(0.0f, -3.0f, 0.0f);
+  drawQuadNdc(-1.0f, 0.0f, 0.0f, 1.0f, 0.0f, 0.0f);
+  // Quadrant x >= 32, y >= 32: first a near quad with normal (-1, 0, 0), then a far one with
+  // (0, 0, -1) that fails the depth test: the pixel shows the near quad's normal.
+  glNormal3f(-1.0f, 0.0f, 0.0f);
+  drawQuadNdc(0.0f, 0.0f, 1.0f, 1.0f, -0.5f, -0.5f);
+  glNormal3f(0.0f, 0.0f, -1.0f);
+  drawQuadNdc(0.0f, 0.0f, 1.0f, 1.0f, 0.5f, 0.5f);
+
+  const unsigned char* shown = glassGetColorBuffer(context.get());
+  const std::array<int, 3> facing = {128, 128, 255}, up = {128, 255, 128}, down = {128, 0, 128},
+                           left = {0, 128, 128};
+  CHECK(normalColor(0, 0, 1) == facing);
+  for (int y = 0; y < 64; ++y) {
+    for (int x = 0; x < 64; ++x) {
+      CAPTURE(x);
+      CAPTURE(y);
+      const std::array<int, 3> expected = y < 32 ? (x < 32 ? facing : up) : (x < 32 ? down : left);
+      checkColor(pixel(shown, 64, x, y), expected, 0);
+    }
+  }
+  // A new frame starts black: no fragment has painted a pixel yet.
+  glClear(GL_COLOR_BUFFER_BIT);
+  checkColor(pixel(glassGetColorBuffer(context.get()), 64, 10, 10), {0, 0, 0}, 0);
+}
+
+TEST_CASE("GLASS_VIEW=normals interpolates the normal across a triangle, then normalizes it") {
+  ScopedView view("normals");
+  glass::test::ScopedContext context(64, 8);
+  glClear(GL_COLOR_BUFFER_BIT);
+  // Normals (-1, 0, 1) on the left edge and (1, 0, 1) on the right: at the centre of column x the
+  // interpolated normal is (2 t - 1, 0, 1), t = (x + 0.5) / 64 (orthographic: w = 1, so
+  // perspective-correct interpolation is linear).
+  glBegin(GL_QUADS);
+  glNormal3f(-1.0f, 0.0f, 1.0f);
+  glVertex2f(-1.0f, -1.0f);
+  glNormal3f(1.0f, 0.0f, 1.0f);
+  glVertex2f(1.0f, -1.0f);
+  glVertex2f(1.0f, 1.0f);
+  glNormal3f(-1.0f, 0.0f, 1.0f);
+  glVertex2f(-1.0f, 1.0f);
+  glEnd();
+  const unsigned char* shown = glassGetColorBuffer(context.get());
+  for (int x = 0; x < 64; ++x) {
+    const double nx = 2.0 * (x + 0.5) / 64.0 - 1.0;
+    for (int y = 0; y < 8; ++y) checkColor(pixel(shown, 64, x, y), normalColor(nx, 0.0, 1.0), 1);
+  }
+  // The program's own picture is its colours, here the current colour white.
+  CHECK(glass::test::pixelAt(5, 5) == glass::test::Rgba{255, 255, 255, 255});
+}
+
+namespace {
+
+// A 64 x 64 RGBA texture with all seven mipmap levels, level k filled with one grey.
+void loadMipmappedTexture(GLenum minFilter) {
+  GLuint texture = 0;
+  glGenTextures(1, &texture);
+  glBindTexture(GL_TEXTURE_2D, texture);
+  for (int level = 0, size = 64; size >= 1; ++level, size /= 2) {
+    std::vector<unsigned char> texels(static_cast<std::size_t>(size) * size * 4,
+                                      static_cast<unsigned char>(200 - 20 * level));
+    glTexImage2D(GL_TEXTURE_2D, level, GL_RGBA, size, size, 0, GL_RGBA, GL_UNSIGNED_BYTE, texels.data());
+  }
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, static_cast<GLint>(minFilter));
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glEnable(GL_TEXTURE_2D);
+}
+
+// A strip of the window, columns 16k to 16k + 15 of a 64 x 64 window, whose texture coordinates
+// make one pixel cover `scale` texels of the 64 x 64 base image in both directions: rho = scale
+// (spec 3.8.8, equation 3.21), so lambda = log2(scale).
+void drawStripWithScale(int k, double scale) {
+  const float x0 = -1.0f + 0.5f * static_cast<float>(k), x1 = x0 + 0.5f;
+  const auto sRange = static_cast<float>(scale * 16.0 / 64.0), tRange = static_cast<float>(scale);
+  glBegin(GL_QUADS);
+  glTexCoord2f(0.0f, 0.0f);
+  glVertex2f(x0, -1.0f);
+  glTexCoord2f(sRange, 0.0f);
+  glVertex2f(x1, -1.0f);
+  glTexCoord2f(sRange, tRange);
+  glVertex2f(x1, 1.0f);
+  glTexCoord2f(0.0f, tRange);
+  glVertex2f(x0, 1.0f);
+  glEnd();
+}
+
+}  // namespace
+
+TEST_CASE("GLASS_VIEW=mipmap shows the level each pixel's lookup reads, one colour a level") {
+  ScopedView view("mipmap");
+  glass::test::ScopedContext context(64, 64);
+  glClear(GL_COLOR_BUFFER_BIT);
+  loadMipmappedTexture(GL_NEAREST_MIPMAP_NEAREST);
+  // Strips with rho = 1, 2, 4, 8: lambda = 0 is magnification (lambda <= c = 0, spec 3.8.9), the
+  // base level; lambda = 1, 2, 3 select level d = ceil(lambda + 1/2) - 1 = lambda (spec 3.8.8).
+  for (int k = 0; k < 4; ++k) drawStripWithScale(k, std::ldexp(1.0, k));
+  const unsigned char* shown = glassGetColorBuffer(context.get());
+  for (int y = 0; y < 64; ++y) {
+    for (int x = 0; x < 64; ++x) {
+      const auto expected = glass::geometry::mipmapScaleColor(x / 16);
+      checkColor(pixel(shown, 64, x, y), {expected[0], expected[1], expected[2]}, 0);
+    }
+  }
+  CHECK(glass::geometry::mipmapScaleColor(0) != glass::geometry::mipmapScaleColor(1));
+
+  // GL_LINEAR_MIPMAP_LINEAR mixes two levels: rho = 2^1.5 gives lambda = 1.5, half level 1 and
+  // half level 2, and the view mixes their colours the same way. rho = 2^3.25: a quarter of 4.
+  glClear(GL_COLOR_BUFFER_BIT);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+  drawStripWithScale(0, std::pow(2.0, 1.5));
+  drawStripWithScale(1, std::pow(2.0, 3.25));
+  // Untextured fragments are grey.
+  glDisable(GL_TEXTURE_2D);
+  drawStripWithScale(2, 1.0);
+  shown = glassGetColorBuffer(context.get());
+  auto mix = [](int a, int b, double w) {
+    const auto ca = glass::geometry::mipmapScaleColor(a), cb = glass::geometry::mipmapScaleColor(b);
+    std::array<int, 3> out{};
+    for (int c = 0; c < 3; ++c) out[c] = static_cast<int>(std::lround((1.0 - w) * ca[c] + w * cb[c]));
+    return out;
+  };
+  const auto grey = glass::geometry::kMipmapUntexturedColor;
+  for (int y = 0; y < 64; y += 7) {
+    checkColor(pixel(shown, 64, 5, y), mix(1, 2, 0.5), 2);
+    checkColor(pixel(shown, 64, 20, y), mix(3, 4, 0.25), 2);
+    checkColor(pixel(shown, 64, 40, y), {grey[0], grey[1], grey[2]}, 0);
+    checkColor(pixel(shown, 64, 60, y), {0, 0, 0}, 0);  // nothing drawn
   }
 }
 

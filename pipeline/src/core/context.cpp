@@ -2,7 +2,9 @@
 
 #include "primitive/draw_pipeline.h"
 #include "primitive/queued_drawing.h"
+#include "teaching/frame_statistics.h"
 #include "teaching/teaching_view.h"
+#include "teaching/vertex_trace.h"
 
 namespace glass::gl {
 
@@ -12,9 +14,15 @@ Context::Context(int width, int height)
   transform.viewport = Viewport{0, 0, width, height};
   fragment.scissor = ScissorBox{0, 0, width, height};
   attachTeachingViewFromEnvironment(*this);
+  attachFrameStatisticsFromEnvironment(*this);
+  attachVertexTraceFromEnvironment(*this);
 }
 
-Context::~Context() { detachTeachingView(*this); }
+Context::~Context() {
+  detachTeachingView(*this);
+  detachFrameStatistics(*this);
+  detachVertexTrace(*this);
+}
 
 void resizeFramebuffer(Context& ctx, int width, int height) {
   finishQueuedDrawing(ctx);

@@ -1,5 +1,7 @@
 #include "fragment/fragment_processor.h"
 
+#include <algorithm>
+#include <climits>
 #include <cstdint>
 #include <cstring>
 
@@ -69,9 +71,26 @@ void FragmentProcessor::prepare(Context& ctx, bool phong) {
   s_.allChannels = s_.colorMask[0] && s_.colorMask[1] && s_.colorMask[2] && s_.colorMask[3];
 
   s_.fragmentCounts = nullptr;
-  if (TeachingCanvas* canvas = teachingCanvasFor(ctx); canvas && !canvas->fragmentCounts.empty()) {
-    s_.fragmentCounts = canvas->fragmentCounts.data();
-    s_.fragmentCountsWidth = canvas->width;
+  s_.fragmentColors = nullptr;
+  if (TeachingCanvas* canvas = teachingCanvasFor(ctx)) {
+    if (!canvas->fragmentCounts.empty()) {
+      s_.fragmentCounts = canvas->fragmentCounts.data();
+      s_.fragmentCountsWidth = canvas->width;
+    }
+    if (!canvas->fragmentColors.empty()) {
+      s_.fragmentColors = canvas->fragmentColors.data();
+      s_.fragmentColorsWidth = canvas->width;
+      s_.fragmentColorsView = canvas->view;
+    }
+  }
+  s_.statistics = frameStatisticsFor(ctx);
+  s_.scissorTest = s_.statistics && f.scissorTest;
+  if (s_.scissorTest) {
+    const ScissorBox& box = f.scissor;
+    s_.scissorX0 = box.x;
+    s_.scissorY0 = box.y;
+    s_.scissorX1 = static_cast<int>(std::min<long long>(INT_MAX, static_cast<long long>(box.x) + box.width));
+    s_.scissorY1 = static_cast<int>(std::min<long long>(INT_MAX, static_cast<long long>(box.y) + box.height));
   }
   kernel_ = chooseKernel();
   kernelNeedsEarlyDepth_ = s_.depthTest && s_.depthFunc != GL_ALWAYS;
@@ -79,8 +98,8 @@ void FragmentProcessor::prepare(Context& ctx, bool phong) {
 
 BlockKernel FragmentProcessor::chooseKernel() const {
   if (!fastPathsEnabled()) return nullptr;
-  // The overdraw view counts fragments in the general path (teaching/teaching_hooks.h).
-  if (s_.fragmentCounts != nullptr) return nullptr;
+  // The overdraw, normals and mipmap views and GLASS_STATS see fragments in the general path (teaching/teaching_hooks.h).
+  if (s_.fragmentCounts != nullptr || s_.fragmentColors != nullptr || s_.statistics != nullptr) return nullptr;
   // What no kernel does (block_kernels.h).
   if (s_.phong || s_.colorSum || s_.fog || s_.alphaTest || s_.stencilTest || s_.blend ||
       s_.logicOp || (s_.writesColor && !s_.allChannels))
@@ -113,10 +132,18 @@ void FragmentProcessor::processFragments(const raster::FragmentBatch& batch,
   const Context& ctx = *ctx_;
   raster::Framebuffer& fb = ctx_->framebuffer;
   if (s_.fragmentCounts) countFragments(s_.fragmentCounts, s_.fragmentCountsWidth, batch);
+  FragmentTally tally;
+  const bool counting = s_.statistics != nullptr;
 
   for (int i = 0; i < batch.count; ++i) {
     const raster::Fragment& fragment = batch.fragments[i];
     const float* v = fragment.varyings;
+    if (s_.scissorTest && (fragment.x < s_.scissorX0 || fragment.x >= s_.scissorX1 ||
+                           fragment.y < s_.scissorY0 || fragment.y >= s_.scissorY1)) {
+      ++tally.scissorRejected;  // spec 4.1.2, made here only while counting
+      continue;
+    }
+    if (counting && s_.texturing) tally.texelReads += texelReadsOf(ctx, batch, i);
 
     // Chapter 3: the fragment's colour.
     float color[4] = {v[0], v[1], v[2], v[3]};
@@ -139,6 +166,7 @@ void FragmentProcessor::processFragments(const raster::FragmentBatch& batch,
     // values, so an alpha that rounds to the reference's 8-bit value is equal to it.
     if (s_.alphaTest &&
         !passesComparison(s_.alphaFunc, floatToColorByte(color[3]), s_.alphaRefByte)) {
+      ++tally.alphaRejected;
       continue;
     }
 
@@ -148,6 +176,7 @@ void FragmentProcessor::processFragments(const raster::FragmentBatch& batch,
       if (!passesComparison(s_.stencilFunc, s_.stencilRef & s_.stencilValueMask, stored)) {
         writeStencil(*stencil, applyStencilOperation(s_.stencilFail, *stencil, s_.stencilRef),
                      s_.stencilWriteMask);
+        ++tally.stencilRejected;
         continue;
       }
     }
@@ -158,6 +187,7 @@ void FragmentProcessor::processFragments(const raster::FragmentBatch& batch,
           writeStencil(*stencil, applyStencilOperation(s_.stencilDepthFail, *stencil, s_.stencilRef),
                        s_.stencilWriteMask);
         }
+        ++tally.depthRejected;
         continue;
       }
       if (s_.depthMask) *depth = fragment.depth;
@@ -167,7 +197,12 @@ void FragmentProcessor::processFragments(const raster::FragmentBatch& batch,
                    s_.stencilWriteMask);
     }
 
+    ++tally.passed;
     if (!s_.writesColor) continue;
+    if (s_.fragmentColors) {
+      paintFragmentView(ctx, s_.fragmentColorsView, s_.fragmentColors, s_.fragmentColorsWidth, batch, i,
+                        v + varying::kEyeNormal);
+    }
     uint8_t* pixel = fb.colorAt(fragment.x, fragment.y);
     if (s_.allChannels && !s_.blend && !s_.logicOp) {
       // The common case, one whole-pixel store. The four bytes are put together in a register:
@@ -195,6 +230,7 @@ void FragmentProcessor::processFragments(const raster::FragmentBatch& batch,
       }
     }
   }
+  if (counting) addFragmentTally(*s_.statistics, batch.count, tally);
 }
 
 }  // namespace glass::gl

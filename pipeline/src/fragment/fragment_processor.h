@@ -16,6 +16,8 @@
 #include "fragment/blending.h"
 #include "fragment/block_kernels.h"
 #include "glass/raster/fragment.h"
+#include "teaching/frame_statistics.h"
+#include "teaching/teaching_view.h"
 
 namespace glass::gl {
 
@@ -84,6 +86,15 @@ class FragmentProcessor final : public raster::FragmentSink {
     // GLASS_VIEW=overdraw (teaching/teaching_view.h): every fragment is counted on its pixel.
     std::uint16_t* fragmentCounts = nullptr;
     int fragmentCountsWidth = 0;
+    // GLASS_VIEW=normals or mipmap: every fragment written paints its pixel of the view.
+    std::uint8_t* fragmentColors = nullptr;
+    int fragmentColorsWidth = 0;
+    TeachingView fragmentColorsView = TeachingView::Normals;
+    // GLASS_STATS (teaching/frame_statistics.h): the fragments of each test are counted, and the
+    // scissor test is made here instead of by the rasterizer's bounds.
+    FrameStatistics* statistics = nullptr;
+    bool scissorTest = false;
+    int scissorX0 = 0, scissorY0 = 0, scissorX1 = 0, scissorY1 = 0;  // [x0, x1) x [y0, y1)
 
     bool operator==(const Settings&) const = default;
   };

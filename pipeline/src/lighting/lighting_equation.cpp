@@ -87,12 +87,14 @@ void eyePointFromHomogeneous(const float eyePosition[4], float point[3]) {
 
 void evaluateLighting(const LightingState& state, const Material& material,
                       const float eyePoint[3], const float normal[3], float primary[4],
-                      float secondary[4]) {
+                      float secondary[4], LightingTerms* trace) {
   // Emission plus the scene's ambient light: e_cm + a_cm * a_cs.
   float sum[3], specularSum[3] = {0.0f, 0.0f, 0.0f};
   for (int c = 0; c < 3; ++c) {
     sum[c] = material.emission[c] + material.ambient[c] * state.model.ambient[c];
+    if (trace) trace->base[c] = sum[c];
   }
+  if (trace) trace->lightCount = 0;
 
   // The unit vector from the point to the eye, VP_e: the eye sits at the origin of eye space
   // (local viewer), or infinitely far along +z (the default, cheaper and the same everywhere).
@@ -108,6 +110,15 @@ void evaluateLighting(const LightingState& state, const Material& material,
     if (!light.enabled) continue;
     const LightGeometry g = lightGeometry(light, eyePoint);
     const float scale = g.attenuation * g.spot;
+    LightingTerms::Light* traced = nullptr;
+    if (trace) {
+      traced = &trace->lights[trace->lightCount++];
+      *traced = LightingTerms::Light{};
+      traced->index = static_cast<int>(&light - state.lights);
+      traced->attenuation = g.attenuation;
+      traced->spot = g.spot;
+      traced->nDotL = dot3(normal, g.toLight);
+    }
     if (scale == 0.0f) continue;
 
     // Lambert's cosine n . VP_i, clamped at 0: light from behind the surface does not reach it.
@@ -129,7 +140,13 @@ void evaluateLighting(const LightingState& state, const Material& material,
           material.specular[c], light.ambient[c], light.diffuse[c], light.specular[c]);
       sum[c] += terms.lit;
       specularSum[c] += terms.specular;
+      if (traced) {
+        traced->ambient[c] = scale * material.ambient[c] * light.ambient[c];
+        traced->diffuse[c] = scale * diffuseFactor * material.diffuse[c] * light.diffuse[c];
+        traced->specular[c] = terms.specular;
+      }
     }
+    if (traced) traced->specularFactor = specularFactor;
   }
 
   // Single colour: everything in c_pri. Separate specular: the specular sum is c_sec (alpha 0).

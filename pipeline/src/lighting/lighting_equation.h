@@ -17,9 +17,22 @@ namespace glass::gl {
 // Writes the primary colour c_pri (RGB lit, alpha = the material's diffuse alpha) and the
 // secondary colour c_sec (the specular sum when GL_SEPARATE_SPECULAR_COLOR is set, else zero;
 // its alpha is always 0), each clamped to [0, 1].
+// trace, when given, receives each term's value (GLASS_TRACE_VERTEX prints them).
+struct LightingTerms {
+  float base[3] = {};  // e_cm + a_cm * a_cs
+  struct Light {
+    int index = 0;                     // GL_LIGHT0 + index
+    float attenuation = 0.0f, spot = 0.0f;
+    float nDotL = 0.0f;                // n . VP_i, before clamping
+    float specularFactor = 0.0f;       // f_i (n . h_i)^s_rm
+    float ambient[3] = {}, diffuse[3] = {}, specular[3] = {};  // each times att_i spot_i
+  };
+  Light lights[kMaxLights];
+  int lightCount = 0;                  // the enabled lights, in order
+};
 void evaluateLighting(const LightingState& state, const Material& material,
                       const float eyePoint[3], const float normal[3], float primary[4],
-                      float secondary[4]);
+                      float secondary[4], LightingTerms* trace = nullptr);
 
 // The point (x/w, y/w, z/w) of a homogeneous eye-space position. A position with w = 0 (only
 // reachable through glVertex4 with w = 0) is taken as the point (x, y, z).

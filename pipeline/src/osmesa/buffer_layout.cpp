@@ -103,13 +103,12 @@ std::size_t bytesPerPixel(GLenum format, GLenum type) {
   }
 }
 
-void storeColorBuffer(const raster::Framebuffer& framebuffer, const BufferLayout& layout,
-                      void* buffer) {
+void storeColorBuffer(const uint8_t* picture, const BufferLayout& layout, void* buffer) {
   auto* bytes = static_cast<unsigned char*>(buffer);
   const ComponentOrder order = componentOrder(layout.format);
   const std::size_t pixelBytes = bytesPerPixel(layout.format, layout.type);
   for (int row = 0; row < layout.height; ++row) {
-    const uint8_t* rgba = framebuffer.colorAt(0, row);
+    const uint8_t* rgba = picture + static_cast<std::size_t>(row) * static_cast<std::size_t>(layout.width) * 4;
     unsigned char* out = bytes + pixelOffset(layout, 0, row);
     if (layout.format == OSMESA_RGBA && layout.type == GL_UNSIGNED_BYTE) {
       std::memcpy(out, rgba, static_cast<std::size_t>(layout.width) * 4);

@@ -12,6 +12,7 @@
 #include <GL/gl.h>
 
 #include <cstddef>
+#include <cstdint>
 
 #include "glass/raster/framebuffer.h"
 
@@ -33,9 +34,9 @@ struct BufferLayout {
 // Bytes of one pixel of the layout's format and type.
 std::size_t bytesPerPixel(GLenum format, GLenum type);
 
-// framebuffer (of the layout's size) -> buffer, every pixel.
-void storeColorBuffer(const raster::Framebuffer& framebuffer, const BufferLayout& layout,
-                      void* buffer);
+// RGBA8 pixels of the layout's size, bottom row first (the framebuffer's colour buffer, or a
+// teaching view's picture) -> buffer, every pixel.
+void storeColorBuffer(const uint8_t* rgba, const BufferLayout& layout, void* buffer);
 // buffer -> framebuffer, every pixel, rounding to 8 bits; a format without alpha gives alpha 1.
 void loadColorBuffer(const void* buffer, const BufferLayout& layout,
                      raster::Framebuffer& framebuffer);

@@ -1,6 +1,7 @@
 #include "osmesa/osmesa_context.h"
 
 #include "primitive/queued_drawing.h"
+#include "teaching/teaching_view.h"
 
 osmesa_context::osmesa_context(GLenum bufferFormat) : gl(1, 1), format(bufferFormat) {
   layout.format = bufferFormat;
@@ -13,7 +14,10 @@ namespace glass::osmesa {
 void storeBuffers(osmesa_context& ctx) {
   if (!ctx.buffer) return;
   gl::finishQueuedDrawing(ctx.gl);
-  storeColorBuffer(ctx.gl.framebuffer, ctx.layout, ctx.buffer);
+  // With GLASS_VIEW the caller's buffer receives the view's picture, as glassGetColorBuffer
+  // does (teaching/teaching_view.h); the colour buffer keeps the program's colours.
+  const uint8_t* view = gl::presentTeachingView(ctx.gl);
+  storeColorBuffer(view ? view : ctx.gl.framebuffer.colorAt(0, 0), ctx.layout, ctx.buffer);
   if (!ctx.depthCopy.empty()) copyDepthBuffer(ctx);
 }
 

@@ -9,6 +9,8 @@
 //   - glFlush, glFinish, OSMesaGetColorBuffer, and OSMesaMakeCurrent to another buffer or to
 //     none store the colour buffer into it.
 // So at each of these points the buffer holds what drawing in place would have left there.
+// With GLASS_VIEW set, what is stored is the teaching view's picture instead (docs/teaching.md);
+// a later OSMesaMakeCurrent then loads that picture as the colour buffer, as for any buffer.
 #pragma once
 
 #include <GL/osmesa.h>

@@ -72,7 +72,9 @@ void DrawPipeline::prepare() {
 
   // The scissor test as rasterization bounds (spec 4.1.2).
   raster::PixelRect bounds{0, 0, ctx.framebuffer.width(), ctx.framebuffer.height()};
-  if (ctx.fragment.scissorTest) {
+  statistics_ = frameStatisticsFor(ctx);
+  // GLASS_STATS counts what the scissor test rejects: the fragment stage tests it instead.
+  if (ctx.fragment.scissorTest && !statistics_) {
     const ScissorBox& s = ctx.fragment.scissor;
     bounds.x0 = std::max(bounds.x0, s.x);
     bounds.y0 = std::max(bounds.y0, s.y);
@@ -91,7 +93,8 @@ void DrawPipeline::prepare() {
   triangleSettings_.earlyDepth = earlyDepthTest(ctx);
   teaching_ = teachingCanvasFor(ctx);
   // The overdraw view counts every fragment rasterized: none may be dropped before the count.
-  if (teaching_ && teaching_->view == TeachingView::Overdraw) triangleSettings_.earlyDepth = {};
+  // So does GLASS_STATS, whose depth test count is the fragment stage's.
+  if ((teaching_ && teaching_->view == TeachingView::Overdraw) || statistics_) triangleSettings_.earlyDepth = {};
 
   lineSettings_ = raster::LineSettings{};
   lineSettings_.bounds = bounds;

@@ -42,6 +42,7 @@
 #include "primitive/polygon_stipple.h"
 #include "primitive/viewport_transform.h"
 #include "select/primitive_recorder.h"
+#include "teaching/frame_statistics.h"
 #include "teaching/teaching_view.h"
 #include "vertex/pipeline_vertex.h"
 #include "vertex/vertex_stage.h"
@@ -71,6 +72,8 @@ class DrawPipeline {
   // the material while it is written: this waits for the threads if they may be.
   void beforeColorMaterialChange();
   const VertexStageSetup& vertexSetup() const { return vertex_; }
+  // GLASS_STATS's counts of the frame, or nullptr (teaching/frame_statistics.h).
+  FrameStatistics* statistics() const { return statistics_; }
   // The vertex lies outside a frustum plane or an enabled user clip plane.
   bool needsClipping(const PipelineVertex& v) const { return raster::outcode(v.clip, clip_) != 0; }
 
@@ -104,6 +107,9 @@ class DrawPipeline {
   // Clips a triangle to a polygon in window coordinates; returns its vertex count (0: nothing
   // visible). polygon_fill.cpp
   int clipToWindow(const raster::ClipVertex (&v)[3], raster::WindowVertex* out);
+  // GLASS_STATS: whether clipping cut a primitive with these outcodes or rejected it whole;
+  // `produced` is what the cut one became (primitive_statistics.cpp).
+  void countClipping(unsigned outcodeUnion, unsigned outcodeIntersection, int produced);
 
   Context& ctx_;
   VertexStageSetup vertex_;
@@ -120,6 +126,7 @@ class DrawPipeline {
   Matrix4 projectionInverse_;        // eye = P^-1 clip, for the points' eye distance
   bool flat_ = false;
   TeachingCanvas* teaching_ = nullptr;  // the context's GLASS_VIEW, if any (teaching/)
+  FrameStatistics* statistics_ = nullptr;  // GLASS_STATS, if set (teaching/)
   bool drawReadsContext_ = false;  // this draw's fragments read GL state by reference
   int stippleCounter_ = 0;
   PolygonStippleFilter polygonStipple_;

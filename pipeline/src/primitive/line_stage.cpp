@@ -13,6 +13,12 @@ void DrawPipeline::drawLine(const PipelineVertex& a, const PipelineVertex& b,
     lineReset_ = true;
   }
   raster::ClipVertex va = a.clip, vb = b.clip;
+  if (statistics_) {
+    ++statistics_->lines;
+    const unsigned oa = raster::outcode(va, clip_), ob = raster::outcode(vb, clip_);
+    raster::ClipVertex ca = va, cb = vb;
+    countClipping(oa | ob, oa & ob, (oa & ob) == 0 && ((oa | ob) == 0 || raster::clipLine(ca, cb, clip_)));
+  }
   if (flat_) {
     useProvokingColors(provoking, false, va);
     useProvokingColors(provoking, false, vb);

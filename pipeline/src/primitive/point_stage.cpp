@@ -10,7 +10,14 @@
 
 namespace glass::gl {
 
-void DrawPipeline::drawPoint(const PipelineVertex& v) { rasterizeVertexPoint(v.clip, 0.0); }
+void DrawPipeline::drawPoint(const PipelineVertex& v) {
+  if (statistics_) {
+    ++statistics_->points;
+    // A point is not cut: it is drawn whole or clipped away (spec 2.12).
+    if (!raster::pointInside(v.clip, clip_)) ++statistics_->clippedAway;
+  }
+  rasterizeVertexPoint(v.clip, 0.0);
+}
 
 float DrawPipeline::pointSizeAt(const raster::ClipVertex& v) const {
   const RasterState& r = ctx_.raster;

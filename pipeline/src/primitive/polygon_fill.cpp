@@ -36,6 +36,11 @@ double DrawPipeline::polygonDepthBias(const raster::ClipVertex (&v)[3], bool off
 
 void DrawPipeline::fillTriangle(const raster::ClipVertex (&v)[3], bool frontFacing) {
   const int count = clipToWindow(v, window_);
+  if (statistics_) {
+    const unsigned o0 = raster::outcode(v[0], clip_), o1 = raster::outcode(v[1], clip_),
+                   o2 = raster::outcode(v[2], clip_);
+    countClipping(o0 | o1 | o2, o0 & o1 & o2, count - 2);
+  }
   if (count < 3) return;
   if (recording_) return recorder_.polygon(window_, count);
 

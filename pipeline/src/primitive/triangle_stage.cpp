@@ -13,6 +13,10 @@ void DrawPipeline::drawTriangle(const PipelineVertex& a, const PipelineVertex& b
   const RasterState& r = ctx_.raster;
   const bool front =
       isFrontFacing(isCounterClockwise(a.clip, b.clip, c.clip), r.frontFace);
+  if (statistics_) {
+    ++statistics_->triangles;
+    if (isCulled(r, front)) ++statistics_->culled;
+  }
   if (isCulled(r, front)) return;
 
   raster::ClipVertex v[3] = {a.clip, b.clip, c.clip};

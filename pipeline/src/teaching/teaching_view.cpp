@@ -1,36 +1,30 @@
 #include "teaching/teaching_view.h"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <memory>
-#include <mutex>
-#include <unordered_map>
 
 #include "core/context.h"
 #include "glass/geometry/teaching_scales.h"
 #include "glass/raster/fragment.h"
+#include "teaching/frame_statistics.h"
+#include "teaching/per_context_table.h"
+#include "teaching/vertex_trace.h"
 
 namespace glass::gl {
 namespace {
 
-// The canvases live beside the contexts, not in them, so that a context without a view carries
-// nothing and the Context type stays as it is. attachedCanvases lets the per-draw lookup skip
-// the lock in the common case where no context has a view.
-std::mutex canvasesLock;
-std::unordered_map<const Context*, std::unique_ptr<TeachingCanvas>>& canvases() {
-  static std::unordered_map<const Context*, std::unique_ptr<TeachingCanvas>> map;
-  return map;
+PerContextTable<TeachingCanvas>& canvases() {
+  static PerContextTable<TeachingCanvas> table;
+  return table;
 }
-std::atomic<int> attachedCanvases{0};
 
-TeachingCanvas* findCanvas(const Context& ctx) {
-  if (attachedCanvases.load(std::memory_order_acquire) == 0) return nullptr;
-  std::lock_guard<std::mutex> lock(canvasesLock);
-  auto found = canvases().find(&ctx);
-  return found == canvases().end() ? nullptr : found->second.get();
+TeachingCanvas* findCanvas(const Context& ctx) { return canvases().find(ctx); }
+
+bool paintsFragments(TeachingView view) {
+  return view == TeachingView::Normals || view == TeachingView::Mipmap;
 }
 
 void sizeCanvas(TeachingCanvas& canvas, int width, int height) {
@@ -40,6 +34,7 @@ void sizeCanvas(TeachingCanvas& canvas, int width, int height) {
   canvas.height = height;
   canvas.fragmentCounts.assign(canvas.view == TeachingView::Overdraw ? pixels : 0, 0);
   canvas.edges.assign(canvas.view == TeachingView::Wireframe ? pixels : 0, 0);
+  canvas.fragmentColors.assign(paintsFragments(canvas.view) ? pixels * 4 : 0, 0);
   canvas.shown.assign(pixels * 4, 0);
 }
 
@@ -103,12 +98,44 @@ void showWireframe(TeachingCanvas& canvas) {
   }
 }
 
+// Normals and mipmap: the fragments painted the picture; what none painted is black.
+void showFragmentColors(TeachingCanvas& canvas) {
+  for (std::size_t i = 0; i < canvas.fragmentColors.size(); i += 4) {
+    const std::uint8_t* c = &canvas.fragmentColors[i];
+    putPixel(&canvas.shown[i], c[0], c[1], c[2]);
+  }
+}
+
+void printNormalsLegend() {
+  static thread_local bool printed = false;
+  if (printed) return;
+  printed = true;
+  std::fprintf(stderr, "glass view normals: the eye-space normal n, normalized, as the colour 255 (n + 1) / 2: "
+               "+x red, +y green, +z (towards the eye) blue, so a face turned to the eye is (128, 128, 255); "
+               "nothing drawn black\n");
+}
+
+void printMipmapLegend() {
+  static thread_local bool printed = false;
+  if (printed) return;
+  printed = true;
+  std::fprintf(stderr, "glass view mipmap: level");
+  for (int level = 0; level + 1 < geometry::kMipmapScaleSteps; ++level) {
+    std::fprintf(stderr, " %d %s,", level, geometry::mipmapScaleName(level));
+  }
+  std::fprintf(stderr, " %d or more %s;", geometry::kMipmapScaleSteps - 1,
+               geometry::mipmapScaleName(geometry::kMipmapScaleSteps - 1));
+  std::fprintf(stderr, " untextured grey, nothing drawn black\n");
+}
+
 }  // namespace
 
 std::optional<TeachingView> parseTeachingView(std::string_view name) {
   if (name == "depth") return TeachingView::Depth;
   if (name == "overdraw") return TeachingView::Overdraw;
   if (name == "wireframe") return TeachingView::Wireframe;
+  if (name == "normals") return TeachingView::Normals;
+  if (name == "mipmap") return TeachingView::Mipmap;
   return std::nullopt;
 }
 
@@ -117,6 +144,8 @@ const char* teachingViewName(TeachingView view) {
     case TeachingView::Depth: return "depth";
     case TeachingView::Overdraw: return "overdraw";
     case TeachingView::Wireframe: return "wireframe";
+    case TeachingView::Normals: return "normals";
+    case TeachingView::Mipmap: return "mipmap";
   }
   return "";
 }
@@ -126,7 +155,7 @@ void attachTeachingViewFromEnvironment(Context& ctx) {
   if (!name || !*name) return;
   const std::optional<TeachingView> view = parseTeachingView(name);
   if (!view) {
-    std::fprintf(stderr, "glass: GLASS_VIEW=%s is not a view (depth, overdraw, wireframe); "
+    std::fprintf(stderr, "glass: GLASS_VIEW=%s is not a view (depth, overdraw, wireframe, normals, mipmap); "
                  "showing the program's colours\n", name);
     return;
   }
@@ -137,10 +166,7 @@ void setTeachingView(Context& ctx, std::optional<TeachingView> view) {
   if (!view) return detachTeachingView(ctx);
   auto canvas = std::make_unique<TeachingCanvas>();
   canvas->view = *view;
-  std::lock_guard<std::mutex> lock(canvasesLock);
-  auto [slot, added] = canvases().try_emplace(&ctx);
-  slot->second = std::move(canvas);
-  if (added) attachedCanvases.fetch_add(1, std::memory_order_release);
+  canvases().attach(ctx, std::move(canvas));
 }
 
 std::optional<TeachingView> teachingViewOf(const Context& ctx) {
@@ -148,10 +174,10 @@ std::optional<TeachingView> teachingViewOf(const Context& ctx) {
   return canvas ? std::optional<TeachingView>(canvas->view) : std::nullopt;
 }
 
-void detachTeachingView(const Context& ctx) {
-  if (attachedCanvases.load(std::memory_order_acquire) == 0) return;
-  std::lock_guard<std::mutex> lock(canvasesLock);
-  if (canvases().erase(&ctx) > 0) attachedCanvases.fetch_sub(1, std::memory_order_release);
+void detachTeachingView(const Context& ctx) { canvases().detach(ctx); }
+
+bool teachingViewNeedsEyeNormals(const Context& ctx) {
+  return teachingViewOf(ctx) == TeachingView::Normals;
 }
 
 TeachingCanvas* teachingCanvasFor(Context& ctx) {
@@ -165,15 +191,27 @@ void restartTeachingFrame(Context& ctx) {
   if (!canvas) return;
   std::fill(canvas->fragmentCounts.begin(), canvas->fragmentCounts.end(), 0);
   std::fill(canvas->edges.begin(), canvas->edges.end(), 0);
+  std::fill(canvas->fragmentColors.begin(), canvas->fragmentColors.end(), 0);
 }
 
 const std::uint8_t* presentTeachingView(Context& ctx) {
+  // Presentation ends a frame (teaching/frame_statistics.h, vertex_trace.h).
+  reportFrameStatistics(ctx);
+  endTracedFrame(ctx);
   TeachingCanvas* canvas = teachingCanvasFor(ctx);
   if (!canvas) return nullptr;
   switch (canvas->view) {
     case TeachingView::Depth: showDepth(ctx.framebuffer, *canvas); break;
     case TeachingView::Overdraw: showOverdraw(*canvas); break;
     case TeachingView::Wireframe: showWireframe(*canvas); break;
+    case TeachingView::Normals:
+      showFragmentColors(*canvas);
+      printNormalsLegend();
+      break;
+    case TeachingView::Mipmap:
+      showFragmentColors(*canvas);
+      printMipmapLegend();
+      break;
   }
   return canvas->shown.data();
 }

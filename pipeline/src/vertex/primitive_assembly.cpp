@@ -76,6 +76,7 @@ void assembleVertex(Context& ctx, const PipelineVertex& v) {
   DrawPipeline& draw = *ctx.draw;
   PipelineVertex* w = pa.window;
   const int n = pa.vertexCount++;
+  if (FrameStatistics* statistics = draw.statistics()) ++statistics->vertices;
 
   switch (pa.mode) {
     case GL_POINTS:

@@ -6,6 +6,7 @@
 #include "core/context.h"
 #include "core/fast_paths.h"
 #include "lists/command_recording.h"
+#include "primitive/draw_pipeline.h"
 #include "vertex/array_draw.h"
 #include "vertex/attribute_conversion.h"
 #include "vertex/immediate_mode.h"
@@ -135,7 +136,8 @@ void drawArrayElements(Context& ctx, GLenum mode, const int* indices, int first,
   }
   beginCommand(ctx, mode);
   if (!ctx.assembly.active) return;
-  if (fastPathsEnabled() && layout.vertex) {
+  // A traced vertex goes the reference way, one vertex at a time (teaching/vertex_trace.h).
+  if (fastPathsEnabled() && layout.vertex && ctx.draw->vertexSetup().trace == nullptr) {
     drawArrayElementsBatched(ctx, layout, indices, first, count);
     endCommand(ctx);
     return;

@@ -210,7 +210,7 @@ void processBatch(Context& ctx, const ArrayElementLayout& layout, const VertexSt
       const float normal[3] = {lighting.normal[0][i], lighting.normal[1][i], lighting.normal[2][i]};
       computeTexCoords(ctx, s.textureUnits, object, eye, normal, varyings);
     }
-    if (s.phong) {
+    if (s.eyeNormalVarying) {
       const float w = eye[3] != 0.0f ? eye[3] : 1.0f;
       for (int c = 0; c < 3; ++c) {
         varyings[varying::kEyePosition + c] = eye[c] / w;

@@ -6,6 +6,8 @@
 #include "core/context.h"
 #include "fragment/fog_hooks.h"
 #include "lighting/lighting_hooks.h"
+#include "teaching/teaching_view.h"
+#include "teaching/vertex_trace.h"
 #include "texture/texture_hooks.h"
 #include "vertex/varyings.h"
 
@@ -28,6 +30,7 @@ void prepareVertexStage(const Context& ctx, VertexStageSetup& s) {
 
   const bool lighting = lightingEnabled(ctx);
   s.phong = lighting && ctx.raster.shadeModel == GL_PHONG_WIN;
+  s.eyeNormalVarying = s.phong || teachingViewNeedsEyeNormals(ctx);
   s.lightPerVertex = lighting && !s.phong;
   s.twoSided = s.lightPerVertex && twoSidedLighting(ctx);
   s.texturing = texturingEnabled(ctx);
@@ -41,7 +44,9 @@ void prepareVertexStage(const Context& ctx, VertexStageSetup& s) {
     for (int j = 0; j < 4; ++j) s.clipPlanes[i][j] = static_cast<float>(t.clipPlanes[i][j]);
   }
 
-  s.needEyeNormal = lighting || s.texturing;
+  s.trace = vertexTraceFor(ctx);
+  // A traced vertex shows its eye position and normal whether the state needs them or not.
+  s.needEyeNormal = lighting || s.texturing || s.eyeNormalVarying || s.trace;
   s.needEyePosition = s.needEyeNormal || s.fog || s.clipPlaneMask != 0;
   if (s.needEyeNormal) {
     invert(s.modelview, s.modelviewInverse);
@@ -60,7 +65,7 @@ void prepareVertexStage(const Context& ctx, VertexStageSetup& s) {
   }
   if (s.fog) count = varying::kCountFog;
   if (s.texturing) count = varying::kCountTexture;
-  if (s.phong) count = varying::kCountPhong;
+  if (s.eyeNormalVarying) count = varying::kCountPhong;
   if (s.texturing) count = std::max(count, varying::countForTextureUnits(s.textureUnits));
   s.varyingCount = count;
 }
@@ -118,7 +123,7 @@ void processVertex(const Context& ctx, const VertexStageSetup& s, const float ob
 
   if (s.fog) varyings[varying::kFogCoordinate] = fogCoordinate(ctx, eye);
   if (s.texturing) computeTexCoords(ctx, s.textureUnits, object, eye, normal, varyings);
-  if (s.phong) {
+  if (s.eyeNormalVarying) {
     const float w = eye[3] != 0.0f ? eye[3] : 1.0f;
     for (int i = 0; i < 3; ++i) {
       varyings[varying::kEyePosition + i] = eye[i] / w;
@@ -134,6 +139,7 @@ void processVertex(const Context& ctx, const VertexStageSetup& s, const float ob
       v.userClipDistance[i] = 0.0f;
     }
   }
+  if (s.trace) traceVertex(ctx, s, *s.trace, object, eye, normal, out);
 }
 
 }  // namespace glass::gl

@@ -13,6 +13,7 @@
 namespace glass::gl {
 
 struct Context;
+struct VertexTrace;
 
 struct VertexStageSetup {
   Matrix4 modelview;
@@ -24,6 +25,8 @@ struct VertexStageSetup {
   bool needEyeNormal = false;    // lighting, Phong or texturing
   bool lightPerVertex = false;   // GL_LIGHTING with a shade model other than GL_PHONG_WIN
   bool phong = false;            // GL_LIGHTING with GL_PHONG_WIN
+  bool eyeNormalVarying = false; // the eye position and normal go to the fragments: Phong, or
+                                 // GLASS_VIEW=normals (teaching/teaching_view.h)
   bool twoSided = false;         // back colours are computed
   bool texturing = false;
   int textureUnits = 0;          // texture coordinates are computed for units 0 .. textureUnits - 1
@@ -36,6 +39,8 @@ struct VertexStageSetup {
   float clipPlanes[raster::kMaxUserClipPlanes][4] = {};  // eye space
 
   int varyingCount = 4;          // the prefix of varying slots the rest of the pipeline uses
+
+  VertexTrace* trace = nullptr;  // GLASS_TRACE_VERTEX waits for a vertex (teaching/vertex_trace.h)
 };
 
 void prepareVertexStage(const Context& ctx, VertexStageSetup& setup);

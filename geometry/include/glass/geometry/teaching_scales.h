@@ -31,4 +31,30 @@ inline std::array<std::uint8_t, 3> overdrawScaleColor(int count) {
 // The number of counts the heat map tells apart (the last stands for that many or more).
 inline constexpr int kOverdrawScaleSteps = 9;
 
+// The mipmap view's colours: one per level, in rainbow order from the base image (level 0, red)
+// to the smallest, so that a receding floor shows bands; 9 or more is white.
+inline constexpr int kMipmapScaleSteps = 10;
+inline std::array<std::uint8_t, 3> mipmapScaleColor(int level) {
+  static constexpr std::array<std::uint8_t, 3> scale[kMipmapScaleSteps] = {
+      {255, 0, 0},     // 0 red
+      {255, 128, 0},   // 1 orange
+      {255, 255, 0},   // 2 yellow
+      {0, 200, 0},     // 3 green
+      {0, 220, 220},   // 4 cyan
+      {0, 64, 255},    // 5 blue
+      {140, 0, 255},   // 6 purple
+      {255, 0, 255},   // 7 magenta
+      {255, 160, 200}, // 8 pink
+      {255, 255, 255}, // 9 or more white
+  };
+  return scale[std::clamp(level, 0, kMipmapScaleSteps - 1)];
+}
+inline const char* mipmapScaleName(int level) {
+  static constexpr const char* names[kMipmapScaleSteps] = {
+      "red", "orange", "yellow", "green", "cyan", "blue", "purple", "magenta", "pink", "white"};
+  return names[std::clamp(level, 0, kMipmapScaleSteps - 1)];
+}
+// Fragments drawn without a texture.
+inline constexpr std::array<std::uint8_t, 3> kMipmapUntexturedColor = {96, 96, 96};
+
 }  // namespace glass::geometry
