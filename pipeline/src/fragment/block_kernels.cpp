@@ -11,19 +11,21 @@
 //             plane is the constant 1 (an orthographic view), q is exactly 1.0 and dividing by it
 //             changes no bit, so the division is skipped.
 //   colour    the same functions as the reference path on the same floats: texture_hooks.h's
-//             lookup and environment, then floatToColorByte and one store.
+//             lookup (through Sampler2D, which gives sampleTexture's bits) and environment, then
+//             floatToColorByte and one store.
 #include "fragment/block_kernels.h"
 
 #include <array>
 #include <bit>
 #include <cstring>
+#include <optional>
 
 #include "core/context.h"
 #include "fragment/color_conversion.h"
 #include "glass/raster/triangle.h"
 #include "texture/texture_environment.h"
 #include "texture/texture_hooks.h"
-#include "texture/texture_sampler.h"
+#include "texture/sampler_2d.h"
 #include "vertex/varyings.h"
 
 namespace glass::gl {
@@ -78,6 +80,14 @@ class BlockVaryings {
   }
 
   float value(int n, int i) const { return values_[n][i]; }
+  // Values of varying n at columns 4 * quarter .. 4 * quarter + 3 (any of them, once computed
+  // for the row; columns outside the row's run hold earlier or zero values, never read as
+  // pixels).
+  ColorLanes lanes(int n, int quarter) const {
+    ColorLanes result;
+    std::memcpy(&result, &values_[n][4 * quarter], sizeof result);
+    return result;
+  }
 
  private:
   const raster::AttributePlanes& planes_;
@@ -85,7 +95,7 @@ class BlockVaryings {
   bool unitQ_;
   double qColumn_[kSize];
   double pColumn_[kCount > 0 ? kCount : 1][kSize];
-  float values_[kCount > 0 ? kCount : 1][kSize];
+  float values_[kCount > 0 ? kCount : 1][kSize] = {};
 };
 
 // The per-block constants of texturing by singleTexture2D (texture_hooks.h), and one lambda per
@@ -101,7 +111,11 @@ class QuadTexturing {
         env_(ctx.texture.units[0].env),
         height_(ctx.framebuffer.height()),
         firstQuadRow_(quadRow(by + kSize - 1)) {
-    needsLambda_ = texture_ != nullptr && needsLevelOfDetail(*texture_);
+    if (texture_ != nullptr) {
+      sampler_.emplace(*texture_);
+      base_ = texture_->baseImage().base;
+      needsLambda_ = needsLevelOfDetail(*texture_);
+    }
     for (auto& row : known_) row.fill(false);
   }
 
@@ -117,11 +131,11 @@ class QuadTexturing {
             quadLevelOfDetail(ctx_, *texture_, varying::kTexCoord, env_.lodBias, planes_, x, y);
         known_[row][column] = true;
       }
-      sampleTexture(*texture_, sq, tq, lambda_[row][column], texel);
+      sampler_->sample(sq, tq, lambda_[row][column], texel);
     } else {
-      sampleTextureMagnified(*texture_, sq, tq, texel);
+      sampler_->sampleMagnified(sq, tq, texel);
     }
-    applyTextureEnvironment(env_.mode, texture_->baseImage().base, texel, env_.color, color);
+    applyTextureEnvironment(env_.mode, base_, texel, env_.color, color);
   }
 
  private:
@@ -131,6 +145,8 @@ class QuadTexturing {
   const raster::AttributePlanes& planes_;
   const TextureObject* texture_;
   const TextureEnvironment& env_;
+  std::optional<Sampler2D> sampler_;  // texture_'s lookups, prepared once per block
+  BaseFormat base_ = BaseFormat::RGBA;
   int height_, firstQuadRow_;
   bool needsLambda_ = false;
   std::array<std::array<bool, 4>, 5> known_;
@@ -158,19 +174,29 @@ struct TexturingStage<KernelTexturing::Single2D> {
   using Texturing = QuadTexturing;
 };
 
+// Stores words[i] as the 4 bytes at row + 4 i for each bit i of mask (a depth value or an RGBA8
+// pixel): a covered run without gaps (most rows) is one copy.
+void storeCoveredWords(void* row, const uint32_t* words, unsigned mask) {
+  auto* bytes = static_cast<uint8_t*>(row);
+  const int first = firstBit(mask), last = lastBit(mask);
+  if (mask >> first == (2u << (last - first)) - 1u) {
+    std::memcpy(bytes + 4 * first, words + first, 4 * static_cast<size_t>(last - first + 1));
+    return;
+  }
+  for (unsigned rest = mask; rest != 0; rest &= rest - 1) {
+    const int i = std::countr_zero(rest);
+    std::memcpy(bytes + 4 * i, words + i, 4);
+  }
+}
+
 template <bool kWriteDepth, bool kWriteColor, KernelTexturing kTexturing>
 void shadeBlock(Context& ctx, const raster::TriangleSetup& setup, const raster::CoveredBlock& block) {
   raster::Framebuffer& fb = ctx.framebuffer;
   const int bx = block.bx, by = block.by;
   if constexpr (kWriteDepth) {
     for (int j = 0; j < kSize; ++j) {
-      const unsigned mask = block.rowMask[j];
-      if (mask == 0) continue;
-      uint32_t* depth = fb.depthAt(bx, by + j);
-      for (unsigned rest = mask; rest != 0; rest &= rest - 1) {
-        const int i = std::countr_zero(rest);
-        depth[i] = block.depth[j][i];
-      }
+      if (block.rowMask[j] != 0)
+        storeCoveredWords(fb.depthAt(bx, by + j), block.depth[j], block.rowMask[j]);
     }
   }
   if constexpr (kWriteColor) {
@@ -180,20 +206,34 @@ void shadeBlock(Context& ctx, const raster::TriangleSetup& setup, const raster::
       const unsigned mask = block.rowMask[j];
       if (mask == 0) continue;
       varyings.computeRow(j, mask);
-      uint8_t* pixels = fb.colorAt(bx, by + j);
-      for (unsigned rest = mask; rest != 0; rest &= rest - 1) {
-        const int i = std::countr_zero(rest);
+      auto colorWord = [&](int i) {
         float color[4] = {varyings.value(0, i), varyings.value(1, i), varyings.value(2, i),
                           varyings.value(3, i)};
         if constexpr (kTexturing == KernelTexturing::Single2D) {
           texturing.apply(bx + i, by + j, varyings.value(4, i), varyings.value(5, i),
-                             varyings.value(6, i), color);
+                          varyings.value(6, i), color);
         }
-        const uint32_t word =
-            packColorBytes(floatToColorByte(color[0]), floatToColorByte(color[1]),
-                           floatToColorByte(color[2]), floatToColorByte(color[3]));
-        std::memcpy(pixels + 4 * i, &word, 4);
+        return packColorBytes(floatToColorByte(color[0]), floatToColorByte(color[1]),
+                              floatToColorByte(color[2]), floatToColorByte(color[3]));
+      };
+      uint32_t words[kSize];
+      if constexpr (kTexturing == KernelTexturing::None) {
+        // Four columns at a time, covered or not: the same conversion as colorWord's.
+        for (int quarter = 0; quarter < kSize / 4; ++quarter) {
+          const ColorWordLanes packed = packColorByteLanes(
+              floatToColorByteLanes(varyings.lanes(0, quarter)),
+              floatToColorByteLanes(varyings.lanes(1, quarter)),
+              floatToColorByteLanes(varyings.lanes(2, quarter)),
+              floatToColorByteLanes(varyings.lanes(3, quarter)));
+          std::memcpy(&words[4 * quarter], &packed, sizeof packed);
+        }
+      } else {
+        for (unsigned rest = mask; rest != 0; rest &= rest - 1) {
+          const int i = std::countr_zero(rest);
+          words[i] = colorWord(i);
+        }
       }
+      storeCoveredWords(fb.colorAt(bx, by + j), words, mask);
     }
   }
 }

@@ -16,6 +16,8 @@
 
 #include <GL/gl.h>
 
+#include <algorithm>
+
 #include "texture/texture_image.h"
 
 namespace glass::gl {
@@ -38,9 +40,63 @@ struct TextureEnvironment {
   float lodBias = 0.0f;  // glTexEnv(GL_TEXTURE_FILTER_CONTROL, GL_TEXTURE_LOD_BIAS)
 };
 
+// Whether a base format has colour (R, G, B) and alpha components (table 3.15).
+inline bool baseFormatHasColor(BaseFormat base) { return base != BaseFormat::Alpha; }
+
+inline bool baseFormatHasAlpha(BaseFormat base) {
+  return base == BaseFormat::Alpha || base == BaseFormat::LuminanceAlpha ||
+         base == BaseFormat::Intensity || base == BaseFormat::RGBA;
+}
+
 // Combines `texel` (in the layout of texture_image.h) into `color` (the incoming colour, RGBA in
-// [0, 1]) in place, for the modes REPLACE, MODULATE, DECAL, BLEND and ADD.
-void applyTextureEnvironment(GLenum mode, BaseFormat base, const float texel[4],
-                             const float envColor[4], float color[4]);
+// [0, 1]) in place, for the modes REPLACE, MODULATE, DECAL, BLEND and ADD. Inline: the fragment
+// kernels call it for every pixel.
+inline void applyTextureEnvironment(GLenum mode, BaseFormat base, const float texel[4],
+                                    const float envColor[4], float color[4]) {
+  // In the stored layout, luminance and intensity already sit in R, G and B (and intensity in A),
+  // so "Lt" and "It" of the tables are texel[0..2] and the colour rows read the same for every
+  // base format that has colour; only which components exist differs.
+  const bool c = baseFormatHasColor(base);
+  const bool a = baseFormatHasAlpha(base);
+  switch (mode) {
+    case GL_REPLACE:
+      if (c)
+        for (int k = 0; k < 3; ++k) color[k] = texel[k];
+      if (a) color[3] = texel[3];
+      break;
+    case GL_MODULATE:
+      if (c)
+        for (int k = 0; k < 3; ++k) color[k] *= texel[k];
+      if (a) color[3] *= texel[3];
+      break;
+    case GL_DECAL:
+      if (base == BaseFormat::RGB) {
+        for (int k = 0; k < 3; ++k) color[k] = texel[k];
+      } else if (base == BaseFormat::RGBA) {
+        for (int k = 0; k < 3; ++k) color[k] = color[k] * (1.0f - texel[3]) + texel[k] * texel[3];
+      }
+      break;
+    case GL_BLEND:
+      if (c)
+        for (int k = 0; k < 3; ++k) color[k] = color[k] * (1.0f - texel[k]) + envColor[k] * texel[k];
+      if (base == BaseFormat::Intensity) {
+        color[3] = color[3] * (1.0f - texel[3]) + envColor[3] * texel[3];
+      } else if (a) {
+        color[3] *= texel[3];
+      }
+      break;
+    case GL_ADD:
+      if (c)
+        for (int k = 0; k < 3; ++k) color[k] = std::min(color[k] + texel[k], 1.0f);
+      if (base == BaseFormat::Intensity) {
+        color[3] = std::min(color[3] + texel[3], 1.0f);
+      } else if (a) {
+        color[3] *= texel[3];
+      }
+      break;
+    default:
+      break;
+  }
+}
 
 }  // namespace glass::gl

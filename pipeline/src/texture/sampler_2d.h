@@ -1,0 +1,196 @@
+// A complete 2D colour texture prepared for the lookups of one draw (the fragment kernels of
+// fragment/block_kernels.h): sampleTexture and sampleTextureMagnified (texture_sampler.h) for
+// the case that dominates drawing, with every state check done once in the constructor instead
+// of once per lookup, and everything inline so that the kernel's loop makes no call.
+//
+// The result has the same bits as the reference sampler's: the same float operations in the same
+// order (texel coordinate, the LINEAR weights, the sum over four texels, the scale by 1/255, the
+// mix of two mipmap levels), the same index arithmetic (texel_addressing.h), and floorToInt in
+// place of std::floor, which gives the same value over the range the coordinates are kept in.
+// The unit test sampler_2d_matches_reference compares the two over filters, wrap modes, sizes
+// and coordinates, NaN and huge ones included.
+#pragma once
+
+#include <GL/gl.h>
+
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+
+#include "texture/texel_addressing.h"
+#include "texture/texture_lod.h"
+#include "texture/texture_object.h"
+
+namespace glass::gl {
+
+class Sampler2D {
+  // The four components of a texel as the four lanes of one vector (GCC and Clang vector
+  // extensions, which compile to the target's vector instructions or to scalar code): each lane
+  // computes exactly the reference's expression for its component, with one instruction for
+  // all four.
+  using TexelLanes = float __attribute__((vector_size(16)));
+  using IntLanes = int32_t __attribute__((vector_size(16)));
+  using ShortLanes = int16_t __attribute__((vector_size(16)));
+  using ByteLanes = uint8_t __attribute__((vector_size(16)));
+  static TexelLanes texelLanes(const uint8_t* texel) {
+    // The four bytes widened to int lanes by interleaving with zeros, bytes then 16-bit halves
+    // (the two unpack instructions of x86-64's SSE2), then converted to float (exact).
+    uint32_t word;
+    std::memcpy(&word, texel, sizeof word);
+    const IntLanes packed = {static_cast<int32_t>(word), 0, 0, 0};
+    ByteLanes bytes;
+    std::memcpy(&bytes, &packed, sizeof bytes);
+    const ByteLanes byteHalves = __builtin_shufflevector(bytes, ByteLanes{}, 0, 16, 1, 17, 2, 18, 3,
+                                                         19, 4, 20, 5, 21, 6, 22, 7, 23);
+    ShortLanes shorts;
+    std::memcpy(&shorts, &byteHalves, sizeof shorts);
+    const ShortLanes shortHalves = __builtin_shufflevector(shorts, ShortLanes{}, 0, 8, 1, 9, 2, 10, 3, 11);
+    IntLanes ints;
+    std::memcpy(&ints, &shortHalves, sizeof ints);
+    return __builtin_convertvector(ints, TexelLanes);
+  }
+  static void storeLanes(TexelLanes lanes, float out[4]) { std::memcpy(out, &lanes, sizeof lanes); }
+
+ public:
+  // `texture` is complete, its target GL_TEXTURE_2D, its images colour (not depth) images; it
+  // must outlive the sampler and not change while the sampler is used.
+  explicit Sampler2D(const TextureObject& texture)
+      : minFilter_(texture.params.minFilter),
+        wrapS_(texture.params.wrapS),
+        wrapT_(texture.params.wrapT),
+        base_(texture.params.baseLevel),
+        last_(texture.lastLevel),
+        switchOverPoint_(texture.sampling.switchOverPoint),
+        magnifyLinear_(texture.params.magFilter == GL_LINEAR),
+        linearWithinLevel_(minFilter_ == GL_LINEAR || minFilter_ == GL_LINEAR_MIPMAP_NEAREST ||
+                           minFilter_ == GL_LINEAR_MIPMAP_LINEAR),
+        mipmapped_(isMipmapFilter(minFilter_)) {
+    const int lastUsed = mipmapped_ ? last_ : base_;
+    for (int level = base_; level <= lastUsed; ++level) {
+      const TextureImage& image = texture.image(0, level);
+      const bool powerOfTwo = (image.width & (image.width - 1)) == 0 &&
+                              (image.height & (image.height - 1)) == 0;
+      levels_[level] = {image.texels.data(), image.width, image.height,
+                        static_cast<float>(image.width), static_cast<float>(image.height),
+                        wrapS_ == GL_REPEAT && wrapT_ == GL_REPEAT && powerOfTwo};
+    }
+    std::memcpy(&border_, texture.sampling.border, sizeof border_);
+  }
+
+  // sampleTexture(texture, s, t, lambda, out).
+  void sample(float s, float t, float lambda, float out[4]) const {
+    if (lambda <= switchOverPoint_) return sampleMagnified(s, t, out);
+    if (!mipmapped_) return storeLanes(sampleLevel(levels_[base_], linearWithinLevel_, s, t), out);
+    const MipmapLevels m = selectMipmapLevels(lambda, minFilter_, base_, last_);
+    const TexelLanes first = sampleLevel(levels_[m.level1], linearWithinLevel_, s, t);
+    if (m.level2 == m.level1 || m.weight2 == 0.0f) return storeLanes(first, out);
+    const TexelLanes second = sampleLevel(levels_[m.level2], linearWithinLevel_, s, t);
+    storeLanes((1.0f - m.weight2) * first + m.weight2 * second, out);
+  }
+
+  // sampleTextureMagnified(texture, s, t, out).
+  void sampleMagnified(float s, float t, float out[4]) const {
+    storeLanes(sampleLevel(levels_[base_], magnifyLinear_, s, t), out);
+  }
+
+ private:
+  struct Level {
+    const uint8_t* texels;  // width * height RGBA8 texels, row 0 first
+    int width, height;
+    float widthF, heightF;
+    bool repeatsByMask;  // GL_REPEAT on both axes and power-of-two sides: wrap() is a mask
+  };
+
+  // The filtered texel of one level, components in [0, 1].
+  TexelLanes sampleLevel(const Level& level, bool linear, float s, float t) const {
+    return linear ? sampleLinear(level, s, t) : sampleNearest(level, s, t);
+  }
+
+  // texelCoordinate(s, size, mode), with the size as a float at hand.
+  static float coordinate(float s, int size, float sizeF, GLenum mode) {
+    if (mode == GL_CLAMP) s = std::clamp(s, 0.0f, 1.0f);
+    return keepInIntRange(s * sizeF, size, mode);
+  }
+
+  static const uint8_t* texelAt(const Level& level, int i, int j) {
+    return level.texels + 4 * (static_cast<std::ptrdiff_t>(j) * level.width + i);
+  }
+
+  TexelLanes sampleNearest(const Level& level, float s, float t) const {
+    const float u = coordinate(s, level.width, level.widthF, wrapS_);
+    const float v = coordinate(t, level.height, level.heightF, wrapT_);
+    const int i = wrapTexelIndex(floorToInt(u), level.width, wrapS_, false);
+    const int j = wrapTexelIndex(floorToInt(v), level.height, wrapT_, false);
+    if (i < 0 || i >= level.width || j < 0 || j >= level.height) return border_ * (1.0f / 255.0f);
+    return texelLanes(texelAt(level, i, j)) * (1.0f / 255.0f);
+  }
+
+  // Inline for the common case (see repeatsByMask), a call for the others.
+  TexelLanes sampleLinear(const Level& level, float s, float t) const {
+    if (level.repeatsByMask) {
+      // The common case in short: keepInIntRange leaves u and v as they are (below 2^20 in
+      // magnitude, not NaN), wrapTexelPair is a mask, and all four texels are inside.
+      const float uScaled = s * level.widthF, vScaled = t * level.heightF;
+      constexpr float kLimit = 1048576.0f;  // keepInIntRange's
+      if (std::fabs(uScaled) < kLimit && std::fabs(vScaled) < kLimit) {
+        const float u = uScaled - 0.5f, v = vScaled - 0.5f;
+        const int uWhole = floorToInt(u), vWhole = floorToInt(v);
+        const float alpha = u - static_cast<float>(uWhole);
+        const float beta = v - static_cast<float>(vWhole);
+        const int i0 = uWhole & (level.width - 1), i1 = (i0 + 1) & (level.width - 1);
+        const int j0 = vWhole & (level.height - 1), j1 = (j0 + 1) & (level.height - 1);
+        return bilinear(level, alpha, beta, i0, i1, j0, j1);
+      }
+    }
+    return sampleLinearAnyWrap(level, s, t);
+  }
+
+  [[gnu::noinline]] TexelLanes sampleLinearAnyWrap(const Level& level, float s, float t) const {
+    const float u = coordinate(s, level.width, level.widthF, wrapS_) - 0.5f;
+    const float v = coordinate(t, level.height, level.heightF, wrapT_) - 0.5f;
+    const int uWhole = floorToInt(u), vWhole = floorToInt(v);
+    const float alpha = u - static_cast<float>(uWhole);
+    const float beta = v - static_cast<float>(vWhole);
+    int i0, i1, j0, j1;
+    wrapTexelPair(uWhole, level.width, wrapS_, &i0, &i1);
+    wrapTexelPair(vWhole, level.height, wrapT_, &j0, &j1);
+    // Unsigned comparisons test 0 <= index < size at once.
+    const bool inside = static_cast<unsigned>(i0) < static_cast<unsigned>(level.width) &&
+                        static_cast<unsigned>(i1) < static_cast<unsigned>(level.width) &&
+                        static_cast<unsigned>(j0) < static_cast<unsigned>(level.height) &&
+                        static_cast<unsigned>(j1) < static_cast<unsigned>(level.height);
+    if (inside) return bilinear(level, alpha, beta, i0, i1, j0, j1);
+    const float w00 = (1.0f - alpha) * (1.0f - beta), w10 = alpha * (1.0f - beta);
+    const float w01 = (1.0f - alpha) * beta, w11 = alpha * beta;
+    // Near a CLAMP or CLAMP_TO_BORDER edge: texels outside the image are the border colour.
+    auto texelOrBorder = [&](int i, int j) {
+      const bool in = static_cast<unsigned>(i) < static_cast<unsigned>(level.width) &&
+                      static_cast<unsigned>(j) < static_cast<unsigned>(level.height);
+      return in ? texelLanes(texelAt(level, i, j)) : border_;
+    };
+    const TexelLanes sum = w00 * texelOrBorder(i0, j0) + w10 * texelOrBorder(i1, j0) +
+                           w01 * texelOrBorder(i0, j1) + w11 * texelOrBorder(i1, j1);
+    return sum * (1.0f / 255.0f);
+  }
+
+  // The LINEAR mix of four texels inside the level, with weights from alpha and beta.
+  static TexelLanes bilinear(const Level& level, float alpha, float beta, int i0, int i1, int j0,
+                             int j1) {
+    const float w00 = (1.0f - alpha) * (1.0f - beta), w10 = alpha * (1.0f - beta);
+    const float w01 = (1.0f - alpha) * beta, w11 = alpha * beta;
+    const TexelLanes sum = w00 * texelLanes(texelAt(level, i0, j0)) +
+                           w10 * texelLanes(texelAt(level, i1, j0)) +
+                           w01 * texelLanes(texelAt(level, i0, j1)) +
+                           w11 * texelLanes(texelAt(level, i1, j1));
+    return sum * (1.0f / 255.0f);
+  }
+
+  GLenum minFilter_, wrapS_, wrapT_;
+  int base_, last_;
+  float switchOverPoint_;
+  bool magnifyLinear_, linearWithinLevel_, mipmapped_;
+  Level levels_[kMaxTextureLevels] = {};
+  TexelLanes border_;  // the border texel, components in [0, 255]
+};
+
+}  // namespace glass::gl
