@@ -224,6 +224,7 @@ std::vector<Triangle3> basePolyhedron(const IteratedFunctionSystem3& ifs) {
       std::vector<Triangle3> hull = convexHull(attractorExtremes(ifs));
       return hull.empty() ? unitCube() : hull;  // a flat attractor has no hull: the cube stands in
     }
+    case IfsBase3::Model: return ifs.baseModel;
   }
   return unitCube();
 }

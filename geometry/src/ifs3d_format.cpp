@@ -14,7 +14,7 @@ using ifs_text::Token;
 
 void parseBase(LineParser& p, IteratedFunctionSystem3& ifs) {
   if (p.atEnd()) {
-    p.error(p.column(), "expected cube, tetrahedron or hull after 'base'");
+    p.error(p.column(), "expected cube, tetrahedron, hull or a quoted OBJ file name after 'base'");
     return;
   }
   const Token kind = p.take();
@@ -24,8 +24,17 @@ void parseBase(LineParser& p, IteratedFunctionSystem3& ifs) {
     ifs.base = IfsBase3::Tetrahedron;
   } else if (kind.text == "hull" && !kind.quoted) {
     ifs.base = IfsBase3::Hull;
+  } else if (kind.quoted) {
+    if (kind.text.empty()) {
+      p.error(kind.column, "the base model's file name is empty");
+      return;
+    }
+    ifs.base = IfsBase3::Model;
+    ifs.baseModelPath = kind.text;
+    ifs.baseModelLine = p.line();
+    ifs.baseModelColumn = kind.column;
   } else {
-    p.error(kind.column, "unknown base '" + kind.text + "' (cube, tetrahedron or hull)");
+    p.error(kind.column, "unknown base '" + kind.text + "' (cube, tetrahedron, hull or \"model.obj\")");
   }
 }
 
@@ -155,6 +164,7 @@ std::string formatIfs3(const IteratedFunctionSystem3& ifs) {
   if (!ifs.name.empty()) out += "name \"" + ifs.name + "\"\n";
   if (ifs.base == IfsBase3::Tetrahedron) out += "base tetrahedron\n";
   if (ifs.base == IfsBase3::Hull) out += "base hull\n";
+  if (ifs.base == IfsBase3::Model) out += "base \"" + ifs.baseModelPath + "\"\n";
   for (const IfsMap3& map : ifs.maps) {
     out += "map matrix";
     for (int r = 0; r < 3; ++r) {

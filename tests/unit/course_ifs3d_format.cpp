@@ -58,7 +58,7 @@ TEST_CASE("course homework 3: .ifs3 errors give line and column, as the 2D forma
   CHECK(e.line == 2);
   CHECK(e.message.find("give all or none") != std::string::npos);
   e = first("base sphere\nmap scale 0.5\n");
-  CHECK(e.message.find("cube, tetrahedron or hull") != std::string::npos);
+  CHECK(e.message.find("cube, tetrahedron, hull or \"model.obj\"") != std::string::npos);
   e = first("map rotate quaternion 0 0 0 0\n");
   CHECK(e.message.find("zero quaternion") != std::string::npos);
   e = first("# nothing\n");

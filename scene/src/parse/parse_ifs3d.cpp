@@ -5,6 +5,7 @@
 
 #include <glass/geometry/ifs3d.h>
 #include <glass/geometry/ifs3d_format.h>
+#include <glass/scene/ifs3_base_model.h>
 
 #include <algorithm>
 #include <memory>
@@ -33,6 +34,9 @@ void Parser::parseIfs3d(StatementReader &r) {
   if (step != nullptr) ifs.step = step->numbers.at(0);
   const std::string path = resolvePath(written, fileToken.where);
   geometry::Ifs3ParseResult loaded = geometry::loadIfs3File(path);
+  if (loaded.ok()) {
+    if (auto problem = loadIfs3BaseModel(loaded.ifs, path)) loaded.errors.push_back(std::move(*problem));
+  }
   if (!loaded.ok()) {
     const geometry::IfsParseError &first = loaded.errors.front();
     r.fail(fileToken.where, static_cast<int>(written.size()) + 2,

@@ -6,6 +6,7 @@
 #include <numbers>
 #include <sstream>
 
+#include <glass/scene/ifs3_base_model.h>
 #include <glass/scene/render.h>
 
 #include "box_counting_table.h"
@@ -47,7 +48,8 @@ Clouds: one point a line as x y z (spaces, tabs or commas), # comments, an optio
 with the number of points. The .ifs3 format (see scenes/ifs/*.ifs3): one `map` a line, as
 translate x y z, rotate DEGREES ax ay az, rotate quaternion w x y z, scale s | sx sy sz, or matrix
 a11 a12 a13 t1 a21 a22 a23 t2 a31 a32 a33 t3; then optionally color r g b and probability p;
-optional name "..." and base cube|tetrahedron|hull.
+optional name "..." and base cube|tetrahedron|hull|"model.obj" (an OBJ file, relative to the
+.ifs3 file).
 
 Examples:
   glass ifs3d points scenes/ifs/homework3.ifs3 -n 50000 -o cloud.txt
@@ -71,6 +73,9 @@ std::optional<Loaded> loadIfs3(const std::string& file, std::ostream& err) {
     return std::nullopt;
   }
   g::Ifs3ParseResult parsed = g::parseIfs3(*text);
+  if (parsed.ok()) {
+    if (auto problem = scene::loadIfs3BaseModel(parsed.ifs, file)) parsed.errors.push_back(std::move(*problem));
+  }
   if (!parsed.ok()) {
     err << g::formatIfsErrors(parsed.errors, file, *text);
     return std::nullopt;

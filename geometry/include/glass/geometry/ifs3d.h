@@ -26,17 +26,29 @@ struct IfsMap3 {
   std::optional<IfsColor> color;      // none: partColor's palette
 };
 
+struct Triangle3 {
+  glm::dvec3 a, b, c;  // counter-clockwise seen from outside
+};
+
 // The step-0 polyhedron of the rebuild.
 enum class IfsBase3 {
   Cube,         // the unit cube [0, 1]^3 (the default: homework clouds live in the unit cube)
   Tetrahedron,  // (0,0,0), (1,0,0), (0,1,0), (0,0,1)
   Hull,         // the convex hull of the attractor (of points sampled from it)
+  Model,        // the triangles of an OBJ file (base "model.obj"), read by the scene library's
+                // loadIfs3BaseModel (glass/scene/ifs3_base_model.h), which fills baseModel
 };
 
 struct IteratedFunctionSystem3 {
   std::string name;
   std::vector<IfsMap3> maps;
   IfsBase3 base = IfsBase3::Cube;
+  // base "model.obj": the file name as written (relative to the .ifs3 file), where it was
+  // written (1-based line and column of the quoted name, for file:line:col errors), and the
+  // model's triangles once loaded.
+  std::string baseModelPath;
+  int baseModelLine = 0, baseModelColumn = 0;
+  std::vector<Triangle3> baseModel;
 };
 
 // The colour of part i (the map's own, else the 2D palette's entry i).
@@ -69,11 +81,9 @@ struct IfsComposite3 {
 // The caller checks ifs3BaseCopies first.
 std::vector<IfsComposite3> ifsComposites3(const IteratedFunctionSystem3& ifs, int depth);
 
-struct Triangle3 {
-  glm::dvec3 a, b, c;  // counter-clockwise seen from outside
-};
 // The base polyhedron's faces as triangles, outward-facing. For the hull: the convex hull of
-// the attractor, from its extreme points in many directions.
+// the attractor, from its extreme points in many directions; for a model, its loaded triangles
+// (none before loadIfs3BaseModel).
 std::vector<Triangle3> basePolyhedron(const IteratedFunctionSystem3& ifs);
 
 // The convex hull of points as outward, counter-clockwise triangles (an incremental hull); empty

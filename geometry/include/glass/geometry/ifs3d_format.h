@@ -4,7 +4,9 @@
 //   # a comment runs to the end of the line
 //   name "Sierpinski tetrahedron"      optional
 //   base cube                          optional step-0 polyhedron of the rebuild:
-//                                        cube (default, [0,1]^3) | tetrahedron | hull
+//                                        cube (default, [0,1]^3) | tetrahedron | hull |
+//                                        "model.obj" (an OBJ file, relative to the .ifs3 file,
+//                                        loaded by glass/scene/ifs3_base_model.h)
 //   map scale 0.5                      one map per line, any number of lines
 //   map translate 0.5 0 0 scale 0.5 color 0.2 0.7 0.3 probability 0.25
 //   map matrix 0.5 0 0 0.25  0 0.5 0 0  0 0 0.5 0.5
