@@ -7,7 +7,7 @@ namespace glass::scene {
 
 namespace {
 
-LightView readLightView(const StatementReader &r, NamedParams &params, std::string_view statement) {
+LightView readLightView(const StatementReader &r, NamedParams &params) {
   LightView light;
   const ParamValue *from = params.take("from");
   const ParamValue *to = params.take("to");
@@ -15,8 +15,7 @@ LightView readLightView(const StatementReader &r, NamedParams &params, std::stri
   const ParamValue *zNear = params.take("near");
   const ParamValue *zFar = params.take("far");
   if (!from || !to || !fov || !zNear || !zFar) {
-    r.fail(r.statementToken(), "'" + std::string(statement) +
-                                   "' needs the light's view: 'from X Y Z to X Y Z fov DEGREES near N far F'");
+    r.fail(r.statementToken(), "'shadow_map' needs the light's view: 'from X Y Z to X Y Z fov DEGREES near N far F'");
   }
   light.from = from->numbers;
   light.to = to->numbers;
@@ -44,15 +43,7 @@ void Parser::parseShadowMap(StatementReader &r) {
       {"depth_mode", ParamKind::Word, 1, 1, names::depthTextureModes, ""},
       {"filter", ParamKind::Word, 1, 1, names::magFilters, ""},
   };
-  const Token &nameToken = r.peek();
-  TextureDefinition texture;
-  texture.name = r.identifier("a name for the shadow map's texture");
-  texture.where = r.statementToken().where;
-  if (texture.name == "none") r.fail(nameToken, "'none' is reserved: 'bind_texture none' unbinds");
-  if (auto it = textureIndex_.find(texture.name); it != textureIndex_.end()) {
-    throw StatementError{nameToken.where, nameToken.length, "texture '" + texture.name + "' is already defined",
-                         {{program_.textures[static_cast<std::size_t>(it->second)].where, "first defined here"}}};
-  }
+  TextureDefinition texture = readNewTextureName(r, "a name for the shadow map's texture");
   // `casters DEFINITION` comes first: the named parameters after it take only GL names.
   if (!r.peekIsWord("casters")) r.fail(r.peek(), "'shadow_map " + texture.name + "' expects 'casters DEFINITION' next");
   r.take();
@@ -69,7 +60,7 @@ void Parser::parseShadowMap(StatementReader &r) {
   NamedParams params = NamedParams::read(r, specs);
   ShadowMap map;
   map.definition = definition->second;
-  map.light = readLightView(r, params, "shadow_map");
+  map.light = readLightView(r, params);
   if (const ParamValue *offset = params.take("offset")) {
     map.offsetFactor = offset->numbers[0];
     map.offsetUnits = offset->numbers[1];
@@ -87,10 +78,8 @@ void Parser::parseShadowMap(StatementReader &r) {
   texture.borderColor = {Number::of(1.0), Number::of(1.0), Number::of(1.0), Number::of(1.0)};
   params.requireAllUsed(r);
 
-  map.texture = static_cast<int>(program_.textures.size());
-  textureIndex_[texture.name] = map.texture;
+  map.texture = addTexture(std::move(texture));
   shadowLights_[map.texture] = map.light;
-  program_.textures.push_back(std::move(texture));
   emit(r, map);
 }
 

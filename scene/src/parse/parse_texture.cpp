@@ -35,15 +35,7 @@ void Parser::parseTexture(StatementReader &r) {
       {"color1", ParamKind::Numbers, 3, 4, {}, "r g b [a]"},
       {"color2", ParamKind::Numbers, 3, 4, {}, "r g b [a]"},
   };
-  const Token &nameToken = r.peek();
-  TextureDefinition texture;
-  texture.name = r.identifier("a name for the texture");
-  texture.where = r.statementToken().where;
-  if (texture.name == "none") r.fail(nameToken, "'none' is reserved: 'bind_texture none' unbinds");
-  if (auto it = textureIndex_.find(texture.name); it != textureIndex_.end()) {
-    throw StatementError{nameToken.where, nameToken.length, "texture '" + texture.name + "' is already defined",
-                         {{program_.textures[static_cast<std::size_t>(it->second)].where, "first defined here"}}};
-  }
+  TextureDefinition texture = readNewTextureName(r, "a name for the texture");
   const Token &sourceToken = r.peek();
   bool checker = false;
   if (r.peekIsWord("checker")) {
@@ -82,8 +74,27 @@ void Parser::parseTexture(StatementReader &r) {
       r.fail(sourceToken, "cannot read texture image '" + texture.path + "': " + reason);
     }
   }
-  textureIndex_[texture.name] = static_cast<int>(program_.textures.size());
+  addTexture(std::move(texture));
+}
+
+TextureDefinition Parser::readNewTextureName(StatementReader &r, const std::string &what) {
+  const Token &nameToken = r.peek();
+  TextureDefinition texture;
+  texture.name = r.identifier(what);
+  texture.where = r.statementToken().where;
+  if (texture.name == "none") r.fail(nameToken, "'none' is reserved: 'bind_texture none' unbinds");
+  if (auto it = textureIndex_.find(texture.name); it != textureIndex_.end()) {
+    throw StatementError{nameToken.where, nameToken.length, "texture '" + texture.name + "' is already defined",
+                         {{program_.textures[static_cast<std::size_t>(it->second)].where, "first defined here"}}};
+  }
+  return texture;
+}
+
+int Parser::addTexture(TextureDefinition texture) {
+  const int index = static_cast<int>(program_.textures.size());
+  textureIndex_[texture.name] = index;
   program_.textures.push_back(std::move(texture));
+  return index;
 }
 
 void Parser::parseBindTexture(StatementReader &r) {

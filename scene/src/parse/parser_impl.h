@@ -156,6 +156,10 @@ private:
   void parseShadowTexGen(StatementReader &r);
   // The texture named `nameToken`, or an error that names the defined ones.
   int findTexture(StatementReader &r, const Token &nameToken, const std::string &name);
+  // A texture definition with the name read next (`what` says what is expected there), or an
+  // error for `none` and for a name already defined.
+  TextureDefinition readNewTextureName(StatementReader &r, const std::string &what);
+  int addTexture(TextureDefinition texture); // its index in Program::textures
 
   // Geometry (parse_geometry.cpp, parse_shapes.cpp).
   void parseBegin(StatementReader &r);
