@@ -147,12 +147,14 @@ inline MipmapLevels selectMipmapLevels(float lambda, GLenum minFilter, int base,
     m.level1 = m.level2 = std::clamp(d, base, q);
     return m;
   }
-  // *_MIPMAP_LINEAR.
-  if (base + lambda >= q) {
+  // *_MIPMAP_LINEAR. A NaN lambda (from NaN or infinite coordinates) takes the last level, as
+  // it does in the branch above; it must not reach the conversion to int below.
+  if (!(base + lambda < q)) {
     m.level1 = m.level2 = q;
     return m;
   }
-  const float whole = std::floor(lambda);
+  // A negative lambda reads the base level alone (weight2 = 0); its floor is not converted.
+  const float whole = std::floor(std::max(lambda, 0.0f));
   m.level1 = std::max(base, base + static_cast<int>(whole));
   m.level2 = m.level1 >= q ? m.level1 : m.level1 + 1;
   m.weight2 = lambda < 0.0f ? 0.0f : lambda - whole;
