@@ -1,7 +1,7 @@
 // Commands of OpenGL 1.2 to 1.4 that glass implements by definition through older ones, or
 // accepts with the errors of a feature it lacks: glDrawRangeElements, glMultiDrawArrays,
 // glMultiDrawElements, glLoadTransposeMatrix, glMultTransposeMatrix, the texture unit commands,
-// glSampleCoverage, compressed textures, and the imaging subset.
+// glSampleCoverage and compressed textures (the imaging subset: pixels_imaging_test.cpp).
 #include <doctest/doctest.h>
 
 #include <GL/gl.h>
@@ -219,25 +219,4 @@ TEST_CASE("Compressed texture commands fail with the errors of unsupported forma
   glGetCompressedTexImage(GL_TEXTURE_2D, -1, out);
   CHECK(glGetError() == GL_INVALID_VALUE);
 
-}
-
-TEST_CASE("The imaging subset's commands set GL_INVALID_OPERATION, also from a list") {
-  ScopedContext context;
-  const GLubyte table[16] = {};
-  glColorTable(GL_COLOR_TABLE, GL_RGBA, 4, GL_RGBA, GL_UNSIGNED_BYTE, table);
-  CHECK(glGetError() == GL_INVALID_OPERATION);
-  glHistogram(GL_HISTOGRAM, 16, GL_RGBA, GL_FALSE);
-  CHECK(glGetError() == GL_INVALID_OPERATION);
-  GLfloat params[4];
-  glGetConvolutionParameterfv(GL_CONVOLUTION_2D, GL_CONVOLUTION_BORDER_MODE, params);
-  CHECK(glGetError() == GL_INVALID_OPERATION);
-  glEnable(GL_HISTOGRAM);
-  CHECK(glGetError() == GL_INVALID_ENUM);
-
-  glNewList(1, GL_COMPILE);
-  glMinmax(GL_MINMAX, GL_RGBA, GL_FALSE);
-  glEndList();
-  CHECK(glGetError() == GL_NO_ERROR);
-  glCallList(1);
-  CHECK(glGetError() == GL_INVALID_OPERATION);
 }

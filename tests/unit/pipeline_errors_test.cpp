@@ -44,7 +44,7 @@ TEST_CASE("pipeline errors: state, matrices and viewport") {
       {"glGetString(bad)", [] { CHECK(glGetString(0x1234) == nullptr); }, GL_INVALID_ENUM},
       {"glHint(bad target)", [] { glHint(0x1234, GL_NICEST); }, GL_INVALID_ENUM},
       {"glHint(bad mode)", [] { glHint(GL_FOG_HINT, GL_LINE); }, GL_INVALID_ENUM},
-      {"glMatrixMode(GL_COLOR)", [] { glMatrixMode(GL_COLOR); }, GL_INVALID_ENUM},
+      {"glMatrixMode(GL_DEPTH)", [] { glMatrixMode(GL_DEPTH); }, GL_INVALID_ENUM},
       {"glOrtho(l == r)", [] { glOrtho(1, 1, 0, 1, 0, 1); }, GL_INVALID_VALUE},
       {"glOrtho(b == t)", [] { glOrtho(0, 1, 2, 2, 0, 1); }, GL_INVALID_VALUE},
       {"glOrtho(n == f)", [] { glOrtho(0, 1, 0, 1, 3, 3); }, GL_INVALID_VALUE},

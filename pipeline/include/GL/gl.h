@@ -1236,7 +1236,8 @@ typedef void (APIENTRYP PFNGLTEXSUBIMAGE3DPROC)(GLenum target, GLint level, GLin
 typedef void (APIENTRYP PFNGLCOPYTEXSUBIMAGE3DPROC)(GLenum target, GLint level, GLint xoffset, GLint yoffset, GLint zoffset, GLint x, GLint y, GLsizei width, GLsizei height);
 
 /* GLASS-SECTION: the imaging subset (GL_ARB_imaging) beyond glBlendColor and glBlendEquation:
- * declared so that programs link; each call sets GL_INVALID_OPERATION, as in Mesa. */
+ * colour tables, convolution, the colour matrix, histogram and minmax, applied by glDrawPixels,
+ * glCopyPixels and glReadPixels (not by the texture image commands). */
 GLAPI void GLAPIENTRY glColorTable(GLenum target, GLenum internalformat, GLsizei width, GLenum format, GLenum type, const GLvoid *table);
 GLAPI void GLAPIENTRY glColorSubTable(GLenum target, GLsizei start, GLsizei count, GLenum format, GLenum type, const GLvoid *data);
 GLAPI void GLAPIENTRY glColorTableParameteriv(GLenum target, GLenum pname, const GLint *params);

@@ -17,8 +17,10 @@ using glass::gl::rejectInsideBeginEnd;
 
 namespace {
 
-// The stack glMatrixMode selects; GL_TEXTURE's is the active texture unit's (spec 2.11.2).
+// The stack glMatrixMode selects; GL_TEXTURE's is the active texture unit's (spec 2.11.2), and
+// GL_COLOR's the imaging subset's colour matrix stack (spec 3.6.3, pixels/imaging_state.h).
 glass::gl::MatrixStack& currentMatrixStack(Context& ctx) {
+  if (ctx.transform.matrixMode == GL_COLOR) return ctx.imaging.colorMatrix;
   return ctx.transform.currentStack(ctx.texture.activeUnit);
 }
 
@@ -78,7 +80,7 @@ extern "C" {
 void glMatrixMode(GLenum mode) {
   compileOrExecute([=](Context& ctx) {
     if (rejectInsideBeginEnd(ctx)) return;
-    if (mode != GL_MODELVIEW && mode != GL_PROJECTION && mode != GL_TEXTURE) {
+    if (mode != GL_MODELVIEW && mode != GL_PROJECTION && mode != GL_TEXTURE && mode != GL_COLOR) {
       return recordError(ctx, GL_INVALID_ENUM);
     }
     ctx.transform.matrixMode = mode;

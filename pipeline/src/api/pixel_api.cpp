@@ -2,6 +2,7 @@
 #include <GL/gl.h>
 
 #include <cmath>
+#include <new>
 
 #include "core/context.h"
 #include "fragment/buffer_selection.h"
@@ -71,7 +72,11 @@ void glReadPixels(GLint x, GLint y, GLsizei width, GLsizei height, GLenum format
     if (!glass::gl::hasBufferToRead(ctx, format)) return recordError(ctx, GL_INVALID_OPERATION);
     if (!pixels) return;
     glass::gl::finishQueuedDrawing(ctx);
-    glass::gl::readPixels(ctx, x, y, width, height, format, type, pixels);
+    try {
+      glass::gl::readPixels(ctx, x, y, width, height, format, type, pixels);
+    } catch (const std::bad_alloc&) {
+      recordError(ctx, GL_OUT_OF_MEMORY);  // the imaging operations hold the whole block
+    }
   });
 }
 

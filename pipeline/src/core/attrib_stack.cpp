@@ -7,7 +7,8 @@
 // compiled into display lists; the client versions are not (spec 5.4).
 //
 // GL_CURRENT_BIT includes the current raster position, GL_PIXEL_MODE_BIT the pixel transfer
-// state and zoom (the pixel maps belong to no group, table 6.17), GL_ACCUM_BUFFER_BIT the
+// state and zoom (the pixel maps belong to no group, table 6.17) and the imaging subset's enables,
+// scales, biases and convolution parameters (its tables and filters belong to no group), GL_ACCUM_BUFFER_BIT the
 // accumulation buffer's clear value, GL_POLYGON_STIPPLE_BIT the stipple pattern.
 #include "core/attrib_stack.h"
 
@@ -38,7 +39,10 @@ constexpr GLenum kEnableCapabilities[] = {
     GL_POLYGON_OFFSET_FILL, GL_POLYGON_OFFSET_LINE, GL_POLYGON_OFFSET_POINT, GL_POLYGON_SMOOTH,
     GL_POLYGON_STIPPLE, GL_RESCALE_NORMAL, GL_SCISSOR_TEST, GL_STENCIL_TEST,
     GL_MULTISAMPLE, GL_SAMPLE_ALPHA_TO_COVERAGE, GL_SAMPLE_ALPHA_TO_ONE, GL_SAMPLE_COVERAGE,
-    GL_COLOR_SUM};
+    GL_COLOR_SUM,
+    // The imaging subset's (tables 6.18-6.22: also in GL_PIXEL_MODE_BIT).
+    GL_COLOR_TABLE, GL_POST_CONVOLUTION_COLOR_TABLE, GL_POST_COLOR_MATRIX_COLOR_TABLE,
+    GL_CONVOLUTION_1D, GL_CONVOLUTION_2D, GL_SEPARABLE_2D, GL_HISTOGRAM, GL_MINMAX};
 constexpr int kEnableCount = sizeof(kEnableCapabilities) / sizeof(kEnableCapabilities[0]);
 
 // The texture enables of one unit, which GL_ENABLE_BIT saves for every unit (GL_TEXTURE_1D,
@@ -87,6 +91,7 @@ struct AttribEntry {
   TextureAttributes texture{};
   RasterPositionState rasterPosition;  // GL_CURRENT_BIT
   PixelTransferState pixelTransfer;    // GL_PIXEL_MODE_BIT, without the maps
+  ImagingPixelMode imagingMode;        // GL_PIXEL_MODE_BIT: the imaging subset's part
   float accumulationClear[4] = {};     // GL_ACCUM_BUFFER_BIT
   bool enableKnown[kEnableCount] = {};
   bool enabled[kEnableCount] = {};
@@ -200,6 +205,7 @@ std::shared_ptr<const AttribEntry> saveAttributes(const Context& ctx, GLbitfield
   if (mask & GL_PIXEL_MODE_BIT) {
     e->pixelTransfer = ctx.pixelTransfer;
     e->pixelTransfer.maps = {};
+    e->imagingMode = ctx.imaging.mode;
   }
   if (mask & GL_ACCUM_BUFFER_BIT) {
     std::memcpy(e->accumulationClear, ctx.accumulation.clearValue, sizeof e->accumulationClear);
@@ -258,6 +264,7 @@ void restoreAttributes(Context& ctx, const AttribEntry& e) {
     auto maps = std::move(ctx.pixelTransfer.maps);
     ctx.pixelTransfer = e.pixelTransfer;
     ctx.pixelTransfer.maps = std::move(maps);
+    ctx.imaging.mode = e.imagingMode;
   }
   if (mask & GL_ACCUM_BUFFER_BIT) {
     std::memcpy(ctx.accumulation.clearValue, e.accumulationClear, sizeof e.accumulationClear);

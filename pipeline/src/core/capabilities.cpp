@@ -4,6 +4,7 @@
 #include "evaluators/evaluator_commands.h"
 #include "fragment/fog_hooks.h"
 #include "lighting/lighting_hooks.h"
+#include "pixels/imaging_queries.h"
 #include "texture/texture_hooks.h"
 
 namespace glass::gl {
@@ -39,7 +40,7 @@ bool* coreCapability(Context& ctx, GLenum cap) {
     case GL_SAMPLE_ALPHA_TO_COVERAGE: return &f.sampleAlphaToCoverage;
     case GL_SAMPLE_ALPHA_TO_ONE: return &f.sampleAlphaToOne;
     case GL_SAMPLE_COVERAGE: return &f.sampleCoverage;
-    default: return nullptr;
+    default: return imagingCapability(ctx.imaging, cap);  // pixels/imaging_queries.h
   }
 }
 

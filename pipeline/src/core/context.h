@@ -19,6 +19,7 @@
 #include "glass/raster/framebuffer.h"
 #include "lighting/lighting_state.h"
 #include "lists/display_lists.h"
+#include "pixels/imaging_state.h"
 #include "pixels/pixel_transfer_state.h"
 #include "pixels/raster_position.h"
 #include "primitive/raster_state.h"
@@ -48,6 +49,8 @@
 //   core/hint_state.h           HintState         glHint
 //   pixels/raster_position.h    RasterPositionState the current raster position (glRasterPos)
 //   pixels/pixel_transfer_state.h PixelTransferState glPixelTransfer, glPixelMap, glPixelZoom
+//   pixels/imaging_state.h      ImagingState      colour tables, convolution, colour matrix,
+//                                                 histogram and minmax (GL_ARB_imaging)
 //   accum/accumulation_state.h  AccumulationState glClearAccum and the accumulation buffer
 //   select/render_mode_state.h  RenderModeState   glRenderMode, selection and feedback
 //
@@ -81,6 +84,7 @@ struct Context {
   AttribStackState attribStack;  // glPushAttrib / glPushClientAttrib (core/attrib_stack.h)
   RasterPositionState rasterPosition;
   PixelTransferState pixelTransfer;
+  ImagingState imaging;
   AccumulationState accumulation;
   RenderModeState renderMode;
 

@@ -13,7 +13,7 @@ namespace {
 // that the two lists agree. Most are the GL 1.2-1.4 core features under the names programs of
 // the time use; the last two are glass's own (docs/lighting.md, docs/texturing.md).
 constexpr const char* kExtensions =
-    "GL_ARB_depth_texture GL_ARB_multitexture GL_ARB_multisample GL_ARB_shadow "
+    "GL_ARB_depth_texture GL_ARB_imaging GL_ARB_multitexture GL_ARB_multisample GL_ARB_shadow "
     "GL_ARB_point_parameters GL_ARB_texture_border_clamp "
     "GL_ARB_texture_compression GL_ARB_texture_cube_map GL_ARB_texture_env_add "
     "GL_ARB_texture_env_combine GL_ARB_texture_env_crossbar GL_ARB_texture_env_dot3 "

@@ -10,6 +10,7 @@
 #include "fragment/fog_hooks.h"
 #include "fragment/multisample.h"
 #include "lighting/lighting_hooks.h"
+#include "pixels/imaging_queries.h"
 #include "pixels/pixel_queries.h"
 #include "primitive/point_parameters.h"
 #include "select/render_mode_query.h"
@@ -79,6 +80,11 @@ bool queryCoreState(const Context& ctx, GLenum pname, StateValue& v) {
     case GL_TRANSPOSE_MODELVIEW_MATRIX: setTransposedMatrix(v, t.modelview.top()); return true;
     case GL_TRANSPOSE_PROJECTION_MATRIX: setTransposedMatrix(v, t.projection.top()); return true;
     case GL_TRANSPOSE_TEXTURE_MATRIX: setTransposedMatrix(v, textureStack.top()); return true;
+    // The imaging subset's colour matrix stack (glMatrixMode(GL_COLOR), spec 3.6.3).
+    case GL_COLOR_MATRIX: setMatrix(v, ctx.imaging.colorMatrix.top()); return true;
+    case GL_TRANSPOSE_COLOR_MATRIX: setTransposedMatrix(v, ctx.imaging.colorMatrix.top()); return true;
+    case GL_COLOR_MATRIX_STACK_DEPTH: v.setIntegers({double(ctx.imaging.colorMatrix.depth())}); return true;
+    case GL_MAX_COLOR_MATRIX_STACK_DEPTH: v.setIntegers({double(kColorMatrixStackDepth)}); return true;
     case GL_MODELVIEW_STACK_DEPTH: v.setIntegers({double(t.modelview.depth())}); return true;
     case GL_PROJECTION_STACK_DEPTH: v.setIntegers({double(t.projection.depth())}); return true;
     case GL_TEXTURE_STACK_DEPTH: v.setIntegers({double(textureStack.depth())}); return true;
@@ -214,6 +220,7 @@ bool queryState(const Context& ctx, GLenum pname, StateValue& value) {
       queryLightingState(ctx, pname, value) ||
       queryFogState(ctx, pname, value) || queryTextureState(ctx, pname, value) ||
       queryEvaluatorState(ctx, pname, value) || queryPixelState(ctx, pname, value) ||
+      queryImagingState(ctx, pname, value) ||
       queryAccumulationState(ctx, pname, value) || queryRenderModeState(ctx, pname, value) ||
       queryColorIndexState(ctx, pname, value) || queryMultisampleState(ctx, pname, value) ||
       queryTextureUnitState(ctx, pname, value) || queryCompressedTextureState(ctx, pname, value) ||

@@ -7,6 +7,8 @@
 #include "core/context.h"
 #include "core/pixel_store.h"
 #include "glass/raster/fragment.h"
+#include "pixels/imaging_client_data.h"
+#include "pixels/imaging_pipeline.h"
 #include "pixels/pixel_transfer.h"
 #include "texture/client_pixels.h"
 
@@ -34,13 +36,32 @@ void packDepthBits(const uint32_t* depth, int count, int width, int column, int 
   packIndexSpan(bits.data(), count, width, column, row, GL_UNSIGNED_INT, pack, pixels);
 }
 
+// Colours with the imaging operations (pixels/imaging_pipeline.h): the whole block is read first,
+// since convolution needs the neighbours of each group (groups outside the framebuffer read as
+// 0), and the image the operations leave, smaller after a GL_REDUCE convolution, is packed as a
+// block of its own size. A sink leaves client memory as it is.
+void readColorImage(Context& ctx, int x, int y, int width, int height, GLenum format, GLenum type,
+                    void* pixels) {
+  RgbaImage image{width, height, readColorBlock(ctx, x, y, width, height)};
+  if (!transferColorImage(ctx.pixelTransfer, ctx.imaging, image, 2)) return;
+  for (int row = 0; row < image.height; ++row) {
+    // Spec 4.3.2: luminance is the sum R + G + B, clamped.
+    packColorSpan(image.at(0, row), image.width, image.width, 0, row, format, type,
+                  ctx.pixelStore.pack, LuminancePacking::Sum, pixels);
+  }
+}
+
 }  // namespace
 
-void readPixels(const Context& ctx, int x, int y, int width, int height, GLenum format,
+void readPixels(Context& ctx, int x, int y, int width, int height, GLenum format,
                 GLenum type, void* pixels) {
   const raster::Framebuffer& fb = ctx.framebuffer;
   const PixelPacking& pack = ctx.pixelStore.pack;
   const PixelTransferState& transfer = ctx.pixelTransfer;
+  if (format != GL_STENCIL_INDEX && format != GL_DEPTH_COMPONENT && imagingActive(ctx.imaging)) {
+    readColorImage(ctx, x, y, width, height, format, type, pixels);
+    return;
+  }
 
   // The part of each row inside the framebuffer: columns [first, end) of the block.
   const int first = static_cast<int>(std::clamp<long long>(-static_cast<long long>(x), 0, width));

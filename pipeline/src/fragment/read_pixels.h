@@ -14,9 +14,10 @@ struct Context;
 // for GL_COLOR_INDEX, which an RGBA context cannot read.
 GLenum checkReadPixelsFormatAndType(GLenum format, GLenum type);
 
-// Pixels outside the framebuffer are left untouched in client memory. The caller checked the
+// Pixels outside the framebuffer are left untouched in client memory (with the imaging
+// operations, pixels/imaging_pipeline.h, they are read as 0 and written). The caller checked the
 // errors.
-void readPixels(const Context& ctx, int x, int y, int width, int height, GLenum format,
+void readPixels(Context& ctx, int x, int y, int width, int height, GLenum format,
                 GLenum type, void* pixels);
 
 }  // namespace glass::gl

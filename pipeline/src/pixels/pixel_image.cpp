@@ -5,6 +5,7 @@
 
 #include "core/context.h"
 #include "core/float_to_int.h"
+#include "pixels/imaging_pipeline.h"
 #include "pixels/pixel_fragments.h"
 #include "pixels/pixel_transfer.h"
 #include "select/render_mode.h"
@@ -44,11 +45,21 @@ FragmentImage fragmentImageOf(const PixelBlock& block) {
 }
 
 // Colours, depths or stencil indices after the transfer operations, drawn at the raster position.
+// The imaging operations may discard the colours (a histogram or minmax sink) or shrink the
+// block (convolution in GL_REDUCE mode): the smaller block is drawn at the raster position.
+void drawColorImage(Context& ctx, PixelBlock block, RgbaImage image) {
+  block.width = image.width;
+  block.height = image.height;
+  if (block.width == 0 || block.height == 0) return;
+  FragmentImage fragments = fragmentImageOf(block);
+  fragments.colors = image.rgba.data();
+  drawImageFragments(ctx, fragments);
+}
+
 void drawColors(Context& ctx, const PixelBlock& block, std::vector<float> rgba) {
-  transferColors(ctx.pixelTransfer, rgba.data(), static_cast<int>(pixelCount(block.width, block.height)));
-  FragmentImage image = fragmentImageOf(block);
-  image.colors = rgba.data();
-  drawImageFragments(ctx, image);
+  RgbaImage image{block.width, block.height, std::move(rgba)};
+  if (!transferColorImage(ctx.pixelTransfer, ctx.imaging, image, 2)) return;
+  drawColorImage(ctx, block, std::move(image));
 }
 
 void drawDepths(Context& ctx, const PixelBlock& block, std::vector<float> depth) {
@@ -109,14 +120,11 @@ void drawPixels(Context& ctx, const UnpackedImage& image) {
       drawColors(ctx, PixelBlock{image.width, image.height}, image.values);
       break;
     case PixelKind::ColorIndex: {
-      std::vector<float> rgba(pixelCount(image.width, image.height) * 4);
-      colorIndicesToRGBA(ctx.pixelTransfer, image.indices.data(),
-                         static_cast<int>(pixelCount(image.width, image.height)), rgba.data());
-      FragmentImage fragments;
-      fragments.width = image.width;
-      fragments.height = image.height;
-      fragments.colors = rgba.data();
-      drawImageFragments(ctx, fragments);
+      RgbaImage rgba{image.width, image.height,
+                     std::vector<float>(pixelCount(image.width, image.height) * 4)};
+      colorIndicesToRGBA(ctx.pixelTransfer, image.indices.data(), rgba.count(), rgba.rgba.data());
+      if (!transferConvertedColorImage(ctx.imaging, rgba, 2)) return;
+      drawColorImage(ctx, PixelBlock{image.width, image.height}, std::move(rgba));
       break;
     }
     case PixelKind::Depth:

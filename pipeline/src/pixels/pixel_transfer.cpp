@@ -25,7 +25,10 @@ float lookUpIndex(const std::vector<float>& map, int32_t index) {
 
 }  // namespace
 
-void transferColors(const PixelTransferState& t, float* rgba, int count) {
+namespace {
+
+// Scale and bias, then with GL_MAP_COLOR the lookups; the final clamp when asked.
+void scaleBiasAndMap(const PixelTransferState& t, float* rgba, int count, bool clamp) {
   const bool scaleBias = t.scale[0] != 1.0f || t.scale[1] != 1.0f || t.scale[2] != 1.0f ||
                          t.scale[3] != 1.0f || t.bias[0] != 0.0f || t.bias[1] != 0.0f ||
                          t.bias[2] != 0.0f || t.bias[3] != 0.0f;
@@ -37,8 +40,24 @@ void transferColors(const PixelTransferState& t, float* rgba, int count) {
     if (t.mapColor) {
       for (int k = 0; k < 4; ++k) c[k] = lookUpColor(t.map(GL_PIXEL_MAP_R_TO_R + k), c[k]);
     }
-    for (int k = 0; k < 4; ++k) c[k] = clamp01(c[k]);
+    if (clamp) {
+      for (int k = 0; k < 4; ++k) c[k] = clamp01(c[k]);
+    }
   }
+}
+
+}  // namespace
+
+void transferColors(const PixelTransferState& t, float* rgba, int count) {
+  scaleBiasAndMap(t, rgba, count, true);
+}
+
+void scaleBiasAndMapColors(const PixelTransferState& t, float* rgba, int count) {
+  scaleBiasAndMap(t, rgba, count, false);
+}
+
+void clampColors(float* rgba, int count) {
+  for (size_t i = 0; i < static_cast<size_t>(count) * 4; ++i) rgba[i] = clamp01(rgba[i]);
 }
 
 void transferDepths(const PixelTransferState& t, float* depth, int count) {

@@ -6,6 +6,8 @@
 //   colour indices:   shift and offset (GL_INDEX_SHIFT, GL_INDEX_OFFSET), then to RGBA through
 //                     the GL_PIXEL_MAP_I_TO_R/G/B/A maps (glass is an RGBA context)
 //   stencil indices:  shift and offset, then with GL_MAP_STENCIL the GL_PIXEL_MAP_S_TO_S lookup
+//                     (with the imaging subset, pixels/imaging_pipeline.h, its operations come
+//                     before the clamp)
 //   depth:            scale and bias (GL_DEPTH_SCALE, GL_DEPTH_BIAS), then clamping to [0, 1]
 #pragma once
 
@@ -17,6 +19,10 @@ namespace glass::gl {
 
 // count RGBA pixels (4 floats each), in place.
 void transferColors(const PixelTransferState& t, float* rgba, int count);
+// The same without the final clamp, for the imaging operations that come between
+// (pixels/imaging_pipeline.h), and the clamp that then ends them.
+void scaleBiasAndMapColors(const PixelTransferState& t, float* rgba, int count);
+void clampColors(float* rgba, int count);
 // count depth values, in place.
 void transferDepths(const PixelTransferState& t, float* depth, int count);
 // count stencil indices, in place.

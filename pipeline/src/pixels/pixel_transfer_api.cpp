@@ -9,6 +9,7 @@
 
 #include "core/context.h"
 #include "lists/command_recording.h"
+#include "pixels/imaging_queries.h"
 #include "vertex/attribute_conversion.h"
 
 using glass::gl::Context;
@@ -36,7 +37,13 @@ void pixelTransfer(GLenum pname, float value) {
       case GL_ALPHA_BIAS: t.bias[3] = value; return;
       case GL_DEPTH_SCALE: t.depthScale = value; return;
       case GL_DEPTH_BIAS: t.depthBias = value; return;
-      default: return recordError(ctx, GL_INVALID_ENUM);
+      default: break;
+    }
+    // The imaging subset's post-convolution and post-colour-matrix scales and biases.
+    if (float* parameter = glass::gl::imagingTransferParameter(ctx.imaging, pname)) {
+      *parameter = value;
+    } else {
+      recordError(ctx, GL_INVALID_ENUM);
     }
   });
 }

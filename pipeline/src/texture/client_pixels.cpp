@@ -154,30 +154,17 @@ float elementToFloat(const unsigned char* p, GLenum type, bool swap) {
   }
 }
 
-// Table 4.7 (packing): a component clamped to [0, 1] as an element of the given type.
-void floatToElement(float c, GLenum type, bool swap, unsigned char* p) {
-  const double f = std::clamp(static_cast<double>(c), 0.0, 1.0);
+// Writes an element of the given type: for an integer type, a value already in its range.
+void writeElement(GLenum type, bool swap, unsigned char* p, double value) {
   switch (type) {
-    case GL_UNSIGNED_BYTE: p[0] = static_cast<unsigned char>(std::nearbyint(f * 255.0)); break;
-    case GL_BYTE:
-      p[0] = static_cast<unsigned char>(static_cast<int8_t>(std::nearbyint((f * 255.0 - 1.0) / 2.0)));
-      break;
-    case GL_UNSIGNED_SHORT:
-      writeUnsigned(p, 2, swap, static_cast<uint32_t>(std::nearbyint(f * 65535.0)));
-      break;
-    case GL_SHORT:
-      writeUnsigned(p, 2, swap,
-                    static_cast<uint16_t>(static_cast<int16_t>(std::nearbyint((f * 65535.0 - 1.0) / 2.0))));
-      break;
-    case GL_UNSIGNED_INT:
-      writeUnsigned(p, 4, swap, static_cast<uint32_t>(std::nearbyint(f * 4294967295.0)));
-      break;
-    case GL_INT:
-      writeUnsigned(p, 4, swap,
-                    static_cast<uint32_t>(static_cast<int32_t>(std::nearbyint((f * 4294967295.0 - 1.0) / 2.0))));
-      break;
+    case GL_UNSIGNED_BYTE: p[0] = static_cast<unsigned char>(value); break;
+    case GL_BYTE: p[0] = static_cast<unsigned char>(static_cast<int8_t>(value)); break;
+    case GL_UNSIGNED_SHORT: writeUnsigned(p, 2, swap, static_cast<uint32_t>(value)); break;
+    case GL_SHORT: writeUnsigned(p, 2, swap, static_cast<uint16_t>(static_cast<int16_t>(value))); break;
+    case GL_UNSIGNED_INT: writeUnsigned(p, 4, swap, static_cast<uint32_t>(value)); break;
+    case GL_INT: writeUnsigned(p, 4, swap, static_cast<uint32_t>(static_cast<int32_t>(value))); break;
     case GL_FLOAT: {
-      const float v = std::clamp(c, 0.0f, 1.0f);
+      const float v = static_cast<float>(value);
       uint32_t bits;
       std::memcpy(&bits, &v, 4);
       writeUnsigned(p, 4, swap, bits);
@@ -185,6 +172,24 @@ void floatToElement(float c, GLenum type, bool swap, unsigned char* p) {
     }
     default: break;
   }
+}
+
+// The largest value of an unsigned integer type, 2^n - 1: 255, 65535, 4294967295 for the
+// types of 1, 2 and 4 bytes, signed or not.
+double typeRange(GLenum type) {
+  const int bytes = scalarTypeBytes(type);
+  return bytes == 1 ? 255.0 : bytes == 2 ? 65535.0 : 4294967295.0;
+}
+
+bool isSignedType(GLenum type) { return type == GL_BYTE || type == GL_SHORT || type == GL_INT; }
+
+// Table 4.7 (packing): a component clamped to [0, 1] as an element of the given type; signed
+// types take (c (2^n - 1) - 1) / 2.
+void floatToElement(float c, GLenum type, bool swap, unsigned char* p) {
+  if (type == GL_FLOAT) return writeElement(type, swap, p, std::clamp(c, 0.0f, 1.0f));
+  const double f = std::clamp(static_cast<double>(c), 0.0, 1.0);
+  const double scaled = f * typeRange(type);
+  writeElement(type, swap, p, std::nearbyint(isSignedType(type) ? (scaled - 1.0) / 2.0 : scaled));
 }
 
 }  // namespace
@@ -312,6 +317,48 @@ void packColorSpan(const float* rgba, int count, int width, int column, int row,
     } else {
       for (int c = 0; c < components.count; ++c)
         floatToElement(values[c], type, swap, group + static_cast<size_t>(c) * block.elementBytes);
+    }
+  }
+}
+
+namespace {
+
+// A count as an element of the given type: the number itself, saturated to the type's range.
+void countToElement(double v, GLenum type, bool swap, unsigned char* p) {
+  if (type == GL_FLOAT) return writeElement(type, swap, p, v);
+  const double range = typeRange(type);
+  writeElement(type, swap, p, std::min(v, isSignedType(type) ? (range - 1.0) / 2.0 : range));
+}
+
+}  // namespace
+
+void packCountSpan(const uint32_t* counts, int count, GLenum format, GLenum type,
+                   const PixelLayout& layout, void* pixels) {
+  FormatComponents components;
+  formatComponents(format, &components);
+  PackedType packed;
+  const bool isPacked = packedType(type, &packed);
+  const int elementBytes = isPacked ? packed.bytes : scalarTypeBytes(type);
+  const BlockLayout block = blockLayout(count, isPacked ? 1 : components.count, elementBytes, layout);
+  const bool swap = layout.swapBytes && elementBytes > 1;
+  unsigned char* out = static_cast<unsigned char*>(pixels) + block.firstByte;
+  for (int i = 0; i < count; ++i) {
+    unsigned char* group = out + static_cast<size_t>(i) * block.groupBytes;
+    const uint32_t* in = counts + static_cast<size_t>(i) * 4;
+    double values[4];
+    for (int c = 0; c < components.count; ++c) {
+      values[c] = static_cast<double>(in[components.slot[c] == kLuminance ? 0 : components.slot[c]]);
+    }
+    if (isPacked) {
+      uint32_t element = 0;
+      for (int c = 0; c < packed.count; ++c) {
+        const uint32_t max = (1u << packed.width[c]) - 1u;
+        element |= static_cast<uint32_t>(std::min(values[c], static_cast<double>(max))) << packed.shift[c];
+      }
+      writeUnsigned(group, packed.bytes, swap, element);
+    } else {
+      for (int c = 0; c < components.count; ++c)
+        countToElement(values[c], type, swap, group + static_cast<size_t>(c) * block.elementBytes);
     }
   }
 }

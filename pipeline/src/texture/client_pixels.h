@@ -73,6 +73,11 @@ enum class LuminancePacking { Red, Sum };
 // rgba: 4 floats per pixel, clamped to [0, 1] and converted by table 4.7.
 void packColorSpan(const float* rgba, int count, int width, int column, int row, GLenum format,
                    GLenum type, const PixelLayout& layout, LuminancePacking luminance, void* pixels);
+// glGetHistogram's counts (OpenGL 1.4 specification, section 6.1.9, "Histogram Query"): a
+// one-row block of `count` groups, 4 counts each in RGBA order (luminance from R), written as
+// numbers, not normalized: each saturated to its type's range (its field's for packed types).
+void packCountSpan(const uint32_t* counts, int count, GLenum format, GLenum type,
+                   const PixelLayout& layout, void* pixels);
 // GL_DEPTH_COMPONENT: values clamped to [0, 1] and converted by table 4.7.
 void packDepthSpan(const float* depth, int count, int width, int column, int row, GLenum type,
                    const PixelLayout& layout, void* pixels);
