@@ -1,15 +1,17 @@
 // glass view's scene model without a window (tools/glass/view/): walking with collisions, the
-// obstacles a scene gives, and the menu's changes to a scene.
+// obstacles a scene gives, and the menu's changes to a scene; glass ifs3d view's trackball.
 #define DOCTEST_CONFIG_IMPLEMENT_WITH_MAIN
 #include <doctest/doctest.h>
 
 #include "view/scene_obstacles.h"
 #include "view/scene_overrides.h"
+#include "view/trackball.h"
 #include "view/walk_collision.h"
 
 #include <GL/gl.h>
 #include <glass/scene/parser.h>
 
+#include <cmath>
 #include <cstdint>
 #include <string>
 
@@ -240,4 +242,57 @@ TEST_CASE("the room's lights, and the menu's changes to a scene") {
   }
   CHECK(lightEnables == 2);
   CHECK(roundedModels == 2);
+}
+
+TEST_CASE("trackball: the ball's points, on the sphere near the centre and on the sheet beyond") {
+  const glm::dvec3 centre = cli::view::trackballPoint(100, 50, 200, 100);
+  CHECK(centre.x == 0.0);
+  CHECK(centre.y == 0.0);
+  CHECK(centre.z == 1.0);
+  // Half the radius right and up (y grows downwards in the window): on the unit sphere.
+  const glm::dvec3 p = cli::view::trackballPoint(125, 25, 200, 100);
+  CHECK(p.x == doctest::Approx(0.5));
+  CHECK(p.y == doctest::Approx(0.5));
+  CHECK(p.x * p.x + p.y * p.y + p.z * p.z == doctest::Approx(1.0));
+  // At the window's edge, beyond 1/sqrt(2): the sheet z = 1 / (2 d).
+  const glm::dvec3 edge = cli::view::trackballPoint(200, 50, 200, 100);
+  CHECK(edge.x == doctest::Approx(2.0));
+  CHECK(edge.z == doctest::Approx(0.25));
+}
+
+TEST_CASE("trackball: a drag turns by the angle between the ball's points, about their common normal") {
+  // From the centre to half the radius right: 30 degrees about the eye's up axis.
+  const geometry::Quaternion q = cli::view::trackballDrag(100, 100, 150, 100, 200, 200);
+  const double half = 15.0 * 3.14159265358979323846 / 180.0;
+  CHECK(q.w == doctest::Approx(std::cos(half)).epsilon(1e-12));
+  CHECK(q.x == doctest::Approx(0.0));
+  CHECK(q.y == doctest::Approx(std::sin(half)).epsilon(1e-12));
+  CHECK(q.z == doctest::Approx(0.0));
+  // The point under the pointer follows it: the turn takes the first point to the second.
+  const glm::dvec3 from = cli::view::trackballPoint(100, 100, 200, 200);
+  const glm::dvec3 moved = geometry::rotate(q, from);
+  const glm::dvec3 to = cli::view::trackballPoint(150, 100, 200, 200);
+  CHECK(moved.x == doctest::Approx(to.x));
+  CHECK(moved.y == doctest::Approx(to.y));
+  CHECK(moved.z == doctest::Approx(to.z));
+  // No drag, no turn.
+  CHECK(cli::view::trackballDrag(30, 40, 30, 40, 200, 200) == geometry::Quaternion{});
+}
+
+TEST_CASE("trackball: a turn about the eye's axes becomes a turn about the world's through the camera") {
+  // The camera on the +x axis looking at the origin: the eye's right is -z, its up +y, its back +x.
+  const glm::dvec3 eye(5, 0, 0), centre(0, 0, 0), up(0, 1, 0);
+  const geometry::Quaternion aboutEyeUp = cli::view::trackballDrag(100, 100, 150, 100, 200, 200);
+  const geometry::Quaternion turned = cli::view::turnByDrag(geometry::Quaternion{}, aboutEyeUp, eye, centre, up);
+  CHECK(turned.y == doctest::Approx(aboutEyeUp.y));  // up is up in both
+  const geometry::Quaternion aboutEyeRight = cli::view::trackballDrag(100, 100, 100, 50, 200, 200);
+  const geometry::Quaternion tilted = cli::view::turnByDrag(geometry::Quaternion{}, aboutEyeRight, eye, centre, up);
+  // A drag upwards turns about the eye's -x (its right, -z in the world): the world's front
+  // (+x, towards the eye) goes up.
+  const glm::dvec3 front = geometry::rotate(tilted, glm::dvec3(1, 0, 0));
+  CHECK(front.y > 0.4);
+  CHECK(std::abs(front.z) < 1e-12);
+  // Turns compose, and stay of unit length.
+  const geometry::Quaternion both = cli::view::turnByDrag(turned, aboutEyeRight, eye, centre, up);
+  CHECK(geometry::norm(both) == doctest::Approx(1.0).epsilon(1e-15));
 }

@@ -1,6 +1,7 @@
-// `glass lines`, `glass ifs` and `glass math`: the course's exercises (docs/course.md). The
+// `glass lines`, `glass ifs`, `glass ifs3d` and `glass math`: the course's exercises (docs/course.md). The
 // commands themselves are in the course library (tools/course, glass/course/commands.h).
 #include "command_registry.h"
+#include "ifs3d_view_command.h"
 
 #include <glass/course/commands.h>
 
@@ -12,7 +13,11 @@ namespace {
 
 int runLines(const std::vector<std::string> &args) { return course::runLinesCommand(args, std::cout, std::cerr); }
 int runIfs(const std::vector<std::string> &args) { return course::runIfsCommand(args, std::cout, std::cerr); }
-int runIfs3d(const std::vector<std::string> &args) { return course::runIfs3dCommand(args, std::cout, std::cerr); }
+// `glass ifs3d view` needs a window, which the course library does without.
+int runIfs3d(const std::vector<std::string> &args) {
+  if (!args.empty() && args[0] == "view") return runIfs3dView({args.begin() + 1, args.end()});
+  return course::runIfs3dCommand(args, std::cout, std::cerr);
+}
 int runMath(const std::vector<std::string> &args) { return course::runMathCommand(args, std::cout, std::cerr); }
 
 const bool linesRegistered = registerCommand({"lines", course::kLinesSummary, runLines});

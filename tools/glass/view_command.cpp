@@ -5,6 +5,7 @@
 #include "command_registry.h"
 #include "view/scene_obstacles.h"
 #include "view/scene_overrides.h"
+#include "view/window_options.h"
 
 #include <GL/freeglut.h>
 #include <glass/scene/parser.h>
@@ -557,16 +558,14 @@ int runView(const std::vector<std::string> &args) {
   }
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string &arg = args[i];
-    const bool hasValue = i + 1 < args.size();
-    if ((arg == "--snapshot" || arg == "--events") && hasValue) {
-      setenv(arg == "--snapshot" ? "GLASS_GLUT_SNAPSHOT" : "GLASS_GLUT_EVENTS", args[++i].c_str(), 1);
-    } else if (arg == "--size" && hasValue) {
-      if (std::sscanf(args[++i].c_str(), "%dx%d", &viewer.width, &viewer.height) != 2 ||
-          viewer.width < 1 || viewer.height < 1 || viewer.width > 16384 || viewer.height > 16384) {
-        std::cerr << "glass view: --size wants WIDTHxHEIGHT, such as 640x480\n";
-        return kExitUsage;
-      }
-    } else if (!arg.empty() && arg[0] != '-' && viewer.path.empty()) {
+    std::string problem;
+    const view::WindowOption option = view::takeWindowOption(args, i, viewer.width, viewer.height, problem);
+    if (option == view::WindowOption::Bad) {
+      std::cerr << "glass view: " << problem << "\n";
+      return kExitUsage;
+    }
+    if (option == view::WindowOption::Taken) continue;
+    if (!arg.empty() && arg[0] != '-' && viewer.path.empty()) {
       viewer.path = arg;
     } else {
       std::cerr << "glass view: unknown or incomplete option '" << arg << "' (glass view --help)\n";

@@ -6,6 +6,7 @@
 
 #include <glass/geometry/ifs3d.h>
 #include <glass/geometry/polar_decomposition.h>
+#include <glass/scene/ifs3_rebuild_draw.h>
 
 namespace glass::scene {
 
@@ -26,21 +27,7 @@ void Interpreter::Executor::run(const Ifs3d &s) {
   glPushMatrix();
   const glm::dmat4 m = motion.toMatrix4();
   glMultMatrixd(&m[0][0]);
-  glBegin(GL_TRIANGLES);
-  int lastPart = -2;
-  for (const geometry::RebuildTriangle &t : triangles) {
-    if (s.partColors && t.part != lastPart) {
-      const geometry::IfsColor c = t.part < 0 ? geometry::IfsColor{0.8f, 0.8f, 0.8f}
-                                              : geometry::partColor3(*s.system, static_cast<std::size_t>(t.part));
-      glColor3f(c.r, c.g, c.b);
-      lastPart = t.part;
-    }
-    glNormal3d(t.normal.x, t.normal.y, t.normal.z);
-    glVertex3d(t.corners.a.x, t.corners.a.y, t.corners.a.z);
-    glVertex3d(t.corners.b.x, t.corners.b.y, t.corners.b.z);
-    glVertex3d(t.corners.c.x, t.corners.c.y, t.corners.c.z);
-  }
-  glEnd();
+  drawIfs3Rebuild(*s.system, triangles, s.partColors);
   glPopMatrix();
   glPopAttrib();
   resendCurrentValues();

@@ -6,12 +6,12 @@
 #include <numbers>
 #include <sstream>
 
-#include <glass/scene/ifs3_base_model.h>
 #include <glass/scene/render.h>
 
 #include "box_counting_table.h"
 #include "command_arguments.h"
 #include "glass/course/commands.h"
+#include "glass/course/ifs3d_file.h"
 #include "glass/course/ifs3d_fit.h"
 #include "glass/course/ifs3d_view.h"
 #include "glass/course/point_cloud.h"
@@ -43,6 +43,8 @@ The study guide's homework 3: a 3D affine fractal given as a cloud of points.
   glass ifs3d animate FILE.ifs3 --map K --frames N -o frame_%03d.png [--depth N] [--view A,E]
       map K as a motion of the rebuild from itself to its image: scaling first, then rotation by
       quaternion slerp, then translation; prints the matrix of every frame.
+  glass ifs3d view [FILE.ifs3] [CLOUD.txt] [--show cloud|attractor|both] [--depth N] ...
+      the cloud and the rebuild in a window, turned with the mouse (glass ifs3d view --help).
 
 Clouds: one point a line as x y z (spaces, tabs or commas), # comments, an optional first line
 with the number of points. The .ifs3 format (see scenes/ifs/*.ifs3): one `map` a line, as
@@ -56,6 +58,7 @@ Examples:
   glass ifs3d fit cloud.txt -o found.ifs3
   glass ifs3d render found.ifs3 --depth 3 --view 35,25 -o rebuilt.png
   glass ifs3d animate found.ifs3 --map 2 --frames 24 -o frame_%03d.png
+  glass ifs3d view cloud.txt found.ifs3 --show both
 )";
 }
 
@@ -67,20 +70,9 @@ struct Loaded {
 };
 
 std::optional<Loaded> loadIfs3(const std::string& file, std::ostream& err) {
-  const std::optional<std::string> text = g::readIfsText(file);
-  if (!text) {
-    err << "glass ifs3d: cannot read " << file << "\n";
-    return std::nullopt;
-  }
-  g::Ifs3ParseResult parsed = g::parseIfs3(*text);
-  if (parsed.ok()) {
-    if (auto problem = scene::loadIfs3BaseModel(parsed.ifs, file)) parsed.errors.push_back(std::move(*problem));
-  }
-  if (!parsed.ok()) {
-    err << g::formatIfsErrors(parsed.errors, file, *text);
-    return std::nullopt;
-  }
-  return Loaded{std::move(parsed.ifs), file};
+  std::optional<g::IteratedFunctionSystem3> ifs = loadIfs3File(file, err);
+  if (!ifs) return std::nullopt;
+  return Loaded{std::move(*ifs), file};
 }
 
 std::string format(const char* pattern, double a) {
@@ -447,7 +439,7 @@ int runAnimate(ArgumentList& list, std::ostream& out, std::ostream& err) {
 int runIfs3dCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
   try {
     ArgumentList list(args);
-    if (list.empty()) throw UsageError("give a command: points, fit, show, render or animate (see glass ifs3d --help)");
+    if (list.empty()) throw UsageError("give a command: points, fit, show, render, animate or view (see glass ifs3d --help)");
     const std::string command = list.take();
     if (command == "-h" || command == "--help") {
       out << ifs3dHelp();
@@ -458,7 +450,7 @@ int runIfs3dCommand(const std::vector<std::string>& args, std::ostream& out, std
     if (command == "show") return runShow(list, out, err);
     if (command == "render") return runRender(list, out, err);
     if (command == "animate") return runAnimate(list, out, err);
-    throw UsageError("unknown command '" + command + "' (points, fit, show, render, animate)");
+    throw UsageError("unknown command '" + command + "' (points, fit, show, render, animate, view)");
   } catch (const UsageError& e) {
     err << "glass ifs3d: " << e.what() << "\n";
     return 2;

@@ -25,10 +25,9 @@ glm::dvec3 direction(double azimuthDegrees, double elevationDegrees) {
 
 }  // namespace
 
-std::string ifs3SceneText(const g::IteratedFunctionSystem3& ifs, const std::string& ifsPath, const Ifs3View& view) {
-  // The box around the attractor (chaos-game points) and around the base polyhedron when it is
-  // animated, since the animation starts from it.
-  glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
+void ifs3PictureBox(const g::IteratedFunctionSystem3& ifs, const Ifs3View& view, glm::dvec3& lo, glm::dvec3& hi) {
+  lo = glm::dvec3(std::numeric_limits<double>::infinity());
+  hi = glm::dvec3(-std::numeric_limits<double>::infinity());
   if (auto probabilities = g::chaosGameProbabilities3(ifs)) {
     for (const g::IfsPoint3& p : g::chaosGamePoints3(ifs, *probabilities, 20000, 1)) {
       lo = glm::min(lo, p.position);
@@ -43,27 +42,41 @@ std::string ifs3SceneText(const g::IteratedFunctionSystem3& ifs, const std::stri
       }
     }
   }
-  const glm::dvec3 centre = (lo + hi) / 2.0;
+}
+
+Ifs3Camera ifs3Camera(const glm::dvec3& lo, const glm::dvec3& hi, const Ifs3View& view) {
+  Ifs3Camera camera;
+  camera.centre = (lo + hi) / 2.0;
   const double radius = std::max(glm::length(hi - lo) / 2.0, 1e-6);
-  constexpr double kFieldOfView = 30.0;
-  const double distance = radius / std::sin(kFieldOfView / 2.0 * std::numbers::pi / 180.0) * 1.02;
-  const glm::dvec3 eye = centre + distance * direction(view.azimuth, view.elevation);
-  const glm::dvec3 light = direction(view.azimuth - 40.0, std::min(view.elevation + 35.0, 89.0));
+  const double distance = radius / std::sin(camera.fovy / 2.0 * std::numbers::pi / 180.0) * 1.02;
+  camera.eye = camera.centre + distance * direction(view.azimuth, view.elevation);
+  camera.zNear = std::max(distance - 2.0 * radius, distance * 0.01);
+  camera.zFar = distance + 2.0 * radius;
+  camera.lightDirection = direction(view.azimuth - 40.0, std::min(view.elevation + 35.0, 89.0));
+  return camera;
+}
+
+std::string ifs3SceneText(const g::IteratedFunctionSystem3& ifs, const std::string& ifsPath, const Ifs3View& view) {
+  glm::dvec3 lo, hi;
+  ifs3PictureBox(ifs, view, lo, hi);
+  const Ifs3Camera c = ifs3Camera(lo, hi, view);
   char text[2048];
   std::snprintf(text, sizeof text,
                 "# A 3D IFS: %s\n"
                 "size %d %d\n"
-                "clear_color 0.1 0.1 0.12\n"
+                "clear_color %.9g %.9g %.9g\n"
                 "clear\n"
                 "perspective %.0f auto %.17g %.17g\n"
-                "lookat %.17g %.17g %.17g  %.17g %.17g %.17g  0 1 0\n"
+                "lookat %.17g %.17g %.17g  %.17g %.17g %.17g  %.17g %.17g %.17g\n"
                 "enable depth_test lighting light0 color_material normalize\n"
                 "shade_model flat\n"
-                "light 0 position %.17g %.17g %.17g 0 diffuse 0.85 0.85 0.85\n"
-                "light_model ambient 0.3 0.3 0.3\n",
-                ifs.name.empty() ? ifsPath.c_str() : ifs.name.c_str(), view.width, view.height, kFieldOfView,
-                std::max(distance - 2.0 * radius, distance * 0.01), distance + 2.0 * radius, eye.x, eye.y, eye.z, centre.x,
-                centre.y, centre.z, light.x, light.y, light.z);
+                "light 0 position %.17g %.17g %.17g 0 diffuse %.9g %.9g %.9g\n"
+                "light_model ambient %.9g %.9g %.9g\n",
+                ifs.name.empty() ? ifsPath.c_str() : ifs.name.c_str(), view.width, view.height,
+                kIfs3Background[0], kIfs3Background[1], kIfs3Background[2], c.fovy, c.zNear, c.zFar, c.eye.x, c.eye.y,
+                c.eye.z, c.centre.x, c.centre.y, c.centre.z, c.up.x, c.up.y, c.up.z, c.lightDirection.x,
+                c.lightDirection.y, c.lightDirection.z, kIfs3LightDiffuse, kIfs3LightDiffuse, kIfs3LightDiffuse,
+                kIfs3Ambient, kIfs3Ambient, kIfs3Ambient);
   std::string scene = text;
   scene += "ifs3d \"" + ifsPath + "\" depth " + std::to_string(view.depth);
   if (view.animatedMap >= 0) {

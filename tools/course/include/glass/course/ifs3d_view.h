@@ -5,6 +5,8 @@
 
 #include <string>
 
+#include <glm/vec3.hpp>
+
 #include "glass/geometry/ifs3d.h"
 
 namespace glass::course {
@@ -17,6 +19,26 @@ struct Ifs3View {
   int animatedMap = -1;     // 0-based; -1: the rebuild in place
   double step = 0.0;        // 0..1 along the animation
 };
+
+// Where the picture is seen from: a perspective camera looking at the centre of a box from the
+// view's direction, far enough for the whole box to fit, and one directional light from above the
+// viewer's left shoulder. The scene text and `glass ifs3d view`'s window use the same numbers.
+struct Ifs3Camera {
+  glm::dvec3 eye{0.0}, centre{0.0}, up{0.0, 1.0, 0.0};
+  double fovy = 30.0, zNear = 0.1, zFar = 10.0;
+  glm::dvec3 lightDirection{0.0, 0.0, 1.0};  // towards the light, in world coordinates
+};
+Ifs3Camera ifs3Camera(const glm::dvec3& lo, const glm::dvec3& hi, const Ifs3View& view);
+
+// The box the picture frames: around the attractor (chaos-game points), and around the base
+// polyhedron too when the view animates a map (the animation starts from it) or the system has
+// no attractor to sample.
+void ifs3PictureBox(const geometry::IteratedFunctionSystem3& ifs, const Ifs3View& view, glm::dvec3& lo, glm::dvec3& hi);
+
+// The rest of the picture's set-up, shared for the same reason.
+inline constexpr float kIfs3Background[3] = {0.1f, 0.1f, 0.12f};
+inline constexpr float kIfs3LightDiffuse = 0.85f;
+inline constexpr float kIfs3Ambient = 0.3f;
 
 // The scene text: a perspective camera looking at the centre of the attractor from the view's
 // direction, far enough for the whole attractor (and, when animating, the base polyhedron it
