@@ -95,6 +95,26 @@ BlockLayout blockLayout(int width, int elementsPerGroup, int elementBytes, const
   return b;
 }
 
+// How a span of pixels of the given format and type sits in memory: the format's components, the
+// packed type if it is one, the block layout and whether bytes are swapped.
+struct SpanFormat {
+  FormatComponents components;
+  PackedType packed;
+  bool isPacked;
+  BlockLayout block;
+  bool swap;
+};
+
+SpanFormat spanFormat(int width, GLenum format, GLenum type, const PixelLayout& layout) {
+  SpanFormat f{};
+  formatComponents(format, &f.components);
+  f.isPacked = packedType(type, &f.packed);
+  const int elementBytes = f.isPacked ? f.packed.bytes : scalarTypeBytes(type);
+  f.block = blockLayout(width, f.isPacked ? 1 : f.components.count, elementBytes, layout);
+  f.swap = layout.swapBytes && elementBytes > 1;
+  return f;
+}
+
 uint32_t readUnsigned(const unsigned char* p, int bytes, bool swap) {
   unsigned char b[4] = {0, 0, 0, 0};
   std::memcpy(b, p, static_cast<size_t>(bytes));
@@ -239,13 +259,12 @@ void unpackTexels(const void* pixels, int width, int height, GLenum format, GLen
 
 void unpackColorRow(const void* pixels, int width, int row, GLenum format, GLenum type,
                     const PixelLayout& layout, float* rgbaOut) {
-  FormatComponents components;
-  formatComponents(format, &components);
-  PackedType packed;
-  const bool isPacked = packedType(type, &packed);
-  const int elementBytes = isPacked ? packed.bytes : scalarTypeBytes(type);
-  const BlockLayout block = blockLayout(width, isPacked ? 1 : components.count, elementBytes, layout);
-  const bool swap = layout.swapBytes && elementBytes > 1;
+  const SpanFormat span = spanFormat(width, format, type, layout);
+  const FormatComponents& components = span.components;
+  const PackedType& packed = span.packed;
+  const bool isPacked = span.isPacked;
+  const BlockLayout& block = span.block;
+  const bool swap = span.swap;
 
   const unsigned char* first = static_cast<const unsigned char*>(pixels) + block.firstByte +
                                static_cast<size_t>(row) * block.rowBytes;
@@ -282,13 +301,12 @@ void packPixelRow(const float* rgba, int width, int row, GLenum format, GLenum t
 
 void packColorSpan(const float* rgba, int count, int width, int column, int row, GLenum format,
                    GLenum type, const PixelLayout& layout, LuminancePacking luminance, void* pixels) {
-  FormatComponents components;
-  formatComponents(format, &components);
-  PackedType packed;
-  const bool isPacked = packedType(type, &packed);
-  const int elementBytes = isPacked ? packed.bytes : scalarTypeBytes(type);
-  const BlockLayout block = blockLayout(width, isPacked ? 1 : components.count, elementBytes, layout);
-  const bool swap = layout.swapBytes && elementBytes > 1;
+  const SpanFormat span = spanFormat(width, format, type, layout);
+  const FormatComponents& components = span.components;
+  const PackedType& packed = span.packed;
+  const bool isPacked = span.isPacked;
+  const BlockLayout& block = span.block;
+  const bool swap = span.swap;
 
   unsigned char* out = static_cast<unsigned char*>(pixels) + block.firstByte +
                        static_cast<size_t>(row) * block.rowBytes +
@@ -334,13 +352,12 @@ void countToElement(double v, GLenum type, bool swap, unsigned char* p) {
 
 void packCountSpan(const uint32_t* counts, int count, GLenum format, GLenum type,
                    const PixelLayout& layout, void* pixels) {
-  FormatComponents components;
-  formatComponents(format, &components);
-  PackedType packed;
-  const bool isPacked = packedType(type, &packed);
-  const int elementBytes = isPacked ? packed.bytes : scalarTypeBytes(type);
-  const BlockLayout block = blockLayout(count, isPacked ? 1 : components.count, elementBytes, layout);
-  const bool swap = layout.swapBytes && elementBytes > 1;
+  const SpanFormat span = spanFormat(count, format, type, layout);
+  const FormatComponents& components = span.components;
+  const PackedType& packed = span.packed;
+  const bool isPacked = span.isPacked;
+  const BlockLayout& block = span.block;
+  const bool swap = span.swap;
   unsigned char* out = static_cast<unsigned char*>(pixels) + block.firstByte;
   for (int i = 0; i < count; ++i) {
     unsigned char* group = out + static_cast<size_t>(i) * block.groupBytes;
