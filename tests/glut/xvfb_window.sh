@@ -6,30 +6,7 @@
 set -eu
 bin=$1
 work=$2
-rm -rf "$work"
-mkdir -p "$work"
-cd "$work"
-
-fail() {
-  echo "FAIL: $*" >&2
-  exit 1
-}
-
-# The window's content now, as a PNG.
-screenshot() {
-  xwd -id "$window" -silent >shot.xwd
-  convert xwd:shot.xwd "png:$1"
-}
-
-# Polls (up to 20 s) until COMMAND succeeds.
-await() {
-  tries=0
-  until "$@" >/dev/null 2>&1; do
-    tries=$((tries + 1))
-    [ "$tries" -lt 200 ] || fail "timed out waiting for: $*"
-    sleep 0.1
-  done
-}
+. "$(dirname "$0")/xvfb_common.sh"
 
 "$bin/glut_listing5_offscreen" 4 step4.png
 "$bin/glut_listing5_offscreen" 5 step5.png
