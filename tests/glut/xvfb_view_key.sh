@@ -18,13 +18,7 @@ titled() { [ "$(xdotool getwindowname "$window")" = "$1" ]; }
 for view in depth overdraw; do
   GLASS_VIEW=$view "$bin/glut_listing5_offscreen" 4 "$view.png" 2>/dev/null
 done
-printf 'key space\nkey space\nkey space\nkey space\nsnapshot snapshot.png\nwait 120000\n' >events.txt
-unset SDL_VIDEODRIVER
-GLASS_GLUT_EVENTS=events.txt "$bin/glut_listing5" >out.txt 2>err.txt &
-pid=$!
-await test -s snapshot.png
-window=$(xdotool search --sync --name "Sierpinski triangle" | head -n 1)
-[ -n "$window" ] || fail "no window named Sierpinski triangle"
+start_listing5_at_step4
 await shows step4.png
 titled "Sierpinski triangle" || fail "title before: $(xdotool getwindowname "$window")"
 

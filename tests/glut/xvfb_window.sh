@@ -10,13 +10,7 @@ work=$2
 
 "$bin/glut_listing5_offscreen" 4 step4.png
 "$bin/glut_listing5_offscreen" 5 step5.png
-printf 'key space\nkey space\nkey space\nkey space\nsnapshot snapshot.png\nwait 120000\n' >events.txt
-unset SDL_VIDEODRIVER
-GLASS_GLUT_EVENTS=events.txt "$bin/glut_listing5" >out.txt 2>err.txt &
-pid=$!
-await test -s snapshot.png
-window=$(xdotool search --sync --name "Sierpinski triangle" | head -n 1)
-[ -n "$window" ] || fail "no window named Sierpinski triangle"
+start_listing5_at_step4
 
 screenshot screen_step4.png
 "$bin/glut_png_probe" snapshot.png same step4.png || fail "the snapshot is not step 4"
