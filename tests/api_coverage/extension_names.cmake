@@ -11,7 +11,8 @@
 # extension_names.c then checks that glGetString(GL_EXTENSIONS) lists exactly the declared ones.
 
 set(glass_headers ${PROJECT_SOURCE_DIR}/pipeline/include/GL/gl.h
-                  ${PROJECT_SOURCE_DIR}/pipeline/include/GL/glext.h)
+                  ${PROJECT_SOURCE_DIR}/pipeline/include/GL/glext.h
+                  ${PROJECT_SOURCE_DIR}/pipeline/include/GL/glass_statistics.h)
 set(declared "")
 foreach(header IN LISTS glass_headers)
   file(STRINGS ${header} lines REGEX "^#define[ \t]+GL_[A-Z0-9]+_[A-Za-z0-9_]*[a-z][A-Za-z0-9_]*[ \t]+1$")
@@ -60,7 +61,7 @@ foreach(extension IN LISTS declared versions)
     endif()
   endforeach()
   if(block STREQUAL "")
-    continue()  # glass's own extension (GL_WIN_phong_shading, GL_GLASS_bump_map)
+    continue()  # glass's own extension (GL_WIN_phong_shading, GL_GLASS_bump_map, ...)
   endif()
   if(NOT extension MATCHES "^GL_VERSION_")
     string(APPEND known_list "  \"${extension}\",\n")

@@ -219,6 +219,53 @@ key space
 "
   probe snapshot.png same offscreen.png
   ;;
+teaching_view_key)
+  # Ctrl+Alt+V steps through glass's views in any GLUT window (off, depth, overdraw, wireframe,
+  # normals, mipmap, off; with Shift backwards): each picture is the one GLASS_VIEW gives
+  # off-screen, byte for byte, and off again is the program's own.
+  run glut_listing5 "key space
+key space
+key space
+key space
+key ctrl+alt+v
+snapshot depth.png
+key ctrl+alt+v
+snapshot overdraw.png
+key ctrl+alt+v
+snapshot wireframe.png
+key ctrl+alt+v
+snapshot normals.png
+key ctrl+alt+v
+snapshot mipmap.png
+key ctrl+alt+v
+snapshot off.png
+key ctrl+alt+shift+v
+snapshot back.png
+"
+  [ "$status" -eq 0 ] || fail "listing5 exited with $status"
+  "$bin/glut_listing5_offscreen" 4 offscreen.png
+  probe off.png same offscreen.png
+  for view in depth overdraw wireframe normals mipmap; do
+    GLASS_VIEW=$view "$bin/glut_listing5_offscreen" 4 "${view}_offscreen.png" 2>/dev/null
+    probe "$view.png" same "${view}_offscreen.png" differ offscreen.png
+    expect_text err.txt "glass: Ctrl+Alt+V: view $view"
+  done
+  probe back.png same mipmap_offscreen.png
+  expect_text err.txt "glass: Ctrl+Alt+V: the program's picture"
+  # The program's keyboard callbacks see its own keys, never the view key.
+  run glut_keys_and_reshape "key r
+key ctrl+alt+v
+key ctrl+alt+v
+key g
+"
+  [ "$status" -eq 0 ] || fail "keys_and_reshape exited with $status"
+  expect_text out.txt "key 114 modifiers 0"
+  expect_text out.txt "key up 114"
+  expect_text out.txt "key 103 modifiers 0"
+  if grep -F -e "key 22" -e "key up 22" out.txt >/dev/null; then fail "the program saw Ctrl+Alt+V"; fi
+  # Two presses: the overdraw view, of the 20 x 20 square, one fragment a pixel (dark blue).
+  probe snapshot.png size 200 200 count 30 40 140 400 400 count 0 0 0 39600 39600
+  ;;
 *)
   fail "unknown case $case_name"
   ;;

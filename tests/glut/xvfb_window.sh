@@ -6,40 +6,11 @@
 set -eu
 bin=$1
 work=$2
-rm -rf "$work"
-mkdir -p "$work"
-cd "$work"
-
-fail() {
-  echo "FAIL: $*" >&2
-  exit 1
-}
-
-# The window's content now, as a PNG.
-screenshot() {
-  xwd -id "$window" -silent >shot.xwd
-  convert xwd:shot.xwd "png:$1"
-}
-
-# Polls (up to 20 s) until COMMAND succeeds.
-await() {
-  tries=0
-  until "$@" >/dev/null 2>&1; do
-    tries=$((tries + 1))
-    [ "$tries" -lt 200 ] || fail "timed out waiting for: $*"
-    sleep 0.1
-  done
-}
+. "$(dirname "$0")/xvfb_common.sh"
 
 "$bin/glut_listing5_offscreen" 4 step4.png
 "$bin/glut_listing5_offscreen" 5 step5.png
-printf 'key space\nkey space\nkey space\nkey space\nsnapshot snapshot.png\nwait 120000\n' >events.txt
-unset SDL_VIDEODRIVER
-GLASS_GLUT_EVENTS=events.txt "$bin/glut_listing5" >out.txt 2>err.txt &
-pid=$!
-await test -s snapshot.png
-window=$(xdotool search --sync --name "Sierpinski triangle" | head -n 1)
-[ -n "$window" ] || fail "no window named Sierpinski triangle"
+start_listing5_at_step4
 
 screenshot screen_step4.png
 "$bin/glut_png_probe" snapshot.png same step4.png || fail "the snapshot is not step 4"

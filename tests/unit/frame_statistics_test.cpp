@@ -28,20 +28,6 @@ const glass::gl::FrameStatistics& counts() {
   return *s;
 }
 
-// An axis-aligned rectangle in normalized device coordinates (identity matrices) at depth z.
-void rectangleNdc(float x0, float y0, float x1, float y1, float z) {
-  glBegin(GL_QUADS);
-  glTexCoord2f(0.0f, 0.0f);
-  glVertex3f(x0, y0, z);
-  glTexCoord2f(1.0f, 0.0f);
-  glVertex3f(x1, y0, z);
-  glTexCoord2f(1.0f, 1.0f);
-  glVertex3f(x1, y1, z);
-  glTexCoord2f(0.0f, 1.0f);
-  glVertex3f(x0, y1, z);
-  glEnd();
-}
-
 }  // namespace
 
 TEST_CASE("GLASS_STATS counts a rectangle's vertices, triangles and the pixels it covers") {
@@ -49,7 +35,7 @@ TEST_CASE("GLASS_STATS counts a rectangle's vertices, triangles and the pixels i
   glass::test::ScopedContext context(64, 64);
   glClear(GL_COLOR_BUFFER_BIT);
   // x from pixel 0 to 32, y from 0 to 48 of a 64 x 64 window: 32 x 48 = 1536 pixel centres.
-  rectangleNdc(-1.0f, -1.0f, 0.0f, 0.5f, 0.0f);
+  glass::test::rectangleNdc(-1.0f, -1.0f, 0.0f, 0.5f, 0.0f);
   const auto& s = counts();
   CHECK(s.vertices == 4);
   CHECK(s.triangles == 2);  // a quad is two triangles
@@ -136,8 +122,8 @@ TEST_CASE("GLASS_STATS: fragments rejected by the depth, scissor, alpha and sten
   SUBCASE("a quad half hidden by depth") {
     glClear(GL_DEPTH_BUFFER_BIT);
     glEnable(GL_DEPTH_TEST);
-    rectangleNdc(-1.0f, -1.0f, 0.0f, 1.0f, -0.5f);  // the left half, near: 2048 fragments
-    rectangleNdc(-1.0f, -1.0f, 1.0f, 1.0f, 0.5f);   // the whole window, far: 4096, half hidden
+    glass::test::rectangleNdc(-1.0f, -1.0f, 0.0f, 1.0f, -0.5f);  // the left half, near: 2048 fragments
+    glass::test::rectangleNdc(-1.0f, -1.0f, 1.0f, 1.0f, 0.5f);   // the whole window, far: 4096, half hidden
     const auto& s = counts();
     CHECK(s.fragments == 2048 + 4096);
     CHECK(s.depthRejected == 2048);
@@ -146,7 +132,7 @@ TEST_CASE("GLASS_STATS: fragments rejected by the depth, scissor, alpha and sten
   SUBCASE("the scissor box, 16 of 64 columns") {
     glEnable(GL_SCISSOR_TEST);
     glScissor(0, 0, 16, 64);
-    rectangleNdc(-1.0f, -1.0f, 1.0f, 1.0f, 0.0f);
+    glass::test::rectangleNdc(-1.0f, -1.0f, 1.0f, 1.0f, 0.0f);
     const auto& s = counts();
     CHECK(s.fragments == 4096);
     CHECK(s.scissorRejected == 4096 - 1024);
@@ -156,7 +142,7 @@ TEST_CASE("GLASS_STATS: fragments rejected by the depth, scissor, alpha and sten
     glEnable(GL_ALPHA_TEST);
     glAlphaFunc(GL_GREATER, 0.5f);
     glColor4f(1.0f, 1.0f, 1.0f, 0.25f);
-    rectangleNdc(-1.0f, -1.0f, 1.0f, 1.0f, 0.0f);
+    glass::test::rectangleNdc(-1.0f, -1.0f, 1.0f, 1.0f, 0.0f);
     const auto& s = counts();
     CHECK(s.alphaRejected == 4096);
     CHECK(s.passed == 0);
@@ -164,7 +150,7 @@ TEST_CASE("GLASS_STATS: fragments rejected by the depth, scissor, alpha and sten
   SUBCASE("the stencil test") {
     glEnable(GL_STENCIL_TEST);
     glStencilFunc(GL_NEVER, 0, 0xFF);
-    rectangleNdc(-1.0f, -1.0f, 1.0f, 0.0f, 0.0f);
+    glass::test::rectangleNdc(-1.0f, -1.0f, 1.0f, 0.0f, 0.0f);
     const auto& s = counts();
     CHECK(s.stencilRejected == 2048);
     CHECK(s.passed == 0);
@@ -185,13 +171,13 @@ TEST_CASE("GLASS_STATS counts the texels each lookup reads") {
   SUBCASE("nearest: one texel a fragment") {
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    rectangleNdc(-1.0f, -1.0f, 1.0f, 1.0f, 0.0f);
+    glass::test::rectangleNdc(-1.0f, -1.0f, 1.0f, 1.0f, 0.0f);
     CHECK(counts().texelReads == 4096);
   }
   SUBCASE("linear: four") {
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    rectangleNdc(-1.0f, -1.0f, 1.0f, 1.0f, 0.0f);
+    glass::test::rectangleNdc(-1.0f, -1.0f, 1.0f, 1.0f, 0.0f);
     CHECK(counts().texelReads == 4 * 4096);
   }
   SUBCASE("trilinear between two levels: eight") {
@@ -201,7 +187,7 @@ TEST_CASE("GLASS_STATS counts the texels each lookup reads") {
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     glMatrixMode(GL_TEXTURE);
     glScalef(2.828427125f, 2.828427125f, 1.0f);
-    rectangleNdc(-1.0f, -1.0f, 1.0f, 1.0f, 0.0f);
+    glass::test::rectangleNdc(-1.0f, -1.0f, 1.0f, 1.0f, 0.0f);
     CHECK(counts().texelReads == 8 * 4096);
   }
 }
@@ -219,7 +205,7 @@ TEST_CASE("GLASS_STATS counts the vertices of glDrawArrays and leaves the pictur
     glVertexPointer(2, GL_FLOAT, 0, positions);
     glDrawArrays(GL_QUADS, 0, 4);
     glColor3f(0.2f, 0.8f, 0.4f);
-    rectangleNdc(-0.5f, -0.5f, 1.0f, 1.0f, 0.5f);
+    glass::test::rectangleNdc(-0.5f, -0.5f, 1.0f, 1.0f, 0.5f);
     glFinish();
   };
   std::vector<uint8_t> plain;

@@ -68,6 +68,21 @@ inline void pixelProjection(int width, int height) {
   glLoadIdentity();
 }
 
+// An axis-aligned rectangle in normalized device coordinates (identity matrices) at depth z,
+// texture coordinates 0 to 1 across it.
+inline void rectangleNdc(float x0, float y0, float x1, float y1, float z) {
+  glBegin(GL_QUADS);
+  glTexCoord2f(0.0f, 0.0f);
+  glVertex3f(x0, y0, z);
+  glTexCoord2f(1.0f, 0.0f);
+  glVertex3f(x1, y0, z);
+  glTexCoord2f(1.0f, 1.0f);
+  glVertex3f(x1, y1, z);
+  glTexCoord2f(0.0f, 1.0f);
+  glVertex3f(x0, y1, z);
+  glEnd();
+}
+
 // Reads and clears the GL error flag.
 inline GLenum takeError() { return glGetError(); }
 

@@ -5,6 +5,7 @@
 #include "glut_state.h"
 #include "popup_menu.h"
 #include "presentation.h"
+#include "view_key.h"
 #include "window_lifecycle.h"
 
 namespace glass::glut {
@@ -106,7 +107,10 @@ void dispatchInput(const InputEvent& e) {
     case InputKind::Key:
     case InputKind::KeyUp:
     case InputKind::Special:
-    case InputKind::SpecialUp: dispatchKey(*window, e); return;
+    case InputKind::SpecialUp:
+      // Ctrl+Alt+V is glass's, not the program's (view_key.h).
+      if (!takeViewKey(*window, e)) dispatchKey(*window, e);
+      return;
     case InputKind::Button: dispatchButton(*window, e); return;
     case InputKind::Wheel: dispatchWheel(*window, e); return;
     case InputKind::Motion: dispatchMotion(*window, e); return;

@@ -9,6 +9,7 @@
 #include <map>
 
 #include "glut_state.h"
+#include "view_key.h"
 
 namespace glass::glut {
 
@@ -299,7 +300,7 @@ bool displayIsHeadless() { return headless; }
 bool createSystemWindow(Window& window) {
   const int x = window.x >= 0 ? window.x : static_cast<int>(SDL_WINDOWPOS_UNDEFINED);
   const int y = window.y >= 0 ? window.y : static_cast<int>(SDL_WINDOWPOS_UNDEFINED);
-  window.sdlWindow = SDL_CreateWindow(window.title.c_str(), x, y, window.width, window.height,
+  window.sdlWindow = SDL_CreateWindow(shownTitle(window).c_str(), x, y, window.width, window.height,
                                       SDL_WINDOW_RESIZABLE);
   return window.sdlWindow != nullptr;
 }
@@ -330,7 +331,7 @@ void showOnScreen(Window& window) {
 }
 
 void setSystemWindowTitle(Window& window) {
-  if (window.sdlWindow) SDL_SetWindowTitle(window.sdlWindow, window.title.c_str());
+  if (window.sdlWindow) SDL_SetWindowTitle(window.sdlWindow, shownTitle(window).c_str());
 }
 
 void setSystemWindowSize(Window& window, int width, int height) {

@@ -73,6 +73,15 @@ GLASS_API void glassSetFlushCallback(GlassContext *ctx, GlassFlushCallback callb
 GLASS_API int glassWritePixelsPNG(const char *path, int width, int height,
                                   const unsigned char *rgba);
 
+/* The teaching view ctx's pictures show (docs/teaching.md): "depth", "overdraw", "wireframe",
+ * "normals" or "mipmap", or NULL for the program's own colours; GLASS_VIEW sets it when a context
+ * is created, glass's GLUT switches it on Ctrl+Alt+V. The view gathers from the next draw on.
+ * 1 on success; 0 for a NULL context, an unknown name or a call between glBegin and glEnd, and
+ * then nothing changed. */
+GLASS_API int glassSetView(GlassContext *ctx, const char *name);
+/* The name of ctx's view, or NULL when it shows the program's colours (or ctx is NULL). */
+GLASS_API const char *glassGetView(const GlassContext *ctx);
+
 #ifdef __cplusplus
 }
 #endif

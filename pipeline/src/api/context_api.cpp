@@ -1,8 +1,9 @@
-// glass/context.h: creating offscreen contexts, making them current, writing PNGs, and the hooks
-// of window systems (resizing, the flush callback).
+// glass/context.h: creating offscreen contexts, making them current, writing PNGs, the hooks
+// of window systems (resizing, the flush callback), and switching the teaching view.
 #include <glass/context.h>
 
 #include <new>
+#include <optional>
 
 #include "core/context.h"
 #include "core/png_writer.h"
@@ -94,4 +95,25 @@ void glassSetFlushCallback(GlassContext* ctx, GlassFlushCallback callback, void*
 
 int glassWritePixelsPNG(const char* path, int width, int height, const unsigned char* rgba) {
   return glass::gl::writeRGBAPixelsPNG(rgba, width, height, path) ? 1 : 0;
+}
+
+int glassSetView(GlassContext* ctx, const char* name) {
+  if (!ctx) return 0;
+  std::optional<glass::gl::TeachingView> view;
+  if (name) {
+    view = glass::gl::parseTeachingView(name);
+    if (!view) return 0;
+  }
+  // Between glBegin and glEnd the draw under way holds the view's canvas.
+  if (ctx->gl.assembly.active) return 0;
+  // The rasterizer's threads write into the canvas a queued draw holds: they must be done.
+  glass::gl::finishQueuedDrawing(ctx->gl);
+  glass::gl::setTeachingView(ctx->gl, view);
+  return 1;
+}
+
+const char* glassGetView(const GlassContext* ctx) {
+  if (!ctx) return nullptr;
+  const std::optional<glass::gl::TeachingView> view = glass::gl::teachingViewOf(ctx->gl);
+  return view ? glass::gl::teachingViewName(*view) : nullptr;
 }

@@ -3,6 +3,7 @@
 #include "primitive/draw_pipeline.h"
 #include "primitive/queued_drawing.h"
 #include "teaching/frame_statistics.h"
+#include "teaching/statistics_query.h"
 #include "teaching/teaching_view.h"
 #include "teaching/vertex_trace.h"
 
@@ -21,6 +22,7 @@ Context::Context(int width, int height)
 Context::~Context() {
   detachTeachingView(*this);
   detachFrameStatistics(*this);
+  detachStatisticsQueries(*this);
   detachVertexTrace(*this);
 }
 

@@ -9,9 +9,10 @@ namespace glass::gl {
 namespace {
 
 // Every extension whose functionality glass implements, and no other: <GL/glext.h> (and <GL/gl.h>
-// for GL_ARB_multitexture and glass's own) declares exactly these, and tests/api_coverage checks
-// that the two lists agree. Most are the GL 1.2-1.4 core features under the names programs of
-// the time use; the last two are glass's own (docs/lighting.md, docs/texturing.md).
+// for GL_ARB_multitexture and glass's own, <GL/glass_statistics.h> for its statistics queries)
+// declares exactly these, and tests/api_coverage checks that the lists agree. Most are the GL
+// 1.2-1.4 core features under the names programs of the time use; the last three are glass's own
+// (docs/lighting.md, docs/texturing.md, docs/teaching.md).
 constexpr const char* kExtensions =
     "GL_ARB_depth_texture GL_ARB_imaging GL_ARB_multitexture GL_ARB_multisample GL_ARB_shadow "
     "GL_ARB_point_parameters GL_ARB_texture_border_clamp "
@@ -27,7 +28,7 @@ constexpr const char* kExtensions =
     "GL_EXT_texture_env_add GL_EXT_texture_env_combine GL_EXT_texture_lod_bias "
     "GL_EXT_texture_object GL_IBM_texture_mirrored_repeat GL_NV_blend_square "
     "GL_SGIS_generate_mipmap GL_SGIS_texture_edge_clamp GL_SGIS_texture_lod "
-    "GL_WIN_phong_shading GL_GLASS_bump_map";
+    "GL_WIN_phong_shading GL_GLASS_bump_map GL_GLASS_pipeline_statistics";
 
 // "glass software rasterizer (SIMD: <target>)", or "(fast paths off)" with GLASS_FAST_PATHS=0:
 // what a benchmark of the renderer should report beside its figures.

@@ -19,6 +19,14 @@ PerContextTable<FrameStatistics>& statisticsTable() {
 }
 
 void restart(FrameStatistics& s) {
+  // A query that spans frames keeps what this one gave it (frame_statistics.h).
+  if (s.queryActive) {
+    const PipelineCounts frame = pipelineCountsOf(s);
+    for (int i = 0; i < kPipelineCountKinds; ++i) {
+      s.queryGathered.values[i] += frame.values[i] - s.queryFrameStart.values[i];
+    }
+    s.queryFrameStart = PipelineCounts{};
+  }
   s.vertices = s.points = s.lines = s.triangles = 0;
   s.culled = s.clippedAway = s.clipped = s.producedByClipping = 0;
   for (std::atomic<std::uint64_t>* count : {&s.fragments, &s.scissorRejected, &s.alphaRejected, &s.stencilRejected,
@@ -50,7 +58,47 @@ void addFragmentTally(FrameStatistics& s, int fragments, const FragmentTally& t)
 void attachFrameStatisticsFromEnvironment(Context& ctx) {
   const char* value = std::getenv("GLASS_STATS");
   if (!value || !*value || std::string_view(value) == "0") return;
-  statisticsTable().attach(ctx, std::make_unique<FrameStatistics>());
+  statisticsTable().attach(ctx, std::make_unique<FrameStatistics>()).printsFrames = true;
+}
+
+PipelineCounts pipelineCountsOf(const FrameStatistics& s) {
+  PipelineCounts counts;
+  counts.values = {s.vertices,
+                   s.points,
+                   s.lines,
+                   s.triangles,
+                   s.culled,
+                   s.clippedAway,
+                   s.clipped,
+                   s.producedByClipping,
+                   s.fragments.load(),
+                   s.scissorRejected.load(),
+                   s.alphaRejected.load(),
+                   s.stencilRejected.load(),
+                   s.depthRejected.load(),
+                   s.passed.load(),
+                   s.texelReads.load()};
+  return counts;
+}
+
+void beginQueryCounting(Context& ctx) {
+  FrameStatistics* s = frameStatisticsFor(ctx);
+  if (s == nullptr) s = &statisticsTable().attach(ctx, std::make_unique<FrameStatistics>());
+  s->queryActive = true;
+  s->queryGathered = PipelineCounts{};
+  s->queryFrameStart = pipelineCountsOf(*s);
+}
+
+PipelineCounts endQueryCounting(Context& ctx) {
+  FrameStatistics* s = frameStatisticsFor(ctx);
+  if (s == nullptr) return PipelineCounts{};
+  PipelineCounts counts = s->queryGathered;
+  const PipelineCounts now = pipelineCountsOf(*s);
+  for (int i = 0; i < kPipelineCountKinds; ++i) counts.values[i] += now.values[i] - s->queryFrameStart.values[i];
+  s->queryActive = false;
+  // No cost once no query is active: the draws find no statistics again.
+  if (!s->printsFrames) statisticsTable().detach(ctx);
+  return counts;
 }
 
 void detachFrameStatistics(const Context& ctx) { statisticsTable().detach(ctx); }
@@ -84,7 +132,7 @@ std::string formatFrameStatistics(const FrameStatistics& s) {
 
 void reportFrameStatistics(Context& ctx) {
   FrameStatistics* s = frameStatisticsFor(ctx);
-  if (s == nullptr) return;
+  if (s == nullptr || !s->printsFrames) return;
   const bool drew = s->vertices != 0 || s->fragments.load() != 0;
   if (!drew) return;
   std::fputs(formatFrameStatistics(*s).c_str(), stderr);

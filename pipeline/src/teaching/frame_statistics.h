@@ -19,8 +19,12 @@
 // With GLASS_STATS set, the draws go the general way (no early depth test in the rasterizer, no
 // fast fragment kernels, the scissor test in the fragment stage), so that every fragment is seen
 // by the stage that counts it; the pictures are the same bytes.
+//
+// GL_GLASS_pipeline_statistics (statistics_query.h) reads the same counts through query
+// objects: a context gets them while GLASS_STATS is set or while a query is active, and only then.
 #pragma once
 
+#include <array>
 #include <atomic>
 #include <cstdint>
 #include <string>
@@ -30,6 +34,17 @@
 namespace glass::gl {
 
 struct Context;
+
+// The counts as plain numbers, in the order of the report: what a query returns.
+enum class PipelineCount {
+  Vertices, Points, Lines, Triangles, Culled, ClippedAway, Clipped, ProducedByClipping,
+  Fragments, ScissorRejected, AlphaRejected, StencilRejected, DepthRejected, Passed, TexelReads,
+};
+inline constexpr int kPipelineCountKinds = static_cast<int>(PipelineCount::TexelReads) + 1;
+struct PipelineCounts {
+  std::array<std::uint64_t, kPipelineCountKinds> values{};
+  std::uint64_t operator[](PipelineCount count) const { return values[static_cast<int>(count)]; }
+};
 
 struct FrameStatistics {
   // Counted on the drawing thread.
@@ -43,7 +58,23 @@ struct FrameStatistics {
   std::atomic<std::uint64_t> passed{0};
   std::atomic<std::uint64_t> texelReads{0};
   std::uint64_t frame = 0;  // frames presented so far: the number of this one, counting from 0
+
+  bool printsFrames = false;  // GLASS_STATS is set: each frame is reported and counted anew
+  // While a query is active: what it gathered in the frames presented since it began, and the
+  // counts of the current frame when it began (zero for the frames after).
+  bool queryActive = false;
+  PipelineCounts queryGathered, queryFrameStart;
 };
+
+// The counts so far (of the frame, with GLASS_STATS; since counting began, without).
+PipelineCounts pipelineCountsOf(const FrameStatistics& statistics);
+
+// A query begins: ctx counts from now on (attached now unless GLASS_STATS attached it). The
+// queued drawing must be finished.
+void beginQueryCounting(Context& ctx);
+// The query ends: the counts since it began. Without GLASS_STATS, ctx stops counting. The queued
+// drawing must be finished.
+PipelineCounts endQueryCounting(Context& ctx);
 
 // The fragment stage's counts for one batch, added to the frame's at the batch's end.
 struct FragmentTally {

@@ -1,6 +1,7 @@
 /* Keyboard, special keys, modifiers and reshape: the arrow keys move a 20 x 20 square on a grid
  * of 20-pixel cells, 'r' and 'R' make it red, 'g' green (with Ctrl, Ctrl+G is character 7 and
- * makes it blue), and a reshape keeps one pixel per unit with the origin at the bottom left. */
+ * makes it blue), and a reshape keeps one pixel per unit with the origin at the bottom left.
+ * Every key the keyboard callbacks get is printed, with its modifiers. */
 #include <stdio.h>
 #include <GL/glut.h>
 
@@ -10,10 +11,19 @@ static float color[3] = {1, 1, 1};
 static void keyboard(unsigned char key, int x, int y)
 {
   (void)x; (void)y;
+  printf("key %d modifiers %d\n", key, glutGetModifiers());
+  fflush(stdout);
   if (key == 'r' || key == 'R') { color[0] = 1; color[1] = 0; color[2] = 0; }
   if (key == 'g') { color[0] = 0; color[1] = 1; color[2] = 0; }
   if (key == 7 && (glutGetModifiers() & GLUT_ACTIVE_CTRL)) { color[0] = 0; color[1] = 0; color[2] = 1; }
   glutPostRedisplay();
+}
+
+static void keyboardUp(unsigned char key, int x, int y)
+{
+  (void)x; (void)y;
+  printf("key up %d\n", key);
+  fflush(stdout);
 }
 
 static void special(int key, int x, int y)
@@ -55,6 +65,7 @@ int main(int argc, char** argv)
   glutDisplayFunc(display);
   glutReshapeFunc(reshape);
   glutKeyboardFunc(keyboard);
+  glutKeyboardUpFunc(keyboardUp);
   glutSpecialFunc(special);
   glutMainLoop();
   return 0;
