@@ -7,14 +7,7 @@ glass=$2
 probe=$3
 ifs=$4
 work=$5
-rm -rf "$work"
-mkdir -p "$work"
-cd "$work"
-
-fail() {
-  echo "FAIL: $*" >&2
-  exit 1
-}
+. "$(dirname "$0")/../shell_test_support.sh"
 
 size=240x240
 view() {  # EVENTS-TEXT SNAPSHOT [OPTIONS...]

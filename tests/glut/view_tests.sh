@@ -8,14 +8,7 @@ glass=$2
 probe=$3
 scene=$4
 work=$5
-rm -rf "$work"
-mkdir -p "$work"
-cd "$work"
-
-fail() {
-  echo "FAIL: $*" >&2
-  exit 1
-}
+. "$(dirname "$0")/../shell_test_support.sh"
 
 view() {  # EVENTS-TEXT SNAPSHOT [SCENE]
   printf '%s' "$1" >events.txt

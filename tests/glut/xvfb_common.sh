@@ -1,14 +1,7 @@
 # What the real-window tests (xvfb_window.sh, xvfb_view_key.sh) share; sourced after they set
 # `bin` and `work`: a fresh WORK_DIR to work in, fail, await, Listing 5 started in a window and
 # screenshots of the window.
-rm -rf "$work"
-mkdir -p "$work"
-cd "$work"
-
-fail() {
-  echo "FAIL: $*" >&2
-  exit 1
-}
+. "$(dirname "$0")/../shell_test_support.sh"
 
 # The window's content now, as a PNG.
 screenshot() {

@@ -10,14 +10,7 @@ glass_program=$1
 freeglut_program=$2
 glass=$3
 work=$4
-rm -rf "$work"
-mkdir -p "$work"
-cd "$work"
-
-fail() {
-  echo "FAIL: $*" >&2
-  exit 1
-}
+. "$(dirname "$0")/../shell_test_support.sh"
 
 SDL_VIDEODRIVER=dummy GLASS_GLUT_SNAPSHOT=glass.png "$glass_program" >glass_out.txt 2>&1 ||
   fail "the glass program wrote no snapshot"

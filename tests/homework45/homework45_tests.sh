@@ -7,14 +7,7 @@ program=$1
 probe=$2
 work=$3
 model=$4
-rm -rf "$work"
-mkdir -p "$work"
-cd "$work"
-
-fail() {
-  echo "FAIL: $*" >&2
-  exit 1
-}
+. "$(dirname "$0")/../shell_test_support.sh"
 
 # repeat N LINE: the event line N times.
 repeat() {

@@ -6,13 +6,7 @@ set -eu
 program=$1
 probe=$2
 work=$3
-rm -rf "$work"
-mkdir -p "$work"
-cd "$work"
-fail() {
-  echo "FAIL: $*" >&2
-  exit 1
-}
+. "$(dirname "$0")/../shell_test_support.sh"
 expect_text() {  # FILE TEXT
   grep -F -- "$2" "$1" >/dev/null || { echo "--- $1:" >&2; cat "$1" >&2; fail "$1 lacks: $2"; }
 }
