@@ -8,12 +8,12 @@ set -eu
 # Build: compilers, CMake and make. Libraries: GLM (maths), stb (PNG files), doctest (unit
 # tests), OpenImageIO (image comparison in tests). Reference tool: OSMesa and GLU (the same GL
 # programs rendered by Mesa), freeglut's headers. Model loading: tinyobjloader, zlib (Wings3D
-# files). GLUT windows: SDL2; their test in a real window: Xvfb, xdotool, xwd (x11-apps),
-# ImageMagick. The OSMesa tests: PyOpenGL and numpy. Test data: erlang-base (Erlang's
-# term_to_binary writes the .wings test files).
+# files). SIMD kernels with run-time dispatch: Highway. GLUT windows: SDL2; their test in a
+# real window: Xvfb, xdotool, xwd (x11-apps), ImageMagick. The OSMesa tests: PyOpenGL and
+# numpy. Test data: erlang-base (Erlang's term_to_binary writes the .wings test files).
 PACKAGES="gcc g++ cmake make pkg-config libglm-dev libstb-dev doctest-dev libopenimageio-dev
 openimageio-tools libosmesa6-dev libglu1-mesa-dev freeglut3-dev libtinyobjloader-dev
-libsdl2-dev xvfb xdotool x11-apps imagemagick python3-opengl python3-numpy zlib1g-dev erlang-base"
+libsdl2-dev libhwy-dev xvfb xdotool x11-apps imagemagick python3-opengl python3-numpy zlib1g-dev erlang-base"
 
 missing=""
 for package in $PACKAGES; do

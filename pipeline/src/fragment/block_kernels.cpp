@@ -1,4 +1,7 @@
-// The kernels of block_kernels.h: one template, specialised by the key.
+// The kernels of block_kernels.h: one template, specialised by the key, compiled once for each
+// SIMD target (hwy/foreach_target.h re-includes this file per target); blockKernelFor takes the
+// copy of the target the processor supports best, or of the one GLASS_SIMD_TARGET names
+// (core/fast_paths.h, core/simd_dispatch.h).
 //
 // Equality with the reference path, value by value:
 //   depth     the triangle walk computed it; the reference path's depth test after the early
@@ -7,13 +10,23 @@
 //   varyings  the reference path (emitBlockFragments, rasterizer/src/triangle_rasterize.cpp)
 //             computes float((p_column + p_row) / (q_column + q_row)) with p_column = a0 + dx x,
 //             p_row = dy y, q_column = invW0 + invWdx x, q_row = invWdy y at the pixel centre;
-//             BlockVaryings does exactly that, for the slots the key needs only. When the 1/w
-//             plane is the constant 1 (an orthographic view), q is exactly 1.0 and dividing by it
-//             changes no bit, so the division is skipped.
+//             BlockVaryings does exactly that, for the slots the key needs only, a row of
+//             columns per vector operation. When the 1/w plane is the constant 1 (an
+//             orthographic view), q is exactly 1.0 and dividing by it changes no bit, so the
+//             division is skipped.
 //   colour    the same functions as the reference path on the same floats: texture_hooks.h's
 //             lookup (through Sampler2D, which gives sampleTexture's bits) and environment, then
-//             floatToColorByte and one store.
-#include "fragment/block_kernels.h"
+//             floatToColorByte (here on a row of pixels at a time) and one store.
+//
+// Equality between targets: every vector operation here is one IEEE operation per lane (add,
+// multiply, exact division, conversion with round-to-nearest), which gives the same bits at any
+// vector width. Multiplies and adds stay separate (no MulAdd, which fuses on targets with FMA, and
+// -ffp-contract=off keeps the compiler from fusing them); no approximate reciprocal. The test
+// image_simd_targets renders every image-test program with each target and compares the bytes.
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "fragment/block_kernels.cpp"
+#include <hwy/foreach_target.h>  // IWYU pragma: keep
+#include <hwy/highway.h>
 
 #include <array>
 #include <bit>
@@ -21,25 +34,34 @@
 #include <optional>
 
 #include "core/context.h"
+#include "core/simd_dispatch.h"
+#include "fragment/block_kernels.h"
 #include "fragment/color_conversion.h"
 #include "glass/raster/triangle.h"
+#include "texture/sampler_2d.h"
 #include "texture/texture_environment.h"
 #include "texture/texture_hooks.h"
-#include "texture/sampler_2d.h"
 #include "vertex/varyings.h"
 
+HWY_BEFORE_NAMESPACE();
 namespace glass::gl {
+namespace HWY_NAMESPACE {
 namespace {
 
+namespace hn = hwy::HWY_NAMESPACE;
+
 constexpr int kSize = raster::CoveredBlock::kSize;
+// A block row's eight columns: one to four vectors of doubles, depending on the target.
+using RowDoubles = hn::CappedTag<double, kSize>;
+using RowFloats = hn::CappedTag<float, kSize>;
 
 int firstBit(unsigned mask) { return std::countr_zero(mask); }
 int lastBit(unsigned mask) { return std::bit_width(mask) - 1; }
 
 // The perspective-correct values of the varyings `Slots` at the pixel centres of one block,
 // a row at a time: the column parts once per block, the row parts once per row, then the values
-// of the row from its first to its last covered column (the uncovered columns between too:
-// loops without branches the compiler can vectorise; their values are never read).
+// of all eight columns of the row (covered or not: a few vectors without branches; the values
+// of uncovered columns are never read).
 template <int... Slots>
 class BlockVaryings {
  public:
@@ -49,86 +71,114 @@ class BlockVaryings {
       : planes_(planes), rowY0_(block.by + 0.5) {
     constexpr int slots[kCount] = {Slots...};
     unitQ_ = planes.invW0 == 1.0 && planes.invWdx == 0.0 && planes.invWdy == 0.0;
-    unsigned columns = 0;
-    for (const uint8_t mask : block.rowMask) columns |= mask;
     const double columnX0 = block.bx + 0.5;
-    for (int i = firstBit(columns); i <= lastBit(columns); ++i) {
+    for (int i = 0; i < kSize; ++i) {
       const double x = columnX0 + i;
       qColumn_[i] = planes.invW0 + planes.invWdx * x;
       for (int n = 0; n < kCount; ++n) pColumn_[n][i] = planes.a0[slots[n]] + planes.dx[slots[n]] * x;
     }
   }
 
-  // Computes the values of row j, whose covered columns are the bits of `mask` (not 0); value(n, i)
-  // then reads them.
-  void computeRow(int j, unsigned mask) {
+  // Computes the values of row j; value(n, i) and row(n) then read them.
+  void computeRow(int j) {
     constexpr int slots[kCount] = {Slots...};
-    const int first = firstBit(mask), last = lastBit(mask);
+    const RowDoubles d;
+    const hn::Rebind<float, RowDoubles> f;
     const double y = rowY0_ + j;
-    const double qRow = planes_.invWdy * y;
-    double q[kSize];
-    for (int i = first; i <= last; ++i) q[i] = qColumn_[i] + qRow;
+    const auto qRow = hn::Set(d, planes_.invWdy * y);
     for (int n = 0; n < kCount; ++n) {
-      const double pRow = planes_.dy[slots[n]] * y;
-      if (unitQ_) {
-        for (int i = first; i <= last; ++i) values_[n][i] = static_cast<float>(pColumn_[n][i] + pRow);
-      } else {
-        for (int i = first; i <= last; ++i)
-          values_[n][i] = static_cast<float>((pColumn_[n][i] + pRow) / q[i]);
+      const auto pRow = hn::Set(d, planes_.dy[slots[n]] * y);
+      for (int i = 0; i < kSize; i += static_cast<int>(hn::Lanes(d))) {
+        auto value = hn::Add(hn::Load(d, &pColumn_[n][i]), pRow);
+        if (!unitQ_) value = hn::Div(value, hn::Add(hn::Load(d, &qColumn_[i]), qRow));
+        hn::Store(hn::DemoteTo(f, value), f, &values_[n][i]);
       }
     }
   }
 
   float value(int n, int i) const { return values_[n][i]; }
-  // Values of varying n at columns 4 * quarter .. 4 * quarter + 3 (any of them, once computed
-  // for the row; columns outside the row's run hold earlier or zero values, never read as
-  // pixels).
-  ColorLanes lanes(int n, int quarter) const {
-    ColorLanes result;
-    std::memcpy(&result, &values_[n][4 * quarter], sizeof result);
-    return result;
-  }
+  const float* row(int n) const { return values_[n]; }
 
  private:
   const raster::AttributePlanes& planes_;
   double rowY0_;
   bool unitQ_;
-  double qColumn_[kSize];
-  double pColumn_[kCount > 0 ? kCount : 1][kSize];
-  float values_[kCount > 0 ? kCount : 1][kSize] = {};
+  alignas(64) double qColumn_[kSize];
+  alignas(64) double pColumn_[kCount][kSize];
+  alignas(64) float values_[kCount][kSize] = {};
 };
 
+// floatToColorByte and packColorBytes (color_conversion.h) on the eight pixels of a row, whose
+// components are in the arrays red .. alpha: the same operations lane by lane.
+void packRowColors(const float* red, const float* green, const float* blue, const float* alpha,
+                   uint32_t words[kSize]) {
+  const RowFloats f;
+  const hn::RebindToUnsigned<RowFloats> u;
+  auto toByte = [&](const float* channel, int i) {
+    const auto c = hn::Load(f, channel + i);
+    // Multiply, then add: two roundings, as in floatToColorByte (no fused multiply-add).
+    const auto sum = hn::Add(hn::Mul(c, hn::Set(f, 255.0f / 256.0f)), hn::Set(f, 32768.0f));
+    const auto inRange = hn::And(hn::BitCast(u, sum), hn::Set(u, 0xFFu));
+    const auto belowOne = hn::IfThenElse(hn::RebindMask(u, hn::Ge(c, hn::Set(f, 1.0f))),
+                                         hn::Set(u, 255u), inRange);
+    return hn::IfThenElseZero(hn::RebindMask(u, hn::Gt(c, hn::Zero(f))), belowOne);  // 0 for NaN
+  };
+  for (int i = 0; i < kSize; i += static_cast<int>(hn::Lanes(f))) {
+    const auto r = toByte(red, i), g = toByte(green, i), b = toByte(blue, i), a = toByte(alpha, i);
+    if constexpr (std::endian::native == std::endian::little) {
+      hn::Store(hn::Or(hn::Or(r, hn::ShiftLeft<8>(g)), hn::Or(hn::ShiftLeft<16>(b), hn::ShiftLeft<24>(a))),
+                u, words + i);
+    } else {
+      hn::Store(hn::Or(hn::Or(hn::ShiftLeft<24>(r), hn::ShiftLeft<16>(g)), hn::Or(hn::ShiftLeft<8>(b), a)),
+                u, words + i);
+    }
+  }
+}
+
+// quotient[i] = numerator[i] / denominator[i] for the eight columns of a row, in float (the
+// reference's s / q and t / q of a texture lookup).
+void divideRow(const float* numerator, const float* denominator, float quotient[kSize]) {
+  const RowFloats f;
+  for (int i = 0; i < kSize; i += static_cast<int>(hn::Lanes(f)))
+    hn::Store(hn::Div(hn::Load(f, numerator + i), hn::Load(f, denominator + i)), f, quotient + i);
+}
+
 // The per-block constants of texturing by singleTexture2D (texture_hooks.h), and one lambda per
-// 2x2 quad, computed by the first covered pixel of the quad that needs it. A block's rows span at
-// most five quad rows (pixelQuadOf pairs rows from the top of the window, which an odd window
-// height puts out of step with the blocks).
+// 2x2 quad. A block's rows span at most five quad rows (pixelQuadOf pairs rows from the top of
+// the window, which an odd window height puts out of step with the blocks), each of four quads.
+// The first pixel of a quad row that needs a lambda computes rho^2 for the row's four quads at
+// once; a quad's lambda follows from it when one of its pixels first needs it.
 class QuadTexturing {
  public:
-  QuadTexturing(const Context& ctx, const raster::TriangleSetup& setup, int by)
-      : ctx_(ctx),
-        planes_(setup.planes),
+  QuadTexturing(const Context& ctx, const raster::TriangleSetup& setup, int bx, int by)
+      : planes_(setup.planes),
         texture_(ctx.texture.units[0].activeTexture()),
         env_(ctx.texture.units[0].env),
         height_(ctx.framebuffer.height()),
-        firstQuadRow_(quadRow(by + kSize - 1)) {
+        firstQuadRow_(quadRow(by + kSize - 1)),
+        quadX0_(bx + 0.5) {
     if (texture_ != nullptr) {
       sampler_.emplace(*texture_);
       base_ = texture_->baseImage().base;
       needsLambda_ = needsLevelOfDetail(*texture_);
+      baseWidth_ = texture_->baseImage().width;
+      baseHeight_ = texture_->baseImage().height;
     }
+    rowKnown_.fill(false);
     for (auto& row : known_) row.fill(false);
   }
 
-  // Replaces color by the textured colour at pixel (x, y) with texture coordinates (s, t, q).
-  void apply(int x, int y, float s, float t, float q, float color[4]) {
-    if (texture_ == nullptr) return;  // the unit is off (spec 3.8.15)
-    const float sq = s / q, tq = t / q;
+  bool active() const { return texture_ != nullptr; }  // the unit is on (spec 3.8.15)
+
+  // Replaces color by the textured colour at pixel (x, y) with projected texture coordinates
+  // (s/q, t/q) = (sq, tq).
+  void apply(int x, int y, float sq, float tq, float color[4]) {
     float texel[4];
     if (needsLambda_) {
       const int row = quadRow(y) - firstQuadRow_, column = (x >> 1) & 3;
       if (!known_[row][column]) {
-        lambda_[row][column] =
-            quadLevelOfDetail(ctx_, *texture_, varying::kTexCoord, env_.lodBias, planes_, x, y);
+        if (!rowKnown_[row]) computeRowScales(row);
+        lambda_[row][column] = textureLevelOfDetail(*texture_, env_.lodBias, rhoSquared_[row][column]);
         known_[row][column] = true;
       }
       sampler_->sample(sq, tq, lambda_[row][column], texel);
@@ -141,21 +191,65 @@ class QuadTexturing {
  private:
   int quadRow(int y) const { return (height_ - 1 - y) >> 1; }
 
-  const Context& ctx_;
+  // rho^2 of the four quads of quad row `row`, as quadLevelOfDetail computes it for a 2D texture
+  // (quadTexCoordDifferences and textureScaleFactorSquared of texture_lod.h), the same operations
+  // in the same order, one quad per lane.
+  void computeRowScales(int row) {
+    const hn::CappedTag<double, 4> d;
+    constexpr int s = varying::kTexCoord, t = varying::kTexCoord + 1, q = varying::kTexCoord + 3;
+    const raster::AttributePlanes& p = planes_;
+    const double top = height_ - 1 - 2 * (firstQuadRow_ + row);  // pixelQuadOf's upper row
+    const double y = top + 0.5;
+    const auto bx = hn::Set(d, p.dx[q]), by = hn::Set(d, p.dy[q]);
+    const auto one = hn::Set(d, 1.0);
+    const auto width = hn::Set(d, static_cast<double>(baseWidth_));
+    const auto height = hn::Set(d, static_cast<double>(baseHeight_));
+    auto plane = [&](int v, auto x) {  // a0 + dx x + dy y, left to right
+      return hn::Add(hn::Add(hn::Set(d, p.a0[v]), hn::Mul(hn::Set(d, p.dx[v]), x)),
+                     hn::Set(d, p.dy[v] * y));
+    };
+    for (int k = 0; k < 4; k += static_cast<int>(hn::Lanes(d))) {
+      // The upper-left pixel centres of quads k, k + 1, ...: x = left + 0.5, left = bx + 2 k.
+      alignas(32) double lefts[4];
+      for (int i = 0; i < 4; ++i) lefts[i] = quadX0_ + 2 * (k + i);
+      const auto x = hn::Load(d, lefts);
+      const auto a = plane(s, x), b = plane(q, x), c = plane(t, x);
+      const auto inverseRight = hn::Div(one, hn::Mul(b, hn::Add(b, bx)));
+      const auto inverseLower = hn::Div(one, hn::Mul(b, hn::Sub(b, by)));
+      // (slope b - value along) inverse: a difference of quadTexCoordDifferences.
+      auto difference = [&](const auto& value, const auto& along, double slope, const auto& inverse) {
+        return hn::Mul(hn::Sub(hn::Mul(hn::Set(d, slope), b), hn::Mul(value, along)), inverse);
+      };
+      const auto dudx = hn::Mul(difference(a, bx, p.dx[s], inverseRight), width);
+      const auto dudy = hn::Mul(difference(a, by, p.dy[s], inverseLower), width);
+      const auto dvdx = hn::Mul(difference(c, bx, p.dx[t], inverseRight), height);
+      const auto dvdy = hn::Mul(difference(c, by, p.dy[t], inverseLower), height);
+      const auto alongX = hn::Add(hn::Mul(dudx, dudx), hn::Mul(dvdx, dvdx));
+      const auto alongY = hn::Add(hn::Mul(dudy, dudy), hn::Mul(dvdy, dvdy));
+      // std::max(alongX, alongY): alongY only when alongX < alongY (NaN keeps alongX).
+      hn::Store(hn::IfThenElse(hn::Lt(alongX, alongY), alongY, alongX), d, &rhoSquared_[row][k]);
+    }
+    rowKnown_[row] = true;
+  }
+
   const raster::AttributePlanes& planes_;
   const TextureObject* texture_;
   const TextureEnvironment& env_;
   std::optional<Sampler2D> sampler_;  // texture_'s lookups, prepared once per block
   BaseFormat base_ = BaseFormat::RGBA;
   int height_, firstQuadRow_;
+  double quadX0_;
   bool needsLambda_ = false;
+  int baseWidth_ = 0, baseHeight_ = 0;
+  std::array<bool, 5> rowKnown_;
   std::array<std::array<bool, 4>, 5> known_;
+  alignas(32) double rhoSquared_[5][4];
   float lambda_[5][4];
 };
 
 // Without texturing: nothing to do.
 struct NoTexturing {
-  NoTexturing(const Context&, const raster::TriangleSetup&, int) {}
+  NoTexturing(const Context&, const raster::TriangleSetup&, int, int) {}
 };
 
 // The varyings a kernel interpolates and what it does for texturing.
@@ -201,37 +295,29 @@ void shadeBlock(Context& ctx, const raster::TriangleSetup& setup, const raster::
   }
   if constexpr (kWriteColor) {
     typename TexturingStage<kTexturing>::Varyings varyings(setup.planes, block);
-    [[maybe_unused]] typename TexturingStage<kTexturing>::Texturing texturing(ctx, setup, by);
+    [[maybe_unused]] typename TexturingStage<kTexturing>::Texturing texturing(ctx, setup, bx, by);
     for (int j = 0; j < kSize; ++j) {
       const unsigned mask = block.rowMask[j];
       if (mask == 0) continue;
-      varyings.computeRow(j, mask);
-      auto colorWord = [&](int i) {
-        float color[4] = {varyings.value(0, i), varyings.value(1, i), varyings.value(2, i),
-                          varyings.value(3, i)};
-        if constexpr (kTexturing == KernelTexturing::Single2D) {
-          texturing.apply(bx + i, by + j, varyings.value(4, i), varyings.value(5, i),
-                          varyings.value(6, i), color);
-        }
-        return packColorBytes(floatToColorByte(color[0]), floatToColorByte(color[1]),
-                              floatToColorByte(color[2]), floatToColorByte(color[3]));
-      };
-      uint32_t words[kSize];
+      varyings.computeRow(j);
+      alignas(64) uint32_t words[kSize];
       if constexpr (kTexturing == KernelTexturing::None) {
-        // Four columns at a time, covered or not: the same conversion as colorWord's.
-        for (int quarter = 0; quarter < kSize / 4; ++quarter) {
-          const ColorWordLanes packed = packColorByteLanes(
-              floatToColorByteLanes(varyings.lanes(0, quarter)),
-              floatToColorByteLanes(varyings.lanes(1, quarter)),
-              floatToColorByteLanes(varyings.lanes(2, quarter)),
-              floatToColorByteLanes(varyings.lanes(3, quarter)));
-          std::memcpy(&words[4 * quarter], &packed, sizeof packed);
-        }
+        packRowColors(varyings.row(0), varyings.row(1), varyings.row(2), varyings.row(3), words);
       } else {
-        for (unsigned rest = mask; rest != 0; rest &= rest - 1) {
-          const int i = std::countr_zero(rest);
-          words[i] = colorWord(i);
+        alignas(64) float color[4][kSize];
+        for (int c = 0; c < 4; ++c) std::memcpy(color[c], varyings.row(c), sizeof color[c]);
+        if (texturing.active()) {
+          alignas(64) float sq[kSize], tq[kSize];
+          divideRow(varyings.row(4), varyings.row(6), sq);
+          divideRow(varyings.row(5), varyings.row(6), tq);
+          for (unsigned rest = mask; rest != 0; rest &= rest - 1) {
+            const int i = std::countr_zero(rest);
+            float pixel[4] = {color[0][i], color[1][i], color[2][i], color[3][i]};
+            texturing.apply(bx + i, by + j, sq[i], tq[i], pixel);
+            for (int c = 0; c < 4; ++c) color[c][i] = pixel[c];
+          }
         }
+        packRowColors(color[0], color[1], color[2], color[3], words);
       }
       storeCoveredWords(fb.colorAt(bx, by + j), words, mask);
     }
@@ -248,6 +334,19 @@ constexpr BlockKernel kernelAt() {
 constexpr BlockKernel kKernels[8] = {kernelAt<0>(), kernelAt<1>(), kernelAt<2>(), kernelAt<3>(),
                                      kernelAt<4>(), kernelAt<5>(), kernelAt<6>(), kernelAt<7>()};
 
+}  // namespace
+
+// This target's kernel number `index` (kernelIndex below).
+BlockKernel BlockKernelAt(int index) { return kKernels[index]; }
+
+}  // namespace HWY_NAMESPACE
+}  // namespace glass::gl
+HWY_AFTER_NAMESPACE();
+
+#if HWY_ONCE
+namespace glass::gl {
+namespace {
+
 int kernelIndex(const BlockKernelKey& key) {
   const bool textured = key.writeColor && key.texturing == KernelTexturing::Single2D;
   return (key.writeDepth ? 1 : 0) | (key.writeColor ? 2 : 0) | (textured ? 4 : 0);
@@ -255,6 +354,11 @@ int kernelIndex(const BlockKernelKey& key) {
 
 }  // namespace
 
-BlockKernel blockKernelFor(const BlockKernelKey& key) { return kKernels[kernelIndex(key)]; }
+constexpr SimdFunctions<BlockKernel (*)(int)> kBlockKernelAt = GLASS_SIMD_FUNCTIONS(BlockKernelAt);
+
+BlockKernel blockKernelFor(const BlockKernelKey& key) {
+  return chosenSimdFunction(kBlockKernelAt)(kernelIndex(key));
+}
 
 }  // namespace glass::gl
+#endif  // HWY_ONCE

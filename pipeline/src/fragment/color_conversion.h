@@ -10,7 +10,6 @@
 
 #include <bit>
 #include <cstdint>
-#include <cstring>
 
 namespace glass::gl {
 
@@ -19,24 +18,11 @@ inline uint8_t floatToColorByte(float c) {
   // nearest multiple of 1/256 (ties to even), and its low mantissa bits hold scaled * 256.
   // For 0 < c < 1, scaled < 255/256, so the result is at most 255. The ends are chosen after
   // the sum rather than before it (selects, no branches), so that a row of pixels converts as
-  // vector code.
+  // vector code (packRowColors in fragment/block_kernels.cpp).
   const float sum = c * (255.0f / 256.0f) + 32768.0f;
   const uint32_t inRange = std::bit_cast<uint32_t>(sum) & 0xFFu;
   const uint32_t belowOne = c >= 1.0f ? 255u : inRange;
   return static_cast<uint8_t>(c > 0.0f ? belowOne : 0u);  // 0 also for NaN
-}
-
-// floatToColorByte on four values at once (GCC and Clang vector extensions: the same IEEE
-// operations lane by lane, so the same bytes), each result in the low byte of its lane.
-using ColorLanes = float __attribute__((vector_size(16)));
-using ColorWordLanes = uint32_t __attribute__((vector_size(16)));
-inline ColorWordLanes floatToColorByteLanes(ColorLanes c) {
-  const ColorLanes sum = c * (255.0f / 256.0f) + 32768.0f;
-  ColorWordLanes inRange;
-  std::memcpy(&inRange, &sum, sizeof inRange);
-  inRange &= 0xFFu;
-  const ColorWordLanes belowOne = c >= 1.0f ? ColorWordLanes{} + 255u : inRange;
-  return c > 0.0f ? belowOne : ColorWordLanes{};
 }
 
 // The 32-bit word whose bytes in memory are r, g, b, a (the colour buffer's order), so that a
@@ -47,16 +33,6 @@ inline uint32_t packColorBytes(uint8_t r, uint8_t g, uint8_t b, uint8_t a) {
     return uint32_t{r} | uint32_t{g} << 8 | uint32_t{b} << 16 | uint32_t{a} << 24;
   } else {
     return uint32_t{r} << 24 | uint32_t{g} << 16 | uint32_t{b} << 8 | uint32_t{a};
-  }
-}
-
-// packColorBytes for four pixels, from floatToColorByteLanes's results.
-inline ColorWordLanes packColorByteLanes(ColorWordLanes r, ColorWordLanes g, ColorWordLanes b,
-                                         ColorWordLanes a) {
-  if constexpr (std::endian::native == std::endian::little) {
-    return r | g << 8 | b << 16 | a << 24;
-  } else {
-    return r << 24 | g << 16 | b << 8 | a;
   }
 }
 

@@ -1,7 +1,9 @@
 // A complete 2D colour texture prepared for the lookups of one draw (the fragment kernels of
 // fragment/block_kernels.h): sampleTexture and sampleTextureMagnified (texture_sampler.h) for
 // the case that dominates drawing, with every state check done once in the constructor instead
-// of once per lookup, and everything inline so that the kernel's loop makes no call.
+// of once per lookup, and everything inline so that the kernel's loop makes no call (forced:
+// the kernels are compiled once per SIMD target, and GCC would otherwise call one out-of-line
+// baseline copy from all of them).
 //
 // The result has the same bits as the reference sampler's: the same float operations in the same
 // order (texel coordinate, the LINEAR weights, the sum over four texels, the scale by 1/255, the
@@ -32,7 +34,7 @@ class Sampler2D {
   using IntLanes = int32_t __attribute__((vector_size(16)));
   using ShortLanes = int16_t __attribute__((vector_size(16)));
   using ByteLanes = uint8_t __attribute__((vector_size(16)));
-  static TexelLanes texelLanes(const uint8_t* texel) {
+  [[gnu::always_inline]] static TexelLanes texelLanes(const uint8_t* texel) {
     // The four bytes widened to int lanes by interleaving with zeros, bytes then 16-bit halves
     // (the two unpack instructions of x86-64's SSE2), then converted to float (exact).
     uint32_t word;
@@ -49,7 +51,7 @@ class Sampler2D {
     std::memcpy(&ints, &shortHalves, sizeof ints);
     return __builtin_convertvector(ints, TexelLanes);
   }
-  static void storeLanes(TexelLanes lanes, float out[4]) { std::memcpy(out, &lanes, sizeof lanes); }
+  [[gnu::always_inline]] static void storeLanes(TexelLanes lanes, float out[4]) { std::memcpy(out, &lanes, sizeof lanes); }
 
  public:
   // `texture` is complete, its target GL_TEXTURE_2D, its images colour (not depth) images; it
@@ -78,7 +80,7 @@ class Sampler2D {
   }
 
   // sampleTexture(texture, s, t, lambda, out).
-  void sample(float s, float t, float lambda, float out[4]) const {
+  [[gnu::always_inline]] void sample(float s, float t, float lambda, float out[4]) const {
     if (lambda <= switchOverPoint_) return sampleMagnified(s, t, out);
     if (!mipmapped_) return storeLanes(sampleLevel(levels_[base_], linearWithinLevel_, s, t), out);
     const MipmapLevels m = selectMipmapLevels(lambda, minFilter_, base_, last_);
@@ -89,7 +91,7 @@ class Sampler2D {
   }
 
   // sampleTextureMagnified(texture, s, t, out).
-  void sampleMagnified(float s, float t, float out[4]) const {
+  [[gnu::always_inline]] void sampleMagnified(float s, float t, float out[4]) const {
     storeLanes(sampleLevel(levels_[base_], magnifyLinear_, s, t), out);
   }
 
@@ -102,7 +104,8 @@ class Sampler2D {
   };
 
   // The filtered texel of one level, components in [0, 1].
-  TexelLanes sampleLevel(const Level& level, bool linear, float s, float t) const {
+  [[gnu::always_inline]] TexelLanes sampleLevel(const Level& level, bool linear, float s,
+                                                float t) const {
     return linear ? sampleLinear(level, s, t) : sampleNearest(level, s, t);
   }
 
@@ -126,7 +129,7 @@ class Sampler2D {
   }
 
   // Inline for the common case (see repeatsByMask), a call for the others.
-  TexelLanes sampleLinear(const Level& level, float s, float t) const {
+  [[gnu::always_inline]] TexelLanes sampleLinear(const Level& level, float s, float t) const {
     if (level.repeatsByMask) {
       // The common case in short: keepInIntRange leaves u and v as they are (below 2^20 in
       // magnitude, not NaN), wrapTexelPair is a mask, and all four texels are inside.
@@ -174,8 +177,8 @@ class Sampler2D {
   }
 
   // The LINEAR mix of four texels inside the level, with weights from alpha and beta.
-  static TexelLanes bilinear(const Level& level, float alpha, float beta, int i0, int i1, int j0,
-                             int j1) {
+  [[gnu::always_inline]] static TexelLanes bilinear(const Level& level, float alpha, float beta,
+                                                    int i0, int i1, int j0, int j1) {
     const float w00 = (1.0f - alpha) * (1.0f - beta), w10 = alpha * (1.0f - beta);
     const float w01 = (1.0f - alpha) * beta, w11 = alpha * beta;
     const TexelLanes sum = w00 * texelLanes(texelAt(level, i0, j0)) +

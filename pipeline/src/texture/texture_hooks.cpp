@@ -166,7 +166,6 @@ void sampleCubeMap(const Context& ctx, const TextureObject& texture, int slot, f
                    const raster::FragmentBatch& batch, const raster::Fragment& f, float texel[4]) {
   const float* tc = f.varyings + slot;
   const CubeFaceCoordinates c = cubeFaceCoordinates(tc[0], tc[1], tc[2]);
-  const SamplerParameters& p = texture.params;
   if (!needsLevelOfDetail(texture) || batch.planes == nullptr) {
     sampleTextureMagnified(texture, c.s, c.t, texel, c.face);
     return;
@@ -195,9 +194,7 @@ void sampleCubeMap(const Context& ctx, const TextureObject& texture, int slot, f
   d.dtdy = tUL - tLL;
   const TextureImage& base = texture.baseImage();
   const double rhoSquared = textureScaleFactorSquared(d, base.width, base.height);
-  const float lambda =
-      levelOfDetailFromSquaredScale(rhoSquared, p.minLod, p.maxLod, lodBias(unitBias, p));
-  sampleTexture(texture, c.s, c.t, lambda, texel, c.face);
+  sampleTexture(texture, c.s, c.t, textureLevelOfDetail(texture, unitBias, rhoSquared), texel, c.face);
 }
 
 // The filtered texel of `texture` for a fragment, with the texture coordinates in the fragment's
@@ -230,7 +227,6 @@ float quadLevelOfDetail(const Context& ctx, const TextureObject& texture, int sl
                         const raster::AttributePlanes& planes, int x, int y) {
   const bool threeD = texture.target == GL_TEXTURE_3D;
   const bool twoD = texture.target == GL_TEXTURE_2D || threeD;
-  const SamplerParameters& p = texture.params;
   // One lambda per 2x2 pixel quad (texture_lod.h): every fragment of the quad computes the
   // same value from the same upper-left pixel.
   const PixelQuad quad = pixelQuadOf(x, y, ctx.framebuffer.height());
@@ -248,6 +244,11 @@ float quadLevelOfDetail(const Context& ctx, const TextureObject& texture, int sl
     rhoSquared =
         std::max(u2x * u2x + v2x * v2x + dwdx * dwdx, u2y * u2y + v2y * v2y + dwdy * dwdy);
   }
+  return textureLevelOfDetail(texture, unitBias, rhoSquared);
+}
+
+float textureLevelOfDetail(const TextureObject& texture, float unitBias, double rhoSquared) {
+  const SamplerParameters& p = texture.params;
   return levelOfDetailFromSquaredScale(rhoSquared, p.minLod, p.maxLod, lodBias(unitBias, p));
 }
 

@@ -49,6 +49,10 @@ bool needsLevelOfDetail(const TextureObject& texture);
 // 2x2 quad of the pixel (texture_lod.h). Not for cube maps.
 float quadLevelOfDetail(const Context& ctx, const TextureObject& texture, int slot, float unitBias,
                         const raster::AttributePlanes& planes, int x, int y);
+// quadLevelOfDetail's last step, for a kernel that computes rho^2 (textureScaleFactorSquared of
+// texture_lod.h) itself: lambda from rho^2 with the texture's GL_TEXTURE_MIN_LOD and
+// GL_TEXTURE_MAX_LOD and the bias of the unit (unitBias) and the texture.
+float textureLevelOfDetail(const TextureObject& texture, float unitBias, double rhoSquared);
 // For the fragment stage's fast kernels (fragment/block_kernels.h): when texturing is exactly one
 // complete colour (not depth) 2D texture on unit 0 with a texture environment other than
 // GL_COMBINE and no bump mapping, that texture; then applyTexturing amounts to sampleTexture (texture_sampler.h) at
