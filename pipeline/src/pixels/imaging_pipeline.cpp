@@ -17,9 +17,11 @@ bool isIdentityScaleBias(const float scale[4], const float bias[4]) {
   return true;
 }
 
-// The convolution filter that applies to an image of the given dimensionality, or nullptr.
+// The convolution filter that applies to an image of the given dimensionality, or nullptr
+// (a three-dimensional texture image has none).
 const ConvolutionFilter* activeFilter(const ImagingState& s, int dimensions, int* target) {
   const ImagingPixelMode& m = s.mode;
+  if (dimensions == 3) return nullptr;
   if (dimensions == 1) {
     *target = kConvolution1D;
   } else if (m.convolutionEnabled[kConvolution2D]) {

@@ -10,8 +10,8 @@
 //   histogram (GL_HISTOGRAM), whose sink discards the groups
 //   minmax (GL_MINMAX), whose sink discards the groups
 // The post-convolution scale and bias apply whether or not a convolution is enabled, as in Mesa.
-// glDrawPixels, glCopyPixels and glReadPixels apply them (the texture image commands do not:
-// glass applies no pixel transfer operation to texture images).
+// glDrawPixels, glCopyPixels and glReadPixels apply them, and the texture image commands
+// (texture/texture_pixel_transfer.h).
 #pragma once
 
 #include "pixels/imaging_state.h"
@@ -24,7 +24,8 @@ namespace glass::gl {
 // operations are exactly those of pixel_transfer.h, at their cost.
 bool imagingActive(const ImagingState& imaging);
 
-// The colour transfer operations of a `dimensions`-dimensional image (1 or 2): those of
+// The colour transfer operations of a `dimensions`-dimensional image (1 or 2; 3 for the slices of
+// a 3D texture image, which are not convolved): those of
 // pixel_transfer.h with the imaging operations before the final clamp. Returns false when a sink
 // discarded the groups (nothing is to be drawn or written). The image may shrink (convolution in
 // GL_REDUCE mode) to nothing. Throws std::bad_alloc.

@@ -27,11 +27,14 @@ float lookUpIndex(const std::vector<float>& map, int32_t index) {
 
 namespace {
 
+bool scalesOrBiases(const PixelTransferState& t) {
+  return t.scale[0] != 1.0f || t.scale[1] != 1.0f || t.scale[2] != 1.0f || t.scale[3] != 1.0f ||
+         t.bias[0] != 0.0f || t.bias[1] != 0.0f || t.bias[2] != 0.0f || t.bias[3] != 0.0f;
+}
+
 // Scale and bias, then with GL_MAP_COLOR the lookups; the final clamp when asked.
 void scaleBiasAndMap(const PixelTransferState& t, float* rgba, int count, bool clamp) {
-  const bool scaleBias = t.scale[0] != 1.0f || t.scale[1] != 1.0f || t.scale[2] != 1.0f ||
-                         t.scale[3] != 1.0f || t.bias[0] != 0.0f || t.bias[1] != 0.0f ||
-                         t.bias[2] != 0.0f || t.bias[3] != 0.0f;
+  const bool scaleBias = scalesOrBiases(t);
   for (int i = 0; i < count; ++i) {
     float* c = rgba + static_cast<size_t>(i) * 4;
     if (scaleBias) {
@@ -47,6 +50,10 @@ void scaleBiasAndMap(const PixelTransferState& t, float* rgba, int count, bool c
 }
 
 }  // namespace
+
+bool colorTransferChangesNothing(const PixelTransferState& t) {
+  return !scalesOrBiases(t) && !t.mapColor;
+}
 
 void transferColors(const PixelTransferState& t, float* rgba, int count) {
   scaleBiasAndMap(t, rgba, count, true);

@@ -17,6 +17,10 @@
 
 namespace glass::gl {
 
+// Whether scale and bias and the GL_MAP_COLOR lookups leave every RGBA group as it is (apart
+// from the final clamp).
+bool colorTransferChangesNothing(const PixelTransferState& t);
+
 // count RGBA pixels (4 floats each), in place.
 void transferColors(const PixelTransferState& t, float* rgba, int count);
 // The same without the final clamp, for the imaging operations that come between

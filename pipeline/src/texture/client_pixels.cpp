@@ -244,6 +244,13 @@ bool isColorFormat(GLenum format) {
   return formatComponents(format, &components);
 }
 
+PixelLayout sliceLayout(const PixelLayout& layout, int height, int slice) {
+  const int imageRows = layout.imageHeight > 0 ? layout.imageHeight : height;
+  PixelLayout l = layout;
+  l.skipRows = layout.skipRows + (layout.skipImages + slice) * imageRows;
+  return l;
+}
+
 void unpackTexels(const void* pixels, int width, int height, GLenum format, GLenum type,
                   const PixelLayout& layout, BaseFormat base, std::vector<uint8_t>& texels) {
   texels.resize(static_cast<size_t>(width) * static_cast<size_t>(height) * 4);

@@ -5,7 +5,7 @@
 // client memory through these functions.
 //
 // Pixel transfer operations (glPixelTransfer, glPixelMap) are not applied here: they act on the
-// unpacked values (pixels/pixel_transfer.h). Texture images do not apply them.
+// unpacked values (pixels/pixel_transfer.h; for texture images texture/texture_pixel_transfer.h).
 #pragma once
 
 #include <GL/gl.h>
@@ -27,6 +27,11 @@ using PixelLayout = PixelPacking;
 // DEPTH_COMPONENT, BITMAP) or GL_INVALID_OPERATION (a packed type whose component count does not
 // match the format, table 3.8).
 GLenum checkTexelFormatAndType(GLenum format, GLenum type);
+
+// The layout of slice `slice` of a 3D image of `height` rows (spec 3.8.1: slices are
+// GL_UNPACK_IMAGE_HEIGHT rows apart, or `height` when that is 0, after GL_UNPACK_SKIP_IMAGES
+// slices).
+PixelLayout sliceLayout(const PixelLayout& layout, int height, int slice);
 
 // Converts a width x height block of client pixels to texels of the given base format, row 0
 // first, 4 bytes per texel in the layout of texture_image.h (spec 3.6.4: unpack, convert to

@@ -9,6 +9,7 @@
 #include "fragment/buffer_selection.h"
 #include "texture/depth_texture.h"
 #include "texture/mipmap_generation.h"
+#include "texture/texture_pixel_transfer.h"
 
 namespace glass::gl {
 namespace {
@@ -90,13 +91,10 @@ void unpackBlock(const void* pixels, int dimensions, int width, int height, int 
     unpackTexels(pixels, width, height, format, type, layout, base, out);
     return;
   }
-  const int imageRows = layout.imageHeight > 0 ? layout.imageHeight : height;
   out.clear();
   std::vector<uint8_t> slice;
   for (int k = 0; k < depth; ++k) {
-    PixelLayout sliceLayout = layout;
-    sliceLayout.skipRows = layout.skipRows + (layout.skipImages + k) * imageRows;
-    unpackTexels(pixels, width, height, format, type, sliceLayout, base, slice);
+    unpackTexels(pixels, width, height, format, type, sliceLayout(layout, height, k), base, slice);
     out.insert(out.end(), slice.begin(), slice.end());
   }
 }
@@ -126,6 +124,64 @@ void unpackImageBlock(const Context& ctx, const void* pixels, int dimensions, in
     return;
   }
   unpackBlock(pixels, dimensions, width, height, depth, format, type, unpackLayout(ctx), base, out);
+}
+
+// The client data of a texture image command as the pixel transfer path takes it: colour groups
+// as RGBA floats, depth data as unpackDepthTexels gives it.
+UnpackedImage readClientImage(const Context& ctx, const void* pixels, int dimensions, int width,
+                              int height, int depth, GLenum format, GLenum type) {
+  UnpackedImage image;
+  if (format == GL_DEPTH_COMPONENT) {
+    unpackDepthTexels(pixels, width, height, type, unpackLayout(ctx), ctx.pixelTransfer.depthScale,
+                      ctx.pixelTransfer.depthBias, image.depthTexels);
+  } else {
+    image.groups = unpackColorGroups(pixels, dimensions, width, height, depth, format, type,
+                                     unpackLayout(ctx));
+  }
+  return image;
+}
+
+// The texels of a texture image command's data through the pixel transfer operations, border
+// included: from `unpacked` (a display list) or read from `pixels` now. *width and *height come in
+// as the client block's size and go out as the texels' (a GL_REDUCE convolution shrinks a colour
+// image). False when a histogram or minmax sink took the groups: nothing is to be written.
+bool transferredTexels(Context& ctx, int dimensions, const void* pixels,
+                       const UnpackedTexels& unpacked, GLenum format, GLenum type, BaseFormat base,
+                       int* width, int* height, int depth, std::vector<uint8_t>& texels) {
+  UnpackedImage read;
+  if (!unpacked) read = readClientImage(ctx, pixels, dimensions, *width, *height, depth, format, type);
+  const UnpackedImage& client = unpacked ? *unpacked : read;
+  if (format == GL_DEPTH_COMPONENT) {
+    texels = client.depthTexels;
+    return true;
+  }
+  if (!textureTransferActive(ctx)) {
+    storeTexelGroups(client.groups, base, texels);
+    return true;
+  }
+  RgbaImage groups = unpacked ? client.groups : std::move(read.groups);
+  if (!transferTextureGroups(ctx, dimensions, groups)) return false;
+  *width = groups.width;
+  *height = groups.height / depth;
+  storeTexelGroups(groups, base, texels);
+  return true;
+}
+
+// Gives `image` the size of fullWidth x fullHeight texels less the border, after the pixel
+// transfer changed it (a GL_REDUCE convolution; spec 3.8.1: the image is the convolved one).
+// GL_INVALID_VALUE when the level cannot take that size.
+GLenum resizeToTransferred(TextureImage& image, int dimensions, GLenum target, GLint level,
+                           int fullWidth, int fullHeight) {
+  const int b = image.border;
+  const int w = fullWidth - 2 * b;
+  const int h = dimensions >= 2 ? fullHeight - 2 * b : 1;
+  if (w < 0 || h < 0 || !fitsLevel(level, w, h, image.depth, dimensions)) return GL_INVALID_VALUE;
+  if (isCubeMapTarget(target) && w != h) return GL_INVALID_VALUE;
+  image.width = w;
+  image.height = h;
+  image.texels.assign(static_cast<size_t>(w) * static_cast<size_t>(h) *
+                          static_cast<size_t>(image.depth) * 4, 0);
+  return GL_NO_ERROR;
 }
 
 // Copies the texels inside the border of a full image (fullWidth x fullHeight x depth texels,
@@ -158,16 +214,25 @@ float readFramebufferDepth(const Context& ctx, int x, int y) {
   return static_cast<float>(static_cast<double>(*fb.depthAt(x, y)) / raster::kDepthMax);
 }
 
-// The colour buffer's RGBA at window (x, y) as floats; pixels outside the window read as zero
-// (the specification leaves them undefined).
-void readFramebufferPixel(const Context& ctx, int x, int y, float rgba[4]) {
-  const raster::Framebuffer& fb = ctx.framebuffer;
-  if (x < 0 || y < 0 || x >= fb.width() || y >= fb.height()) {
-    rgba[0] = rgba[1] = rgba[2] = rgba[3] = 0.0f;
-    return;
+// glCopyTexSubImage through the pixel transfer operations (spec 3.8.2): the rectangle's groups as
+// glCopyPixels would draw them, stored from (xoffset, yoffset) in slice zoffset, border texels
+// left out. A copy into a 3D image is a two-dimensional rectangle, convolved as one.
+void copyTransferredGroups(Context& ctx, int dimensions, int x, int y, int width, int height,
+                           int xoffset, int yoffset, int zoffset, TextureImage& image) {
+  RgbaImage groups = readFramebufferGroups(ctx, x, y, width, height);
+  if (!transferTextureGroups(ctx, dimensions == 1 ? 1 : 2, groups)) return;  // a sink took them
+  std::vector<uint8_t> texels;
+  storeTexelGroups(groups, image.base, texels);
+  for (int j = 0; j < groups.height; ++j) {
+    const int ty = yoffset + j;
+    if (ty < 0 || ty >= image.height) continue;
+    for (int i = 0; i < groups.width; ++i) {
+      const int tx = xoffset + i;
+      if (tx < 0 || tx >= image.width) continue;
+      const size_t from = static_cast<size_t>(j) * static_cast<size_t>(groups.width) + static_cast<size_t>(i);
+      std::memcpy(image.texel(tx, ty, zoffset), &texels[from * 4], 4);
+    }
   }
-  const uint8_t* c = fb.colorAt(x, y);
-  for (int k = 0; k < 4; ++k) rgba[k] = static_cast<float>(c[k]) / 255.0f;
 }
 
 }  // namespace
@@ -204,10 +269,9 @@ UnpackedTexels unpackForDisplayList(const Context& ctx, const TexImageArguments&
       checkImageFormat(a.target, a.internalFormat, a.format, a.type) != GL_NO_ERROR)
     return nullptr;
   try {
-    auto texels = std::make_shared<std::vector<uint8_t>>();
-    unpackImageBlock(ctx, pixels, a.dimensions, a.width, a.dimensions >= 2 ? a.height : 1,
-                     a.dimensions == 3 ? a.depth : 1, a.format, a.type, base, *texels);
-    return texels;
+    return std::make_shared<UnpackedImage>(
+        readClientImage(ctx, pixels, a.dimensions, a.width, a.dimensions >= 2 ? a.height : 1,
+                        a.dimensions == 3 ? a.depth : 1, a.format, a.type));
   } catch (const std::bad_alloc&) {
     return nullptr;
   }
@@ -264,8 +328,19 @@ void texImage(Context& ctx, const TexImageArguments& a, const void* pixels, cons
           static_cast<size_t>(w) * static_cast<size_t>(h) * static_cast<size_t>(d) * 4, 0);
       const int fullHeight = a.dimensions >= 2 ? a.height : 1;
       const int fullDepth = a.dimensions == 3 ? a.depth : 1;
-      if (unpacked) {
-        copyInsideBorder(*unpacked, a.width, fullHeight, a.border, a.dimensions, image);
+      if (unpacked || (pixels != nullptr && !depthImage && textureTransferActive(ctx))) {
+        int fullWidth = a.width, transferredHeight = fullHeight;
+        std::vector<uint8_t> full;
+        if (!transferredTexels(ctx, a.dimensions, pixels, unpacked, a.format, a.type, base,
+                               &fullWidth, &transferredHeight, fullDepth, full))
+          return;  // a histogram or minmax sink took the groups
+        if (fullWidth != a.width || transferredHeight != fullHeight) {
+          if (GLenum e = resizeToTransferred(image, a.dimensions, a.target, a.level, fullWidth,
+                                             transferredHeight);
+              e != GL_NO_ERROR)
+            return recordError(ctx, e);
+        }
+        copyInsideBorder(full, fullWidth, transferredHeight, a.border, a.dimensions, image);
       } else if (pixels != nullptr) {
         if (a.border == 0) {
           unpackImageBlock(ctx, pixels, a.dimensions, w, h, d, a.format, a.type, base,
@@ -295,16 +370,15 @@ UnpackedTexels unpackForDisplayList(const Context& ctx, const TexSubImageArgumen
       a.level >= kMaxTextureLevels || a.width < 0 || a.height < 0)
     return nullptr;
   const ImageTarget target = imageTarget(const_cast<Context&>(ctx), a.target);
-  // The base format decides which components are kept; it is the one of the image when the list
-  // is compiled (an image defined later with another format is rare enough to accept this).
+  // The format check is the one of the image when the list is compiled; the texels are made
+  // for the image of execution time.
   const TextureImage& image = target.texture->image(target.face, a.level);
   if (checkImageFormat(a.target, image.internalFormat, a.format, a.type) != GL_NO_ERROR)
     return nullptr;
   try {
-    auto texels = std::make_shared<std::vector<uint8_t>>();
-    unpackImageBlock(ctx, pixels, a.dimensions, a.width, a.dimensions >= 2 ? a.height : 1,
-                     a.dimensions == 3 ? a.depth : 1, a.format, a.type, image.base, *texels);
-    return texels;
+    return std::make_shared<UnpackedImage>(
+        readClientImage(ctx, pixels, a.dimensions, a.width, a.dimensions >= 2 ? a.height : 1,
+                        a.dimensions == 3 ? a.depth : 1, a.format, a.type));
   } catch (const std::bad_alloc&) {
     return nullptr;
   }
@@ -340,29 +414,33 @@ void texSubImage(Context& ctx, const TexSubImageArguments& a, const void* pixels
   if (a.width == 0 || height == 0 || depth == 0) return;
   if (!unpacked && pixels == nullptr) return;
   try {
-    std::vector<uint8_t> local;
-    const std::vector<uint8_t>* texels = unpacked.get();
-    if (texels == nullptr) {
+    // The block's size after the pixel transfer (a GL_REDUCE convolution makes it smaller).
+    int width = a.width, rows = height;
+    std::vector<uint8_t> texels;
+    if (unpacked || (!image.isDepth() && textureTransferActive(ctx))) {
+      if (!transferredTexels(ctx, a.dimensions, pixels, unpacked, a.format, a.type, image.base,
+                             &width, &rows, depth, texels))
+        return;  // a histogram or minmax sink took the groups
+    } else {
       unpackImageBlock(ctx, pixels, a.dimensions, a.width, height, depth, a.format, a.type,
-                       image.base, local);
-      texels = &local;
+                       image.base, texels);
     }
     for (int k = 0; k < depth; ++k) {
       const int z = zoffset + k;
       if (z < 0 || z >= image.depth) continue;  // a border slice: not stored
-      for (int j = 0; j < height; ++j) {
+      for (int j = 0; j < rows; ++j) {
         const int y = yoffset + j;
         if (y < 0 || y >= image.height) continue;  // a border row: not stored
-        for (int i = 0; i < a.width; ++i) {
+        for (int i = 0; i < width; ++i) {
           const int x = a.xoffset + i;
           if (x < 0 || x >= image.width) continue;
-          const size_t from = (static_cast<size_t>(k) * static_cast<size_t>(height) +
-                               static_cast<size_t>(j)) * static_cast<size_t>(a.width) +
+          const size_t from = (static_cast<size_t>(k) * static_cast<size_t>(rows) +
+                               static_cast<size_t>(j)) * static_cast<size_t>(width) +
                               static_cast<size_t>(i);
           if (image.isDepth()) {
-            setDepthTexel(image, x, y, depthFromTexelBits(&(*texels)[from * 4]));
+            setDepthTexel(image, x, y, depthFromTexelBits(&texels[from * 4]));
           } else {
-            std::memcpy(image.texel(x, y, z), &(*texels)[from * 4], 4);
+            std::memcpy(image.texel(x, y, z), &texels[from * 4], 4);
           }
         }
       }
@@ -412,15 +490,30 @@ void copyTexImage(Context& ctx, int dimensions, GLenum target, GLint level, GLen
       image.texels.resize(static_cast<size_t>(w) * static_cast<size_t>(h) * 4);
       const int rowBorder = dimensions == 2 ? border : 0;
       if (depthImage) allocateDepthImage(image, depthBitsOfInternalFormat(format));
-      for (int j = 0; j < h; ++j) {
-        for (int i = 0; i < w; ++i) {
-          if (depthImage) {
-            setDepthTexel(image, i, j, readFramebufferDepth(ctx, x + border + i, y + rowBorder + j));
-            continue;
+      if (!depthImage && textureTransferActive(ctx)) {
+        // The rectangle's groups, border included, as glCopyPixels would draw them (3.8.2).
+        RgbaImage groups = readFramebufferGroups(ctx, x, y, width, height);
+        if (!transferTextureGroups(ctx, dimensions, groups)) return;  // a sink took them
+        if (groups.width != width || groups.height != height) {
+          if (GLenum e = resizeToTransferred(image, dimensions, target, level, groups.width,
+                                             groups.height);
+              e != GL_NO_ERROR)
+            return recordError(ctx, e);
+        }
+        std::vector<uint8_t> full;
+        storeTexelGroups(groups, base, full);
+        copyInsideBorder(full, groups.width, groups.height, border, dimensions, image);
+      } else {
+        for (int j = 0; j < h; ++j) {
+          for (int i = 0; i < w; ++i) {
+            if (depthImage) {
+              setDepthTexel(image, i, j, readFramebufferDepth(ctx, x + border + i, y + rowBorder + j));
+              continue;
+            }
+            float rgba[4];
+            readFramebufferColor(ctx, x + border + i, y + rowBorder + j, rgba);
+            storeTexel(base, rgba, image.texel(i, j));
           }
-          float rgba[4];
-          readFramebufferPixel(ctx, x + border + i, y + rowBorder + j, rgba);
-          storeTexel(base, rgba, image.texel(i, j));
         }
       }
     } else if (depthImage) {
@@ -462,6 +555,15 @@ void copyTexSubImage(Context& ctx, int dimensions, GLenum target, GLint level, G
   if (image.isDepth() && !ctx.buffers.depth) return recordError(ctx, GL_INVALID_OPERATION);
   // A border slice of a 3D image is not stored.
   if (zoffset < 0 || zoffset >= image.depth) return;
+  if (!image.isDepth() && textureTransferActive(ctx)) {
+    try {
+      copyTransferredGroups(ctx, dimensions, x, y, width, height, xoffset, yoffset, zoffset, image);
+    } catch (const std::bad_alloc&) {
+      return recordError(ctx, GL_OUT_OF_MEMORY);
+    }
+    afterBaseLevelChange(texture, named.face, level);
+    return;
+  }
   for (int j = 0; j < height; ++j) {
     const int ty = yoffset + j;
     if (ty < 0 || ty >= image.height) continue;
@@ -473,7 +575,7 @@ void copyTexSubImage(Context& ctx, int dimensions, GLenum target, GLint level, G
         continue;
       }
       float rgba[4];
-      readFramebufferPixel(ctx, x + i, y + j, rgba);
+      readFramebufferColor(ctx, x + i, y + j, rgba);
       storeTexel(image.base, rgba, image.texel(tx, ty, zoffset));
     }
   }

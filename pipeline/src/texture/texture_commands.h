@@ -9,6 +9,7 @@
 #include <memory>
 #include <vector>
 
+#include "pixels/rgba_image.h"
 #include "texture/client_pixels.h"
 #include "texture/texture_object.h"
 
@@ -45,11 +46,18 @@ struct TexImageArguments {
   GLenum type = GL_UNSIGNED_BYTE;
 };
 
-// Texels unpacked ahead of time, for a glTexImage compiled into a display list (spec 5.4: the
-// pixel data is unpacked when the list is compiled, with the glPixelStore state of that time).
-// Null when the arguments were invalid or no data was given; the command then reports its error
-// or defines an image without contents when the list is executed.
-using UnpackedTexels = std::shared_ptr<const std::vector<uint8_t>>;
+// Client data unpacked ahead of time, for a glTexImage or glTexSubImage compiled into a display
+// list (spec 5.4: the pixel data is unpacked when the list is compiled, with the glPixelStore
+// state of that time). The pixel transfer operations apply when the list is executed, so colour
+// data is kept as RGBA groups (texture/texture_pixel_transfer.h); depth data as unpackDepthTexels
+// gives it (the depth scale and bias of compile time). Null when the arguments were invalid or no
+// data was given; the command then reports its error or defines an image without contents when
+// the list is executed.
+struct UnpackedImage {
+  RgbaImage groups;                  // colour data: width x (height * depth) groups
+  std::vector<uint8_t> depthTexels;  // GL_DEPTH_COMPONENT data
+};
+using UnpackedTexels = std::shared_ptr<const UnpackedImage>;
 UnpackedTexels unpackForDisplayList(const Context& ctx, const TexImageArguments& args, const void* pixels);
 
 // glTexImage1D/2D: checks the arguments (setting the GL error of the specification), then defines
