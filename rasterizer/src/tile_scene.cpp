@@ -58,6 +58,7 @@ void TileScene::Bin::clear() {
   triangles.clear();
   lines.clear();
   points.clear();
+  clears.clear();
   planes.clear();
   varyings.clear();
 }
@@ -95,6 +96,7 @@ void TileScene::forTilesIn(int64_t x0, int64_t y0, int64_t x1, int64_t y1, AddTo
 void TileScene::addTriangle(const TriangleSetup& setup, FragmentSink& sink) {
   const PixelRect& box = setup.box;
   if (box.empty()) return;
+  hasPrimitives_ = true;
 
   TriangleRecord r;
   r.sink = &sink;
@@ -145,6 +147,7 @@ void TileScene::addLine(const WindowVertex& a, const WindowVertex& b, const Line
   if (!isRasterizableCoordinate(a.x) || !isRasterizableCoordinate(a.y) ||
       !isRasterizableCoordinate(b.x) || !isRasterizableCoordinate(b.y))
     return;
+  hasPrimitives_ = true;
   LineRecord r;
   r.sink = &sink;
   const float av[4] = {a.x, a.y, a.z, a.invW}, bv[4] = {b.x, b.y, b.z, b.invW};
@@ -173,6 +176,7 @@ void TileScene::addLine(const WindowVertex& a, const WindowVertex& b, const Line
 
 void TileScene::addPoint(const WindowVertex& v, const PointSettings& settings, FragmentSink& sink) {
   if (!isRasterizableCoordinate(v.x) || !isRasterizableCoordinate(v.y)) return;  // as rasterizePoint
+  hasPrimitives_ = true;
   PointRecord r;
   r.sink = &sink;
   const float position[4] = {v.x, v.y, v.z, v.invW};
@@ -194,6 +198,16 @@ void TileScene::addPoint(const WindowVertex& v, const PointSettings& settings, F
              });
 }
 
+void TileScene::addClear(const ClearRequest& request) {
+  if (!request.clearsSomething()) return;
+  const PixelRect& rect = request.rect;
+  forTilesIn(rect.x0, rect.y0, int64_t{rect.x1} - 1, int64_t{rect.y1} - 1, [&](Bin& bin) {
+    bin.order.push_back(Kind::Clear);
+    bin.clears.push_back(request);
+    bytes_ += 1 + sizeof(ClearRequest);
+  });
+}
+
 void TileScene::runTile(int activeIndex) const {
   const int tile = activeTiles_[static_cast<size_t>(activeIndex)];
   const PixelRect rect = tileRect(tile);
@@ -202,6 +216,7 @@ void TileScene::runTile(int activeIndex) const {
   const TriangleRecord* triangle = bin.triangles.data();
   const LineRecord* line = bin.lines.data();
   const PointRecord* point = bin.points.data();
+  const ClearRequest* clear = bin.clears.data();
   const double* plane = bin.planes.data();
   const float* varyings = bin.varyings.data();
   for (const Kind kind : bin.order) {
@@ -255,6 +270,9 @@ void TileScene::runTile(int activeIndex) const {
         rasterizePoint(v, settings, *r.sink);
         break;
       }
+      case Kind::Clear:
+        clearFramebuffer(*clear++, rect);
+        break;
     }
   }
 }
@@ -263,6 +281,7 @@ void TileScene::clear() {
   for (const int tile : activeTiles_) bins_[static_cast<size_t>(tile)].clear();
   activeTiles_.clear();
   bytes_ = 0;
+  hasPrimitives_ = false;
 }
 
 }  // namespace glass::raster

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "glass/raster/fragment.h"
+#include "glass/raster/framebuffer_clear.h"
 #include "glass/raster/line.h"
 #include "glass/raster/triangle.h"
 
@@ -30,6 +31,9 @@ class TileScene {
   void addLine(const WindowVertex& a, const WindowVertex& b, const LineSettings& settings,
                int stippleStart, FragmentSink& sink);
   void addPoint(const WindowVertex& v, const PointSettings& settings, FragmentSink& sink);
+  // A clear of the framebuffer (glClear), run in each tile of its rectangle in order with the
+  // primitives, so that the tile is cleared while it is in the cache of the thread drawing it.
+  void addClear(const ClearRequest& request);
 
   // The tiles with something in their bin; runTile(i) rasterizes the bin of the i-th of them.
   // Different tiles may run on different threads at the same time.
@@ -40,6 +44,8 @@ class TileScene {
   }
 
   bool empty() const { return activeTiles_.empty(); }
+  // Whether a triangle, line or point is queued (whose sink the tiles will call), not only clears.
+  bool hasPrimitives() const { return hasPrimitives_; }
   size_t bytes() const { return bytes_; }  // about how much memory the queued primitives hold
   void clear();
 
@@ -68,13 +74,14 @@ class TileScene {
     float v[4];
     PointSettings settings;
   };
-  enum class Kind : uint8_t { Triangle, Line, Point };
+  enum class Kind : uint8_t { Triangle, Line, Point, Clear };
 
   struct Bin {
     std::vector<Kind> order;  // which list the next primitive comes from
     std::vector<TriangleRecord> triangles;
     std::vector<LineRecord> lines;
     std::vector<PointRecord> points;
+    std::vector<ClearRequest> clears;
     std::vector<double> planes;   // a0, dx, dy of each varying of each triangle, in order
     std::vector<float> varyings;  // the varyings of each line's and point's vertices, in order
     bool empty() const { return order.empty(); }
@@ -91,6 +98,7 @@ class TileScene {
   std::vector<Bin> bins_;
   std::vector<int> activeTiles_;
   size_t bytes_ = 0;
+  bool hasPrimitives_ = false;
 };
 
 }  // namespace glass::raster

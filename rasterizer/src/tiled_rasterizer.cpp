@@ -196,6 +196,16 @@ void TiledRasterizer::point(const WindowVertex& v, const PointSettings& settings
   impl_->afterSubmit();
 }
 
+void TiledRasterizer::clear(const ClearRequest& request) {
+  impl_->filling().addClear(request);
+  impl_->afterSubmit();
+}
+
+bool TiledRasterizer::primitivesQueued() const {
+  const TileScene* flying = impl_->flight.scene;
+  return (flying != nullptr && flying->hasPrimitives()) || impl_->filling().hasPrimitives();
+}
+
 bool TiledRasterizer::idle() const {
   return impl_->flight.scene == nullptr && impl_->scenes[impl_->fillingIndex].empty();
 }

@@ -8,6 +8,7 @@
 #include "fragment/color_conversion.h"
 #include "glass/raster/depth_value.h"
 #include "glass/raster/fragment.h"
+#include "glass/raster/framebuffer_clear.h"
 #include "primitive/queued_drawing.h"
 #include "teaching/teaching_view.h"
 
@@ -28,35 +29,32 @@ void clearBuffers(Context& ctx, GLbitfield mask) {
   }
   if (x0 >= x1 || y0 >= y1) return;
 
+  // Colour, depth and stencil are cleared by the tiles, in order with the draws (queueClear),
+  // or here when there is no draw pipeline yet.
+  raster::ClearRequest request;
+  request.target = &fb;
+  request.rect = raster::PixelRect{x0, y0, x1, y1};
   if ((mask & GL_COLOR_BUFFER_BIT) && drawsColor(f.drawBuffer)) {
     restartTeachingFrame(ctx);
-    uint8_t color[4];
-    for (int c = 0; c < 4; ++c) color[c] = floatToColorByte(f.clearColor[c]);
-    const bool all = f.colorMask[0] && f.colorMask[1] && f.colorMask[2] && f.colorMask[3];
-    for (int y = y0; y < y1; ++y) {
-      for (int x = x0; x < x1; ++x) {
-        uint8_t* pixel = fb.colorAt(x, y);
-        for (int c = 0; c < 4; ++c) {
-          if (all || f.colorMask[c]) pixel[c] = color[c];
-        }
-      }
+    request.clearColor = true;
+    for (int c = 0; c < 4; ++c) {
+      request.color[c] = floatToColorByte(f.clearColor[c]);
+      request.colorMask[c] = f.colorMask[c];
     }
   }
   if ((mask & GL_DEPTH_BUFFER_BIT) && f.depthMask && ctx.buffers.depth) {
-    const uint32_t depth = raster::depthValue(f.clearDepth);
-    for (int y = y0; y < y1; ++y) std::fill(fb.depthAt(x0, y), fb.depthAt(x0, y) + (x1 - x0), depth);
+    request.clearDepth = true;
+    request.depth = raster::depthValue(f.clearDepth);
+  }
+  if ((mask & GL_STENCIL_BUFFER_BIT) && ctx.buffers.stencil) {
+    request.clearStencil = true;
+    request.stencil = static_cast<uint8_t>(f.clearStencil & 0xFF);
+    request.stencilWriteMask = static_cast<uint8_t>(f.stencilWriteMask & 0xFFu);
+  }
+  if (request.clearsSomething() && !queueClear(ctx, request)) {
+    raster::clearFramebuffer(request, request.rect);
   }
   if ((mask & GL_ACCUM_BUFFER_BIT) && ctx.buffers.accumulation) clearAccumulationBuffer(ctx, x0, y0, x1, y1);
-  if ((mask & GL_STENCIL_BUFFER_BIT) && ctx.buffers.stencil) {
-    const unsigned writeMask = f.stencilWriteMask & 0xFFu;
-    const uint8_t value = static_cast<uint8_t>(f.clearStencil & 0xFF);
-    for (int y = y0; y < y1; ++y) {
-      for (int x = x0; x < x1; ++x) {
-        uint8_t* s = fb.stencilAt(x, y);
-        *s = static_cast<uint8_t>((*s & ~writeMask) | (value & writeMask));
-      }
-    }
-  }
 }
 
 }  // namespace glass::gl

@@ -58,8 +58,9 @@ void DrawPipeline::prepare() {
   // glBegin/glEnd pairs, keep queuing.
   FragmentProcessor fragments;
   fragments.prepare(ctx, vertex_.phong);
-  if (!tiles_.idle() && !fragments.sameSettings(fragments_)) tiles_.finish();
-  if (tiles_.idle()) {
+  // (A queued glClear calls no sink, so it need not be finished first.)
+  if (tiles_.primitivesQueued() && !fragments.sameSettings(fragments_)) tiles_.finish();
+  if (!tiles_.primitivesQueued()) {
     fragments_ = fragments;
     polygonStipple_.prepare(ctx.raster.polygonStipplePattern, fragments_);
   }
@@ -141,6 +142,12 @@ void DrawPipeline::beforeColorMaterialChange() {
 
 void finishQueuedDrawing(Context& ctx) {
   if (ctx.draw) ctx.draw->finishQueuedWork();
+}
+
+bool queueClear(Context& ctx, const raster::ClearRequest& request) {
+  if (!ctx.draw) return false;
+  ctx.draw->queueClear(request);
+  return true;
 }
 
 void finishDrawReadingContext(Context& ctx) {

@@ -65,6 +65,8 @@ class DrawPipeline {
   void finishIfReadingContext();
   // Rasterizes everything queued; returns when the framebuffer holds every queued fragment.
   void finishQueuedWork();
+  // Queues a clear of the framebuffer in order with the draws (fragment/clear.cpp).
+  void queueClear(const raster::ClearRequest& request) { tiles_.clear(request); }
   // Before glColor changes the material under GL_COLOR_MATERIAL between glBegin and glEnd.
   // Per-fragment lighting reads the material from the context, but takes the tracked parameters
   // from the fragment's own colour (materialWithColor), so the queued fragments light the same

@@ -4,11 +4,19 @@
 // finishQueuedDrawing first, so that it sees, and comes after, every fragment drawn before it.
 #pragma once
 
+namespace glass::raster {
+struct ClearRequest;
+}
+
 namespace glass::gl {
 
 struct Context;
 
 void finishQueuedDrawing(Context& ctx);
+
+// glClear queues its clear with the draws (raster::TiledRasterizer::clear), so that the threads
+// share it tile by tile. False when the context has no draw pipeline yet: the caller clears now.
+bool queueClear(Context& ctx, const raster::ClearRequest& request);
 
 // State that the fragments of a draw read by reference (texturing, fog, per-fragment lighting;
 // see draw_pipeline.h) changes only between draws, except the material, which glMaterial may

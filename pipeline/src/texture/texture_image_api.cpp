@@ -231,6 +231,7 @@ void GLAPIENTRY glCopyTexSubImage3D(GLenum target, GLint level, GLint xoffset, G
                                     GLint zoffset, GLint x, GLint y, GLsizei width,
                                     GLsizei height) {
   glass::gl::compileOrExecute([=](Context& ctx) {
+    glass::gl::finishQueuedDrawing(ctx);  // the copy reads the framebuffer (queued_drawing.h)
     glass::gl::copyTexSubImage(ctx, 3, target, level, xoffset, yoffset, x, y, width, height,
                                zoffset);
   });

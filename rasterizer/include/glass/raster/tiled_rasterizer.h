@@ -17,6 +17,10 @@
 // line walks only its runs inside the tile, each found by exact integer arithmetic from the
 // segment's edges (rasterizer/src/line_quad_walk.h).
 //
+// glClear is queued the same way (clear()): a tile runs its part of the clear in bin order, so
+// the clear is shared by the threads and each tile is cleared while it is in the cache of the
+// thread that draws it next.
+//
 // Two scenes alternate: while the pool rasterizes one, the submitting thread fills the next.
 // The next scene starts only when the previous one has finished, so the order per pixel holds
 // across scenes too.
@@ -31,6 +35,7 @@
 
 #include "glass/raster/fragment.h"
 #include "glass/raster/framebuffer.h"
+#include "glass/raster/framebuffer_clear.h"
 #include "glass/raster/line.h"
 #include "glass/raster/triangle.h"
 
@@ -57,9 +62,16 @@ class TiledRasterizer {
   void line(const WindowVertex& a, const WindowVertex& b, const LineSettings& settings,
             FragmentSink& sink);
   void point(const WindowVertex& v, const PointSettings& settings, FragmentSink& sink);
+  // Queue a clear of request.rect (copied). Each tile runs its part in order with the primitives:
+  // the clear is spread over the threads like the drawing, and a tile is cleared just before it
+  // is drawn, while it is in the drawing thread's cache.
+  void clear(const ClearRequest& request);
 
   // True when nothing is queued or being rasterized.
   bool idle() const;
+  // True when a queued or running triangle, line or point may still call its sink; clears call
+  // none, so a sink may be changed while only clears are queued.
+  bool primitivesQueued() const;
   // Rasterizes everything queued; returns when every fragment has reached its sink.
   void finish();
   // Returns when no thread is rasterizing: the scene handed to the threads has finished, and

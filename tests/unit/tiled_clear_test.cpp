@@ -1,0 +1,220 @@
+// glClear queued in the tiled rasterizer (TiledRasterizer::clear): each tile runs its part of the
+// clear in order with the primitives of its bin, on whichever thread takes the tile. Here random
+// triangles, lines and points written into a framebuffer are interleaved with clears of random
+// rectangles (colour with every colour mask, depth, stencil through a write mask); with 1, 2, 3
+// and 8 threads the framebuffer must hold exactly the bytes of drawing and clearing everything in
+// order on one thread without tiles.
+#include <doctest/doctest.h>
+
+#include <cstring>
+#include <random>
+#include <vector>
+
+#include "glass/raster/framebuffer.h"
+#include "glass/raster/framebuffer_clear.h"
+#include "glass/raster/line.h"
+#include "glass/raster/tiled_rasterizer.h"
+#include "glass/raster/triangle.h"
+#include "raster_test_support.h"
+
+using namespace glass::raster;
+using glass::raster::test::windowVertex;
+
+namespace {
+
+constexpr int kWidth = 301, kHeight = 203;  // not multiples of the tile size
+
+// Writes each fragment's colour (varyings 0 to 3, in [0, 1]) and depth, replacing what was there:
+// the order in which fragments and clears reach a pixel decides its bytes.
+class WritingSink final : public FragmentSink {
+ public:
+  explicit WritingSink(Framebuffer& fb) : fb_(fb) {}
+  void processFragments(const FragmentBatch& batch) override {
+    for (int i = 0; i < batch.count; ++i) {
+      const Fragment& f = batch.fragments[i];
+      uint8_t* pixel = fb_.colorAt(f.x, f.y);
+      for (int c = 0; c < 4; ++c) pixel[c] = static_cast<uint8_t>(f.varyings[c] * 255.0f);
+      *fb_.depthAt(f.x, f.y) = f.depth;
+      ++*fb_.stencilAt(f.x, f.y);
+    }
+  }
+
+ private:
+  Framebuffer& fb_;
+};
+
+// One step of the test's program: a primitive or a clear.
+struct Step {
+  enum Kind { Triangle, Line, Point, Clear } kind;
+  WindowVertex v[3];
+  ClearRequest clear;
+};
+
+WindowVertex coloured(float x, float y, std::mt19937& random) {
+  std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+  WindowVertex v = windowVertex(x, y, unit(random));
+  for (int c = 0; c < 4; ++c) v.varyings[c] = unit(random);
+  return v;
+}
+
+std::vector<Step> randomProgram(unsigned seed) {
+  std::mt19937 random(seed);
+  std::uniform_real_distribution<float> x(-40.0f, kWidth + 40.0f), y(-40.0f, kHeight + 40.0f);
+  std::uniform_int_distribution<int> kind(0, 9), bit(0, 1), byte(0, 255);
+  std::uniform_int_distribution<int> px(-20, kWidth + 20), py(-20, kHeight + 20);
+  std::vector<Step> steps;
+  for (int i = 0; i < 120; ++i) {
+    Step s{};
+    const int k = kind(random);
+    if (k < 5) {
+      s.kind = Step::Triangle;
+      for (WindowVertex& v : s.v) v = coloured(x(random), y(random), random);
+    } else if (k < 7) {
+      s.kind = Step::Line;
+      for (WindowVertex& v : s.v) v = coloured(x(random), y(random), random);
+    } else if (k < 8) {
+      s.kind = Step::Point;
+      s.v[0] = coloured(x(random), y(random), random);
+    } else {
+      s.kind = Step::Clear;
+      ClearRequest& c = s.clear;
+      // A scissor box: any rectangle, clamped to the framebuffer as glClear clamps it.
+      int x0 = px(random), x1 = px(random), y0 = py(random), y1 = py(random);
+      if (x0 > x1) std::swap(x0, x1);
+      if (y0 > y1) std::swap(y0, y1);
+      if (bit(random)) x0 = 0, y0 = 0, x1 = kWidth, y1 = kHeight;
+      c.rect = PixelRect{std::max(x0, 0), std::max(y0, 0), std::min(x1, kWidth), std::min(y1, kHeight)};
+      c.clearColor = bit(random);
+      for (int ch = 0; ch < 4; ++ch) {
+        c.color[ch] = static_cast<uint8_t>(byte(random));
+        c.colorMask[ch] = bit(random) || bit(random);
+      }
+      c.clearDepth = bit(random);
+      c.depth = static_cast<uint32_t>(byte(random)) << 16;
+      c.clearStencil = bit(random);
+      c.stencil = static_cast<uint8_t>(byte(random));
+      c.stencilWriteMask = static_cast<uint8_t>(byte(random));
+    }
+    steps.push_back(s);
+  }
+  return steps;
+}
+
+TriangleSettings triangleSettings() {
+  TriangleSettings s;
+  s.bounds = PixelRect{0, 0, kWidth, kHeight};
+  s.varyingCount = 4;
+  return s;
+}
+LineSettings lineSettings() {
+  LineSettings s;
+  s.bounds = PixelRect{0, 0, kWidth, kHeight};
+  s.varyingCount = 4;
+  s.width = 3.0f;
+  s.framebufferHeight = kHeight;
+  return s;
+}
+PointSettings pointSettings() {
+  PointSettings s;
+  s.bounds = PixelRect{0, 0, kWidth, kHeight};
+  s.varyingCount = 4;
+  s.size = 5.0f;
+  return s;
+}
+
+// The framebuffer's colour, depth and stencil bytes, one after the other.
+std::vector<uint8_t> contents(const Framebuffer& fb) {
+  std::vector<uint8_t> bytes;
+  for (int y = 0; y < kHeight; ++y) {
+    const auto* color = fb.colorAt(0, y);
+    const auto* depth = reinterpret_cast<const uint8_t*>(fb.depthAt(0, y));
+    bytes.insert(bytes.end(), color, color + 4 * kWidth);
+    bytes.insert(bytes.end(), depth, depth + 4 * kWidth);
+    bytes.insert(bytes.end(), fb.stencilAt(0, y), fb.stencilAt(0, y) + kWidth);
+  }
+  return bytes;
+}
+
+// Draws and clears everything in order, on this thread, without tiles.
+std::vector<uint8_t> drawnInOrder(const std::vector<Step>& steps) {
+  Framebuffer fb(kWidth, kHeight);
+  WritingSink sink(fb);
+  for (Step s : steps) {
+    switch (s.kind) {
+      case Step::Triangle: {
+        TriangleSetup setup;
+        if (setupTriangle(s.v[0], s.v[1], s.v[2], triangleSettings(), setup))
+          rasterizeTriangle(setup, sink);
+        break;
+      }
+      case Step::Line: rasterizeLine(s.v[0], s.v[1], lineSettings(), sink); break;
+      case Step::Point: rasterizePoint(s.v[0], pointSettings(), sink); break;
+      case Step::Clear:
+        s.clear.target = &fb;
+        clearFramebuffer(s.clear, PixelRect{0, 0, kWidth, kHeight});
+        break;
+    }
+  }
+  return contents(fb);
+}
+
+std::vector<uint8_t> drawnInTiles(const std::vector<Step>& steps, int threads) {
+  Framebuffer fb(kWidth, kHeight);
+  WritingSink sink(fb);
+  TiledRasterizer tiles(fb, threads);
+  for (Step s : steps) {
+    switch (s.kind) {
+      case Step::Triangle: {
+        TriangleSetup setup;
+        if (setupTriangle(s.v[0], s.v[1], s.v[2], triangleSettings(), setup))
+          tiles.triangle(setup, sink);
+        break;
+      }
+      case Step::Line: tiles.line(s.v[0], s.v[1], lineSettings(), sink); break;
+      case Step::Point: tiles.point(s.v[0], pointSettings(), sink); break;
+      case Step::Clear:
+        s.clear.target = &fb;
+        tiles.clear(s.clear);
+        break;
+    }
+  }
+  tiles.finish();
+  return contents(fb);
+}
+
+}  // namespace
+
+TEST_CASE("clears queued in tiles give the bytes of clearing in order, at any thread count") {
+  for (unsigned seed = 1; seed <= 6; ++seed) {
+    const std::vector<Step> steps = randomProgram(seed);
+    const std::vector<uint8_t> expected = drawnInOrder(steps);
+    for (const int threads : {1, 2, 3, 8}) {
+      CAPTURE(seed);
+      CAPTURE(threads);
+      CHECK(drawnInTiles(steps, threads) == expected);
+    }
+  }
+}
+
+TEST_CASE("a tiled rasterizer with only clears queued holds no primitive") {
+  Framebuffer fb(kWidth, kHeight);
+  WritingSink sink(fb);
+  TiledRasterizer tiles(fb, 2);
+  ClearRequest clear;
+  clear.target = &fb;
+  clear.rect = PixelRect{0, 0, kWidth, kHeight};
+  clear.clearDepth = true;
+  clear.depth = 0xFFFFFF;
+  tiles.clear(clear);
+  CHECK_FALSE(tiles.idle());
+  CHECK_FALSE(tiles.primitivesQueued());
+  TriangleSetup setup;
+  REQUIRE(setupTriangle(windowVertex(10, 10), windowVertex(200, 20), windowVertex(50, 150),
+                        triangleSettings(), setup));
+  tiles.triangle(setup, sink);
+  CHECK(tiles.primitivesQueued());
+  tiles.finish();
+  CHECK(tiles.idle());
+  CHECK_FALSE(tiles.primitivesQueued());
+  CHECK(*fb.depthAt(kWidth - 1, kHeight - 1) == 0xFFFFFFu);
+}
