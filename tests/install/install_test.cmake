@@ -68,8 +68,8 @@ endif()
 message(STATUS "installed glass command: rendered ${SCENE}")
 
 # 4. Textbook-style programs (textbook/*.c) that name features by their extensions and use depth
-#    textures and shadow comparison, built unchanged with pkg-config and run; each checks its own
-#    pixels and exits non-zero on a difference.
+#    textures, shadow comparison and the imaging subset, built unchanged with pkg-config and run;
+#    each checks its own pixels and exits non-zero on a difference.
 file(GLOB textbook_programs ${SOURCE_DIR}/textbook/*.c)
 foreach(source IN LISTS textbook_programs)
   get_filename_component(name ${source} NAME_WE)
