@@ -3,6 +3,10 @@
 
 #include <hwy/detect_targets.h>
 
+#if defined(__x86_64__) || defined(__i386__)
+#include <cpuid.h>
+#endif
+
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
@@ -26,6 +30,14 @@ constexpr TargetInfo kTargets[] = {
 };
 static_assert(std::size(kTargets) == static_cast<size_t>(SimdTarget::Count));
 
+#if HWY_ARCH_X86 && (defined(__GNUC__) || defined(__clang__))
+// F16C from CPUID leaf 1 (ECX bit 29): clang 14's __builtin_cpu_supports does not know "f16c".
+bool hasF16c() {
+  unsigned eax = 0, ebx = 0, ecx = 0, edx = 0;
+  return __get_cpuid(1, &eax, &ebx, &ecx, &edx) != 0 && (ecx & bit_F16C) != 0;
+}
+#endif
+
 // The processor has the instructions Highway compiles target t with (HWY_TARGET_STR in
 // hwy/ops/set_macros-inl.h); __builtin_cpu_supports also checks that the operating system saves
 // the AVX and AVX-512 registers.
@@ -36,7 +48,7 @@ bool processorRuns(SimdTarget t) {
                     __builtin_cpu_supports("pclmul") && __builtin_cpu_supports("aes");
   const bool avx2 = sse4 && __builtin_cpu_supports("avx") && __builtin_cpu_supports("avx2") &&
                     __builtin_cpu_supports("bmi") && __builtin_cpu_supports("bmi2") &&
-                    __builtin_cpu_supports("fma") && __builtin_cpu_supports("f16c");
+                    __builtin_cpu_supports("fma") && hasF16c();
   const bool avx3 = avx2 && __builtin_cpu_supports("avx512f") &&
                     __builtin_cpu_supports("avx512vl") && __builtin_cpu_supports("avx512dq") &&
                     __builtin_cpu_supports("avx512bw");
