@@ -27,7 +27,7 @@ void drawScene(int variant) {
   gluLookAt(0.0, 1.0, 6.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0);
 
   // A checkerboard texture on the floor.
-  static uint8_t checker[8 * 8 * 3];
+  uint8_t checker[8 * 8 * 3];  // one per call: threads draw their own variants at once
   for (int i = 0; i < 64; ++i) {
     const uint8_t v = ((i / 8 + i % 8) % 2) ? 230 : 40;
     checker[i * 3] = v;
