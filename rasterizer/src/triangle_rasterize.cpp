@@ -204,27 +204,25 @@ void walkTriangle(const TriangleSetup& setup, FragmentSink& sink) {
       block.by = by;
       const unsigned columns = columnMask(i0, i1);
       bool any = false;
-      for (int j = 0; j < kBlockSize; ++j) {
+      std::memset(block.rowMask, 0, sizeof block.rowMask);  // rows outside the box stay empty
+      for (int j = y0 - by; j < y1 - by; ++j) {
         const int y = by + j;
-        unsigned mask = 0;
-        if (y >= y0 && y < y1) {
-          mask = accepted ? columns : rowCoverage(edges, bx, y, i0, i1);
-          uint32_t* z = block.depth[j];
-          if (accepted) {  // every column: one loop without branches
-            for (int i = i0; i < i1; ++i) z[i] = depth.at(i, j);
-          } else {  // the covered ones only
+        unsigned mask = accepted ? columns : rowCoverage(edges, bx, y, i0, i1);
+        uint32_t* z = block.depth[j];
+        if (accepted) {  // every column: one loop without branches
+          for (int i = i0; i < i1; ++i) z[i] = depth.at(i, j);
+        } else {  // the covered ones only
+          for (unsigned rest = mask; rest != 0; rest &= rest - 1) {
+            const int i = std::countr_zero(rest);
+            z[i] = depth.at(i, j);
+          }
+        }
+        if constexpr (kEarly) {
+          if (test && mask != 0) {
+            const uint32_t* stored = earlyDepth->depthAt(bx, y);
             for (unsigned rest = mask; rest != 0; rest &= rest - 1) {
               const int i = std::countr_zero(rest);
-              z[i] = depth.at(i, j);
-            }
-          }
-          if constexpr (kEarly) {
-            if (test && mask != 0) {
-              const uint32_t* stored = earlyDepth->depthAt(bx, y);
-              for (unsigned rest = mask; rest != 0; rest &= rest - 1) {
-                const int i = std::countr_zero(rest);
-                if (!passesDepthCompare(kCompare, z[i], stored[i])) mask &= ~(1u << i);
-              }
+              if (!passesDepthCompare(kCompare, z[i], stored[i])) mask &= ~(1u << i);
             }
           }
         }
