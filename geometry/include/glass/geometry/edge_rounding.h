@@ -47,7 +47,10 @@
 // face it touches; a point at arc length s from that face's line gets the face's texture
 // coordinates at distance s * 4 / pi beyond the line, so the quarter arc (length pi R / 2) takes
 // exactly the 2 R of texture the sharp edge took, and a texture that runs on across the sharp
-// edge runs on across the rounded one.
+// edge runs on across the rounded one. A torus piece's half next to the end face unrolls as a
+// strip along its tube does; its half next to the fillet unrolls as the fillet does, then by its
+// tube's arc towards the end face: each runs on into the strips' and the fillet's unrolling at
+// their shared ends.
 //
 // Where two rounded convex edges meet and the corner's third edge is sharp, the mitre is the
 // exact rounded solid, not an approximation: the solid with both edges rounded is the
