@@ -1,9 +1,15 @@
 /* Homework 4-5 of the study guide, a model answer with GL, GLU and GLUT only: a room corner
  * (floor and two walls), an object made of cubes in the middle, read from a Wings3D file (by
  * default the L of three cubes l_block.wings; another file may be named on the command line),
- * whose upright edges marked hard in Wings3D are rounded by rational quadratic Bezier patches
- * (glMap2f, GL_MAP2_VERTEX_4, GL_AUTO_NORMAL): quarter cylinders at its convex corners, concave
- * fillets filling its inner corners. A texture runs on across the rounded strips, planar shadows
+ * whose edges marked hard in Wings3D are rounded by rational quadratic Bezier patches (glMap2f,
+ * GL_MAP2_VERTEX_4, GL_AUTO_NORMAL): its upright edges into quarter cylinders at its convex
+ * corners and concave fillets filling its inner corners; the rim of its top (when all its edges
+ * are hard) into quarter cylinders along the sides, which meet an eighth of a sphere above a
+ * rounded convex corner, a piece of a torus above a fillet, and each other in a mitre above a
+ * sharp corner. The sphere and torus pieces are surfaces of revolution: the rim's quarter circle
+ * turned around the upright's axis by the upright's quarter circle, a rational bi-quadratic
+ * patch whose weights are products of the two arcs' weights, exact as both arcs are (study
+ * guide, section 2.4). A texture runs on across the rounded strips, planar shadows
  * of the object fall on the floor and both walls (shadow matrices, kept on their surface by the
  * stencil buffer); walk mode with collisions, examine mode, three kinds of light, five
  * viewpoints, orthographic or perspective projection.
@@ -90,7 +96,7 @@ static void make_texture(void)
 /* A flat rectangle corner + s*edge_s + t*edge_t cut into n x n quads, so that point and spot
  * lights (computed at vertices, GL 1.x section 2.14) show their fall-off across it. */
 static void grid(const float corner[3], const float edge_s[3], const float edge_t[3],
-                 const float normal[3], int n, float texture_s0, float texture_s1)
+                 const float normal[3], int n, float texture_s0, float texture_s1, float texture_t1)
 {
   glNormal3fv(normal);
   for (int j = 0; j < n; ++j) {
@@ -98,7 +104,7 @@ static void grid(const float corner[3], const float edge_s[3], const float edge_
     for (int i = 0; i <= n; ++i) {
       for (int k = 1; k >= 0; --k) {
         float s = (float)i / (float)n, t = (float)(j + k) / (float)n;
-        glTexCoord2f(texture_s0 + s * (texture_s1 - texture_s0), t);
+        glTexCoord2f(texture_s0 + s * (texture_s1 - texture_s0), t * texture_t1);
         glVertex3f(corner[0] + s * edge_s[0] + t * edge_t[0],
                    corner[1] + s * edge_s[1] + t * edge_t[1],
                    corner[2] + s * edge_s[2] + t * edge_t[2]);
@@ -106,6 +112,81 @@ static void grid(const float corner[3], const float edge_s[3], const float edge_
     }
     glEnd();
   }
+}
+
+/* The radius the top's rim is rounded with: the current radius when it is marked hard. */
+static float rim_radius(void) { return plan.top_rounded ? radius : 0.0f; }
+
+/* The point of the rational patch net[v][u] (3 x 3 or 2 rows of 3, homogeneous) at (u, v). */
+static void patch_point(const float net[][3][4], int rows, double u, double v, double out[3])
+{
+  double h[4] = {0, 0, 0, 0};
+  const double bu[3] = {(1 - u) * (1 - u), 2 * u * (1 - u), u * u};
+  const double bv3[3] = {(1 - v) * (1 - v), 2 * v * (1 - v), v * v}, bv2[2] = {1 - v, v};
+  for (int j = 0; j < rows; ++j)
+    for (int i = 0; i < 3; ++i)
+      for (int k = 0; k < 4; ++k) h[k] += (rows == 3 ? bv3[j] : bv2[j]) * bu[i] * net[j][i][k];
+  for (int k = 0; k < 3; ++k) out[k] = h[k] / h[3];
+}
+
+/* Turns the order of `rows` rows of `length` floats each round. */
+static void reverse_rows(float *data, int rows, int length)
+{
+  for (int j = 0; j < rows / 2; ++j)
+    for (int k = 0; k < length; ++k) {
+      float swap = data[j * length + k];
+      data[j * length + k] = data[(rows - 1 - j) * length + k];
+      data[(rows - 1 - j) * length + k] = swap;
+    }
+}
+
+/* Draws the rational patch net[v][u] (rows = 2 or 3 rows of 3 homogeneous points) with texture
+ * coordinates tex[v][u], by glMap2f and glEvalMesh2, its rows turned round when dP/du x dP/dv
+ * points down at its middle (so every patch of the rim faces up and out, for its winding).
+ * Its normals come from a map of their own, not from GL_AUTO_NORMAL, whose dP/du x dP/dv vanishes
+ * where a sphere's net closes in a pole (GL 1.x section 5.1): the rim is at distance R from its
+ * centres (centre[v][u] is the centre nearest each control point, or the control point's on the
+ * centre circle for the corners), so w(u, v) (P(u, v) - centre) is a polynomial patch with
+ * control points w_ij (P_ij - centre_ij) and, with GL_NORMALIZE, gives the exact unit normal. */
+static void draw_rim_patch(float net[][3][4], float tex[][3][2], const double centre[][3][3], int rows)
+{
+  float normals[3][3][3];
+  for (int j = 0; j < rows; ++j)
+    for (int i = 0; i < 3; ++i)
+      for (int k = 0; k < 3; ++k) normals[j][i][k] = net[j][i][k] - net[j][i][3] * (float)centre[j][i][k];
+  double a[3], b[3], c[3], d[3];
+  patch_point((const float (*)[3][4])net, rows, 0.4, 0.5, a);
+  patch_point((const float (*)[3][4])net, rows, 0.6, 0.5, b);
+  patch_point((const float (*)[3][4])net, rows, 0.5, 0.4, c);
+  patch_point((const float (*)[3][4])net, rows, 0.5, 0.6, d);
+  const double du[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, dv[3] = {d[0] - c[0], d[1] - c[1], d[2] - c[2]};
+  if (du[2] * dv[0] - du[0] * dv[2] < 0) {
+    reverse_rows(&net[0][0][0], rows, 3 * 4);
+    reverse_rows(&tex[0][0][0], rows, 3 * 2);
+    reverse_rows(&normals[0][0][0], rows, 3 * 3);
+  }
+  glMap2f(GL_MAP2_VERTEX_4, 0, 1, 4, 3, 0, 1, 12, rows, &net[0][0][0]);
+  glMap2f(GL_MAP2_TEXTURE_COORD_2, 0, 1, 2, 3, 0, 1, 6, rows, &tex[0][0][0]);
+  glMap2f(GL_MAP2_NORMAL, 0, 1, 3, 3, 0, 1, 9, rows, &normals[0][0][0]);
+  glEnable(GL_MAP2_VERTEX_4);
+  glEnable(GL_MAP2_TEXTURE_COORD_2);
+  glEnable(GL_MAP2_NORMAL);
+  glDisable(GL_AUTO_NORMAL);
+  glMapGrid2f(ARC_STEPS, 0, 1, rows == 3 ? ARC_STEPS : 4, 0, 1);
+  glEvalMesh2(GL_FILL, 0, ARC_STEPS, 0, rows == 3 ? ARC_STEPS : 4);
+  glEnable(GL_AUTO_NORMAL);
+  glDisable(GL_MAP2_NORMAL);
+  glDisable(GL_MAP2_VERTEX_4);
+  glDisable(GL_MAP2_TEXTURE_COORD_2);
+}
+
+/* One homogeneous control point: (x, y, z) weighted by w. */
+static void control_point(float out[4], double x, double y, double z, double w)
+{
+  out[0] = (float)(x * w);
+  out[1] = (float)(y * w);
+  out[2] = (float)(z * w);
+  out[3] = (float)w;
 }
 
 /* A quarter cylinder of the current radius around the upright edge at `corner`, from the point
@@ -118,7 +199,7 @@ static void grid(const float corner[3], const float edge_s[3], const float edge_
 static void rounded_edge(const float from[2], const float corner[2], const float to[2], float s0)
 {
   const float w = (float)(sqrt(2.0) / 2.0);
-  const float y0 = block_min[1], y1 = block_max[1];
+  const float y0 = block_min[1], y1 = block_max[1] - rim_radius();
   float points[2][3][4]; /* [v][u][xyzw] */
   for (int v = 0; v < 2; ++v) {
     float y = v ? y1 : y0;
@@ -132,8 +213,9 @@ static void rounded_edge(const float from[2], const float corner[2], const float
     }
   }
   float arc = (float)(PI / 2.0) * radius;
+  const float t1 = (y1 - y0) / (block_max[1] - block_min[1]);
   float texture_points[2][3][2] = {{{s0, 0}, {s0 + arc / 2, 0}, {s0 + arc, 0}},
-                                   {{s0, 1}, {s0 + arc / 2, 1}, {s0 + arc, 1}}};
+                                   {{s0, t1}, {s0 + arc / 2, t1}, {s0 + arc, t1}}};
   glMap2f(GL_MAP2_VERTEX_4, 0, 1, 4, 3, 0, 1, 12, 2, &points[0][0][0]);
   glMap2f(GL_MAP2_TEXTURE_COORD_2, 0, 1, 2, 3, 0, 1, 6, 2, &texture_points[0][0][0]);
   glEnable(GL_MAP2_VERTEX_4);
@@ -171,6 +253,132 @@ static void arc_point(const float from[2], const float corner[2], const float to
   out[2] = (b0 * from[1] + b1 * corner[1] + b2 * to[1]) / sum;
 }
 
+/* The unit vector into the solid across side i (from corner i to corner i + 1): to the left of
+ * the walk, the sides' outward normals being to its right. */
+static void inward(int i, double out[2])
+{
+  const double *a = plan.xz[i], *b = plan.xz[(i + 1) % plan.corners];
+  const double length = hypot(b[0] - a[0], b[1] - a[1]);
+  out[0] = (b[1] - a[1]) / length;
+  out[1] = -(b[0] - a[0]) / length;
+}
+
+/* The axis of the rounded upright at corner i (x, z): inside the solid at a convex corner,
+ * outside it at a concave one; R from both sides' planes. */
+static void upright_axis(int i, double out[2])
+{
+  float from[2], to[2];
+  corner_ends(i, from, to);
+  for (int k = 0; k < 2; ++k) out[k] = (double)from[k] + (double)to[k] - plan.xz[i][k];
+}
+
+/* Where the top meets the rim at corner k, in (x, z): above a rounded upright, its axis (a
+ * convex corner, where the sphere closes) or the arc twice as far from it (a concave one, the
+ * torus's inner rim, drawn by the caller); above a sharp upright, R in from both sides: the
+ * mitre's top. */
+static void rim_top_corner(int k, double out[2])
+{
+  const int n = plan.corners;
+  const double r = rim_radius();
+  if (plan.rounded[k] && radius > 0) {
+    upright_axis(k, out);
+    return;
+  }
+  double before[2], after[2];
+  inward((k + n - 1) % n, before);
+  inward(k, after);
+  for (int c = 0; c < 2; ++c) out[c] = plan.xz[k][c] + r * (before[c] + after[c]);
+}
+
+/* The rounded rim along side i: the rim's quarter circle (from the side at R below the top, over
+ * the top edge weighted sqrt(2)/2, to the top R in from the side) swept from the side's start to
+ * its end. Above a rounded upright it ends where the upright's strip does, R along the side from
+ * the corner; above a sharp one it ends in the corner's bisecting plane (the mitre the
+ * neighbouring side's strip ends in too), its top point moved along the side by R. The texture's
+ * s runs along the side as the wall's does; t on up from the wall's top by the arc's length. */
+static void rim_strip(int i, float s0, float s1)
+{
+  const int n = plan.corners;
+  const double r = rim_radius(), w = sqrt(2.0) / 2.0;
+  const double top = block_max[1], height = block_max[1] - block_min[1];
+  float net[2][3][4], tex[2][3][2];
+  double centre[2][3][3];
+  /* The strip's axis: R in from side i and R below the top. */
+  double in_i[2], along[2];
+  inward(i, in_i);
+  along[0] = -in_i[1];
+  along[1] = in_i[0];
+  const double axis[2] = {plan.xz[i][0] + r * in_i[0], plan.xz[i][1] + r * in_i[1]};
+  for (int end = 0; end < 2; ++end) {
+    const int k = (i + end) % n;
+    float from[2], to[2];
+    corner_ends(k, from, to);
+    double edge[2], on_top[2], in[2];
+    inward(i, in);
+    if (plan.rounded[k] && radius > 0) {
+      const float *at = end ? from : to;
+      for (int c = 0; c < 2; ++c) {
+        edge[c] = at[c];
+        on_top[c] = at[c] + r * in[c];
+      }
+    } else {
+      for (int c = 0; c < 2; ++c) edge[c] = plan.xz[k][c];
+      rim_top_corner(k, on_top);
+    }
+    control_point(net[end][0], edge[0], top - r, edge[1], 1.0);
+    control_point(net[end][1], edge[0], top, edge[1], w);
+    control_point(net[end][2], on_top[0], top, on_top[1], 1.0);
+    const float s = end ? s1 : s0;
+    const float t0 = (float)((height - r) / height), t2 = (float)((height - r + PI / 2 * r) / height);
+    const float ts[3] = {t0, (t0 + t2) / 2, t2};
+    for (int u = 0; u < 3; ++u) {
+      tex[end][u][0] = s;
+      tex[end][u][1] = ts[u];
+      const double x = net[end][u][0] / net[end][u][3], z = net[end][u][2] / net[end][u][3];
+      const double on_axis = (x - axis[0]) * along[0] + (z - axis[1]) * along[1];
+      centre[end][u][0] = axis[0] + on_axis * along[0];
+      centre[end][u][1] = top - r;
+      centre[end][u][2] = axis[1] + on_axis * along[1];
+    }
+  }
+  draw_rim_patch(net, tex, (const double (*)[3][3])centre, 2);
+}
+
+/* Above the rounded upright at corner i, where the rim's strips of its two sides end: the rim's
+ * quarter circle turned around the upright's axis by the upright's quarter circle. Its rows are
+ * the upright's arc control points scaled from the axis by the rim's profile: 1 at the side (R
+ * below the top and at the top edge) and, at the top, 0 at a convex corner (the net closes in a
+ * pole: an eighth of a sphere) or 2 at a concave one (a quarter of the inner half of a torus of
+ * radii 2 R and R around the fillet's axis). */
+static void rim_corner(int i, float s0)
+{
+  const double r = rim_radius(), w = sqrt(2.0) / 2.0;
+  const double top = block_max[1], height = block_max[1] - block_min[1];
+  float from[2], to[2];
+  corner_ends(i, from, to);
+  double axis[2];
+  upright_axis(i, axis);
+  const double arc[3][2] = {{from[0], from[1]}, {plan.xz[i][0], plan.xz[i][1]}, {to[0], to[1]}};
+  const double arc_weight[3] = {1.0, w, 1.0};
+  const double scale[3] = {1.0, 1.0, plan.convex[i] ? 0.0 : 2.0}, y[3] = {top - r, top, top};
+  float net[3][3][4], tex[3][3][2];
+  double centre[3][3][3];
+  const float length = (float)(PI / 2) * radius;
+  const float t0 = (float)((height - r) / height), t2 = (float)((height - r + PI / 2 * r) / height);
+  for (int j = 0; j < 3; ++j)
+    for (int u = 0; u < 3; ++u) {
+      control_point(net[j][u], axis[0] + scale[j] * (arc[u][0] - axis[0]), y[j],
+                    axis[1] + scale[j] * (arc[u][1] - axis[1]), arc_weight[u] * arc_weight[j]);
+      tex[j][u][0] = s0 + length * (float)u / 2;
+      tex[j][u][1] = t0 + (t2 - t0) * (float)j / 2;
+      /* The tube's centre circle: the top row's arc, R below the top. */
+      centre[j][u][0] = axis[0] + scale[2] * (arc[u][0] - axis[0]);
+      centre[j][u][1] = top - r;
+      centre[j][u][2] = axis[1] + scale[2] * (arc[u][1] - axis[1]);
+    }
+  draw_rim_patch(net, tex, (const double (*)[3][3])centre, 3);
+}
+
 static void GLAPIENTRY top_vertex(void *data)
 {
   const GLdouble *p = data;
@@ -203,6 +411,26 @@ static void block_top(void)
   for (int i = 0; i < plan.corners; ++i) {
     float from[2], to[2], corner[2] = {(float)plan.xz[i][0], (float)plan.xz[i][1]};
     corner_ends(i, from, to);
+    if (rim_radius() > 0 && !(plan.rounded[i] && !plan.convex[i])) {
+      /* The rounded rim moved the top's corner in (a sphere's pole or a mitre's top). */
+      double at[2];
+      rim_top_corner(i, at);
+      outline[count][0] = at[0];
+      outline[count][1] = block_max[1];
+      outline[count][2] = at[1];
+      ++count;
+      continue;
+    }
+    if (rim_radius() > 0) {
+      /* Above a fillet: the torus's inner rim, the fillet's arc scaled by 2 from its axis. */
+      double axis[2];
+      upright_axis(i, axis);
+      for (int c = 0; c < 2; ++c) {
+        from[c] = (float)(axis[c] + 2 * (from[c] - axis[c]));
+        corner[c] = (float)(axis[c] + 2 * (corner[c] - axis[c]));
+        to[c] = (float)(axis[c] + 2 * (to[c] - axis[c]));
+      }
+    }
     const int steps = plan.rounded[i] && radius > 0 ? ARC_STEPS : 0;
     for (int step = 0; step <= steps; ++step) arc_point(from, corner, to, (double)step / ARC_STEPS, outline[count++]);
   }
@@ -219,7 +447,7 @@ static void block_top(void)
 static void block(int textured)
 {
   const float height = block_max[1] - block_min[1];
-  const float up[3] = {0, height, 0};
+  const float up[3] = {0, height - rim_radius(), 0};
   float s = 0;
   if (textured) {
     glEnable(GL_TEXTURE_2D);
@@ -233,6 +461,7 @@ static void block(int textured)
     corner_ends(next, next_from, unused);
     if (plan.rounded[i] && radius > 0) {
       rounded_edge(from, corner, to, s);
+      if (rim_radius() > 0) rim_corner(i, s);
       s += (float)(PI / 2) * radius;
     }
     /* The side from this corner to the next; outwards is to the right of the walk. */
@@ -241,7 +470,8 @@ static void block(int textured)
     if (length <= 0) continue;
     const float base[3] = {to[0], block_min[1], to[1]};
     const float normal[3] = {-along[2] / length, 0, along[0] / length};
-    grid(base, along, up, normal, 4, s, s + length);
+    grid(base, along, up, normal, 4, s, s + length, (height - rim_radius()) / height);
+    if (rim_radius() > 0) rim_strip(i, s, s + length);
     s += length;
   }
   block_top();
@@ -258,13 +488,13 @@ static void surface(int index)
   const float size = 2 * ROOM;
   if (index == 0) {
     const float corner[3] = {-ROOM, 0, ROOM}, s[3] = {size, 0, 0}, t[3] = {0, 0, -size};
-    grid(corner, s, t, surfaces[0], 20, 0, 1);
+    grid(corner, s, t, surfaces[0], 20, 0, 1, 1);
   } else if (index == 1) {
     const float corner[3] = {-ROOM, 0, -ROOM}, s[3] = {size, 0, 0}, t[3] = {0, WALL_HEIGHT, 0};
-    grid(corner, s, t, surfaces[1], 20, 0, 1);
+    grid(corner, s, t, surfaces[1], 20, 0, 1, 1);
   } else {
     const float corner[3] = {-ROOM, 0, ROOM}, s[3] = {0, 0, -size}, t[3] = {0, WALL_HEIGHT, 0};
-    grid(corner, s, t, surfaces[2], 20, 0, 1);
+    grid(corner, s, t, surfaces[2], 20, 0, 1, 1);
   }
 }
 
@@ -516,8 +746,8 @@ static void load_object(int argc, char **argv)
     exit(1);
   }
   if (plan.sharp_hard_edges > 0)
-    fprintf(stderr, "homework45: %s: %d hard edges are not upright; they stay sharp (only upright edges "
-            "are rounded here)\n", path, plan.sharp_hard_edges);
+    fprintf(stderr, "homework45: %s: %d hard edges stay sharp (this program rounds the upright edges, and "
+            "the top's rim when all its edges are hard)\n", path, plan.sharp_hard_edges);
   block_min[0] = (float)plan.min_x, block_max[0] = (float)plan.max_x;
   block_min[1] = (float)plan.bottom, block_max[1] = (float)plan.top;
   block_min[2] = (float)plan.min_z, block_max[2] = (float)plan.max_z;

@@ -137,8 +137,10 @@ static int read_object(const struct term *root, struct object *object, char *err
 }
 
 /* The outline of the top faces (those with every vertex at the top), walked along their edges
- * that border a face which is not on top, into plan->xz. */
-static int trace_outline(const struct object *o, struct floor_plan *plan, char *error, size_t size)
+ * that border a face which is not on top, into plan->xz; *outline_next gets the vertex after
+ * each one of it (-1 elsewhere), for the caller to free. */
+static int trace_outline(const struct object *o, struct floor_plan *plan, char *error, size_t size,
+                         long **outline_next)
 {
   const double extent = fmax(plan->top - plan->bottom, 1e-300);
   const double tolerance = 1e-9 * extent;
@@ -210,7 +212,7 @@ static int trace_outline(const struct object *o, struct floor_plan *plan, char *
     plan->convex[plan->corners] = turn > 0; /* turning left in (x, z); made "convex" below */
     ++plan->corners;
   }
-  free(next);
+  *outline_next = next;
   return 1;
 }
 
@@ -267,7 +269,8 @@ int wings_read_floor_plan(const char *path, struct floor_plan *plan, char *error
     if (!twin) ok = failed(error, error_size, "object 1, vertex %ld: no vertex above or below it (the object "
                            "does not stand upright)", v);
   }
-  if (ok) ok = trace_outline(&object, plan, error, error_size);
+  long *outline_next = NULL;
+  if (ok) ok = trace_outline(&object, plan, error, error_size, &outline_next);
   if (ok && plan->corners < 4) ok = failed(error, error_size, "object 1: its outline has %d corners", plan->corners);
   if (ok) {
     /* Counter-clockwise seen from above: the signed area in (z, x) is positive. */
@@ -293,21 +296,36 @@ int wings_read_floor_plan(const char *path, struct floor_plan *plan, char *error
       const double *a = plan->xz[i], *b = plan->xz[(i + 1) % plan->corners];
       plan->max_radius = fmin(plan->max_radius, hypot(b[0] - a[0], b[1] - a[1]) / 2);
     }
-    /* Hard edges: uprights round their corner; others stay sharp here. */
+    /* Hard edges: uprights round their corner; those around the top round its rim when all of
+     * them are hard; others stay sharp here. */
+    long rim_edges = 0, hard_rim_edges = 0;
+    for (long e = 0; e < object.edge_count; ++e) {
+      const struct winged_edge *edge = &object.edges[e];
+      rim_edges += outline_next[edge->vs] == edge->ve || outline_next[edge->ve] == edge->vs;
+    }
     for (size_t h = 0; h < object.hard->length; ++h) {
       long e;
       if (!index_in(&object.hard->items[h], object.edge_count, &e)) {
         ok = failed(error, error_size, "object 1, hard edge %zu: not an edge's number", h);
         break;
       }
-      const double *a = object.position[object.edges[e].vs], *b = object.position[object.edges[e].ve];
+      const struct winged_edge *edge = &object.edges[e];
+      const double *a = object.position[edge->vs], *b = object.position[edge->ve];
       const int upright = a[0] == b[0] && a[2] == b[2];
+      const int on_top = fabs(a[1] - plan->top) <= tolerance && fabs(b[1] - plan->top) <= tolerance;
+      const int rim = outline_next[edge->vs] == edge->ve || outline_next[edge->ve] == edge->vs;
       for (int i = 0; i < plan->corners && upright; ++i)
         if (plan->xz[i][0] == a[0] && plan->xz[i][1] == a[2]) plan->rounded[i] = 1;
-      /* (A hard upright in the middle of a straight side has nothing to round.) */
-      if (!upright) ++plan->sharp_hard_edges;
+      /* (A hard upright in the middle of a straight side, or a hard edge between two top faces,
+       * has nothing to round.) */
+      if (rim) ++hard_rim_edges;
+      else if (!upright && !on_top) ++plan->sharp_hard_edges;
     }
+    plan->top_rounded = hard_rim_edges > 0 && hard_rim_edges == rim_edges;
+    if (!plan->top_rounded) plan->sharp_hard_edges += (int)hard_rim_edges;
+    else plan->max_radius = fmin(plan->max_radius, (plan->top - plan->bottom) / 2);
   }
+  free(outline_next);
   free(object.position);
   free(object.edges);
   erlang_term_free(root);

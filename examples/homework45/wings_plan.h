@@ -1,7 +1,7 @@
 /* The object of a Wings3D file (.wings) as the homework draws it: a solid made of cubes standing
  * on the floor, that is a floor plan (a polygon with right-angled corners) raised from a bottom
- * to a top height, with the upright edges marked hard in Wings3D (its "hard edges") to be
- * rounded. */
+ * to a top height, with the edges marked hard in Wings3D (its "hard edges") to be rounded: the
+ * upright edges at the plan's corners, and the edges around the top. */
 #ifndef HOMEWORK45_WINGS_PLAN_H
 #define HOMEWORK45_WINGS_PLAN_H
 
@@ -15,8 +15,10 @@ struct floor_plan {
   int *convex;        /* whether the solid's angle at the corner is 90 (else 270) degrees */
   double bottom, top; /* heights */
   double min_x, max_x, min_z, max_z;
-  double max_radius;  /* half the outline's shortest side */
-  int sharp_hard_edges; /* hard edges that are not upright (not rounded by this program) */
+  int top_rounded;    /* whether every edge around the top is hard (the top's rim is rounded) */
+  double max_radius;  /* half the outline's shortest side (and of the height, top_rounded) */
+  int sharp_hard_edges; /* hard edges this program leaves sharp: along the bottom, or some but
+                           not all of those around the top */
 };
 
 /* Reads the first object of a .wings file. Returns 0 and writes the reason into `error` when the

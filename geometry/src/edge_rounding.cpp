@@ -11,6 +11,7 @@
 #include <map>
 #include <numbers>
 #include <optional>
+#include <set>
 #include <sstream>
 
 namespace glass::geometry {
@@ -23,6 +24,25 @@ constexpr double kAngleTolerance = 1e-6;
 
 // The middle weight of a quarter circle as a rational quadratic: cos(45 degrees).
 double quarterArcWeight() { return std::sqrt(0.5); }
+
+// Where a quarter arc (end weights 1, middle weight cos 45 degrees), split in the middle, has its
+// first half split again so that the cut lies at 30 degrees from the start: the parameter on that
+// half. The second half's cut at 60 degrees lies at 1 minus it (the arc is symmetric). Found by
+// bisection on the half's own control points, the ones every split arc has.
+double thirtyDegreeParameter() {
+  const double w = quarterArcWeight();
+  const glm::dvec3 h0(1.0, 0.0, 1.0), h1(w, w, w), h2(0.0, 1.0, 1.0);
+  const glm::dvec3 q0 = h0, q1 = 0.5 * (h0 + h1), q2 = 0.5 * (0.5 * (h0 + h1) + 0.5 * (h1 + h2));
+  double low = 0.0, high = 1.0;
+  for (int i = 0; i < 200 && low < high; ++i) {
+    const double s = 0.5 * (low + high);
+    if (s == low || s == high) break;
+    const glm::dvec3 p = (1.0 - s) * (1.0 - s) * q0 + 2.0 * s * (1.0 - s) * q1 + s * s * q2;
+    if (std::atan2(p.y, p.x) < std::numbers::pi / 6.0) low = s;
+    else high = s;
+  }
+  return 0.5 * (low + high);
+}
 
 std::string describeVertex(std::uint32_t v) { return "vertex " + std::to_string(v); }
 
@@ -178,6 +198,50 @@ bool faceHasEdge(const Topology& topo, std::size_t face, std::size_t edge) {
   return topo.edges()[edge].left == static_cast<int>(face) || topo.edges()[edge].right == static_cast<int>(face);
 }
 
+// A corner where a concave rounded edge c ends between two rounded convex edges: a in c's left
+// face, b in its right face, the three at right angles, and the end face's two flat edges running
+// on from b's and a's lines backwards (flatA along -a, flatB along -b). There a torus piece joins
+// the fillet and the two strips (see edge_rounding.h).
+struct TorusCorner {
+  std::size_t c = 0, a = 0, b = 0, flatA = 0, flatB = 0;
+};
+
+std::optional<TorusCorner> torusCornerAt(const Topology& topo, std::uint32_t v) {
+  const auto& all = topo.edgesAt(v);
+  if (all.size() != 5) return std::nullopt;
+  std::vector<std::size_t> concave, convex, flat;
+  for (std::size_t e : all) {
+    const EdgeRecord& edge = topo.edges()[e];
+    if (edge.right < 0) return std::nullopt;
+    const Dihedral dihedral = dihedralOf(topo, edge);
+    if (dihedral == Dihedral::Flat) flat.push_back(e);
+    else if (!edge.rounded) return std::nullopt;
+    else if (dihedral == Dihedral::Concave) concave.push_back(e);
+    else convex.push_back(e);
+  }
+  if (concave.size() != 1 || convex.size() != 2 || flat.size() != 2) return std::nullopt;
+  TorusCorner corner;
+  corner.c = concave[0];
+  const auto left = static_cast<std::size_t>(topo.edges()[corner.c].left);
+  const bool firstOnLeft = faceHasEdge(topo, left, convex[0]);
+  corner.a = firstOnLeft ? convex[0] : convex[1];
+  corner.b = firstOnLeft ? convex[1] : convex[0];
+  if (!faceHasEdge(topo, left, corner.a) || !faceHasEdge(topo, static_cast<std::size_t>(topo.edges()[corner.c].right), corner.b))
+    return std::nullopt;
+  const glm::dvec3 da = topo.direction(v, corner.a), db = topo.direction(v, corner.b), dc = topo.direction(v, corner.c);
+  if (std::abs(glm::dot(da, db)) > kAngleTolerance || std::abs(glm::dot(da, dc)) > kAngleTolerance ||
+      std::abs(glm::dot(db, dc)) > kAngleTolerance)
+    return std::nullopt;
+  auto opposite = [&](std::size_t e, const glm::dvec3& d) { return glm::dot(topo.direction(v, e), d) < -1.0 + kAngleTolerance; };
+  for (std::size_t e : flat) {
+    if (opposite(e, da)) corner.flatA = e;
+    else if (opposite(e, db)) corner.flatB = e;
+    else return std::nullopt;
+  }
+  if (corner.flatA == corner.flatB) return std::nullopt;
+  return corner;
+}
+
 void checkCorner(const Topology& topo, std::uint32_t v) {
   const auto& all = topo.edgesAt(v);
   std::vector<std::size_t> creases;
@@ -193,6 +257,7 @@ void checkCorner(const Topology& topo, std::uint32_t v) {
   auto perpendicular = [&](std::size_t a, std::size_t b) {
     return std::abs(glm::dot(topo.direction(v, a), topo.direction(v, b))) < kAngleTolerance;
   };
+  if (torusCornerAt(topo, v)) return;  // a concave fillet meeting two rounded convex edges
   if (concaveEndAt(topo, v) && concave.size() == 1 && creases.size() == 3) {
     // A concave fillet ending where two sharp convex edges leave at right angles: its web.
     std::vector<std::size_t> others;
@@ -209,8 +274,9 @@ void checkCorner(const Topology& topo, std::uint32_t v) {
     throw RoundingError(describeVertex(v) + ", where a rounded edge ends, has the concave " + describeEdge(edge) +
                         (edge.rounded ? " and other creases that are rounded or not at right angles"
                                       : ", which is not rounded") +
-                        "; a rounded concave edge must end where its two other creases are sharp, convex and at "
-                        "right angles, and rounded convex edges cannot meet concave ones");
+                        "; a rounded concave edge must end where its two other creases are convex and at right "
+                        "angles, both sharp or both rounded (with the end face split by flat edges along their "
+                        "continuations)");
   }
   if (creases.size() == 3 && all.size() == 3 && perpendicular(creases[0], creases[1]) &&
       perpendicular(creases[1], creases[2]) && perpendicular(creases[0], creases[2]))
@@ -260,20 +326,113 @@ bool isConvex(const Topology& topo, std::size_t f) {
   return true;
 }
 
+// A piece of the torus's side in the end face's plane, as a rational quadratic (homogeneous
+// control points), with the face it lies in and the torus patch it is a side of.
+struct TorusArc {
+  std::array<glm::dvec4, 3> row;
+  std::size_t face = 0;
+  PatchSideRef along;
+};
+
+glm::dvec3 projected(const glm::dvec4& h) { return glm::dvec3(h) / h.w; }
+
 // A piece of a face's boundary at one of its corners: the corner itself, moved in by the rounding,
-// or a quarter arc where the face is the end face of a rounded edge.
+// a quarter arc where the face is the end face of a rounded edge, or pieces of a torus's arc.
 struct CornerPiece {
   bool arc = false;
   glm::dvec3 start{0.0}, end{0.0}, middle{0.0};  // a point corner has start == end
   std::vector<std::size_t> terms;                  // the edges the point is moved along (point corners)
+  // A corner of the end face cut by a torus's arc: its pieces from start to end. `terms` are then
+  // the face's two edges there; the point beside a rounded one of them is v moved along both.
+  bool torus = false;
+  std::vector<TorusArc> torusArcs;
 };
 
 class RoundingBuilder {
  public:
-  RoundingBuilder(Topology& topo, double radius) : topo_(topo), radius_(radius), weight_(quarterArcWeight()) {
+  RoundingBuilder(Topology& topo, double radius)
+      : topo_(topo), radius_(radius), weight_(quarterArcWeight()), thirty_(thirtyDegreeParameter()) {
     touched_.assign(topo.poly().vertices.size(), false);
     if (radius > 0.0) {
       for (std::uint32_t v = 0; v < touched_.size(); ++v) touched_[v] = touchesRounding(topo, v);
+    }
+  }
+
+  // Finds the torus corners, and the fillets split at 30 and 60 degrees to meet them: those ending
+  // at one, and those joined to them through corners the crease runs straight through.
+  void findTori() {
+    for (std::uint32_t v = 0; v < touched_.size(); ++v) {
+      if (!touched_[v]) continue;
+      if (const auto corner = torusCornerAt(topo_, v)) {
+        tori_.emplace(v, *corner);
+        splitFillets_.insert(corner->c);
+      }
+    }
+    for (bool grown = true; grown;) {
+      grown = false;
+      for (std::uint32_t v = 0; v < touched_.size(); ++v) {
+        std::vector<std::size_t> fillets;
+        for (std::size_t e : topo_.edgesAt(v))
+          if (topo_.edges()[e].concave) fillets.push_back(e);
+        if (fillets.size() != 2 || splitFillets_.count(fillets[0]) == splitFillets_.count(fillets[1])) continue;
+        splitFillets_.insert(fillets[0]);
+        splitFillets_.insert(fillets[1]);
+        grown = true;
+      }
+    }
+  }
+
+  // The torus piece at v (see edge_rounding.h): a surface of revolution around the fillet's axis,
+  // u along the major arc from the strip on a to the strip on b (as the fillet's u runs from its
+  // left face to its right face), v along the minor arc from the end face to the fillet. Its net
+  // is built from the same offset points as its neighbours' ends: row v = 2 is the fillet's end,
+  // column u = 0 strip a's end, column u = 2 strip b's end.
+  void addTorus(std::uint32_t v) {
+    const TorusCorner& t = tori_.at(v);
+    const glm::dvec3 points[] = {offsetPoint(v, {t.a, t.flatB}),     offsetPoint(v, {t.a}), offsetPoint(v, {t.a, t.c}),
+                                 offsetPoint(v, {t.flatA, t.flatB}), offsetPoint(v, {}),    offsetPoint(v, {t.c}),
+                                 offsetPoint(v, {t.b, t.flatA}),     offsetPoint(v, {t.b}), offsetPoint(v, {t.b, t.c})};
+    const double w = weight_;
+    const double weights[] = {1.0, w, 1.0, w, w * w, w, 1.0, w, 1.0};
+    const EdgeRecord& fillet = topo_.edges()[t.c];
+    const auto left = static_cast<std::size_t>(fillet.left), right = static_cast<std::size_t>(fillet.right);
+    // The end face's pieces at v: the one beside a, the one between the flat edges, the one beside b.
+    std::size_t besideA = 0, between = 0, besideB = 0;
+    for (std::size_t f : {topo_.edges()[t.flatA].left, topo_.edges()[t.flatA].right, topo_.edges()[t.flatB].left,
+                          topo_.edges()[t.flatB].right}) {
+      if (faceHasEdge(topo_, f, t.a)) besideA = f;
+      else if (faceHasEdge(topo_, f, t.b)) besideB = f;
+      else between = f;
+    }
+    const glm::dvec3 endNormal = topo_.normal(between);
+    RoundedPatchInfo info;
+    info.rounded = true;
+    info.torus = true;
+    info.centre = offsetPoint(v, {t.a, t.b, t.c});
+    info.axis = endNormal;
+    info.majorRadius = 2.0 * radius_;
+    // The same splits as the fillet's: in the middle, then at 30 and 60 degrees.
+    const auto [firstHalf, secondHalf] = BezierSurface(2, 2, points, weights).subdivideU(0.5);
+    const auto [piece0, piece1] = firstHalf.subdivideU(thirty_);
+    const auto [piece2, piece3] = secondHalf.subdivideU(1.0 - thirty_);
+    const BezierSurface* pieces[] = {&piece0, &piece1, &piece2, &piece3};
+    const std::size_t endFaces[] = {besideA, between, between, besideB};
+    for (int k = 0; k < 4; ++k) {
+      const auto [nearEnd, nearFillet] = pieces[k]->subdivideV(0.5);
+      info.face = static_cast<int>(endFaces[k]);
+      info.faceNormal = endNormal;
+      info.acrossNormals.clear();
+      const bool flipped = add(nearEnd, info);
+      TorusArc arc;
+      for (int i = 0; i < 3; ++i) arc.row[static_cast<std::size_t>(i)] = nearEnd.homogeneousControlPoint(i, 0);
+      arc.face = endFaces[k];
+      arc.along = {surface_.patches.size() - 1, flipped ? PatchSide::VMax : PatchSide::VMin};
+      torusArcs_[v].push_back(arc);
+      const std::size_t face = k < 2 ? left : right, other = k < 2 ? right : left;
+      info.face = static_cast<int>(face);
+      info.faceNormal = -topo_.normal(face);
+      info.acrossNormals = {-topo_.normal(other)};
+      add(nearFillet, info);
     }
   }
 
@@ -295,6 +454,24 @@ class RoundingBuilder {
     const std::size_t next = topo_.edgeBetween(v, face.vertices[(i + 1) % count]);
     const bool previousRounded = topo_.edges()[previous].rounded, nextRounded = topo_.edges()[next].rounded;
     CornerPiece piece;
+    const auto torus = tori_.find(v);
+    if (torus != tori_.end() && !faceHasEdge(topo_, f, torus->second.c)) {
+      // A piece of the end face at a torus corner: it loses its corner to the torus's arcs in it,
+      // which run in the torus's u order a, flat edge along -b, flat edge along -a, b.
+      const TorusCorner& t = torus->second;
+      piece.torus = true;
+      piece.terms = {previous, next};
+      for (const TorusArc& arc : torusArcs_.at(v))
+        if (arc.face == f) piece.torusArcs.push_back(arc);
+      auto rank = [&](std::size_t e) { return e == t.a ? 0 : e == t.flatB ? 1 : e == t.flatA ? 2 : 3; };
+      if (rank(previous) > rank(next)) {
+        std::reverse(piece.torusArcs.begin(), piece.torusArcs.end());
+        for (TorusArc& arc : piece.torusArcs) std::reverse(arc.row.begin(), arc.row.end());
+      }
+      piece.start = projected(piece.torusArcs.front().row[0]);
+      piece.end = projected(piece.torusArcs.back().row[2]);
+      return piece;
+    }
     if (previousRounded || nextRounded) {
       // A rounded edge's line moves into the face by R, along the face's other edge there.
       if (previousRounded) piece.terms.push_back(next);
@@ -334,6 +511,13 @@ class RoundingBuilder {
     outline.face = static_cast<int>(f);
     for (std::size_t i = 0; i < count; ++i) {
       const CornerPiece& c = corners[i];
+      for (const TorusArc& arc : c.torusArcs) {
+        outline.pieces.push_back({projected(arc.row[0]), projected(arc.row[2]), {arc.along}});
+        const glm::dvec4 net[] = {arc.row[0], glm::dvec4(centre * arc.row[0].w, arc.row[0].w),
+                                  arc.row[1], glm::dvec4(centre * arc.row[1].w, arc.row[1].w),
+                                  arc.row[2], glm::dvec4(centre * arc.row[2].w, arc.row[2].w)};
+        add(BezierSurface::fromHomogeneous(2, 1, std::vector<glm::dvec4>(std::begin(net), std::end(net))), info, normal);
+      }
       if (c.arc) {
         const std::uint32_t v = face.vertices[i];
         outline.pieces.push_back({c.start, c.end, {}});
@@ -373,7 +557,10 @@ class RoundingBuilder {
   void linkOutlines() {
     for (const PendingSide& p : pendingSides_) {
       const auto found = stripSides_.find({p.edge, p.face});
-      if (found != stripSides_.end()) surface_.outlines[p.outline].pieces[p.piece].along.push_back(found->second);
+      if (found != stripSides_.end()) {
+        auto& along = surface_.outlines[p.outline].pieces[p.piece].along;
+        along.insert(along.end(), found->second.begin(), found->second.end());
+      }
     }
     for (const PendingArc& p : pendingArcs_) {
       const auto found = stripEnds_.find({p.edge, p.vertex});
@@ -386,10 +573,13 @@ class RoundingBuilder {
     const auto left = static_cast<std::size_t>(e.left), right = static_cast<std::size_t>(e.right);
     // Whether a face's corner at v moved along this edge.
     auto movedAlong = [&](const CornerPiece& c) { return std::count(c.terms.begin(), c.terms.end(), edgeIndex) > 0; };
+    // Where the strip meets a face: its moved corner; at a torus corner, v moved along both of
+    // the end face's edges there, as the torus's net has it.
+    auto beside = [&](std::uint32_t v, const CornerPiece& c) { return c.torus ? offsetPoint(v, c.terms) : c.start; };
     auto end = [&](std::uint32_t v, glm::dvec3& onLeft, glm::dvec3& middle, glm::dvec3& onRight) {
       const CornerPiece l = cornerAt(left, v), r = cornerAt(right, v);
-      onLeft = l.start;
-      onRight = r.start;
+      onLeft = beside(v, l);
+      onRight = beside(v, r);
       // The arc's middle control point lies on the edge: R in from v where both faces' corners
       // moved along the edge (a sphere corner), at v where the strip ends at a mitre or a face.
       const bool moved = movedAlong(l) && movedAlong(r);
@@ -415,12 +605,21 @@ class RoundingBuilder {
     info.axis = topo_.direction(e.from, edgeIndex);
     // Each half touches its face along u = 0 (nearLeft) or u = 1 (nearRight), and ends at e.from
     // along v = 0, at e.to along v = 1 (swapped when add() turns the patch round).
-    auto record = [&](const BezierSurface& half, PatchSide faceSide, std::size_t face) {
-      const bool flipped = add(half, info);
+    auto recordPiece = [&](const BezierSurface& piece, std::optional<PatchSide> faceSide, std::size_t face) {
+      const bool flipped = add(piece, info);
       const std::size_t k = surface_.patches.size() - 1;
-      stripSides_[{edgeIndex, face}] = PatchSideRef{k, faceSide};
+      if (faceSide) stripSides_[{edgeIndex, face}].push_back(PatchSideRef{k, *faceSide});
       stripEnds_[{edgeIndex, e.from}].push_back({k, flipped ? PatchSide::VMax : PatchSide::VMin});
       stripEnds_[{edgeIndex, e.to}].push_back({k, flipped ? PatchSide::VMin : PatchSide::VMax});
+    };
+    // A fillet that meets a torus is split again at 30 and 60 degrees, as the torus is.
+    const bool split = splitFillets_.count(edgeIndex) > 0;
+    auto record = [&](const BezierSurface& half, PatchSide faceSide, std::size_t face) {
+      if (!split) return recordPiece(half, faceSide, face);
+      const bool first = faceSide == PatchSide::UMin;
+      const auto [low, high] = half.subdivideU(first ? thirty_ : 1.0 - thirty_);
+      recordPiece(low, first ? std::optional<PatchSide>(faceSide) : std::nullopt, face);
+      recordPiece(high, first ? std::nullopt : std::optional<PatchSide>(faceSide), face);
     };
     // A mitre at v: only one of the two faces' corners moved along the edge; the half on that
     // face (which holds the other rounded edge) slides.
@@ -531,8 +730,16 @@ class RoundingBuilder {
       }
       return BezierSurface::fromHomogeneous(2, 1, std::move(net));
     };
-    add(ruled(nearA, 0), info, normal);
-    add(ruled(nearB, 2), info, normal);
+    if (splitFillets_.count(c) == 0) {
+      add(ruled(nearA, 0), info, normal);
+      add(ruled(nearB, 2), info, normal);
+      return;
+    }
+    // Split as the fillet is: each half starts (nearA) or ends (nearB) at a touching point, so its
+    // cut lies at 30 degrees from there, as the fillet's halves' cuts do.
+    const auto [a0, a1] = ruled(nearA, 0).subdivideU(thirty_);
+    const auto [b0, b1] = ruled(nearB, 2).subdivideU(1.0 - thirty_);
+    for (const BezierSurface* piece : {&a0, &a1, &b0, &b1}) add(*piece, info, normal);
   }
 
   RoundedSurface take() { return std::move(surface_); }
@@ -554,8 +761,7 @@ class RoundingBuilder {
     const glm::dvec3 probe = patch.evaluate(0.5, 0.5);
     glm::dvec3 outward = flatNormal;
     if (info.rounded) {
-      glm::dvec3 centre = info.centre;
-      if (info.alongAxis) centre += info.axis * glm::dot(probe - info.centre, info.axis);
+      const glm::dvec3 centre = roundingCentre(info, probe);
       outward = info.concave ? centre - probe : probe - centre;
     }
     BezierSurface oriented = patch;
@@ -589,12 +795,16 @@ class RoundingBuilder {
   };
   std::vector<PendingSide> pendingSides_;
   std::vector<PendingArc> pendingArcs_;
-  std::map<std::pair<std::size_t, std::size_t>, PatchSideRef> stripSides_;
+  std::map<std::pair<std::size_t, std::size_t>, std::vector<PatchSideRef>> stripSides_;
+  std::map<std::uint32_t, TorusCorner> tori_;
+  std::map<std::uint32_t, std::vector<TorusArc>> torusArcs_;
+  std::set<std::size_t> splitFillets_;
   std::map<std::pair<std::size_t, std::uint32_t>, std::vector<PatchSideRef>> stripEnds_;
 
   Topology& topo_;
   double radius_;
   double weight_;
+  double thirty_;
   std::vector<bool> touched_;
   RoundedSurface surface_;
 };
@@ -686,10 +896,47 @@ FaceChart faceChart(const MarkedPolyhedron& poly, std::size_t f) {
   return chart;
 }
 
+glm::dvec3 roundingCentre(const RoundedPatchInfo& info, const glm::dvec3& p) {
+  if (info.torus) {
+    const glm::dvec3 offset = p - info.centre;
+    const glm::dvec3 radial = offset - info.axis * glm::dot(offset, info.axis);
+    return info.centre + info.majorRadius * glm::normalize(radial);
+  }
+  if (info.alongAxis) return info.centre + info.axis * glm::dot(p - info.centre, info.axis);
+  return info.centre;
+}
+
+namespace {
+
+// (4 / pi) times the arc length from the touching point whose direction is perpendicular to
+// `across`, to the point of the circle of radius R in `direction`: the unrolled distance.
+double unrolledTowards(const glm::dvec3& direction, const glm::dvec3& across, double radius) {
+  return (4.0 / std::numbers::pi) * std::asin(std::clamp(glm::dot(direction, across), -1.0, 1.0)) * radius;
+}
+
+// A torus piece unrolled. Next to the end face, as a strip along its tube: from the tube's
+// touching point on that face towards the major axis. Next to the fillet, as the fillet is (from
+// the fillet's axis to its touching point on the face, then around the major axis towards the
+// other face), and then towards the end face by the tube's arc. Either way it runs on into the
+// strips' and the fillet's unrolling at their shared ends.
+glm::dvec2 torusTexCoord(const RoundedPatchInfo& info, const FaceChart& chart, double radius, const glm::dvec3& p) {
+  const glm::dvec3 tube = roundingCentre(info, p);
+  const glm::dvec3 direction = glm::normalize(p - tube);
+  const glm::dvec3 inward = glm::normalize(info.centre + info.axis * glm::dot(tube - info.centre, info.axis) - tube);
+  if (glm::dot(info.faceNormal, info.axis) > 0.5)
+    return chart.at(tube + radius * info.faceNormal + unrolledTowards(direction, inward, radius) * inward);
+  glm::dvec3 flat = info.centre + radius * info.faceNormal;
+  for (const glm::dvec3& across : info.acrossNormals) flat += unrolledTowards(-inward, across, radius) * across;
+  flat += unrolledTowards(direction, info.axis, radius) * info.axis;
+  return chart.at(flat);
+}
+
+}  // namespace
+
 glm::dvec2 roundedTexCoord(const RoundedPatchInfo& info, const FaceChart& chart, double radius, const glm::dvec3& p) {
   if (!info.rounded) return chart.at(p);
-  glm::dvec3 centre = info.centre;
-  if (info.alongAxis) centre += info.axis * glm::dot(p - info.centre, info.axis);
+  if (info.torus) return torusTexCoord(info, chart, radius, p);
+  const glm::dvec3 centre = roundingCentre(info, p);
   const glm::dvec3 direction = glm::normalize(p - centre);
   // Unroll onto the face's plane: the touching point (centre + R n_face), then towards each other
   // face of the rounding by 4 / pi times the arc length asin(direction . n) R.
@@ -733,6 +980,10 @@ RoundedSurface roundMarkedEdges(const MarkedPolyhedron& poly, double radius) {
     }
     for (std::uint32_t v = 0; v < touched.size(); ++v)
       if (touched[v]) checkCorner(topo, v);
+    // Torus pieces first: the end faces' outlines take their arcs.
+    builder.findTori();
+    for (std::uint32_t v = 0; v < touched.size(); ++v)
+      if (touched[v] && torusCornerAt(topo, v)) builder.addTorus(v);
   }
   for (std::size_t f = 0; f < poly.faces.size(); ++f) {
     const auto& face = poly.faces[f];
@@ -837,6 +1088,9 @@ RoundedMesh tessellateRounded(const MarkedPolyhedron& poly, const RoundedSurface
   }
   for (std::size_t t = 0; t < out.mesh.indices.size(); t += 3)
     out.triangleFaces.push_back(surface.info[surfaceIndex[vertexPatch[out.mesh.indices[t]]]].face);
+  // Each rounded patch's vertices, so that an outline looks only at those of its own patches.
+  std::vector<std::vector<std::size_t>> patchVertices(rounded.size());
+  for (std::size_t i = 0; i < meshVertices; ++i) patchVertices[vertexPatch[i]].push_back(i);
 
   // Faces next to the rounding: their outlines, with every vertex the rounded patches have there.
   std::vector<bool> outlined(poly.faces.size(), false);
@@ -848,9 +1102,8 @@ RoundedMesh tessellateRounded(const MarkedPolyhedron& poly, const RoundedSurface
       std::vector<std::pair<double, glm::dvec3>> inside;
       const glm::dvec3 direction = piece.end - piece.start;
       for (const PatchSideRef& ref : piece.along) {
-        const std::size_t k = roundedIndex[ref.patch];
-        for (std::size_t i = 0; i < meshVertices; ++i) {
-          if (vertexPatch[i] != k || !onSide(ref.side, vertexUv[i])) continue;
+        for (std::size_t i : patchVertices[roundedIndex[ref.patch]]) {
+          if (!onSide(ref.side, vertexUv[i])) continue;
           const glm::dvec3& p = out.mesh.positions[i];
           if (p == piece.start || p == piece.end) continue;
           inside.emplace_back(glm::dot(p - piece.start, direction), p);

@@ -60,15 +60,44 @@ namespace {
 constexpr int kBlockSize = CoveredBlock::kSize;
 
 // The depth plane at the block's pixel centres, split as described at the top of the file.
-// Only the columns [i0, i1) and rows [j0, j1) of the block inside the triangle's box are set.
+// Made with the corner columns and rows of the box's part of the block only (i0 and i1 - 1, j0
+// and j1 - 1: all the hidden-block test reads); fillInterior() sets the columns [i0, i1) and rows
+// [j0, j1) between them for the pixels. Every entry is the same expression either way.
 struct BlockDepth {
+  const TriangleSetup& setup;
+  int bx, by, i0, i1, j0, j1;
   double column[kBlockSize], row[kBlockSize];
 
-  BlockDepth(const TriangleSetup& setup, int bx, int by, int i0, int i1, int j0, int j1) {
-    for (int i = i0; i < i1; ++i) column[i] = setup.z0 + setup.zdx * (bx + i + 0.5);
-    for (int j = j0; j < j1; ++j) row[j] = setup.zdy * (by + j + 0.5);
+  BlockDepth(const TriangleSetup& s, int x, int y, int firstColumn, int endColumn, int firstRow, int endRow)
+      : setup(s), bx(x), by(y), i0(firstColumn), i1(endColumn), j0(firstRow), j1(endRow) {
+    setColumn(i0);
+    setColumn(i1 - 1);
+    setRow(j0);
+    setRow(j1 - 1);
+  }
+  void fillInterior() {
+    for (int i = i0 + 1; i < i1 - 1; ++i) setColumn(i);
+    for (int j = j0 + 1; j < j1 - 1; ++j) setRow(j);
   }
   uint32_t at(int i, int j) const { return depthValue(column[i] + row[j]); }
+  // at(i, j) for every column of row j (all columns set), two columns per vector operation
+  // (GCC and Clang vector extensions): the same clamps, multiply, add and truncation per lane.
+  void wholeRow(int j, uint32_t z[kBlockSize]) const {
+    using DoubleLanes = double __attribute__((vector_size(16)));
+    using IntLanes = int32_t __attribute__((vector_size(8)));
+    const DoubleLanes zero = {0.0, 0.0}, one = {1.0, 1.0};
+    for (int i = 0; i < kBlockSize; i += 2) {
+      DoubleLanes value = {column[i] + row[j], column[i + 1] + row[j]};
+      value = value > zero ? value : zero;  // depthValue's clamps: NaN becomes 0
+      value = value < one ? value : one;
+      const IntLanes ints = __builtin_convertvector(value * double(kDepthMax) + 0.5, IntLanes);
+      std::memcpy(z + i, &ints, sizeof ints);
+    }
+  }
+
+ private:
+  void setColumn(int i) { column[i] = setup.z0 + setup.zdx * (bx + i + 0.5); }
+  void setRow(int j) { row[j] = setup.zdy * (by + j + 0.5); }
 };
 
 // Bits i0 <= i < i1.
@@ -185,7 +214,7 @@ void walkTriangle(const TriangleSetup& setup, FragmentSink& sink) {
         if (edges.minOver(i, bx, by, kBlockSize, kBlockSize) < 0) accepted = false;
 
       const int i0 = x0 - bx, i1 = x1 - bx;
-      const BlockDepth depth(setup, bx, by, i0, i1, y0 - by, y1 - by);
+      BlockDepth depth(setup, bx, by, i0, i1, y0 - by, y1 - by);
       bool test = kEarly;
       if constexpr (kEarly) {
         // Not for small triangles: their blocks have too few pixels to repay the look at the
@@ -197,6 +226,7 @@ void walkTriangle(const TriangleSetup& setup, FragmentSink& sink) {
           test = outcome == BlockDepthOutcome::PerPixel;
         }
       }
+      depth.fillInterior();
 
       // Coverage and depth, row by row; a fragment that fails the early depth test goes no
       // further.
@@ -204,27 +234,27 @@ void walkTriangle(const TriangleSetup& setup, FragmentSink& sink) {
       block.by = by;
       const unsigned columns = columnMask(i0, i1);
       bool any = false;
-      for (int j = 0; j < kBlockSize; ++j) {
+      std::memset(block.rowMask, 0, sizeof block.rowMask);  // rows outside the box stay empty
+      for (int j = y0 - by; j < y1 - by; ++j) {
         const int y = by + j;
-        unsigned mask = 0;
-        if (y >= y0 && y < y1) {
-          mask = accepted ? columns : rowCoverage(edges, bx, y, i0, i1);
-          uint32_t* z = block.depth[j];
-          if (accepted) {  // every column: one loop without branches
-            for (int i = i0; i < i1; ++i) z[i] = depth.at(i, j);
-          } else {  // the covered ones only
+        unsigned mask = accepted ? columns : rowCoverage(edges, bx, y, i0, i1);
+        uint32_t* z = block.depth[j];
+        if (accepted && i0 == 0 && i1 == kBlockSize) {  // a whole row: a loop of fixed length
+          depth.wholeRow(j, z);
+        } else if (accepted) {  // every column: one loop without branches
+          for (int i = i0; i < i1; ++i) z[i] = depth.at(i, j);
+        } else {  // the covered ones only
+          for (unsigned rest = mask; rest != 0; rest &= rest - 1) {
+            const int i = std::countr_zero(rest);
+            z[i] = depth.at(i, j);
+          }
+        }
+        if constexpr (kEarly) {
+          if (test && mask != 0) {
+            const uint32_t* stored = earlyDepth->depthAt(bx, y);
             for (unsigned rest = mask; rest != 0; rest &= rest - 1) {
               const int i = std::countr_zero(rest);
-              z[i] = depth.at(i, j);
-            }
-          }
-          if constexpr (kEarly) {
-            if (test && mask != 0) {
-              const uint32_t* stored = earlyDepth->depthAt(bx, y);
-              for (unsigned rest = mask; rest != 0; rest &= rest - 1) {
-                const int i = std::countr_zero(rest);
-                if (!passesDepthCompare(kCompare, z[i], stored[i])) mask &= ~(1u << i);
-              }
+              if (!passesDepthCompare(kCompare, z[i], stored[i])) mask &= ~(1u << i);
             }
           }
         }

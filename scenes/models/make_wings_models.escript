@@ -6,8 +6,8 @@
 %% winged-edge form (see scene/include/glass/scene/wings_file.h).
 %%
 %% Usage: escript scenes/models/make_wings_models.escript REPOSITORY_ROOT
-%% Writes scenes/models/*.wings, examples/homework45/l_block.wings and tests/unit/data/wings/*.wings
-%% and *.term.
+%% Writes scenes/models/*.wings, examples/homework45/l_block.wings,
+%% tests/homework45/l_block_uprights.wings and tests/unit/data/wings/*.wings and *.term.
 
 main([Root]) ->
     Models = filename:join(Root, "scenes/models"),
@@ -30,6 +30,10 @@ main([Root]) ->
           [object("L", LBlockVs, LBlockFs, LBlockHard, top_paint, true)], Materials, []),
     write(filename:join(Tests, "l_block.wings"),
           [object("L", LBlockVs, LBlockFs, LBlockHard, top_paint, true)], Materials, []),
+    %% The same L with every edge marked: its inner upright's fillet meets the rounded rims of
+    %% the top and the bottom in torus pieces.
+    write(filename:join(Models, "l_all_hard.wings"),
+          [object("L", LBlockVs, LBlockFs, fun(_, _) -> true end, top_paint, true)], Materials, []),
     %% The same L of unit cubes with only its uprights marked, and one two cubes tall (its
     %% concave upright runs straight through a corner of four faces).
     {LVsUp, LFsUp} = cubes([{0, 0, 0}, {1, 0, 0}, {0, 0, 1}], 1.0, {0.0, 0.0, 0.0}),
@@ -40,9 +44,15 @@ main([Root]) ->
     write(filename:join(Tests, "l_tall_uprights.wings"),
           [object("L", LTallVs, LTallFs, Upright, top_paint, true)], Materials, []),
     %% The homework program's object: the L of unit cubes centred on the origin, its uprights
-    %% marked (the program rounds upright edges).
-    {HwVs, HwFs} = cubes([{0, 0, 0}, {1, 0, 0}, {0, 0, 1}], 1.0, {-1.0, 0.0, -1.0}),
+    %% and every edge around its top marked (the program rounds both: sphere corners, mitres and,
+    %% above the inner upright, a torus piece).
+    HwCells = [{0, 0, 0}, {1, 0, 0}, {0, 0, 1}],
+    {HwVs, HwFs} = cubes(HwCells, 1.0, {-1.0, 0.0, -1.0}),
+    HwHard = fun(A, B) -> upright(A, B) orelse top_rim(A, B, 1.0, HwCells, 1.0, {-1.0, 0.0, -1.0}) end,
     write(filename:join(Root, "examples/homework45/l_block.wings"),
+          [object("L", HwVs, HwFs, HwHard, top_paint, true)], Materials, []),
+    %% The same with only its uprights hard (its test compares the two).
+    write(filename:join(Root, "tests/homework45/l_block_uprights.wings"),
           [object("L", HwVs, HwFs, Upright, top_paint, true)], Materials, []),
     %% Unit test files.
     {CubeVs, CubeFs} = cubes([{0, 0, 0}], 1.0, {0.0, 0.0, 0.0}),
@@ -69,6 +79,11 @@ main([Root]) ->
     {LVs, LFs} = cubes([{0, 0, 0}, {1, 0, 0}, {0, 1, 0}], 1.0, {0.0, 0.0, 0.0}),
     write(filename:join(Tests, "concave_l.wings"),
           [object("L", LVs, LFs, All, none, false)], Materials, []),
+    %% The same with one rim edge where the concave edge ends left sharp: one rounded and one sharp
+    %% crease there, which is neither a web nor a torus piece.
+    AllButOne = fun(A, B) -> lists:sort([A, B]) =/= [{1.0, 1.0, 1.0}, {2.0, 1.0, 1.0}] end,
+    write(filename:join(Tests, "concave_l_one_sharp.wings"),
+          [object("L", LVs, LFs, AllButOne, none, false)], Materials, []),
     %% Broken and unsupported files.
     Cube = object("Cube", CubeVs, CubeFs, All, top_paint, true),
     write_term(filename:join(Tests, "version_3.wings"), {wings, 3, {[Cube], Materials, []}}),
@@ -127,6 +142,14 @@ outer_top({AX, AY, AZ}, {BX, BY, BZ}, Top, Low, Size) ->
     Outside = fun(C) -> C == Low orelse C == Low + 2 * Size end,
     AY == Top andalso BY == Top andalso
         ((AX == BX andalso Outside(AX)) orelse (AZ == BZ andalso Outside(AZ))).
+
+%% A top edge (y = Top) of a layer of cubes that has a cube on one side of it only: on the rim.
+top_rim({AX, AY, AZ}, {BX, BY, BZ}, Top, Cells, Size, {OX, _, OZ}) when AY == Top, BY == Top ->
+    Cell = fun(X, Z) -> lists:member({floor((X - OX) / Size), 0, floor((Z - OZ) / Size)}, Cells) end,
+    {MX, MZ} = {(AX + BX) / 2, (AZ + BZ) / 2},
+    {DX, DZ} = {(BZ - AZ) / 4, (AX - BX) / 4},
+    Cell(MX + DX, MZ + DZ) =/= Cell(MX - DX, MZ - DZ);
+top_rim(_, _, _, _, _, _) -> false.
 
 one_edge({AX, AY, _}, {BX, BY, _}) -> AX == 1.0 andalso BX == 1.0 andalso AY == 1.0 andalso BY == 1.0.
 

@@ -1,12 +1,14 @@
 #!/bin/sh
 # Homework 4-5's program headless (SDL_VIDEODRIVER=dummy, set by ctest), driven by
 # GLASS_GLUT_EVENTS; its snapshots compared with png_probe's same/differ.
-#   homework45_tests.sh PROGRAM PNG_PROBE WORK_DIR MODEL
+#   homework45_tests.sh PROGRAM PNG_PROBE WORK_DIR MODEL UPRIGHTS_MODEL
+# (UPRIGHTS_MODEL: the same L with only its uprights hard, its top's rim sharp.)
 set -eu
 program=$1
 probe=$2
 work=$3
 model=$4
+uprights_model=$5
 . "$(dirname "$0")/../shell_test_support.sh"
 
 # repeat N LINE: the event line N times.
@@ -20,9 +22,16 @@ repeat() {
 
 {
   echo "snapshot sharp.png"
-  repeat 5 "key R"
-  echo "snapshot round.png"
-  repeat 5 "key r"
+  for press in 1 2 3 4 5; do
+    echo "key R"
+    echo "snapshot round$press.png"
+  done
+  # 0.08 a press: the seventh reaches the largest radius, 0.5, and the eighth stays there.
+  repeat 2 "key R"
+  echo "snapshot largest.png"
+  echo "key R"
+  echo "snapshot largest_again.png"
+  repeat 7 "key r"
   echo "snapshot sharp_again.png"
   # Viewpoint 2 stands beside the block looking at the back wall: 26 steps reach it.
   echo "key 2"
@@ -51,7 +60,29 @@ GLASS_GLUT_SNAPSHOT=last.png GLASS_GLUT_EVENTS=events.txt "$program" >out.txt 2>
 cat err.txt >&2
 [ "$status" -eq 0 ] || fail "the program exited with $status"
 
-"$probe" sharp.png size 400 300 differ round.png same sharp_again.png || fail "keys R and r"
+"$probe" sharp.png size 400 300 differ round5.png same sharp_again.png || fail "keys R and r"
+previous=sharp.png
+for press in 1 2 3 4 5; do
+  "$probe" "$previous" differ round$press.png || fail "R pressed $press times did not change the picture"
+  previous=round$press.png
+done
+"$probe" largest.png differ round5.png same largest_again.png || fail "R beyond the largest radius"
+# The rim of the top is rounded too: the same L with its rim left sharp looks the same sharp and
+# different rounded.
+{
+  echo "snapshot uprights_sharp.png"
+  repeat 5 "key R"
+  echo "snapshot uprights_round5.png"
+} >uprights_events.txt
+status=0
+GLASS_GLUT_SNAPSHOT=last_uprights.png GLASS_GLUT_EVENTS=uprights_events.txt "$program" "$uprights_model" \
+  >out.txt 2>err.txt || status=$?
+[ "$status" -eq 0 ] || fail "the program exited with $status on the uprights-only L: $(cat err.txt)"
+"$probe" uprights_sharp.png same sharp.png || fail "the two Ls differ before rounding"
+"$probe" uprights_round5.png differ round5.png || fail "the rounded rim does not show"
+# The default L's hard edges are all rounded: nothing is reported as left sharp.
+GLASS_GLUT_SNAPSHOT=quiet.png "$program" >out.txt 2>err.txt || fail "the default model"
+[ ! -s err.txt ] || fail "the default model reports: $(cat err.txt)"
 "$probe" start.png differ at_wall.png || fail "walking did not move"
 # At the wall it fills the view (no pixel of the background, 26 26 38, beyond it).
 "$probe" at_wall.png count 26 26 38 0 0 same still_at_wall.png || fail "walked through the wall"

@@ -7,6 +7,7 @@
 
 #include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <numbers>
@@ -145,7 +146,8 @@ void checkSeams(const MarkedPolyhedron &poly, const RoundedSurface &s) {
       const glm::dvec3 ph = s.patches[p].evaluate(uh.x, uh.y);
       const bool curved = glm::length(ph - (p0 + p1) / 2.0) > 1e-9;
       const bool mitre = a.alongAxis && b.alongAxis && glm::length(glm::cross(a.axis, b.axis)) > 1e-9;
-      const bool stripEnd = a.rounded != b.rounded && curved;
+      // (A torus piece meets its end face tangentially, along a curve.)
+      const bool stripEnd = a.rounded != b.rounded && curved && !a.torus && !b.torus;
       const bool sharpEdge = !a.rounded && !b.rounded && a.face != b.face;
       for (double t : kSamples) {
         const glm::dvec2 ua = onSide(side, t), ub = onSide(m.side, m.reversed ? 1.0 - t : t);
@@ -167,7 +169,8 @@ void checkSeams(const MarkedPolyhedron &poly, const RoundedSurface &s) {
   CHECK(shared > 0);
 }
 
-// Every point of a strip lies at distance R from its axis, of a sphere piece at R from its centre.
+// Every point of a strip lies at distance R from its axis, of a sphere piece at R from its centre,
+// of a torus piece at R from its circle of centres.
 void checkRadius(const RoundedSurface &s) {
   for (std::size_t p = 0; p < s.patches.size(); ++p) {
     const RoundedPatchInfo &info = s.info[p];
@@ -175,8 +178,7 @@ void checkRadius(const RoundedSurface &s) {
     for (double u : kSamples)
       for (double v : kSamples) {
         const glm::dvec3 point = s.patches[p].evaluate(u, v);
-        glm::dvec3 centre = info.centre;
-        if (info.alongAxis) centre += info.axis * glm::dot(point - info.centre, info.axis);
+        const glm::dvec3 centre = roundingCentre(info, point);
         CHECK(std::abs(glm::length(point - centre) - s.radius) < 1e-9);
         // The normal points straight away from the centre (towards it for a concave fillet).
         const double outward = info.concave ? -1.0 : 1.0;
@@ -206,10 +208,21 @@ std::size_t checkWatertight(const RoundedMesh &rounded) {
   return idx.size() / 3;
 }
 
+// The volume a closed mesh holds (the divergence theorem over its triangles).
+double meshVolume(const RoundedMesh &mesh) {
+  double sum = 0.0;
+  const auto &idx = mesh.mesh.indices;
+  for (std::size_t t = 0; t < idx.size(); t += 3) {
+    const glm::dvec3 &a = mesh.mesh.positions[idx[t]], &b = mesh.mesh.positions[idx[t + 1]], &c = mesh.mesh.positions[idx[t + 2]];
+    sum += glm::dot(a, glm::cross(b, c)) / 6.0;
+  }
+  return sum;
+}
+
 } // namespace
 
 const char *const kRoundable[] = {"cube_all_hard.wings", "cube_top_ring.wings", "cube_one_edge.wings",   "block.wings",
-                                  "l_uprights.wings",    "l_tall_uprights.wings", "l_block.wings"};
+                                  "l_uprights.wings",    "l_tall_uprights.wings", "l_block.wings", "concave_l.wings"};
 
 TEST_CASE("Rounding: every seam is exact, with continuous normals and texture coordinates") {
   for (std::string name : kRoundable) {
@@ -333,12 +346,12 @@ TEST_CASE("Rounding: radius limits and unsupported objects are refused with a re
   CHECK_THROWS_AS(roundMarkedEdges(cube, -1.0), RoundingError);
   const MarkedPolyhedron block = readShape("block.wings");
   CHECK(maximumRoundingRadius(block) == 0.375);
-  // Every edge of the L marked: where the concave upright ends, rounded convex edges meet it
-  // (a torus piece, not built).
-  const MarkedPolyhedron l = readShape("concave_l.wings");
+  // The L with every edge marked but one convex edge where the concave edge ends: one rounded and
+  // one sharp crease there is neither a web nor a torus piece.
+  const MarkedPolyhedron l = readShape("concave_l_one_sharp.wings");
+  REQUIRE(l.markedEdges.size() == readShape("concave_l.wings").markedEdges.size() - 1);
   CHECK_NOTHROW(roundMarkedEdges(l, 0.0));
-  CHECK_THROWS_WITH_AS(roundMarkedEdges(l, 0.1), doctest::Contains("rounded convex edges cannot meet concave ones"),
-                       RoundingError);
+  CHECK_THROWS_WITH_AS(roundMarkedEdges(l, 0.1), doctest::Contains("both sharp or both rounded"), RoundingError);
   // The Wings3D file's object has slanted edges.
   const MarkedPolyhedron axes = readShape("wings3d_axes.wings");
   CHECK_NOTHROW(roundMarkedEdges(axes, 0.0));
@@ -414,17 +427,143 @@ TEST_CASE("Rounding: a concave edge becomes a fillet outside the faces, ending i
   // The rounded mesh holds more volume than the sharp L: the fillet fills (1 - pi / 4) R^2 of
   // the corner over the height 1, and each convex upright takes as much away.
   auto volume = [&](double radius) {
-    const RoundedMesh mesh = tessellateRounded(l, roundMarkedEdges(l, radius), {ObjectSpaceTolerance{1e-7}, 8});
-    double sum = 0.0;
-    const auto &idx = mesh.mesh.indices;
-    for (std::size_t t = 0; t < idx.size(); t += 3) {
-      const glm::dvec3 &a = mesh.mesh.positions[idx[t]], &b = mesh.mesh.positions[idx[t + 1]], &c = mesh.mesh.positions[idx[t + 2]];
-      sum += glm::dot(a, glm::cross(b, c)) / 6.0;
-    }
-    return sum;
+    return meshVolume(tessellateRounded(l, roundMarkedEdges(l, radius), {ObjectSpaceTolerance{1e-7}, 8}));
   };
   const double corner = (1.0 - std::numbers::pi / 4.0) * 0.25 * 0.25;
   // Five convex uprights (at x, z = (0, 0), (2, 0), (2, 1), (1, 2), (0, 2)) and one concave.
   CHECK(volume(0.25) == doctest::Approx(3.0 - 5.0 * corner + corner).epsilon(1e-6));
   CHECK(volume(0.0) == doctest::Approx(3.0).epsilon(1e-12));
+}
+
+namespace {
+
+
+// Integrals over the depth d in [0, R] below a face of the inset delta(d) = R - sqrt(R^2 - (R - d)^2)
+// by which a rounded edge along that face moves the solid's outline in: of delta and of delta^2.
+double insetIntegral(double r) { return (1.0 - std::numbers::pi / 4.0) * r * r; }
+double insetSquaredIntegral(double r) { return (5.0 / 3.0 - std::numbers::pi / 2.0) * r * r * r; }
+
+} // namespace
+
+TEST_CASE("Rounding: where a concave edge meets rounded convex ones, a torus piece joins them") {
+  // The L of unit cubes (cells (0, 0), (1, 0), (0, 1) in x, y; z in [0, 1]) with every edge
+  // marked. Its concave edge runs along z at x = y = 1; at z = 0 and z = 1 it meets the rounded
+  // edges of the end faces. The torus piece there turns around the fillet's axis x = y = 1 + R, its
+  // tube (radius R) centred on the circle of radius 2 R at z = 1 - R (or R).
+  const MarkedPolyhedron l = readShape("concave_l.wings");
+  for (double radius : {0.05, 0.25, 0.5}) {
+    CAPTURE(radius);
+    const RoundedSurface s = roundMarkedEdges(l, radius);
+    int pieces = 0, nearEndFace = 0;
+    for (std::size_t p = 0; p < s.patches.size(); ++p) {
+      if (!s.info[p].torus) continue;
+      ++pieces;
+      const glm::dvec3 middle = s.patches[p].evaluate(0.5, 0.5);
+      const double tubeHeight = middle.z > 0.5 ? 1.0 - radius : radius;
+      const double outward = middle.z > 0.5 ? 1.0 : -1.0;
+      bool touchesEndFace = false;
+      for (double u : kSamples)
+        for (double v : kSamples) {
+          const glm::dvec3 point = s.patches[p].evaluate(u, v);
+          const double fromAxis = std::hypot(point.x - (1.0 + radius), point.y - (1.0 + radius));
+          CHECK(std::hypot(fromAxis - 2.0 * radius, point.z - tubeHeight) == doctest::Approx(radius).epsilon(1e-12));
+          // Between the fillet (R from the axis) and the end face (at most 2 R), in the quarter
+          // between the two strips' ends (the planes x = 1 + R and y = 1 + R), on the solid's side
+          // of the tube's centre height.
+          CHECK(fromAxis >= radius * (1.0 - 1e-12));
+          CHECK(fromAxis <= 2.0 * radius * (1.0 + 1e-12));
+          CHECK(point.x <= 1.0 + radius + 1e-12);
+          CHECK(point.y <= 1.0 + radius + 1e-12);
+          CHECK(outward * (point.z - tubeHeight) >= -1e-12);
+          // On the end face's plane the normal is the face's; on the fillet's end it points to the
+          // axis, as the fillet's does.
+          const glm::dvec3 n = s.patches[p].normal(u, v);
+          if (std::abs(point.z - (outward > 0.0 ? 1.0 : 0.0)) < 1e-12) {
+            CHECK(glm::length(n - glm::dvec3(0.0, 0.0, outward)) < 1e-9);
+            CHECK(fromAxis == doctest::Approx(2.0 * radius).epsilon(1e-12));
+            touchesEndFace = true;
+          }
+          if (std::abs(fromAxis - radius) < 1e-12) {
+            const glm::dvec3 toAxis = glm::normalize(glm::dvec3(1.0 + radius - point.x, 1.0 + radius - point.y, 0.0));
+            CHECK(glm::length(n - toAxis) < 1e-9);
+          }
+        }
+      if (touchesEndFace) ++nearEndFace;
+    }
+    // Two corners, each cut at 30, 45 and 60 degrees around the axis and in the middle of the tube.
+    CHECK(pieces == 2 * 8);
+    CHECK(nearEndFace == 2 * 4);
+  }
+  // The rounded L is the L whose outline in x, y (rounded at its five convex corners and its
+  // concave one) moves in by delta(d) at depth d below the end faces; by Steiner's formula for
+  // inner parallel sets its area there is A - P delta + pi delta^2.
+  for (double radius : {0.1, 0.25}) {
+    CAPTURE(radius);
+    const double corner = 1.0 - std::numbers::pi / 4.0;
+    const double area = 3.0 - 5.0 * corner * radius * radius + corner * radius * radius;
+    const double perimeter = 8.0 + 6.0 * (std::numbers::pi / 2.0 - 2.0) * radius;
+    const double expected = area - 2.0 * perimeter * insetIntegral(radius) + 2.0 * std::numbers::pi * insetSquaredIntegral(radius);
+    // Cells of at most 1/64 of a patch: the chords move the volume by a few 1e-6 of it.
+    const RoundedMesh mesh = tessellateRounded(l, roundMarkedEdges(l, radius), {ObjectSpaceTolerance{1e-7}, 6});
+    checkWatertight(mesh);
+    CHECK(meshVolume(mesh) == doctest::Approx(expected).epsilon(2e-5));
+  }
+}
+
+TEST_CASE("Rounding: two rounded edges meet in a mitre, the rounded solid's own crease") {
+  // A unit cube with its top ring and the upright at x = z = 0 marked: at the three other top
+  // corners two rounded edges meet and the upright below is sharp. The solid with both edges
+  // rounded is the intersection of the two rounded slabs: their cylinders cross in the corner's
+  // bisecting plane, where the strips end.
+  const MarkedPolyhedron cube = readShape("cube_top_ring.wings");
+  for (double radius : {0.1, 0.25, 0.4}) {
+    CAPTURE(radius);
+    const RoundedSurface s = roundMarkedEdges(cube, radius);
+    int mitres = 0;
+    double lowest = 1.0, highest = 0.0;
+    for (std::size_t p = 0; p < s.patches.size(); ++p) {
+      const RoundedPatchInfo &a = s.info[p];
+      if (!a.alongAxis) continue;
+      for (PatchSide side : kSides)
+        for (const SideMatch &m : neighboursOf(s, p, side, 1e-12)) {
+          const RoundedPatchInfo &b = s.info[m.patch];
+          if (m.patch < p || !b.alongAxis || glm::length(glm::cross(a.axis, b.axis)) < 0.5) continue;
+          ++mitres;
+          for (double t : kSamples) {
+            const glm::dvec2 ua = onSide(side, t), ub = onSide(m.side, m.reversed ? 1.0 - t : t);
+            const glm::dvec3 point = s.patches[p].evaluate(ua.x, ua.y);
+            // On both cylinders (the seam is continuous: neighboursOf matched it to 1e-12) and
+            // in the bisecting plane of the corner's upright.
+            CHECK(glm::length(point - roundingCentre(a, point)) == doctest::Approx(radius).epsilon(1e-12));
+            CHECK(glm::length(point - roundingCentre(b, point)) == doctest::Approx(radius).epsilon(1e-12));
+            const double fromX = point.x < 0.5 ? point.x : 1.0 - point.x, fromZ = point.z < 0.5 ? point.z : 1.0 - point.z;
+            CHECK(fromX == doctest::Approx(fromZ).epsilon(1e-12));
+            // The normals' jump is the intersection's crease: cos = (h / R)^2 at height h above
+            // the strips' lower touching lines, a right angle where it continues the sharp
+            // upright, nothing where it reaches the top face.
+            const double h = point.y - (1.0 - radius);
+            const glm::dvec3 na = s.patches[p].normal(ua.x, ua.y), nb = s.patches[m.patch].normal(ub.x, ub.y);
+            const double cosine = glm::dot(na, nb);
+            CHECK(cosine == doctest::Approx(h * h / (radius * radius)).epsilon(1e-9));
+            lowest = std::min(lowest, cosine);
+            highest = std::max(highest, cosine);
+          }
+        }
+    }
+    // Three mitred corners, each where two strips' halves meet two others'.
+    CHECK(mitres == 3 * 2);
+    CHECK(lowest == doctest::Approx(0.0));
+    CHECK(highest == doctest::Approx(1.0));
+  }
+  // And the volume is the intersection's: the square outline (one corner rounded by the upright)
+  // moves in by delta(d) at depth d below the top, mitred at its three sharp corners, so by
+  // Steiner's formula its area there is A - P delta + (pi / 4 + 3) delta^2.
+  for (double radius : {0.1, 0.25}) {
+    CAPTURE(radius);
+    const double area = 1.0 - (1.0 - std::numbers::pi / 4.0) * radius * radius;
+    const double perimeter = 4.0 + (std::numbers::pi / 2.0 - 2.0) * radius;
+    const double expected = area - perimeter * insetIntegral(radius) + (std::numbers::pi / 4.0 + 3.0) * insetSquaredIntegral(radius);
+    const RoundedMesh mesh = tessellateRounded(cube, roundMarkedEdges(cube, radius), {ObjectSpaceTolerance{1e-7}, 6});
+    CHECK(meshVolume(mesh) == doctest::Approx(expected).epsilon(2e-5));
+  }
 }

@@ -101,6 +101,8 @@ SimdTarget chosenSimdTarget() {
   return chosen;
 }
 
+bool simdTargetRuns(SimdTarget t) { return available(t); }
+
 const char* simdTargetName() { return kTargets[static_cast<int>(chosenSimdTarget())].name; }
 
 std::string availableSimdTargetNames() {

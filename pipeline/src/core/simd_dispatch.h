@@ -21,6 +21,9 @@ enum class SimdTarget { Scalar, Ssse3, Sse4, Avx2, Avx3, Count };
 // The target the SIMD code runs with: the best the processor has, or GLASS_SIMD_TARGET's.
 SimdTarget chosenSimdTarget();
 
+// Target t is compiled into this build and the processor runs it (tests run every such target).
+bool simdTargetRuns(SimdTarget t);
+
 template <typename Function>
 using SimdFunctions = std::array<Function, static_cast<int>(SimdTarget::Count)>;
 

@@ -38,6 +38,7 @@
 #include "fragment/block_kernels.h"
 #include "fragment/color_conversion.h"
 #include "glass/raster/triangle.h"
+#include "texture/row_sampler_2d-inl.h"
 #include "texture/sampler_2d.h"
 #include "texture/texture_environment.h"
 #include "texture/texture_hooks.h"
@@ -170,26 +171,59 @@ class QuadTexturing {
 
   bool active() const { return texture_ != nullptr; }  // the unit is on (spec 3.8.15)
 
-  // Replaces color by the textured colour at pixel (x, y) with projected texture coordinates
-  // (s/q, t/q) = (sq, tq).
-  void apply(int x, int y, float sq, float tq, float color[4]) {
-    float texel[4];
-    if (needsLambda_) {
-      const int row = quadRow(y) - firstQuadRow_, column = (x >> 1) & 3;
-      if (!known_[row][column]) {
-        if (!rowKnown_[row]) computeRowScales(row);
-        lambda_[row][column] = textureLevelOfDetail(*texture_, env_.lodBias, rhoSquared_[row][column]);
-        known_[row][column] = true;
-      }
-      sampler_->sample(sq, tq, lambda_[row][column], texel);
-    } else {
-      sampler_->sampleMagnified(sq, tq, texel);
+  // Replaces the colours of the pixels of `mask` in row y (pixel i at x0 + i) by their textured
+  // colours, with projected texture coordinates (s/q, t/q) = (sq[i], tq[i]).
+  void applyRow(int x0, int y, unsigned mask, const float* sq, const float* tq, float color[4][kSize]) {
+    Sampler2D::LevelChoice choice[kSize] = {};
+    // Pixels 2k and 2k + 1 share quad k (x0 is a multiple of 8, so quads do not straddle).
+    for (int k = 0; k < kSize / 2; ++k) {
+      if ((mask >> (2 * k) & 3u) == 0) continue;
+      choice[2 * k] = choice[2 * k + 1] = needsLambda_ ? levelsAt(x0 + 2 * k, y) : sampler_->chooseMagnified();
     }
-    applyTextureEnvironment(env_.mode, base_, texel, env_.color, color);
+    alignas(64) float texel[4][kSize] = {};  // pixels outside mask stay 0
+    row_sampler::sampleRow(*sampler_, sq, tq, choice, mask, texel);
+    applyEnvironmentRow(texel, mask, color);
   }
 
  private:
   int quadRow(int y) const { return (height_ - 1 - y) >> 1; }
+
+  // The levels the pixels of the 2x2 quad of pixel (x, y) read, from the quad's lambda,
+  // computed when one of its pixels first needs them.
+  const Sampler2D::LevelChoice& levelsAt(int x, int y) {
+    const int row = quadRow(y) - firstQuadRow_, column = (x >> 1) & 3;
+    if (!known_[row][column]) {
+      if (!rowKnown_[row]) computeRowScales(row);
+      const float lambda = textureLevelOfDetail(*texture_, env_.lodBias, rhoSquared_[row][column]);
+      choice_[row][column] = sampler_->choose(lambda);
+      known_[row][column] = true;
+    }
+    return choice_[row][column];
+  }
+
+  // applyTextureEnvironment on the pixels of mask: REPLACE and MODULATE a row at a time (the
+  // same single operation per component), the other modes pixel by pixel.
+  void applyEnvironmentRow(const float texel[4][kSize], unsigned mask, float color[4][kSize]) const {
+    const bool hasColor = baseFormatHasColor(base_), hasAlpha = baseFormatHasAlpha(base_);
+    if (env_.mode == GL_REPLACE || env_.mode == GL_MODULATE) {
+      const RowFloats f;
+      for (int c = 0; c < 4; ++c) {
+        if (!(c < 3 ? hasColor : hasAlpha)) continue;
+        for (int i = 0; i < kSize; i += static_cast<int>(hn::Lanes(f))) {
+          const auto t = hn::Load(f, texel[c] + i);
+          hn::Store(env_.mode == GL_REPLACE ? t : hn::Mul(hn::Load(f, color[c] + i), t), f, color[c] + i);
+        }
+      }
+      return;
+    }
+    for (unsigned rest = mask; rest != 0; rest &= rest - 1) {
+      const int i = std::countr_zero(rest);
+      const float pixelTexel[4] = {texel[0][i], texel[1][i], texel[2][i], texel[3][i]};
+      float pixel[4] = {color[0][i], color[1][i], color[2][i], color[3][i]};
+      applyTextureEnvironment(env_.mode, base_, pixelTexel, env_.color, pixel);
+      for (int c = 0; c < 4; ++c) color[c][i] = pixel[c];
+    }
+  }
 
   // rho^2 of the four quads of quad row `row`, as quadLevelOfDetail computes it for a 2D texture
   // (quadTexCoordDifferences and textureScaleFactorSquared of texture_lod.h), the same operations
@@ -244,7 +278,7 @@ class QuadTexturing {
   std::array<bool, 5> rowKnown_;
   std::array<std::array<bool, 4>, 5> known_;
   alignas(32) double rhoSquared_[5][4];
-  float lambda_[5][4];
+  Sampler2D::LevelChoice choice_[5][4];
 };
 
 // Without texturing: nothing to do.
@@ -310,12 +344,7 @@ void shadeBlock(Context& ctx, const raster::TriangleSetup& setup, const raster::
           alignas(64) float sq[kSize], tq[kSize];
           divideRow(varyings.row(4), varyings.row(6), sq);
           divideRow(varyings.row(5), varyings.row(6), tq);
-          for (unsigned rest = mask; rest != 0; rest &= rest - 1) {
-            const int i = std::countr_zero(rest);
-            float pixel[4] = {color[0][i], color[1][i], color[2][i], color[3][i]};
-            texturing.apply(bx + i, by + j, sq[i], tq[i], pixel);
-            for (int c = 0; c < 4; ++c) color[c][i] = pixel[c];
-          }
+          texturing.applyRow(bx, by + j, mask, sq, tq, color);
         }
         packRowColors(color[0], color[1], color[2], color[3], words);
       }

@@ -79,30 +79,51 @@ class Sampler2D {
     std::memcpy(&border_, texture.sampling.border, sizeof border_);
   }
 
+  // The levels a lookup reads and how (sampleTexture's choice, section 3.8.8): level1 alone, or
+  // level1 and level2 mixed by weight2 when `mixes`; `linear` is the filter within a level.
+  struct LevelChoice {
+    int level1, level2;
+    float weight2;
+    bool mixes, linear;
+  };
+  [[gnu::always_inline]] LevelChoice choose(float lambda) const {
+    if (lambda <= switchOverPoint_) return chooseMagnified();
+    if (!mipmapped_) return {base_, base_, 0.0f, false, linearWithinLevel_};
+    const MipmapLevels m = selectMipmapLevels(lambda, minFilter_, base_, last_);
+    const bool mixes = m.level2 != m.level1 && m.weight2 != 0.0f;
+    return {m.level1, m.level2, m.weight2, mixes, linearWithinLevel_};
+  }
+  // The magnification filter's choice (no lambda needed, or lambda <= c).
+  LevelChoice chooseMagnified() const { return {base_, base_, 0.0f, false, magnifyLinear_}; }
+
   // sampleTexture(texture, s, t, lambda, out).
   [[gnu::always_inline]] void sample(float s, float t, float lambda, float out[4]) const {
-    if (lambda <= switchOverPoint_) return sampleMagnified(s, t, out);
-    if (!mipmapped_) return storeLanes(sampleLevel(levels_[base_], linearWithinLevel_, s, t), out);
-    const MipmapLevels m = selectMipmapLevels(lambda, minFilter_, base_, last_);
-    const TexelLanes first = sampleLevel(levels_[m.level1], linearWithinLevel_, s, t);
-    if (m.level2 == m.level1 || m.weight2 == 0.0f) return storeLanes(first, out);
-    const TexelLanes second = sampleLevel(levels_[m.level2], linearWithinLevel_, s, t);
-    storeLanes((1.0f - m.weight2) * first + m.weight2 * second, out);
+    sampleChosen(choose(lambda), s, t, out);
   }
 
   // sampleTextureMagnified(texture, s, t, out).
   [[gnu::always_inline]] void sampleMagnified(float s, float t, float out[4]) const {
-    storeLanes(sampleLevel(levels_[base_], magnifyLinear_, s, t), out);
+    sampleChosen(chooseMagnified(), s, t, out);
   }
 
- private:
+  // The lookup at (s, t) from the levels `choice` names.
+  [[gnu::always_inline]] void sampleChosen(const LevelChoice& choice, float s, float t, float out[4]) const {
+    const TexelLanes first = sampleLevel(levels_[choice.level1], choice.linear, s, t);
+    if (!choice.mixes) return storeLanes(first, out);
+    const TexelLanes second = sampleLevel(levels_[choice.level2], choice.linear, s, t);
+    storeLanes((1.0f - choice.weight2) * first + choice.weight2 * second, out);
+  }
+
   struct Level {
     const uint8_t* texels;  // width * height RGBA8 texels, row 0 first
     int width, height;
     float widthF, heightF;
     bool repeatsByMask;  // GL_REPEAT on both axes and power-of-two sides: wrap() is a mask
   };
+  // Level n of the texture (n between the base level and the last one sample() reads).
+  const Level& level(int n) const { return levels_[n]; }
 
+ private:
   // The filtered texel of one level, components in [0, 1].
   [[gnu::always_inline]] TexelLanes sampleLevel(const Level& level, bool linear, float s,
                                                 float t) const {

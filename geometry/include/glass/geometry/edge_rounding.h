@@ -23,6 +23,18 @@
 //   point towards the axis. Where it ends at a corner whose other two edges are sharp (the top of
 //   the L's inner upright), the strip ends in the plane of the faces across, and a flat web of
 //   that plane fills the corner between the two sharp edges and the strip's end arc;
+// - where a concave marked edge ends at a corner whose two other creases are rounded convex
+//   edges (an L with all its edges marked, where its inner upright meets the top), the three
+//   meet in a piece of a torus: the convex edges' quarter circle swept around the fillet's axis
+//   at distance 2 R, from one convex strip's end to the other's. It is the product of two quarter
+//   arcs, the major one (radius 2 R in the end face's plane down to R at the fillet's end) and
+//   the minor one (radius R), so a rational bi-quadratic patch with weights w_i w_j (w = 1,
+//   sqrt(2)/2, 1) is exactly that torus. Its four sides are the fillet's end arc, the two strips'
+//   end arcs and an arc of radius 2 R in the end face's plane, which the faces there (split by
+//   flat edges along the convex edges' continuations, as a reflex corner of a face must be) lose
+//   their corners to. That arc crosses those flat edges at 30 and 60 degrees, so the torus is
+//   split there (and in the middle, 45 degrees, as strips are), and so is the fillet along its
+//   whole run, so that their shared sides stay equal;
 // - every face shrinks by R away from its marked edges; it is a fan of flat patches from its
 //   centre to the pieces of its boundary (segments of degree 1, arcs of degree 2).
 //
@@ -35,7 +47,10 @@
 // face it touches; a point at arc length s from that face's line gets the face's texture
 // coordinates at distance s * 4 / pi beyond the line, so the quarter arc (length pi R / 2) takes
 // exactly the 2 R of texture the sharp edge took, and a texture that runs on across the sharp
-// edge runs on across the rounded one.
+// edge runs on across the rounded one. A torus piece's half next to the end face unrolls as a
+// strip along its tube does; its half next to the fillet unrolls as the fillet does, then by its
+// tube's arc towards the end face: each runs on into the strips' and the fillet's unrolling at
+// their shared ends.
 //
 // Where two rounded convex edges meet and the corner's third edge is sharp, the mitre is the
 // exact rounded solid, not an approximation: the solid with both edges rounded is the
@@ -48,9 +63,9 @@
 // concave; corners where a convex marked edge ends have three edges at right angles (a corner of
 // a cube) or two marked edges in one straight line with flat edges across (where coplanar faces
 // of two cubes meet); a concave marked edge runs straight through such corners or ends where its
-// two other creases are sharp, convex and at right angles (a torus piece where rounded convex
-// edges meet a concave one is not built); faces next to a marked edge have right angles there;
-// every face is convex. Anything else is refused with a message naming the edge, vertex or face.
+// two other creases are convex and at right angles, both sharp (a web) or both rounded (a torus
+// piece, with the end face's two flat edges along their continuations); faces next to a marked
+// edge have right angles there; every face is convex. Anything else is refused with a message naming the edge, vertex or face.
 // R = 0 gives the sharp object.
 #pragma once
 
@@ -112,7 +127,17 @@ struct RoundedPatchInfo {
   // the sharp corner's faces do; the slide fades linearly towards the other end.
   glm::dvec3 lineStart{0.0}, lineEnd{0.0};
   glm::dvec3 mitreStart{0.0}, mitreEnd{0.0};
+  // A torus piece: its centre is the circle of radius majorRadius around `axis` through `centre`
+  // (the fillet's axis, pointing out of the end face), in the plane through `centre` normal to it.
+  // Pieces next to the end face have faceNormal == axis; those next to the fillet take the
+  // fillet's faceNormal and acrossNormals.
+  bool torus = false;
+  double majorRadius = 0.0;
 };
+
+// The point of a rounded patch's centre (point, line or circle) nearest p: p lies at distance R
+// from it, and the patch's normal at p points away from it (towards it for a concave fillet).
+glm::dvec3 roundingCentre(const RoundedPatchInfo& info, const glm::dvec3& p);
 
 // A side of a rounded patch: where it meets a face.
 struct PatchSideRef {
