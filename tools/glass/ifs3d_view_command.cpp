@@ -14,6 +14,7 @@
 #include "view/window_options.h"
 
 #include <GL/freeglut.h>
+#include <glass/course/ifs3d_cloud_colors.h>
 #include <glass/course/ifs3d_file.h>
 #include <glass/course/ifs3d_view.h>
 #include <glass/course/point_cloud.h>
@@ -49,7 +50,14 @@ cloud is given) and the fractal rebuilt from the maps of FILE.ifs3 as polyhedra 
            follows it as on a ball); wheel: closer and farther
   keys     c the cloud, a the attractor rebuilt from the maps, b both side by side,
            + and - the depth of the rebuild, m each map's image of the picture's box (a wire
-           box in the map's colour) on or off, r back to the first orientation, q or Escape quit
+           box in the map's colour) on or off, h the cloud coloured by height or by part,
+           r back to the first orientation, q or Escape quit
+  menu     right button: the same choices as the keys
+
+The cloud's colours: each point in the colour of its part, the map that made it (a chaos-game
+cloud) or the map whose image of the cloud passes nearest (a cloud file shown with a .ifs3 file;
+grey where no image comes near: noise, or what the maps miss); without maps, a ramp from blue
+(lowest) through green and yellow to red (highest) over the height.
 
 options:
   --points N            the chaos-game cloud's size when no cloud file is given (default 50000)
@@ -77,7 +85,11 @@ struct Ifs3Viewer {
   std::optional<g::IteratedFunctionSystem3> ifs;
   std::string title;
   std::vector<glm::dvec3> cloud;
-  std::vector<int> cloudParts;  // the map each chaos-game point came through last; empty for a file's cloud
+  // The map each point belongs to (kUnexplainedPoint: none): for a chaos-game cloud the map it
+  // came through last, for a file's cloud the map whose image passes nearest; empty without maps.
+  std::vector<int> cloudParts;
+  std::vector<glm::vec3> cloudHeightColors;  // the height ramp (ifs3d_cloud_colors.h)
+  bool colorByHeight = false;
   Shown shown = Shown::Cloud;
   course::Ifs3View view{640, 640};
   glm::dvec3 lo{0.0}, hi{1.0};  // the box the picture frames
@@ -159,17 +171,27 @@ glm::dmat4 orientationMatrix() {
   return m;
 }
 
+// The colour of the points no map explains: a grey darker than any part's colour.
+constexpr float kUnexplainedGrey = 0.45f;
+
 void drawCloud() {
   glDisable(GL_LIGHTING);
   glPointSize(1.0f);
   glBegin(GL_POINTS);
+  const bool byHeight = viewer.colorByHeight || viewer.cloudParts.empty();
   int lastPart = -2;
-  if (viewer.cloudParts.empty()) glColor3f(0.85f, 0.85f, 0.8f);
   for (std::size_t i = 0; i < viewer.cloud.size(); ++i) {
-    if (!viewer.cloudParts.empty() && viewer.cloudParts[i] != lastPart) {
-      lastPart = viewer.cloudParts[i];
-      const g::IfsColor c = g::partColor3(*viewer.ifs, static_cast<std::size_t>(lastPart));
+    if (byHeight) {
+      const glm::vec3 &c = viewer.cloudHeightColors[i];
       glColor3f(c.r, c.g, c.b);
+    } else if (viewer.cloudParts[i] != lastPart) {
+      lastPart = viewer.cloudParts[i];
+      if (lastPart == course::kUnexplainedPoint) {
+        glColor3f(kUnexplainedGrey, kUnexplainedGrey, kUnexplainedGrey);
+      } else {
+        const g::IfsColor c = g::partColor3(*viewer.ifs, static_cast<std::size_t>(lastPart));
+        glColor3f(c.r, c.g, c.b);
+      }
     }
     glVertex3d(viewer.cloud[i].x, viewer.cloud[i].y, viewer.cloud[i].z);
   }
@@ -266,6 +288,14 @@ void keyboard(unsigned char key, int, int) {
       viewer.mapBoxes = !viewer.mapBoxes;
       glutPostRedisplay();
       break;
+    case 'h':
+      if (viewer.cloudParts.empty()) {
+        std::cerr << "glass ifs3d view: no maps to colour the cloud's parts by (name a .ifs3 file); coloured by height\n";
+        break;
+      }
+      viewer.colorByHeight = !viewer.colorByHeight;
+      glutPostRedisplay();
+      break;
     case 'r':
       viewer.orientation = {};
       viewer.zoom = 1.0;
@@ -274,6 +304,24 @@ void keyboard(unsigned char key, int, int) {
     case 'q': case 27: glutLeaveMainLoop(); break;
     default: break;
   }
+}
+
+// The right button's menu (GLUT 3.7 section 6): the keys' choices, each entry's value the key it
+// stands for, so that an entry does exactly what its key does.
+void menuChoice(int key) { keyboard(static_cast<unsigned char>(key), 0, 0); }
+
+void createMenu() {
+  glutCreateMenu(menuChoice);
+  glutAddMenuEntry("Cloud (c)", 'c');
+  glutAddMenuEntry("Attractor rebuilt (a)", 'a');
+  glutAddMenuEntry("Both side by side (b)", 'b');
+  glutAddMenuEntry("Deeper (+)", '+');
+  glutAddMenuEntry("Shallower (-)", '-');
+  glutAddMenuEntry("Map boxes on/off (m)", 'm');
+  glutAddMenuEntry("Cloud by height / by part (h)", 'h');
+  glutAddMenuEntry("Reset the turn (r)", 'r');
+  glutAddMenuEntry("Quit (q)", 'q');
+  glutAttachMenu(GLUT_RIGHT_BUTTON);
 }
 
 void mouse(int button, int state, int x, int y) {
@@ -372,6 +420,11 @@ bool loadInputs(const Arguments &a) {
     std::cerr << course::formatCloudMessages(cloud, a.cloudFile);
     if (!cloud.ok()) return false;
     viewer.cloud = cloud.points;
+    if (viewer.ifs) {
+      std::vector<g::Affine3> maps;
+      for (const g::IfsMap3 &map : viewer.ifs->maps) maps.push_back(map.transform);
+      viewer.cloudParts = course::cloudPartsByMaps(viewer.cloud, maps);
+    }
     viewer.title = viewer.title.empty() ? a.cloudFile : viewer.title + " and " + a.cloudFile;
   } else {
     const std::optional<std::vector<double>> probabilities = g::chaosGameProbabilities3(*viewer.ifs);
@@ -384,6 +437,7 @@ bool loadInputs(const Arguments &a) {
       viewer.cloudParts.push_back(p.part);
     }
   }
+  viewer.cloudHeightColors = course::heightColors(viewer.cloud);
   if (viewer.ifs) {
     course::ifs3PictureBox(*viewer.ifs, viewer.view, viewer.lo, viewer.hi);
   } else {
@@ -426,6 +480,7 @@ int runIfs3dView(const std::vector<std::string> &args) {
   glutKeyboardFunc(keyboard);
   glutMouseFunc(mouse);
   glutMotionFunc(motion);
+  createMenu();
   glutSetOption(GLUT_ACTION_ON_WINDOW_CLOSE, GLUT_ACTION_GLUTMAINLOOP_RETURNS);
   glutMainLoop();
   return kExitOk;

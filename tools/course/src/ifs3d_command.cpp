@@ -277,6 +277,11 @@ int runFit(ArgumentList& list, std::ostream& out, std::ostream& err) {
   g::IteratedFunctionSystem3 found;
   found.name = "fitted to " + std::filesystem::path(file).filename().string();
   for (std::size_t i = 0; i < fit.maps.size(); ++i) found.maps.push_back({fit.maps[i], fit.shares[i], std::nullopt});
+  if (fit.isolatedShare > 0.0) {
+    out << "Isolated points left out as noise before the fit: "
+        << std::llround(fit.isolatedShare * static_cast<double>(cloud.points.size())) << " (" << format("%.2f", 100.0 * fit.isolatedShare)
+        << "% of the cloud)\n";
+  }
   out << "Collage distance (Chamfer distance between the cloud and the union of its images): "
       << format("%.6f", fit.collageDistance) << "\n";
   if (!fit.converged()) {

@@ -269,6 +269,287 @@ g::Affine3 fitPart(std::span<const glm::dvec3> cloud, const Moments& cloudMoment
   return best.map;
 }
 
+// Distances from the centres of the cells of a grid over the cloud's box to the nearest cloud
+// point: a map's image points are scored by looking up their cells, which is what lets the
+// inclusion search below try millions of candidate maps.
+class DistanceGrid {
+ public:
+  DistanceGrid(std::span<const glm::dvec3> cloud, const g::KdTree3& tree, int resolution) {
+    lo_ = glm::dvec3(std::numeric_limits<double>::infinity());
+    glm::dvec3 hi(-std::numeric_limits<double>::infinity());
+    for (const glm::dvec3& p : cloud) {
+      lo_ = glm::min(lo_, p);
+      hi = glm::max(hi, p);
+    }
+    cell_ = std::max({hi.x - lo_.x, hi.y - lo_.y, hi.z - lo_.z, 1e-9}) / resolution;
+    for (int a = 0; a < 3; ++a) size_[a] = std::max(1, static_cast<int>(std::ceil((hi[a] - lo_[a]) / cell_)));
+    values_.resize(static_cast<std::size_t>(size_[0]) * size_[1] * size_[2]);
+    for (int z = 0; z < size_[2]; ++z)
+      for (int y = 0; y < size_[1]; ++y)
+        for (int x = 0; x < size_[0]; ++x) {
+          const glm::dvec3 centre = lo_ + (glm::dvec3(x, y, z) + 0.5) * cell_;
+          values_[index(x, y, z)] = std::sqrt(tree.nearest(centre).distanceSquared);
+        }
+  }
+  // The distance stored for p's cell; infinity outside the grid.
+  double at(const glm::dvec3& p) const {
+    const glm::dvec3 u = (p - lo_) / cell_;
+    if (!(u.x >= 0.0 && u.y >= 0.0 && u.z >= 0.0 && u.x < size_[0] && u.y < size_[1] && u.z < size_[2]))
+      return std::numeric_limits<double>::infinity();
+    return values_[index(static_cast<int>(u.x), static_cast<int>(u.y), static_cast<int>(u.z))];
+  }
+  double cell() const { return cell_; }
+  const glm::dvec3& lo() const { return lo_; }
+  int size(int axis) const { return size_[axis]; }
+
+ private:
+  std::size_t index(int x, int y, int z) const {
+    return (static_cast<std::size_t>(z) * size_[1] + static_cast<std::size_t>(y)) * size_[0] + static_cast<std::size_t>(x);
+  }
+  glm::dvec3 lo_{0.0};
+  double cell_ = 1.0;
+  int size_[3] = {1, 1, 1};
+  std::vector<double> values_;
+};
+
+// m points of `points` spread out: each the farthest from those chosen before (Gonzalez), from
+// the first; they probe a candidate map's image all over.
+std::vector<glm::dvec3> spreadPoints(std::span<const glm::dvec3> points, std::size_t m) {
+  std::vector<glm::dvec3> chosen{points.front()};
+  std::vector<double> nearest(points.size(), std::numeric_limits<double>::infinity());
+  while (chosen.size() < std::min(m, points.size())) {
+    std::size_t farthest = 0;
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      nearest[i] = std::min(nearest[i], glm::dot(points[i] - chosen.back(), points[i] - chosen.back()));
+      if (nearest[i] > nearest[farthest]) farthest = i;
+    }
+    chosen.push_back(points[farthest]);
+  }
+  return chosen;
+}
+
+// A candidate's linear part and centre improved by hill climbing on the distance grid: small
+// turns about the three axes, stretches along them and moves of the centre, in steps that halve
+// when no move helps. The orientations tried first are up to about 30 degrees apart, too far for
+// the refinement by correspondences to close alone.
+glm::dmat3 climb(const DistanceGrid& grid, std::span<const glm::dvec3> probes, const glm::dvec3& mean, glm::dmat3 linear,
+                 glm::dvec3& centre, double cap) {
+  const auto score = [&](const glm::dmat3& l, const glm::dvec3& c) {
+    double sum = 0.0;
+    for (const glm::dvec3& p : probes) sum += std::min(grid.at(c + l * (p - mean)), cap);
+    return sum;
+  };
+  double best = score(linear, centre);
+  double angle = 8.0, stretch = 0.08, shift = grid.cell();
+  for (int iteration = 0; iteration < 40 && angle > 1.0; ++iteration) {
+    glm::dmat3 bestLinear = linear;
+    glm::dvec3 bestCentre = centre;
+    double bestScore = best;
+    for (int axis = 0; axis < 3; ++axis) {
+      for (const double sign : {-1.0, 1.0}) {
+        glm::dvec3 unit(0.0);
+        unit[axis] = 1.0;
+        const glm::dmat3 turned = linear * g::rotationMatrixDegrees(unit, sign * angle);
+        glm::dmat3 stretched = linear;
+        stretched[axis] *= 1.0 + sign * stretch;
+        const glm::dvec3 moved = centre + sign * shift * unit;
+        for (const auto& [l, c] : {std::pair{turned, centre}, std::pair{stretched, centre}, std::pair{linear, moved}}) {
+          const double s = score(l, c);
+          if (s < bestScore) {
+            bestScore = s;
+            bestLinear = l;
+            bestCentre = c;
+          }
+        }
+      }
+    }
+    if (bestScore < best) {
+      best = bestScore;
+      linear = bestLinear;
+      centre = bestCentre;
+    } else {
+      angle /= 2.0;
+      stretch /= 2.0;
+      shift /= 2.0;
+    }
+  }
+  return linear;
+}
+
+// Candidate maps found without splitting the cloud, from the property every true map has
+// whatever the overlaps: f_i(P) lies in P (the collage's one direction), while a map turned,
+// placed or scaled wrongly sends part of a sparse cloud off it. Candidate similarities
+// x -> c + r Q (x - mean) (r from 0.3 to 0.58, the 144 starting orientations, c on a grid of
+// centres in the cloud's box) are scored by how far the images of a dozen spread points fall
+// from the cloud (the distance grid), the best kept per ratio; each is refined alone, against
+// the cloud for its images and against the points it covers for the way back. A generalized
+// Hough transform over the maps, with the collage's inclusion as the vote.
+struct PoolMap {
+  g::Affine3 map;
+  double inclusion = 0.0;               // trimmed mean distance of its images to the cloud
+  std::vector<std::uint32_t> covered;   // the points of coverSample within reach of its images
+};
+struct InclusionPool {
+  std::vector<glm::dvec3> source, coverSample;
+  double reach = 0.0;
+  std::vector<PoolMap> maps;
+  std::vector<std::size_t> eligible;  // the maps whose image lies in the cloud, most covering first
+  // The points of coverSample within reach of the images of `maps` (of source).
+  std::vector<char> coveredBy(std::span<const g::Affine3> maps) const {
+    std::vector<char> covered(coverSample.size(), 0);
+    if (maps.empty()) return covered;
+    std::vector<glm::dvec3> images;
+    for (const g::Affine3& map : maps)
+      for (const glm::dvec3& p : source) images.push_back(map.apply(p));
+    const g::KdTree3 imageTree(images);
+    for (std::size_t i = 0; i < coverSample.size(); ++i) covered[i] = imageTree.nearest(coverSample[i]).distanceSquared < reach * reach;
+    return covered;
+  }
+  // The eligible map covering most of what `covered` leaves, and how many points that is.
+  std::size_t bestAddition(const std::vector<char>& covered, std::span<const std::size_t> exclude, std::size_t& gain) const {
+    std::size_t best = maps.size();
+    gain = 0;
+    for (const std::size_t e : eligible) {
+      if (std::find(exclude.begin(), exclude.end(), e) != exclude.end()) continue;
+      std::size_t g = 0;
+      for (const std::uint32_t i : maps[e].covered) g += !covered[i];
+      if (best == maps.size() || g > gain) {
+        best = e;
+        gain = g;
+      }
+    }
+    return best;
+  }
+};
+
+InclusionPool inclusionPool(std::span<const glm::dvec3> cloud, const g::KdTree3& cloudTree, const Moments& cloudMoments,
+                            const std::vector<glm::dmat3>& orientations, int k, double spacing, double trim, std::uint64_t seed) {
+  constexpr int kResolution = 40;
+  constexpr std::size_t kProbes = 12, kPerRatio = 50;
+  constexpr double kRatios[] = {0.3, 0.38, 0.47, 0.58};
+  const DistanceGrid grid(cloud, cloudTree, kResolution);
+  const double h = grid.cell(), cap = 3.0 * h;
+  const std::vector<glm::dvec3> spread = sample(cloud, 2000, seed);
+  const std::vector<glm::dvec3> probes = spreadPoints(spread, kProbes);
+  const std::vector<glm::dvec3> fineProbes = spreadPoints(spread, 4 * kProbes);
+  struct Candidate {
+    double score;
+    glm::dvec3 centre;
+    std::size_t orientation;
+  };
+  std::vector<g::Affine3> hypotheses;
+  for (const double ratio : kRatios) {
+    // The probes' offsets from the mean under each orientation, scaled.
+    std::vector<glm::dvec3> offsets(orientations.size() * probes.size());
+    for (std::size_t q = 0; q < orientations.size(); ++q)
+      for (std::size_t j = 0; j < probes.size(); ++j) offsets[q * probes.size() + j] = ratio * (orientations[q] * (probes[j] - cloudMoments.mean));
+    std::vector<Candidate> candidates;
+    for (int z = 0; z < grid.size(2); z += 2)
+      for (int y = 0; y < grid.size(1); y += 2)
+        for (int x = 0; x < grid.size(0); x += 2) {
+          const glm::dvec3 centre = grid.lo() + (glm::dvec3(x, y, z) + 0.5) * h;
+          if (!(grid.at(centre) <= 4.0 * h)) continue;
+          Candidate best{std::numeric_limits<double>::infinity(), centre, 0};
+          for (std::size_t q = 0; q < orientations.size(); ++q) {
+            double score = 0.0;
+            for (std::size_t j = 0; j < probes.size() && score < best.score; ++j)
+              score += std::min(grid.at(centre + offsets[q * probes.size() + j]), cap);
+            if (score < best.score) best = {score, centre, q};
+          }
+          candidates.push_back(best);
+        }
+    std::stable_sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) { return a.score < b.score; });
+    std::vector<Candidate> kept;
+    for (const Candidate& c : candidates) {
+      if (kept.size() == kPerRatio) break;
+      // Apart from those kept, in centre or in orientation: the best-scoring candidates
+      // otherwise crowd into the densest spot (overlapping parts share a spot, but not their
+      // orientation).
+      const bool near = std::any_of(kept.begin(), kept.end(), [&](const Candidate& other) {
+        if (glm::length(other.centre - c.centre) >= 2.5 * h) return false;
+        const glm::dmat3 d = orientations[other.orientation] - orientations[c.orientation];
+        double largest = 0.0;
+        for (int col = 0; col < 3; ++col)
+          for (int row = 0; row < 3; ++row) largest = std::max(largest, std::abs(d[col][row]));
+        return largest < 0.5;
+      });
+      if (!near) kept.push_back(c);
+    }
+    for (Candidate c : kept) {
+      const glm::dmat3 a = climb(grid, fineProbes, cloudMoments.mean, ratio * orientations[c.orientation], c.centre, cap);
+      hypotheses.push_back(g::Affine3::fromParts(a, c.centre - a * cloudMoments.mean));
+    }
+  }
+
+  // Each refined alone: its images against the whole cloud, the way back from the cloud points
+  // it covers, which are found again between rounds as the map moves.
+  InclusionPool pool;
+  pool.source = sample(cloud, 150, seed + 1);
+  pool.coverSample = sample(cloud, 2000, seed + 2);
+  pool.reach = 1.5 * h;
+  const std::vector<glm::dvec3> inclusionSource = sample(cloud, 300, seed + 3);
+  const auto coveredIndices = [&](const g::Affine3& map) {
+    const std::vector<char> covered = pool.coveredBy(std::span<const g::Affine3>(&map, 1));
+    std::vector<std::uint32_t> indices;
+    for (std::size_t i = 0; i < covered.size(); ++i)
+      if (covered[i]) indices.push_back(static_cast<std::uint32_t>(i));
+    return indices;
+  };
+  for (g::Affine3 map : hypotheses) {
+    for (int round = 0; round < 2; ++round) {
+      const std::vector<std::uint32_t> covered = coveredIndices(map);
+      if (covered.size() < 10) break;
+      std::vector<glm::dvec3> part;
+      for (const std::uint32_t i : covered) part.push_back(pool.coverSample[i]);
+      std::vector<g::Affine3> maps{map};
+      refine(maps, pool.source, cloud, cloudTree, part, 4, trim);
+      map = maps[0];
+    }
+    // A map that is not contractive cannot be one of the system's.
+    if (!(std::abs(map.determinant()) < 0.9)) continue;
+    std::vector<double> forward;
+    for (const glm::dvec3& p : inclusionSource) forward.push_back(std::sqrt(cloudTree.nearest(map.apply(p)).distanceSquared));
+    pool.maps.push_back({map, trimmedMean(forward, trim).mean, coveredIndices(map)});
+  }
+  // The maps whose image lies in the cloud: within a few point spacings of it; at least 4k of
+  // the best when fewer do.
+  for (std::size_t i = 0; i < pool.maps.size(); ++i)
+    if (pool.maps[i].inclusion < 3.0 * spacing) pool.eligible.push_back(i);
+  if (pool.eligible.size() < static_cast<std::size_t>(k)) {
+    pool.eligible.resize(pool.maps.size());
+    std::iota(pool.eligible.begin(), pool.eligible.end(), std::size_t{0});
+    std::stable_sort(pool.eligible.begin(), pool.eligible.end(),
+                     [&](std::size_t a, std::size_t b) { return pool.maps[a].inclusion < pool.maps[b].inclusion; });
+    pool.eligible.resize(std::min<std::size_t>(pool.eligible.size(), 4 * static_cast<std::size_t>(k)));
+  }
+  std::stable_sort(pool.eligible.begin(), pool.eligible.end(),
+                   [&](std::size_t a, std::size_t b) { return pool.maps[a].covered.size() > pool.maps[b].covered.size(); });
+  return pool;
+}
+
+// Sets of k maps chosen greedily from the pool to cover the cloud, each set starting from
+// another of the most covering maps.
+std::vector<std::vector<g::Affine3>> greedyStarts(const InclusionPool& pool, int k, int wanted) {
+  std::vector<std::vector<g::Affine3>> starts;
+  for (std::size_t first = 0; first < pool.eligible.size() && static_cast<int>(starts.size()) < wanted; ++first) {
+    std::vector<std::size_t> chosen{pool.eligible[first]};
+    std::vector<char> covered(pool.coverSample.size(), 0);
+    for (const std::uint32_t i : pool.maps[chosen[0]].covered) covered[i] = 1;
+    while (chosen.size() < static_cast<std::size_t>(k)) {
+      std::size_t gain = 0;
+      const std::size_t next = pool.bestAddition(covered, chosen, gain);
+      if (next == pool.maps.size()) break;
+      chosen.push_back(next);
+      for (const std::uint32_t i : pool.maps[next].covered) covered[i] = 1;
+    }
+    if (chosen.size() < static_cast<std::size_t>(k)) break;
+    std::vector<g::Affine3> maps;
+    for (const std::size_t c : chosen) maps.push_back(pool.maps[c].map);
+    starts.push_back(maps);
+  }
+  return starts;
+}
+
 }  // namespace
 
 double chamferDistance(std::span<const glm::dvec3> a, std::span<const glm::dvec3> b) {
@@ -331,8 +612,13 @@ g::Affine3 fitAffineLeastSquares(std::span<const glm::dvec3> x, std::span<const 
 
 namespace {
 
-// One attempt of the whole fit, from the seed in options.
-Ifs3Fit fitOnce(std::span<const glm::dvec3> cloud, const g::KdTree3& cloudTree, const Ifs3FitOptions& options) {
+// Sets of maps taken from the inclusion search, each refined and ranked.
+constexpr int kInclusionStarts = 4;
+
+// One attempt of the whole fit, from the seed in options: from k-means splits of the cloud, or
+// from the inclusion search.
+Ifs3Fit fitOnce(std::span<const glm::dvec3> cloud, const g::KdTree3& cloudTree, const Ifs3FitOptions& options, double spacing,
+                bool withPool, bool fromPool) {
   const int k = std::max(1, options.maps);
   Ifs3Fit best;
   const Moments cloudMoments = moments(cloud);
@@ -348,12 +634,24 @@ Ifs3Fit fitOnce(std::span<const glm::dvec3> cloud, const g::KdTree3& cloudTree, 
   // A candidate whose chaos game runs off (a map not yet contractive) ranks after every one that
   // has an attractor, by its collage distance.
   const auto attractorDistance = [&](const std::vector<g::Affine3>& maps, double collage) {
-    const double d = regeneratedDistance(maps, targetSampleTree, targetSample, options.trim, options.seed + 41);
+    const double d = regeneratedDistance(maps, targetSampleTree, targetSample, options.rankTrim, options.seed + 41);
     return std::isfinite(d) ? d : 1e6 + collage;
   };
   std::vector<g::Affine3> winner;
   double winnerScore = std::numeric_limits<double>::infinity();
-  for (int start = 0; start < std::max(1, options.starts); ++start) {
+  InclusionPool pool;
+  if (withPool) pool = inclusionPool(cloud, cloudTree, cloudMoments, orientations, k, spacing, options.trim, options.seed);
+  if (fromPool) {
+    for (std::vector<g::Affine3>& maps : greedyStarts(pool, k, kInclusionStarts)) {
+      const double collage = refine(maps, source, cloud, cloudTree, targetSample, options.refineSteps, options.trim);
+      const double score = attractorDistance(maps, collage);
+      if (score < winnerScore) {
+        winnerScore = score;
+        winner = maps;
+      }
+    }
+  }
+  for (int start = 0; start < (fromPool && !winner.empty() ? 0 : std::max(1, options.starts)); ++start) {
     const std::uint64_t seed = options.seed + 1000 * static_cast<std::uint64_t>(start + 1);
     const std::vector<int> labels = kMeans(clusterSample, k, seed);
     std::vector<g::Affine3> maps;
@@ -415,6 +713,36 @@ Ifs3Fit fitOnce(std::span<const glm::dvec3> cloud, const g::KdTree3& cloudTree, 
     }
   }
 
+  // Re-seeding from the pool: each map in turn, then each pair of maps, replaced by the maps of
+  // the pool that cover most of what the others leave (greedily), when that beats the winner.
+  std::vector<std::vector<int>> replaced;
+  for (int a = 0; a < (pool.maps.empty() ? 0 : k); ++a) replaced.push_back({a});
+  for (int a = 0; a < (pool.maps.empty() ? 0 : k); ++a)
+    for (int b = a + 1; b < k; ++b) replaced.push_back({a, b});
+  for (const std::vector<int>& parts : replaced) {
+    std::vector<g::Affine3> kept;
+    for (int i = 0; i < k; ++i)
+      if (std::find(parts.begin(), parts.end(), i) == parts.end()) kept.push_back(winner[static_cast<std::size_t>(i)]);
+    std::vector<char> covered = pool.coveredBy(kept);
+    std::vector<std::size_t> chosen;
+    for (std::size_t n = 0; n < parts.size(); ++n) {
+      std::size_t gain = 0;
+      const std::size_t next = pool.bestAddition(covered, chosen, gain);
+      if (next == pool.maps.size() || gain == 0) break;
+      chosen.push_back(next);
+      for (const std::uint32_t i : pool.maps[next].covered) covered[i] = 1;
+    }
+    if (chosen.size() != parts.size()) continue;
+    std::vector<g::Affine3> maps = winner;
+    for (std::size_t n = 0; n < parts.size(); ++n) maps[static_cast<std::size_t>(parts[n])] = pool.maps[chosen[n]].map;
+    const double collage = refine(maps, source, cloud, cloudTree, targetSample, options.refineSteps, options.trim);
+    const double score = attractorDistance(maps, collage);
+    if (score < winnerScore) {
+      winnerScore = score;
+      winner = maps;
+    }
+  }
+
   // A last refinement on a larger sample, then the measures on the whole cloud.
   const std::vector<glm::dvec3> largeSource = sample(cloud, 2 * perStep, options.seed + 21);
   const std::vector<glm::dvec3> largeTarget = sample(cloud, 4 * perStep, options.seed + 22);
@@ -433,16 +761,16 @@ Ifs3Fit fitOnce(std::span<const glm::dvec3> cloud, const g::KdTree3& cloudTree, 
   for (const g::Affine3& map : winner)
     for (const glm::dvec3& p : cloud) images.push_back(map.apply(p));
   best.collageDistance = chamferDistance(cloud, images);
-  // The same with the worst 10% each way left out, as the search scores: noise points do not
-  // count against the maps.
+  // The same with the worst few per cent each way left out (rankTrim), as the search ranks
+  // candidates; the cloud has no isolated noise points left (withoutIsolatedPoints).
   {
     const g::KdTree3 imageTree(images);
     std::vector<double> forward, backward;
     for (const glm::dvec3& p : images) forward.push_back(std::sqrt(cloudTree.nearest(p).distanceSquared));
     for (const glm::dvec3& p : cloud) backward.push_back(std::sqrt(imageTree.nearest(p).distanceSquared));
-    best.trimmedCollageDistance = (trimmedMean(forward, options.trim).mean + trimmedMean(backward, options.trim).mean) / 2.0;
+    best.trimmedCollageDistance = (trimmedMean(forward, options.rankTrim).mean + trimmedMean(backward, options.rankTrim).mean) / 2.0;
   }
-  best.regeneratedDistance = regeneratedDistance(winner, cloudTree, cloud, options.trim, options.seed + 43);
+  best.regeneratedDistance = regeneratedDistance(winner, cloudTree, cloud, options.rankTrim, options.seed + 43);
   // Shares: which map's image is nearest to each cloud point.
   const g::KdTree3 imageTree(images);
   std::vector<double> counts(winner.size(), 0.0);
@@ -452,12 +780,47 @@ Ifs3Fit fitOnce(std::span<const glm::dvec3> cloud, const g::KdTree3& cloudTree, 
   return best;
 }
 
+
+// The cloud without its isolated points: those whose nearest point of the other half of the
+// cloud (the cloud split in two at random, so that a point does not find itself) is farther than
+// kIsolation times the median of these distances. Noise scattered through the cube lies far from
+// the attractor's points, which lie close to each other; without it, the k-means split and the
+// moments see the attractor alone, and the ranking can trim less (Ifs3FitOptions::rankTrim), so
+// that a small part left out cannot hide in the trimmed share. The removed share is returned.
+std::vector<glm::dvec3> withoutIsolatedPoints(std::span<const glm::dvec3> cloud, std::uint64_t seed, double& removedShare) {
+  constexpr double kIsolation = 6.0;
+  std::vector<std::uint32_t> index(cloud.size());
+  std::iota(index.begin(), index.end(), 0u);
+  g::SplitMix64 random(seed);
+  for (std::size_t i = index.size(); i > 1; --i) std::swap(index[i - 1], index[random.below(i)]);
+  const std::size_t half = cloud.size() / 2;
+  std::vector<glm::dvec3> a, b;
+  for (std::size_t i = 0; i < index.size(); ++i) (i < half ? a : b).push_back(cloud[index[i]]);
+  const g::KdTree3 treeA(a), treeB(b);
+  std::vector<double> distance(cloud.size());
+  for (std::size_t i = 0; i < index.size(); ++i)
+    distance[index[i]] = (i < half ? treeB : treeA).nearest(cloud[index[i]]).distanceSquared;
+  std::vector<double> sorted = distance;
+  std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(sorted.size() / 2), sorted.end());
+  const double limit = kIsolation * kIsolation * sorted[sorted.size() / 2];
+  std::vector<glm::dvec3> kept;
+  kept.reserve(cloud.size());
+  for (std::size_t i = 0; i < cloud.size(); ++i)
+    if (!(distance[i] > limit)) kept.push_back(cloud[i]);
+  removedShare = 1.0 - static_cast<double>(kept.size()) / static_cast<double>(cloud.size());
+  return kept;
+}
+
 }  // namespace
 
-Ifs3Fit fitIfs3(std::span<const glm::dvec3> cloud, const Ifs3FitOptions& options) {
+Ifs3Fit fitIfs3(std::span<const glm::dvec3> fullCloud, const Ifs3FitOptions& options) {
   Ifs3Fit best;
   best.collageDistance = best.trimmedCollageDistance = best.regeneratedDistance = std::numeric_limits<double>::infinity();
-  if (cloud.size() < static_cast<std::size_t>(20 * std::max(1, options.maps))) return best;
+  if (fullCloud.size() < static_cast<std::size_t>(20 * std::max(1, options.maps))) return best;
+  double isolatedShare = 0.0;
+  const std::vector<glm::dvec3> kept = withoutIsolatedPoints(fullCloud, options.seed + 3, isolatedShare);
+  const std::span<const glm::dvec3> cloud =
+      kept.size() >= static_cast<std::size_t>(20 * std::max(1, options.maps)) ? std::span<const glm::dvec3>(kept) : fullCloud;
   const g::KdTree3 cloudTree(cloud);
   // The cloud's own spacing: the mean distance from a point to its nearest other point (on a
   // sample). A fit whose collage distance is well below it has found the maps; otherwise another
@@ -470,15 +833,30 @@ Ifs3Fit fitIfs3(std::span<const glm::dvec3> cloud, const Ifs3FitOptions& options
     spacing += d > 0.0 ? d : 0.0;
   }
   spacing = spacing / 2000.0 * std::cbrt(std::min<double>(2000.0, static_cast<double>(cloud.size())) / static_cast<double>(cloud.size()));
+  int attempts = 0;
   for (int attempt = 0; attempt < std::max(1, options.attempts); ++attempt) {
+    ++attempts;
     Ifs3FitOptions seeded = options;
     seeded.seed = options.seed + 7919 * static_cast<std::uint64_t>(attempt);
-    Ifs3Fit fit = fitOnce(cloud, cloudTree, seeded);
+    // Attempts alternate between the two kinds of start: k-means first, the cheaper one, which
+    // finds the maps when the parts are apart; the inclusion search's pool next, for
+    // overlapping parts; from the second attempt on, the pool also re-seeds single maps.
+    Ifs3Fit fit = fitOnce(cloud, cloudTree, seeded, spacing, attempt > 0, attempt % 2 == 1);
     if (fit.regeneratedDistance < best.regeneratedDistance) best = std::move(fit);
     best.pointSpacing = spacing;
     if (best.converged()) break;
   }
   best.pointSpacing = spacing;
+  best.isolatedShare = isolatedShare;
+  best.attempts = attempts;
+  // The plain collage distance on the whole cloud as given, noise included.
+  if (!best.maps.empty() && cloud.size() != fullCloud.size()) {
+    std::vector<glm::dvec3> images;
+    images.reserve(fullCloud.size() * best.maps.size());
+    for (const g::Affine3& map : best.maps)
+      for (const glm::dvec3& p : fullCloud) images.push_back(map.apply(p));
+    best.collageDistance = chamferDistance(fullCloud, images);
+  }
   return best;
 }
 
