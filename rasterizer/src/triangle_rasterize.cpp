@@ -80,18 +80,11 @@ struct BlockDepth {
     for (int j = j0 + 1; j < j1 - 1; ++j) setRow(j);
   }
   uint32_t at(int i, int j) const { return depthValue(column[i] + row[j]); }
-  // at(i, j) for every column of row j (all columns set), two columns per vector operation
-  // (GCC and Clang vector extensions): the same clamps, multiply, add and truncation per lane.
+  // at(i, j) for every column of row j (all columns set), two columns at a time.
   void wholeRow(int j, uint32_t z[kBlockSize]) const {
-    using DoubleLanes = double __attribute__((vector_size(16)));
-    using IntLanes = int32_t __attribute__((vector_size(8)));
-    const DoubleLanes zero = {0.0, 0.0}, one = {1.0, 1.0};
     for (int i = 0; i < kBlockSize; i += 2) {
-      DoubleLanes value = {column[i] + row[j], column[i + 1] + row[j]};
-      value = value > zero ? value : zero;  // depthValue's clamps: NaN becomes 0
-      value = value < one ? value : one;
-      const IntLanes ints = __builtin_convertvector(value * double(kDepthMax) + 0.5, IntLanes);
-      std::memcpy(z + i, &ints, sizeof ints);
+      const double pair[2] = {column[i] + row[j], column[i + 1] + row[j]};
+      depthValuePair(pair, z + i);
     }
   }
 

@@ -80,7 +80,7 @@ class BlockVaryings {
     }
   }
 
-  // Computes the values of row j; value(n, i) and row(n) then read them.
+  // Computes the values of row j; row(n) then reads them.
   void computeRow(int j) {
     constexpr int slots[kCount] = {Slots...};
     const RowDoubles d;
@@ -97,7 +97,6 @@ class BlockVaryings {
     }
   }
 
-  float value(int n, int i) const { return values_[n][i]; }
   const float* row(int n) const { return values_[n]; }
 
  private:

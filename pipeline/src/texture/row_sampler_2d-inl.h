@@ -118,8 +118,9 @@ inline unsigned bilinearRow(const Sampler2D::Level& level, const float* s, const
     const auto beta = hn::Sub(v, hn::ConvertTo(f, vWhole));
     const auto i0 = hn::And(uWhole, widthMask);
     const auto i1 = hn::And(hn::Add(i0, hn::Set(di, 1)), widthMask);
-    const auto row0 = hn::And(vWhole, heightMask) * width;
-    const auto row1 = hn::And(hn::Add(hn::And(vWhole, heightMask), hn::Set(di, 1)), heightMask) * width;
+    const auto j0 = hn::And(vWhole, heightMask);
+    const auto j1 = hn::And(hn::Add(j0, hn::Set(di, 1)), heightMask);
+    const auto row0 = j0 * width, row1 = j1 * width;
     const decltype(hn::Zero(hn::RebindToUnsigned<RowTag>())) words[4] = {
         texelWords(level.texels, hn::Add(row0, i0)), texelWords(level.texels, hn::Add(row0, i1)),
         texelWords(level.texels, hn::Add(row1, i0)), texelWords(level.texels, hn::Add(row1, i1))};
