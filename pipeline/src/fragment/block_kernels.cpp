@@ -45,6 +45,8 @@
 #include "fragment/blending.h"
 #include "fragment/stencil_depth_tests.h"
 #include "fragment/color_conversion.h"
+#include "fragment/fog_hooks.h"
+#include "fragment/fog_state.h"
 #include "glass/raster/triangle.h"
 #include "texture/row_sampler_2d-inl.h"
 #include "texture/sampler_2d.h"
@@ -356,14 +358,24 @@ void blendCoveredWords(const BlendSettings& settings, uint8_t* row, const uint32
   }
 }
 
-template <bool kWriteDepth, bool kWriteColor, KernelTexturing kTexturing, bool kStencilAndDepth, bool kBlend>
-void shadeBlock(Context& ctx, const StencilDepthSettings& tests, const BlendSettings& blendSettings,
-                const raster::TriangleSetup& setup, const raster::CoveredBlock& block) {
+// The fog of fog_hooks.h's applyFog on the pixels of mask, whose fog coordinates are c[i]: the
+// same function for the factor and the same expression for each colour component.
+void applyFogRow(const FogState& fog, const float* c, unsigned mask, float color[4][kSize]) {
+  for (unsigned rest = mask; rest != 0; rest &= rest - 1) {
+    const int i = std::countr_zero(rest);
+    const float f = fogFactor(fog, c[i]);
+    for (int k = 0; k < 3; ++k) color[k][i] = f * color[k][i] + (1.0f - f) * fog.color[k];
+  }
+}
+
+template <bool kWriteDepth, bool kWriteColor, KernelTexturing kTexturing, bool kFog>
+void shadeBlock(Context& ctx, const KernelPixelOps& ops, const raster::TriangleSetup& setup,
+                const raster::CoveredBlock& block) {
   raster::Framebuffer& fb = ctx.framebuffer;
   const int bx = block.bx, by = block.by;
   uint8_t rowMask[kSize];  // the pixels to shade
-  if constexpr (kStencilAndDepth) {
-    testStencilAndDepthOfBlock(fb, tests, block, rowMask);
+  if (ops.stencilAndDepth) {
+    testStencilAndDepthOfBlock(fb, ops.tests, block, rowMask);
   } else {
     std::memcpy(rowMask, block.rowMask, sizeof rowMask);
     if constexpr (kWriteDepth) {
@@ -378,26 +390,31 @@ void shadeBlock(Context& ctx, const StencilDepthSettings& tests, const BlendSett
     if (any == 0) return;
     typename TexturingStage<kTexturing>::Varyings varyings(setup.planes, block);
     [[maybe_unused]] typename TexturingStage<kTexturing>::Texturing texturing(ctx, setup, bx, by);
+    using FogVaryings = BlockVaryings<varying::kFogCoordinate>;
+    std::optional<FogVaryings> fogCoordinate;
+    if constexpr (kFog) fogCoordinate.emplace(setup.planes, block);
     for (int j = 0; j < kSize; ++j) {
       const unsigned mask = rowMask[j];
       if (mask == 0) continue;
       varyings.computeRow(j);
-      alignas(64) uint32_t words[kSize];
-      if constexpr (kTexturing == KernelTexturing::None) {
-        packRowColors(varyings.row(0), varyings.row(1), varyings.row(2), varyings.row(3), words);
-      } else {
-        alignas(64) float color[4][kSize];
-        for (int c = 0; c < 4; ++c) std::memcpy(color[c], varyings.row(c), sizeof color[c]);
+      alignas(64) float color[4][kSize];
+      for (int c = 0; c < 4; ++c) std::memcpy(color[c], varyings.row(c), sizeof color[c]);
+      if constexpr (kTexturing != KernelTexturing::None) {
         if (texturing.active()) {
           alignas(64) float sq[kSize], tq[kSize];
           divideRow(varyings.row(4), varyings.row(6), sq);
           divideRow(varyings.row(5), varyings.row(6), tq);
           texturing.applyRow(bx, by + j, mask, sq, tq, color);
         }
-        packRowColors(color[0], color[1], color[2], color[3], words);
       }
-      if constexpr (kBlend) {
-        blendCoveredWords(blendSettings, fb.colorAt(bx, by + j), words, mask);
+      if constexpr (kFog) {
+        fogCoordinate->computeRow(j);
+        applyFogRow(ctx.fog, fogCoordinate->row(0), mask, color);
+      }
+      alignas(64) uint32_t words[kSize];
+      packRowColors(color[0], color[1], color[2], color[3], words);
+      if (ops.blend) {
+        blendCoveredWords(ops.blendSettings, fb.colorAt(bx, by + j), words, mask);
       } else {
         storeCoveredWords(fb.colorAt(bx, by + j), words, mask);
       }
@@ -410,14 +427,14 @@ template <int kIndex>
 constexpr BlockKernel kernelAt() {
   constexpr bool writeDepth = kIndex & 1, writeColor = kIndex & 2;
   constexpr KernelTexturing texturing = (kIndex & 4) ? KernelTexturing::Single2D : KernelTexturing::None;
-  constexpr bool stencilAndDepth = kIndex & 8, blend = kIndex & 16;
-  return &shadeBlock<writeDepth, writeColor, texturing, stencilAndDepth, blend>;
+  constexpr bool fog = kIndex & 8;
+  return &shadeBlock<writeDepth, writeColor, texturing, fog>;
 }
 template <int... kIndices>
 constexpr std::array<BlockKernel, sizeof...(kIndices)> kernelTable(std::integer_sequence<int, kIndices...>) {
   return {kernelAt<kIndices>()...};
 }
-constexpr auto kKernels = kernelTable(std::make_integer_sequence<int, 32>());
+constexpr auto kKernels = kernelTable(std::make_integer_sequence<int, 16>());
 
 }  // namespace
 
@@ -433,13 +450,10 @@ namespace glass::gl {
 namespace {
 
 int kernelIndex(const BlockKernelKey& key) {
-  // Texturing and blending matter only when colour is written; with the stencil and depth tests
-  // in the kernel, the depth is written by them.
+  // Texturing and fog matter only when colour is written.
   const bool textured = key.writeColor && key.texturing == KernelTexturing::Single2D;
-  const bool blend = key.writeColor && key.blend;
-  const bool writeDepth = key.writeDepth && !key.stencilAndDepth;
-  return (writeDepth ? 1 : 0) | (key.writeColor ? 2 : 0) | (textured ? 4 : 0) |
-         (key.stencilAndDepth ? 8 : 0) | (blend ? 16 : 0);
+  const bool fog = key.writeColor && key.fog;
+  return (key.writeDepth ? 1 : 0) | (key.writeColor ? 2 : 0) | (textured ? 4 : 0) | (fog ? 8 : 0);
 }
 
 }  // namespace

@@ -94,6 +94,10 @@ void FragmentProcessor::prepare(Context& ctx, bool phong) {
     s_.scissorY1 = static_cast<int>(std::min<long long>(INT_MAX, static_cast<long long>(box.y) + box.height));
   }
   kernel_ = chooseKernel();
+  pixelOps_.stencilAndDepth = s_.tests.stencilTest;
+  pixelOps_.tests = s_.tests;
+  pixelOps_.blend = s_.blend;
+  pixelOps_.blendSettings = s_.blendSettings;
   // With the stencil test on, the kernel makes the depth test itself (block_kernels.h).
   kernelNeedsEarlyDepth_ = s_.tests.depthTest && s_.tests.depthFunc != GL_ALWAYS && !s_.tests.stencilTest;
 }
@@ -103,13 +107,13 @@ BlockKernel FragmentProcessor::chooseKernel() const {
   // The overdraw, normals and mipmap views and GLASS_STATS see fragments in the general path (teaching/teaching_hooks.h).
   if (s_.fragmentCounts != nullptr || s_.fragmentColors != nullptr || s_.statistics != nullptr) return nullptr;
   // What no kernel does (block_kernels.h).
-  if (s_.phong || s_.colorSum || s_.fog || s_.alphaTest || s_.logicOp || (s_.writesColor && !s_.allChannels))
+  if (s_.phong || s_.colorSum || s_.alphaTest || s_.logicOp || (s_.writesColor && !s_.allChannels))
     return nullptr;
   BlockKernelKey key;
-  key.writeDepth = s_.tests.depthTest && s_.tests.depthMask;
+  // With the stencil test on, the kernel's stencil and depth tests write the depth.
+  key.writeDepth = s_.tests.depthTest && s_.tests.depthMask && !s_.tests.stencilTest;
   key.writeColor = s_.writesColor;
-  key.stencilAndDepth = s_.tests.stencilTest;
-  key.blend = s_.blend;
+  key.fog = s_.fog;
   if (s_.texturing) {
     if (singleTexture2D(*ctx_) == nullptr) return nullptr;
     key.texturing = KernelTexturing::Single2D;
@@ -120,7 +124,7 @@ BlockKernel FragmentProcessor::chooseKernel() const {
 void FragmentProcessor::processTriangleBlock(const raster::TriangleSetup& setup,
                                              const raster::CoveredBlock& block) {
   if (kernel_ != nullptr && (!kernelNeedsEarlyDepth_ || setup.earlyDepth.buffer != nullptr)) {
-    kernel_(*ctx_, s_.tests, s_.blendSettings, setup, block);
+    kernel_(*ctx_, pixelOps_, setup, block);
   } else {
     raster::FragmentSink::processTriangleBlock(setup, block);
   }
