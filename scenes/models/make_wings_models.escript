@@ -34,6 +34,11 @@ main([Root]) ->
     %% the top and the bottom in torus pieces.
     write(filename:join(Models, "l_all_hard.wings"),
           [object("L", LBlockVs, LBlockFs, fun(_, _) -> true end, top_paint, true)], Materials, []),
+    %% The same with one top rim edge where the inner upright ends left sharp: the torus piece
+    %% above the fillet ends in a flat cap against it.
+    OneSharpRim = fun(A, B) -> lists:sort([A, B]) =/= [{0.0, 0.75, 0.0}, {0.75, 0.75, 0.0}] end,
+    write(filename:join(Models, "l_one_sharp_rim.wings"),
+          [object("L", LBlockVs, LBlockFs, OneSharpRim, top_paint, true)], Materials, []),
     %% The same L of unit cubes with only its uprights marked, and one two cubes tall (its
     %% concave upright runs straight through a corner of four faces).
     {LVsUp, LFsUp} = cubes([{0, 0, 0}, {1, 0, 0}, {0, 0, 1}], 1.0, {0.0, 0.0, 0.0}),
