@@ -254,6 +254,17 @@ PixelLayout sliceLayout(const PixelLayout& layout, int height, int slice) {
 void unpackTexels(const void* pixels, int width, int height, GLenum format, GLenum type,
                   const PixelLayout& layout, BaseFormat base, std::vector<uint8_t>& texels) {
   texels.resize(static_cast<size_t>(width) * static_cast<size_t>(height) * 4);
+  if (format == GL_RGBA && type == GL_UNSIGNED_BYTE && base == BaseFormat::RGBA) {
+    // Each byte b would become b / 255 and be stored back as b (the unit test
+    // unpack_rgba_bytes_copies_conversion checks every byte value): the rows are copied.
+    const BlockLayout block = spanFormat(width, format, type, layout).block;
+    for (int j = 0; j < height; ++j) {
+      std::memcpy(&texels[static_cast<size_t>(j) * static_cast<size_t>(width) * 4],
+                  static_cast<const unsigned char*>(pixels) + block.firstByte + static_cast<size_t>(j) * block.rowBytes,
+                  static_cast<size_t>(width) * 4);
+    }
+    return;
+  }
   std::vector<float> rgba(static_cast<size_t>(width) * 4);
   for (int j = 0; j < height; ++j) {
     unpackColorRow(pixels, width, j, format, type, layout, rgba.data());
