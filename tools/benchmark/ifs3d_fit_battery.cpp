@@ -3,10 +3,11 @@
 // lists: the tuning list, which the search may be improved against, and the held-out list, to be
 // run only to measure the finished search. The held-out list was looked at while the search was
 // being changed, though, so a third list, `fresh`, was added unrun, to be run once after a change
-// is finished (and then replaced by another unseen list for the next change). Odd seeds get 5% of
-// their points replaced by noise.
+// is finished (and then replaced by another unseen list for the next change): `fresh` (7001 on)
+// was that list for the change that brought the pool of included maps, `fresh2` (40001 on) for the
+// change that brought the residual search. Odd seeds get 5% of their points replaced by noise.
 //
-//   ifs3d_fit_battery [tuning|held-out|fresh] [--points N] [--first K] [--count C] [--write DIR]
+//   ifs3d_fit_battery [tuning|held-out|fresh|fresh2] [--points N] [--first K] [--count C] [--write DIR]
 //
 // --write DIR writes each system as DIR/seed_S.ifs3 and the found maps as DIR/seed_S_found.ifs3,
 // to look at a failure with `glass ifs3d view`.
@@ -28,10 +29,10 @@ namespace {
 
 constexpr double kTolerance = 0.03;
 
-enum class SeedList { Tuning, HeldOut, Fresh };
+enum class SeedList { Tuning, HeldOut, Fresh, Fresh2 };
 
 std::uint64_t seedOf(SeedList list, int index) {
-  const std::uint64_t base = list == SeedList::Tuning ? 1u : list == SeedList::HeldOut ? 1001u : 7001u;
+  const std::uint64_t base = list == SeedList::Tuning ? 1u : list == SeedList::HeldOut ? 1001u : list == SeedList::Fresh ? 7001u : 40001u;
   return base + static_cast<std::uint64_t>(index);
 }
 
@@ -70,6 +71,8 @@ int main(int argc, char** argv) {
       list = SeedList::HeldOut;
     } else if (arg == "fresh") {
       list = SeedList::Fresh;
+    } else if (arg == "fresh2") {
+      list = SeedList::Fresh2;
     } else if (arg == "--points" && i + 1 < argc) {
       points = static_cast<std::size_t>(std::atol(argv[++i]));
     } else if (arg == "--first" && i + 1 < argc) {
@@ -79,11 +82,12 @@ int main(int argc, char** argv) {
     } else if (arg == "--count" && i + 1 < argc) {
       count = std::atoi(argv[++i]);
     } else {
-      std::fprintf(stderr, "usage: ifs3d_fit_battery [tuning|held-out|fresh] [--points N] [--first K] [--count C] [--write DIR]\n");
+      std::fprintf(stderr, "usage: ifs3d_fit_battery [tuning|held-out|fresh|fresh2] [--points N] [--first K] [--count C] [--write DIR]\n");
       return 2;
     }
   }
-  std::printf("%s seeds, %zu points a cloud, success: every matrix entry within %.2f\n", list == SeedList::Tuning ? "tuning" : list == SeedList::HeldOut ? "held-out" : "fresh", points,
+  const char* const listNames[] = {"tuning", "held-out", "fresh", "fresh2"};
+  std::printf("%s seeds, %zu points a cloud, success: every matrix entry within %.2f\n", listNames[static_cast<int>(list)], points,
               kTolerance);
   std::printf("%6s %6s %8s %10s %10s %10s %10s %9s %8s%s\n", "seed", "noise", "sum|det|", "map error", "collage", "regen.", "spacing", "converged",
               "seconds", "  attempts, each map's error");

@@ -9,11 +9,13 @@
 #include <glm/geometric.hpp>
 #include <glm/mat3x3.hpp>
 
+#include "glass/course/ifs3d_distance_grid.h"
+#include "glass/course/ifs3d_orientations.h"
+#include "glass/course/ifs3d_residual_search.h"
 #include "glass/geometry/deterministic_random.h"
 #include "glass/geometry/ifs3d.h"
 #include "glass/geometry/kd_tree.h"
 #include "glass/geometry/polar_decomposition.h"
-#include "glass/geometry/rotation.h"
 
 namespace glass::course {
 
@@ -75,30 +77,6 @@ glm::dmat3 symmetricPower(const glm::dmat3& sigma, double power) {
   glm::dmat3 d(0.0);
   for (int k = 0; k < 3; ++k) d[k][k] = std::pow(std::max(e.values[k], floor), power);
   return e.vectors * d * glm::transpose(e.vectors);
-}
-
-// Starting orientations: the 24 rotations of the cube, each also after two fixed turns that fall
-// between them, so no rotation is far from a start; and each of these with a reflection (-Q).
-std::vector<glm::dmat3> startingOrientations() {
-  std::vector<glm::dmat3> cube;
-  const int permutations[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
-  for (const auto& p : permutations) {
-    for (int signs = 0; signs < 8; ++signs) {
-      glm::dmat3 q(0.0);
-      for (int c = 0; c < 3; ++c) q[c][p[c]] = (signs >> c) & 1 ? -1.0 : 1.0;
-      if (glm::determinant(q) > 0.0) cube.push_back(q);
-    }
-  }
-  const glm::dmat3 offsets[3] = {glm::dmat3(1.0), g::rotationMatrixDegrees({1.0, 1.0, 1.0}, 40.0),
-                                 g::rotationMatrixDegrees({1.0, -2.0, 0.5}, 35.0)};
-  std::vector<glm::dmat3> out;
-  for (const glm::dmat3& offset : offsets) {
-    for (const glm::dmat3& q : cube) {
-      out.push_back(q * offset);
-      out.push_back(-(q * offset));
-    }
-  }
-  return out;
 }
 
 // Symmetric trimmed ICP for affine maps: moves the maps f_i so that the union of f_i(source)
@@ -269,113 +247,6 @@ g::Affine3 fitPart(std::span<const glm::dvec3> cloud, const Moments& cloudMoment
   return best.map;
 }
 
-// Distances from the centres of the cells of a grid over the cloud's box to the nearest cloud
-// point: a map's image points are scored by looking up their cells, which is what lets the
-// inclusion search below try millions of candidate maps.
-class DistanceGrid {
- public:
-  DistanceGrid(std::span<const glm::dvec3> cloud, const g::KdTree3& tree, int resolution) {
-    lo_ = glm::dvec3(std::numeric_limits<double>::infinity());
-    glm::dvec3 hi(-std::numeric_limits<double>::infinity());
-    for (const glm::dvec3& p : cloud) {
-      lo_ = glm::min(lo_, p);
-      hi = glm::max(hi, p);
-    }
-    cell_ = std::max({hi.x - lo_.x, hi.y - lo_.y, hi.z - lo_.z, 1e-9}) / resolution;
-    for (int a = 0; a < 3; ++a) size_[a] = std::max(1, static_cast<int>(std::ceil((hi[a] - lo_[a]) / cell_)));
-    values_.resize(static_cast<std::size_t>(size_[0]) * size_[1] * size_[2]);
-    for (int z = 0; z < size_[2]; ++z)
-      for (int y = 0; y < size_[1]; ++y)
-        for (int x = 0; x < size_[0]; ++x) {
-          const glm::dvec3 centre = lo_ + (glm::dvec3(x, y, z) + 0.5) * cell_;
-          values_[index(x, y, z)] = std::sqrt(tree.nearest(centre).distanceSquared);
-        }
-  }
-  // The distance stored for p's cell; infinity outside the grid.
-  double at(const glm::dvec3& p) const {
-    const glm::dvec3 u = (p - lo_) / cell_;
-    if (!(u.x >= 0.0 && u.y >= 0.0 && u.z >= 0.0 && u.x < size_[0] && u.y < size_[1] && u.z < size_[2]))
-      return std::numeric_limits<double>::infinity();
-    return values_[index(static_cast<int>(u.x), static_cast<int>(u.y), static_cast<int>(u.z))];
-  }
-  double cell() const { return cell_; }
-  const glm::dvec3& lo() const { return lo_; }
-  int size(int axis) const { return size_[axis]; }
-
- private:
-  std::size_t index(int x, int y, int z) const {
-    return (static_cast<std::size_t>(z) * size_[1] + static_cast<std::size_t>(y)) * size_[0] + static_cast<std::size_t>(x);
-  }
-  glm::dvec3 lo_{0.0};
-  double cell_ = 1.0;
-  int size_[3] = {1, 1, 1};
-  std::vector<double> values_;
-};
-
-// m points of `points` spread out: each the farthest from those chosen before (Gonzalez), from
-// the first; they probe a candidate map's image all over.
-std::vector<glm::dvec3> spreadPoints(std::span<const glm::dvec3> points, std::size_t m) {
-  std::vector<glm::dvec3> chosen{points.front()};
-  std::vector<double> nearest(points.size(), std::numeric_limits<double>::infinity());
-  while (chosen.size() < std::min(m, points.size())) {
-    std::size_t farthest = 0;
-    for (std::size_t i = 0; i < points.size(); ++i) {
-      nearest[i] = std::min(nearest[i], glm::dot(points[i] - chosen.back(), points[i] - chosen.back()));
-      if (nearest[i] > nearest[farthest]) farthest = i;
-    }
-    chosen.push_back(points[farthest]);
-  }
-  return chosen;
-}
-
-// A candidate's linear part and centre improved by hill climbing on the distance grid: small
-// turns about the three axes, stretches along them and moves of the centre, in steps that halve
-// when no move helps. The orientations tried first are up to about 30 degrees apart, too far for
-// the refinement by correspondences to close alone.
-glm::dmat3 climb(const DistanceGrid& grid, std::span<const glm::dvec3> probes, const glm::dvec3& mean, glm::dmat3 linear,
-                 glm::dvec3& centre, double cap) {
-  const auto score = [&](const glm::dmat3& l, const glm::dvec3& c) {
-    double sum = 0.0;
-    for (const glm::dvec3& p : probes) sum += std::min(grid.at(c + l * (p - mean)), cap);
-    return sum;
-  };
-  double best = score(linear, centre);
-  double angle = 8.0, stretch = 0.08, shift = grid.cell();
-  for (int iteration = 0; iteration < 40 && angle > 1.0; ++iteration) {
-    glm::dmat3 bestLinear = linear;
-    glm::dvec3 bestCentre = centre;
-    double bestScore = best;
-    for (int axis = 0; axis < 3; ++axis) {
-      for (const double sign : {-1.0, 1.0}) {
-        glm::dvec3 unit(0.0);
-        unit[axis] = 1.0;
-        const glm::dmat3 turned = linear * g::rotationMatrixDegrees(unit, sign * angle);
-        glm::dmat3 stretched = linear;
-        stretched[axis] *= 1.0 + sign * stretch;
-        const glm::dvec3 moved = centre + sign * shift * unit;
-        for (const auto& [l, c] : {std::pair{turned, centre}, std::pair{stretched, centre}, std::pair{linear, moved}}) {
-          const double s = score(l, c);
-          if (s < bestScore) {
-            bestScore = s;
-            bestLinear = l;
-            bestCentre = c;
-          }
-        }
-      }
-    }
-    if (bestScore < best) {
-      best = bestScore;
-      linear = bestLinear;
-      centre = bestCentre;
-    } else {
-      angle /= 2.0;
-      stretch /= 2.0;
-      shift /= 2.0;
-    }
-  }
-  return linear;
-}
-
 // Candidate maps found without splitting the cloud, from the property every true map has
 // whatever the overlaps: f_i(P) lies in P (the collage's one direction), while a map turned,
 // placed or scaled wrongly sends part of a sparse cloud off it. Candidate similarities
@@ -432,6 +303,13 @@ InclusionPool inclusionPool(std::span<const glm::dvec3> cloud, const g::KdTree3&
   const std::vector<glm::dvec3> spread = sample(cloud, 2000, seed);
   const std::vector<glm::dvec3> probes = spreadPoints(spread, kProbes);
   const std::vector<glm::dvec3> fineProbes = spreadPoints(spread, 4 * kProbes);
+  // How far the images of the fine probes fall from the cloud, each capped: the vote the
+  // candidates are climbed on.
+  const GridScore inclusionScore = [&](const glm::dmat3& linear, const glm::dvec3& centre) {
+    double sum = 0.0;
+    for (const glm::dvec3& p : fineProbes) sum += std::min(grid.at(centre + linear * (p - cloudMoments.mean)), cap);
+    return sum;
+  };
   struct Candidate {
     double score;
     glm::dvec3 centre;
@@ -476,7 +354,7 @@ InclusionPool inclusionPool(std::span<const glm::dvec3> cloud, const g::KdTree3&
       if (!near) kept.push_back(c);
     }
     for (Candidate c : kept) {
-      const glm::dmat3 a = climb(grid, fineProbes, cloudMoments.mean, ratio * orientations[c.orientation], c.centre, cap);
+      const glm::dmat3 a = climbOnGrid(inclusionScore, ratio * orientations[c.orientation], c.centre, h);
       hypotheses.push_back(g::Affine3::fromParts(a, c.centre - a * cloudMoments.mean));
     }
   }
@@ -614,6 +492,19 @@ namespace {
 
 // Sets of maps taken from the inclusion search, each refined and ranked.
 constexpr int kInclusionStarts = 4;
+// The residual search (ifs3d_residual_search.h): points uncovered when farther from every image
+// of the cloud than this many point spacings, at most this many of them, joined into clusters
+// within this many grid cells; the largest clusters searched while they hold at least this share
+// of the points; candidates from each, each tried in place of this many of the least needed maps,
+// refined this many steps before the best of all is refined in full.
+constexpr double kUncoveredSpacings = 3.0;
+constexpr std::size_t kResidualMostPoints = 3000;
+constexpr double kResidualLink = 1.5;
+constexpr std::size_t kResidualClusters = 2;
+constexpr double kResidualMinimumShare = 0.004;
+constexpr std::size_t kResidualCandidates = 3, kResidualTargets = 2;
+constexpr int kResidualTrialSteps = 8;
+constexpr int kResidualGridResolution = 40;
 
 // One attempt of the whole fit, from the seed in options: from k-means splits of the cloud, or
 // from the inclusion search.
@@ -740,6 +631,46 @@ Ifs3Fit fitOnce(std::span<const glm::dvec3> cloud, const g::KdTree3& cloudTree, 
     if (score < winnerScore) {
       winnerScore = score;
       winner = maps;
+    }
+  }
+
+  // Re-seeding from the residual: the points no image reaches lie in the image of a map the
+  // winner lacks (ifs3d_residual_search.h); the candidates found for them replace the maps the
+  // others make least needed, when that beats the winner. Again while it helps.
+  {
+    const DistanceGrid grid(cloud, cloudTree, kResidualGridResolution);
+    const std::vector<glm::dvec3> cloudProbes = sample(cloud, 2000, options.seed + 51);
+    const ResidualSearch search{&grid, cloudMoments.mean, cloudProbes, orientations};
+    for (int round = 0; round < options.residualRounds; ++round) {
+      std::vector<glm::dvec3> residual = uncoveredPoints(winner, cloud, clusterSample, kUncoveredSpacings * spacing);
+      if (residual.size() > kResidualMostPoints) residual = sample(residual, kResidualMostPoints, options.seed + 53);
+      const std::vector<std::size_t> replaceable = mapsByOwnCover(winner, source, clusterSample, 1.5 * grid.cell());
+      // Each candidate in place of each of the least needed maps, refined briefly; the best of
+      // these refined in full.
+      std::vector<g::Affine3> bestTrial;
+      double bestTrialScore = std::numeric_limits<double>::infinity();
+      const std::vector<std::vector<glm::dvec3>> clusters = residualClusters(residual, kResidualLink * grid.cell());
+      for (std::size_t n = 0; n < std::min<std::size_t>(kResidualClusters, clusters.size()); ++n) {
+        if (clusters[n].size() < kResidualMinimumShare * static_cast<double>(clusterSample.size())) break;
+        for (const g::Affine3& candidate : residualCandidates(search, clusters[n], kResidualCandidates)) {
+          for (std::size_t r = 0; r < std::min<std::size_t>(kResidualTargets, replaceable.size()); ++r) {
+            std::vector<g::Affine3> maps = winner;
+            maps[replaceable[r]] = candidate;
+            const double collage = refine(maps, source, cloud, cloudTree, targetSample, kResidualTrialSteps, options.trim);
+            const double score = attractorDistance(maps, collage);
+            if (score < bestTrialScore) {
+              bestTrialScore = score;
+              bestTrial = maps;
+            }
+          }
+        }
+      }
+      if (bestTrial.empty()) break;
+      const double collage = refine(bestTrial, source, cloud, cloudTree, targetSample, options.refineSteps, options.trim);
+      const double score = attractorDistance(bestTrial, collage);
+      if (!(score < winnerScore)) break;
+      winnerScore = score;
+      winner = bestTrial;
     }
   }
 

@@ -26,6 +26,10 @@
 //     distance: one step of the collage can look right while a small part is left out or two
 //     maps share a part. When the result is not close enough, the whole search is repeated (3
 //     more attempts, alternating the kinds of start, the pool from the second on).
+//  4. The residual: the cloud points no image reaches, in clusters; a map found for a cluster
+//     (ifs3d_residual_search.h: its image in the cloud, the cluster in its image) replaces the
+//     map the others make least needed, while that brings the attractor closer. This finds a small
+//     part hidden inside larger overlapping ones, which the starts above miss.
 // Everything is seeded: the same cloud gives the same maps.
 #pragma once
 
@@ -51,6 +55,8 @@ struct Ifs3FitOptions {
   // convergence: small, since the isolated (noise) points are taken out before, and a part of
   // the attractor that the maps miss must not hide in it.
   double rankTrim = 0.02;
+  // Rounds of the residual search in each attempt (step 4 above), while a round helps.
+  int residualRounds = 3;
   std::uint64_t seed = 1;
 };
 

@@ -1,0 +1,190 @@
+#include "glass/course/ifs3d_residual_search.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+
+#include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
+
+#include "glass/geometry/kd_tree.h"
+
+namespace glass::course {
+
+namespace g = glass::geometry;
+
+std::vector<glm::dvec3> uncoveredPoints(std::span<const g::Affine3> maps, std::span<const glm::dvec3> source,
+                                        std::span<const glm::dvec3> points, double limit) {
+  std::vector<glm::dvec3> images;
+  images.reserve(maps.size() * source.size());
+  for (const g::Affine3& map : maps)
+    for (const glm::dvec3& p : source) images.push_back(map.apply(p));
+  if (images.empty()) return {points.begin(), points.end()};
+  const g::KdTree3 imageTree(images);
+  std::vector<glm::dvec3> out;
+  for (const glm::dvec3& p : points)
+    if (imageTree.nearest(p).distanceSquared > limit * limit) out.push_back(p);
+  return out;
+}
+
+std::vector<std::vector<glm::dvec3>> residualClusters(std::span<const glm::dvec3> points, double link) {
+  // Union-find over all pairs: the residual is a few thousand points at most.
+  std::vector<std::size_t> parent(points.size());
+  std::iota(parent.begin(), parent.end(), std::size_t{0});
+  const auto root = [&](std::size_t i) {
+    while (parent[i] != i) i = parent[i] = parent[parent[i]];
+    return i;
+  };
+  for (std::size_t i = 0; i < points.size(); ++i)
+    for (std::size_t j = i + 1; j < points.size(); ++j) {
+      const glm::dvec3 d = points[i] - points[j];
+      if (glm::dot(d, d) < link * link) parent[root(i)] = root(j);
+    }
+  std::vector<std::vector<glm::dvec3>> clusters;
+  std::vector<std::size_t> clusterOfRoot(points.size(), points.size());
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const std::size_t r = root(i);
+    if (clusterOfRoot[r] == points.size()) {
+      clusterOfRoot[r] = clusters.size();
+      clusters.emplace_back();
+    }
+    clusters[clusterOfRoot[r]].push_back(points[i]);
+  }
+  std::stable_sort(clusters.begin(), clusters.end(), [](const auto& a, const auto& b) { return a.size() > b.size(); });
+  return clusters;
+}
+
+std::vector<std::size_t> mapsByOwnCover(std::span<const g::Affine3> maps, std::span<const glm::dvec3> source,
+                                        std::span<const glm::dvec3> points, double reach) {
+  std::vector<g::KdTree3> trees;
+  for (const g::Affine3& map : maps) {
+    std::vector<glm::dvec3> images;
+    for (const glm::dvec3& p : source) images.push_back(map.apply(p));
+    trees.emplace_back(images);
+  }
+  std::vector<std::size_t> ownCover(maps.size(), 0);
+  for (const glm::dvec3& p : points) {
+    std::size_t coveringMaps = 0, coveringMap = 0;
+    for (std::size_t i = 0; i < trees.size(); ++i) {
+      if (!trees[i].empty() && trees[i].nearest(p).distanceSquared <= reach * reach) {
+        ++coveringMaps;
+        coveringMap = i;
+      }
+    }
+    if (coveringMaps == 1) ++ownCover[coveringMap];
+  }
+  std::vector<std::size_t> order(maps.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return ownCover[a] < ownCover[b]; });
+  return order;
+}
+
+std::vector<g::Affine3> residualCandidates(const ResidualSearch& search, std::span<const glm::dvec3> residual, std::size_t wanted) {
+  constexpr std::size_t kProbes = 12, kKept = 120;
+  constexpr double kCoarseTolerance = 1.5;
+  constexpr double kSameMap = 0.05;  // largest entry difference
+  // Ratios from the smallest part the course's systems have (0.3 of the cloud, shrunk by a
+  // quarter on an axis) to the largest (0.6, stretched by a quarter); the hill climbing
+  // stretches between them.
+  constexpr double kRatios[] = {0.25, 0.31, 0.38, 0.46, 0.55, 0.66};
+  if (residual.size() < 8 || search.cloudProbes.empty()) return {};
+  const DistanceGrid& grid = *search.grid;
+  const double h = grid.cell(), cap = 3.0 * h;
+  // The coarse votes forgive what the coarse steps of orientation, ratio and centre miss by
+  // (starting orientations up to about 15 degrees from the true one).
+  const double tolerance = kCoarseTolerance * h;
+  const glm::dvec3 mean = search.cloudMean;
+  const std::vector<glm::dvec3> probes = spreadPoints(search.cloudProbes, kProbes);
+  const std::vector<glm::dvec3> residualProbes = spreadPoints(residual, kProbes);
+  double radius = 0.0;  // of the cloud about its mean
+  for (const glm::dvec3& p : search.cloudProbes) radius = std::max(radius, glm::length(p - mean));
+
+  struct Candidate {
+    double score;
+    glm::dvec3 centre;
+    double ratio;
+    std::size_t orientation;
+  };
+  std::vector<Candidate> candidates;
+  const std::size_t orientations = search.orientations.size();
+  for (const double ratio : kRatios) {
+    // Per orientation: the probes' offsets under the map, the residual probes' pre-images before
+    // the centre's share, and the inverse that takes the centre back.
+    std::vector<glm::dvec3> forward(orientations * probes.size()), backward(orientations * residualProbes.size());
+    std::vector<glm::dmat3> inverses(orientations);
+    for (std::size_t q = 0; q < orientations; ++q) {
+      inverses[q] = glm::transpose(search.orientations[q]) / ratio;  // orientations are orthogonal
+      for (std::size_t j = 0; j < probes.size(); ++j) forward[q * probes.size() + j] = ratio * (search.orientations[q] * (probes[j] - mean));
+      for (std::size_t j = 0; j < residualProbes.size(); ++j) backward[q * residualProbes.size() + j] = mean + inverses[q] * residualProbes[j];
+    }
+    for (int z = 0; z < grid.size(2); ++z)
+      for (int y = 0; y < grid.size(1); ++y)
+        for (int x = 0; x < grid.size(0); ++x) {
+          const glm::dvec3 centre = grid.lo() + (glm::dvec3(x, y, z) + 0.5) * h;
+          // The residual lies in the image, so within the image's reach of its centre.
+          bool reachable = true;
+          for (const glm::dvec3& r : residualProbes) reachable = reachable && glm::length(r - centre) <= 1.3 * ratio * radius + h;
+          if (!reachable) continue;
+          Candidate best{std::numeric_limits<double>::infinity(), centre, ratio, 0};
+          for (std::size_t q = 0; q < orientations; ++q) {
+            const glm::dvec3 back = inverses[q] * centre;
+            double score = 0.0;
+            for (std::size_t j = 0; j < residualProbes.size() && score < best.score; ++j)
+              score += std::clamp(grid.at(backward[q * residualProbes.size() + j] - back) - tolerance, 0.0, cap);
+            for (std::size_t j = 0; j < probes.size() && score < best.score; ++j)
+              score += std::clamp(grid.at(centre + forward[q * probes.size() + j]) - tolerance, 0.0, cap);
+            if (score < best.score) best = {score, centre, ratio, q};
+          }
+          candidates.push_back(best);
+        }
+  }
+  std::stable_sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) { return a.score < b.score; });
+
+  // The best, apart from each other in centre or in orientation, improved on finer probes.
+  const std::vector<glm::dvec3> fineProbes = spreadPoints(search.cloudProbes, 4 * kProbes);
+  const std::vector<glm::dvec3> fineResidual = spreadPoints(residual, 3 * kProbes);
+  const GridScore score = [&](const glm::dmat3& linear, const glm::dvec3& centre) {
+    const double determinant = glm::determinant(linear);
+    if (!(std::abs(determinant) > 1e-12)) return std::numeric_limits<double>::infinity();
+    const glm::dmat3 inverse = glm::inverse(linear);
+    double sum = 0.0;
+    for (const glm::dvec3& p : fineProbes) sum += std::min(grid.at(centre + linear * (p - mean)), cap);
+    const double forwardMean = sum / static_cast<double>(fineProbes.size());
+    sum = 0.0;
+    for (const glm::dvec3& r : fineResidual) sum += std::min(grid.at(mean + inverse * (r - centre)), cap);
+    return forwardMean + sum / static_cast<double>(fineResidual.size());
+  };
+  std::vector<Candidate> kept;
+  for (const Candidate& c : candidates) {
+    if (kept.size() == kKept) break;
+    const bool near = std::any_of(kept.begin(), kept.end(), [&](const Candidate& other) {
+      if (glm::length(other.centre - c.centre) >= 2.0 * h || std::abs(other.ratio - c.ratio) > 0.1) return false;
+      const glm::dmat3 d = search.orientations[other.orientation] - search.orientations[c.orientation];
+      double largest = 0.0;
+      for (int col = 0; col < 3; ++col)
+        for (int row = 0; row < 3; ++row) largest = std::max(largest, std::abs(d[col][row]));
+      return largest < 0.5;
+    });
+    if (!near) kept.push_back(c);
+  }
+  struct Climbed {
+    double score;
+    g::Affine3 map;
+  };
+  std::vector<Climbed> climbed;
+  for (Candidate c : kept) {
+    const glm::dmat3 linear = climbOnGrid(score, c.ratio * search.orientations[c.orientation], c.centre, h);
+    climbed.push_back({score(linear, c.centre), g::Affine3::fromParts(linear, c.centre - linear * mean)});
+  }
+  std::stable_sort(climbed.begin(), climbed.end(), [](const Climbed& a, const Climbed& b) { return a.score < b.score; });
+  // Climbs from nearby starts often end on the same map: those are one candidate.
+  std::vector<g::Affine3> out;
+  for (const Climbed& c : climbed) {
+    if (out.size() == wanted) break;
+    if (std::none_of(out.begin(), out.end(), [&](const g::Affine3& o) { return g::Affine3::maxDifference(o, c.map) < kSameMap; })) out.push_back(c.map);
+  }
+  return out;
+}
+
+}  // namespace glass::course
