@@ -285,10 +285,17 @@ void checkCorner(const Topology& topo, std::uint32_t v) {
                         glm::dot(topo.direction(v, creases[0]), topo.direction(v, creases[1])) < -1.0 + kAngleTolerance;
   if (!concave.empty() && !(straight && concave.size() == 2)) {
     const EdgeRecord& edge = topo.edges()[concave[0]];
+    // What meets there, so that a corner of a kind the rounding has no patch for (where a layer
+    // of cubes stands on another, two concave edges meet a convex one) is plain from the message.
+    std::string kinds;
+    for (std::size_t e : creases)
+      kinds += (kinds.empty() ? "" : ", ") + std::string(dihedralOf(topo, topo.edges()[e]) == Dihedral::Concave ? "concave " : "convex ") +
+               (topo.edges()[e].rounded ? "rounded " : "sharp ") + describeEdge(topo.edges()[e]);
     throw RoundingError(describeVertex(v) + ", where a rounded edge ends, has the concave " + describeEdge(edge) +
                         (edge.rounded ? " and other creases that are rounded or not at right angles"
                                       : ", which is not rounded") +
-                        "; a rounded concave edge must end where its two other creases are convex and at right "
+                        " (" + std::to_string(creases.size()) + " creases meet there: " + kinds +
+                        "); a rounded concave edge must end where its two other creases are convex and at right "
                         "angles, and where one of them is rounded, the end face must be split by flat edges along "
                         "their continuations");
   }

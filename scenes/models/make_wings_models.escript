@@ -93,6 +93,12 @@ main([Root]) ->
     AllButOne = fun(A, B) -> lists:sort([A, B]) =/= [{1.0, 1.0, 1.0}, {2.0, 1.0, 1.0}] end,
     write(filename:join(Tests, "concave_l_one_sharp.wings"),
           [object("L", LVs, LFs, AllButOne, none, false)], Materials, []),
+    %% Two layers: the L of unit cubes with a cube on its corner cube, every edge marked. The
+    %% upper cube's uprights end on the lower layer's top, between two concave edges: a corner
+    %% kind the rounding refuses.
+    {TwoVs, TwoFs} = cubes([{0, 0, 0}, {1, 0, 0}, {0, 0, 1}, {0, 1, 0}], 1.0, {0.0, 0.0, 0.0}),
+    write(filename:join(Tests, "two_layers.wings"),
+          [object("Steps", TwoVs, TwoFs, All, none, false)], Materials, []),
     %% Broken and unsupported files.
     Cube = object("Cube", CubeVs, CubeFs, All, top_paint, true),
     write_term(filename:join(Tests, "version_3.wings"), {wings, 3, {[Cube], Materials, []}}),

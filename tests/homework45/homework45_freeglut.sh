@@ -17,6 +17,10 @@ all_hard_model=$5
 # open_window PICTURE [MODEL]: starts the freeglut program (pid in $pid, window in $window) and
 # polls (600 times, 0.1 s apart: Mesa's first frame took over 20 s on a loaded machine) until the
 # window has been drawn (the capture is no longer one colour); PICTURE gets the settled picture.
+# The window is looked up by the program's process (freeglut sets _NET_WM_PID), not by its title
+# alone: another program's window of the same title on the same display (a second xvfb-run -a
+# that picked the same display number) once stood in for a freeglut program that had failed to
+# open the display.
 open_window() {
   picture=$1
   shift
@@ -24,7 +28,8 @@ open_window() {
   pid=$!
   tries=0
   while :; do
-    window=$(xdotool search --name "Homework 4-5" 2>/dev/null | head -n 1)
+    kill -0 "$pid" 2>/dev/null || fail "the freeglut program exited: $(cat "freeglut_out_$picture.txt")"
+    window=$(xdotool search --pid "$pid" --name "Homework 4-5" 2>/dev/null | head -n 1)
     if [ -n "$window" ] && xwd -id "$window" -silent 2>/dev/null | convert xwd:- "png:$picture" 2>/dev/null &&
        [ "$(convert "$picture" -format '%k' info:)" -gt 100 ]; then
       break

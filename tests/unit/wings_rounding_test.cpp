@@ -355,6 +355,17 @@ TEST_CASE("Rounding: radius limits and unsupported objects are refused with a re
   CHECK_THROWS_AS(roundMarkedEdges(cube, -1.0), RoundingError);
   const MarkedPolyhedron block = readShape("block.wings");
   CHECK(maximumRoundingRadius(block) == 0.375);
+  // Two layers of cubes: the upper cube's uprights end on the lower layer's top, between two
+  // concave edges, a corner the rounding has no patch for; the message names the vertex.
+  const MarkedPolyhedron steps = readShape("two_layers.wings");
+  CHECK_NOTHROW(roundMarkedEdges(steps, 0.0));
+  try {
+    roundMarkedEdges(steps, 0.1);
+    FAIL("two layers were rounded");
+  } catch (const RoundingError &error) {
+    CHECK(std::string(error.what()).find("vertex ") == 0);
+    CHECK(std::string(error.what()).find("creases meet there: concave rounded edge") != std::string::npos);
+  }
   // The Wings3D file's object has slanted edges.
   const MarkedPolyhedron axes = readShape("wings3d_axes.wings");
   CHECK_NOTHROW(roundMarkedEdges(axes, 0.0));
