@@ -3,10 +3,10 @@
  * default the L of three cubes l_block.wings; another file may be named on the command line),
  * whose edges marked hard in Wings3D are rounded by rational quadratic Bezier patches (glMap2f,
  * GL_MAP2_VERTEX_4, GL_AUTO_NORMAL): its upright edges into quarter cylinders at its convex
- * corners and concave fillets filling its inner corners; the rim of its top (when all its edges
- * are hard) into quarter cylinders along the sides, which meet an eighth of a sphere above a
- * rounded convex corner, a piece of a torus above a fillet, and each other in a mitre above a
- * sharp corner. The sphere and torus pieces are surfaces of revolution: the rim's quarter circle
+ * corners and concave fillets filling its inner corners; the rims of its top and its bottom
+ * (each when all its edges are hard) into quarter cylinders along the sides, which meet an eighth
+ * of a sphere at a rounded convex corner, a piece of a torus at a fillet, and each other in a
+ * mitre at a sharp corner. The sphere and torus pieces are surfaces of revolution: the rim's quarter circle
  * turned around the upright's axis by the upright's quarter circle, a rational bi-quadratic
  * patch whose weights are products of the two arcs' weights, exact as both arcs are (study
  * guide, section 2.4). A texture runs on across the rounded strips, planar shadows
@@ -96,7 +96,8 @@ static void make_texture(void)
 /* A flat rectangle corner + s*edge_s + t*edge_t cut into n x n quads, so that point and spot
  * lights (computed at vertices, GL 1.x section 2.14) show their fall-off across it. */
 static void grid(const float corner[3], const float edge_s[3], const float edge_t[3],
-                 const float normal[3], int n, float texture_s0, float texture_s1, float texture_t1)
+                 const float normal[3], int n, float texture_s0, float texture_s1, float texture_t0,
+                 float texture_t1)
 {
   glNormal3fv(normal);
   for (int j = 0; j < n; ++j) {
@@ -104,7 +105,7 @@ static void grid(const float corner[3], const float edge_s[3], const float edge_
     for (int i = 0; i <= n; ++i) {
       for (int k = 1; k >= 0; --k) {
         float s = (float)i / (float)n, t = (float)(j + k) / (float)n;
-        glTexCoord2f(texture_s0 + s * (texture_s1 - texture_s0), t * texture_t1);
+        glTexCoord2f(texture_s0 + s * (texture_s1 - texture_s0), texture_t0 + t * (texture_t1 - texture_t0));
         glVertex3f(corner[0] + s * edge_s[0] + t * edge_t[0],
                    corner[1] + s * edge_s[1] + t * edge_t[1],
                    corner[2] + s * edge_s[2] + t * edge_t[2]);
@@ -114,8 +115,21 @@ static void grid(const float corner[3], const float edge_s[3], const float edge_
   }
 }
 
-/* The radius the top's rim is rounded with: the current radius when it is marked hard. */
-static float rim_radius(void) { return plan.top_rounded ? radius : 0.0f; }
+/* The rims: the top's (TOP) and the bottom's (BOTTOM), each with its height and the direction
+ * out of the solid through it (+1 up, -1 down). */
+enum rim_level { BOTTOM, TOP };
+static double rim_height(enum rim_level level) { return level == TOP ? block_max[1] : block_min[1]; }
+static double rim_outward(enum rim_level level) { return level == TOP ? 1.0 : -1.0; }
+
+/* The radius a rim is rounded with: the current radius when its edges are marked hard. */
+static float rim_radius(enum rim_level level)
+{
+  return (level == TOP ? plan.top_rounded : plan.bottom_rounded) ? radius : 0.0f;
+}
+
+/* The texture's t on the sides at height y: 0 at the bottom, 1 at the top, the rims' arcs
+ * running on beyond the walls by their length. */
+static float side_t(double y) { return (float)((y - block_min[1]) / (block_max[1] - block_min[1])); }
 
 /* The point of the rational patch net[v][u] (3 x 3 or 2 rows of 3, homogeneous) at (u, v). */
 static void patch_point(const float net[][3][4], int rows, double u, double v, double out[3])
@@ -142,13 +156,15 @@ static void reverse_rows(float *data, int rows, int length)
 
 /* Draws the rational patch net[v][u] (rows = 2 or 3 rows of 3 homogeneous points) with texture
  * coordinates tex[v][u], by glMap2f and glEvalMesh2, its rows turned round when dP/du x dP/dv
- * points down at its middle (so every patch of the rim faces up and out, for its winding).
+ * points into the solid at its middle (so every patch of the top's rim faces up and out, of the
+ * bottom's down and out, for its winding).
  * Its normals come from a map of their own, not from GL_AUTO_NORMAL, whose dP/du x dP/dv vanishes
  * where a sphere's net closes in a pole (GL 1.x section 5.1): the rim is at distance R from its
  * centres (centre[v][u] is the centre nearest each control point, or the control point's on the
  * centre circle for the corners), so w(u, v) (P(u, v) - centre) is a polynomial patch with
  * control points w_ij (P_ij - centre_ij) and, with GL_NORMALIZE, gives the exact unit normal. */
-static void draw_rim_patch(float net[][3][4], float tex[][3][2], const double centre[][3][3], int rows)
+static void draw_rim_patch(float net[][3][4], float tex[][3][2], const double centre[][3][3], int rows,
+                           enum rim_level level)
 {
   float normals[3][3][3];
   for (int j = 0; j < rows; ++j)
@@ -160,7 +176,7 @@ static void draw_rim_patch(float net[][3][4], float tex[][3][2], const double ce
   patch_point((const float (*)[3][4])net, rows, 0.5, 0.4, c);
   patch_point((const float (*)[3][4])net, rows, 0.5, 0.6, d);
   const double du[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, dv[3] = {d[0] - c[0], d[1] - c[1], d[2] - c[2]};
-  if (du[2] * dv[0] - du[0] * dv[2] < 0) {
+  if ((du[2] * dv[0] - du[0] * dv[2]) * rim_outward(level) < 0) {
     reverse_rows(&net[0][0][0], rows, 3 * 4);
     reverse_rows(&tex[0][0][0], rows, 3 * 2);
     reverse_rows(&normals[0][0][0], rows, 3 * 3);
@@ -199,7 +215,7 @@ static void control_point(float out[4], double x, double y, double z, double w)
 static void rounded_edge(const float from[2], const float corner[2], const float to[2], float s0)
 {
   const float w = (float)(sqrt(2.0) / 2.0);
-  const float y0 = block_min[1], y1 = block_max[1] - rim_radius();
+  const float y0 = block_min[1] + rim_radius(BOTTOM), y1 = block_max[1] - rim_radius(TOP);
   float points[2][3][4]; /* [v][u][xyzw] */
   for (int v = 0; v < 2; ++v) {
     float y = v ? y1 : y0;
@@ -213,8 +229,8 @@ static void rounded_edge(const float from[2], const float corner[2], const float
     }
   }
   float arc = (float)(PI / 2.0) * radius;
-  const float t1 = (y1 - y0) / (block_max[1] - block_min[1]);
-  float texture_points[2][3][2] = {{{s0, 0}, {s0 + arc / 2, 0}, {s0 + arc, 0}},
+  const float t0 = side_t(y0), t1 = side_t(y1);
+  float texture_points[2][3][2] = {{{s0, t0}, {s0 + arc / 2, t0}, {s0 + arc, t0}},
                                    {{s0, t1}, {s0 + arc / 2, t1}, {s0 + arc, t1}}};
   glMap2f(GL_MAP2_VERTEX_4, 0, 1, 4, 3, 0, 1, 12, 2, &points[0][0][0]);
   glMap2f(GL_MAP2_TEXTURE_COORD_2, 0, 1, 2, 3, 0, 1, 6, 2, &texture_points[0][0][0]);
@@ -272,14 +288,14 @@ static void upright_axis(int i, double out[2])
   for (int k = 0; k < 2; ++k) out[k] = (double)from[k] + (double)to[k] - plan.xz[i][k];
 }
 
-/* Where the top meets the rim at corner k, in (x, z): above a rounded upright, its axis (a
- * convex corner, where the sphere closes) or the arc twice as far from it (a concave one, the
- * torus's inner rim, drawn by the caller); above a sharp upright, R in from both sides: the
- * mitre's top. */
-static void rim_top_corner(int k, double out[2])
+/* Where the top (or the bottom) meets its rim at corner k, in (x, z): above a rounded upright,
+ * its axis (a convex corner, where the sphere closes) or the arc twice as far from it (a concave
+ * one, the torus's inner rim, drawn by the caller); above a sharp upright, R in from both sides:
+ * the mitre's top. */
+static void rim_top_corner(int k, enum rim_level level, double out[2])
 {
   const int n = plan.corners;
-  const double r = rim_radius();
+  const double r = rim_radius(level);
   if (plan.rounded[k] && radius > 0) {
     upright_axis(k, out);
     return;
@@ -296,11 +312,11 @@ static void rim_top_corner(int k, double out[2])
  * the corner; above a sharp one it ends in the corner's bisecting plane (the mitre the
  * neighbouring side's strip ends in too), its top point moved along the side by R. The texture's
  * s runs along the side as the wall's does; t on up from the wall's top by the arc's length. */
-static void rim_strip(int i, float s0, float s1)
+static void rim_strip(int i, enum rim_level level, float s0, float s1)
 {
   const int n = plan.corners;
-  const double r = rim_radius(), w = sqrt(2.0) / 2.0;
-  const double top = block_max[1], height = block_max[1] - block_min[1];
+  const double r = rim_radius(level), w = sqrt(2.0) / 2.0;
+  const double top = rim_height(level), out = rim_outward(level), height = block_max[1] - block_min[1];
   float net[2][3][4], tex[2][3][2];
   double centre[2][3][3];
   /* The strip's axis: R in from side i and R below the top. */
@@ -323,13 +339,13 @@ static void rim_strip(int i, float s0, float s1)
       }
     } else {
       for (int c = 0; c < 2; ++c) edge[c] = plan.xz[k][c];
-      rim_top_corner(k, on_top);
+      rim_top_corner(k, level, on_top);
     }
-    control_point(net[end][0], edge[0], top - r, edge[1], 1.0);
+    control_point(net[end][0], edge[0], top - out * r, edge[1], 1.0);
     control_point(net[end][1], edge[0], top, edge[1], w);
     control_point(net[end][2], on_top[0], top, on_top[1], 1.0);
     const float s = end ? s1 : s0;
-    const float t0 = (float)((height - r) / height), t2 = (float)((height - r + PI / 2 * r) / height);
+    const float t0 = side_t(top - out * r), t2 = (float)(t0 + out * PI / 2 * r / height);
     const float ts[3] = {t0, (t0 + t2) / 2, t2};
     for (int u = 0; u < 3; ++u) {
       tex[end][u][0] = s;
@@ -337,11 +353,11 @@ static void rim_strip(int i, float s0, float s1)
       const double x = net[end][u][0] / net[end][u][3], z = net[end][u][2] / net[end][u][3];
       const double on_axis = (x - axis[0]) * along[0] + (z - axis[1]) * along[1];
       centre[end][u][0] = axis[0] + on_axis * along[0];
-      centre[end][u][1] = top - r;
+      centre[end][u][1] = top - out * r;
       centre[end][u][2] = axis[1] + on_axis * along[1];
     }
   }
-  draw_rim_patch(net, tex, (const double (*)[3][3])centre, 2);
+  draw_rim_patch(net, tex, (const double (*)[3][3])centre, 2, level);
 }
 
 /* Above the rounded upright at corner i, where the rim's strips of its two sides end: the rim's
@@ -350,21 +366,21 @@ static void rim_strip(int i, float s0, float s1)
  * below the top and at the top edge) and, at the top, 0 at a convex corner (the net closes in a
  * pole: an eighth of a sphere) or 2 at a concave one (a quarter of the inner half of a torus of
  * radii 2 R and R around the fillet's axis). */
-static void rim_corner(int i, float s0)
+static void rim_corner(int i, enum rim_level level, float s0)
 {
-  const double r = rim_radius(), w = sqrt(2.0) / 2.0;
-  const double top = block_max[1], height = block_max[1] - block_min[1];
+  const double r = rim_radius(level), w = sqrt(2.0) / 2.0;
+  const double top = rim_height(level), out = rim_outward(level), height = block_max[1] - block_min[1];
   float from[2], to[2];
   corner_ends(i, from, to);
   double axis[2];
   upright_axis(i, axis);
   const double arc[3][2] = {{from[0], from[1]}, {plan.xz[i][0], plan.xz[i][1]}, {to[0], to[1]}};
   const double arc_weight[3] = {1.0, w, 1.0};
-  const double scale[3] = {1.0, 1.0, plan.convex[i] ? 0.0 : 2.0}, y[3] = {top - r, top, top};
+  const double scale[3] = {1.0, 1.0, plan.convex[i] ? 0.0 : 2.0}, y[3] = {top - out * r, top, top};
   float net[3][3][4], tex[3][3][2];
   double centre[3][3][3];
   const float length = (float)(PI / 2) * radius;
-  const float t0 = (float)((height - r) / height), t2 = (float)((height - r + PI / 2 * r) / height);
+  const float t0 = side_t(top - out * r), t2 = (float)(t0 + out * PI / 2 * r / height);
   for (int j = 0; j < 3; ++j)
     for (int u = 0; u < 3; ++u) {
       control_point(net[j][u], axis[0] + scale[j] * (arc[u][0] - axis[0]), y[j],
@@ -373,10 +389,10 @@ static void rim_corner(int i, float s0)
       tex[j][u][1] = t0 + (t2 - t0) * (float)j / 2;
       /* The tube's centre circle: the top row's arc, R below the top. */
       centre[j][u][0] = axis[0] + scale[2] * (arc[u][0] - axis[0]);
-      centre[j][u][1] = top - r;
+      centre[j][u][1] = top - out * r;
       centre[j][u][2] = axis[1] + scale[2] * (arc[u][1] - axis[1]);
     }
-  draw_rim_patch(net, tex, (const double (*)[3][3])centre, 3);
+  draw_rim_patch(net, tex, (const double (*)[3][3])centre, 3, level);
 }
 
 static void GLAPIENTRY top_vertex(void *data)
@@ -386,21 +402,22 @@ static void GLAPIENTRY top_vertex(void *data)
   glVertex3dv(p);
 }
 
-/* The top: the outline with its rounded corners, which may be concave, so GLU's tessellator cuts
- * it into triangles (facing up: the normal is given). */
-static void block_top(void)
+/* The top or the bottom: the outline with its rounded corners, which may be concave, so GLU's
+ * tessellator cuts it into triangles (facing up or down: the normal is given). */
+static void block_end(enum rim_level level)
 {
   static GLUtesselator *tess;
   static GLdouble (*outline)[3];
   static int capacity;
+  const double r = rim_radius(level), y = rim_height(level), out = rim_outward(level);
   const int needed = plan.corners * (ARC_STEPS + 1);
   if (!tess) {
     tess = gluNewTess();
     gluTessCallback(tess, GLU_TESS_BEGIN, (void (GLAPIENTRY *)(void))glBegin);
     gluTessCallback(tess, GLU_TESS_VERTEX, (void (GLAPIENTRY *)(void))top_vertex);
     gluTessCallback(tess, GLU_TESS_END, (void (GLAPIENTRY *)(void))glEnd);
-    gluTessNormal(tess, 0, 1, 0);
   }
+  gluTessNormal(tess, 0, out, 0);
   if (capacity < needed) {
     free(outline);
     outline = malloc((size_t)needed * sizeof *outline);
@@ -411,17 +428,17 @@ static void block_top(void)
   for (int i = 0; i < plan.corners; ++i) {
     float from[2], to[2], corner[2] = {(float)plan.xz[i][0], (float)plan.xz[i][1]};
     corner_ends(i, from, to);
-    if (rim_radius() > 0 && !(plan.rounded[i] && !plan.convex[i])) {
-      /* The rounded rim moved the top's corner in (a sphere's pole or a mitre's top). */
+    if (r > 0 && !(plan.rounded[i] && !plan.convex[i])) {
+      /* The rounded rim moved the corner in (a sphere's pole or a mitre's top). */
       double at[2];
-      rim_top_corner(i, at);
+      rim_top_corner(i, level, at);
       outline[count][0] = at[0];
-      outline[count][1] = block_max[1];
+      outline[count][1] = y;
       outline[count][2] = at[1];
       ++count;
       continue;
     }
-    if (rim_radius() > 0) {
+    if (r > 0) {
       /* Above a fillet: the torus's inner rim, the fillet's arc scaled by 2 from its axis. */
       double axis[2];
       upright_axis(i, axis);
@@ -432,9 +449,12 @@ static void block_top(void)
       }
     }
     const int steps = plan.rounded[i] && radius > 0 ? ARC_STEPS : 0;
-    for (int step = 0; step <= steps; ++step) arc_point(from, corner, to, (double)step / ARC_STEPS, outline[count++]);
+    for (int step = 0; step <= steps; ++step) {
+      arc_point(from, corner, to, (double)step / ARC_STEPS, outline[count]);
+      outline[count++][1] = y;
+    }
   }
-  glNormal3f(0, 1, 0);
+  glNormal3f(0, (float)out, 0);
   gluTessBeginPolygon(tess, NULL);
   gluTessBeginContour(tess);
   for (int k = 0; k < count; ++k) gluTessVertex(tess, outline[k], outline[k]);
@@ -447,7 +467,8 @@ static void block_top(void)
 static void block(int textured)
 {
   const float height = block_max[1] - block_min[1];
-  const float up[3] = {0, height - rim_radius(), 0};
+  const float low = rim_radius(BOTTOM), high = rim_radius(TOP);
+  const float up[3] = {0, height - low - high, 0};
   float s = 0;
   if (textured) {
     glEnable(GL_TEXTURE_2D);
@@ -461,20 +482,23 @@ static void block(int textured)
     corner_ends(next, next_from, unused);
     if (plan.rounded[i] && radius > 0) {
       rounded_edge(from, corner, to, s);
-      if (rim_radius() > 0) rim_corner(i, s);
+      if (high > 0) rim_corner(i, TOP, s);
+      if (low > 0) rim_corner(i, BOTTOM, s);
       s += (float)(PI / 2) * radius;
     }
     /* The side from this corner to the next; outwards is to the right of the walk. */
     const float along[3] = {next_from[0] - to[0], 0, next_from[1] - to[1]};
     const float length = sqrtf(along[0] * along[0] + along[2] * along[2]);
     if (length <= 0) continue;
-    const float base[3] = {to[0], block_min[1], to[1]};
+    const float base[3] = {to[0], block_min[1] + low, to[1]};
     const float normal[3] = {-along[2] / length, 0, along[0] / length};
-    grid(base, along, up, normal, 4, s, s + length, (height - rim_radius()) / height);
-    if (rim_radius() > 0) rim_strip(i, s, s + length);
+    grid(base, along, up, normal, 4, s, s + length, side_t(base[1]), side_t(block_max[1] - high));
+    if (high > 0) rim_strip(i, TOP, s, s + length);
+    if (low > 0) rim_strip(i, BOTTOM, s, s + length);
     s += length;
   }
-  block_top();
+  block_end(TOP);
+  block_end(BOTTOM);
   if (textured) glDisable(GL_TEXTURE_2D);
 }
 
@@ -488,13 +512,13 @@ static void surface(int index)
   const float size = 2 * ROOM;
   if (index == 0) {
     const float corner[3] = {-ROOM, 0, ROOM}, s[3] = {size, 0, 0}, t[3] = {0, 0, -size};
-    grid(corner, s, t, surfaces[0], 20, 0, 1, 1);
+    grid(corner, s, t, surfaces[0], 20, 0, 1, 0, 1);
   } else if (index == 1) {
     const float corner[3] = {-ROOM, 0, -ROOM}, s[3] = {size, 0, 0}, t[3] = {0, WALL_HEIGHT, 0};
-    grid(corner, s, t, surfaces[1], 20, 0, 1, 1);
+    grid(corner, s, t, surfaces[1], 20, 0, 1, 0, 1);
   } else {
     const float corner[3] = {-ROOM, 0, ROOM}, s[3] = {0, 0, -size}, t[3] = {0, WALL_HEIGHT, 0};
-    grid(corner, s, t, surfaces[2], 20, 0, 1, 1);
+    grid(corner, s, t, surfaces[2], 20, 0, 1, 0, 1);
   }
 }
 
@@ -747,7 +771,7 @@ static void load_object(int argc, char **argv)
   }
   if (plan.sharp_hard_edges > 0)
     fprintf(stderr, "homework45: %s: %d hard edges stay sharp (this program rounds the upright edges, and "
-            "the top's rim when all its edges are hard)\n", path, plan.sharp_hard_edges);
+            "the top's and the bottom's rims when all the edges of each are hard)\n", path, plan.sharp_hard_edges);
   block_min[0] = (float)plan.min_x, block_max[0] = (float)plan.max_x;
   block_min[1] = (float)plan.bottom, block_max[1] = (float)plan.top;
   block_min[2] = (float)plan.min_z, block_max[2] = (float)plan.max_z;

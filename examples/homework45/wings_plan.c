@@ -298,12 +298,24 @@ int wings_read_floor_plan(const char *path, struct floor_plan *plan, char *error
     }
     /* Hard edges: uprights round their corner; those around the top round its rim when all of
      * them are hard; others stay sharp here. */
-    long rim_edges = 0, hard_rim_edges = 0;
-    for (long e = 0; e < object.edge_count; ++e) {
+    long rim_edges = 0, hard_rim_edges = 0, bottom_rim_edges = 0, hard_bottom_rim_edges = 0;
+    /* The bottom's rim: edges along the bottom between a bottom face and a side face (one
+     * layer of cubes: a side face has vertices at the top too). */
+    int *on_bottom = calloc((size_t)object.face_count + 1, sizeof *on_bottom);
+    if (!on_bottom) ok = failed(error, error_size, "out of memory");
+    for (long f = 0; ok && f < object.face_count; ++f) on_bottom[f] = 1;
+    for (long e = 0; ok && e < object.edge_count; ++e) {
+      const struct winged_edge *edge = &object.edges[e];
+      if (fabs(object.position[edge->vs][1] - plan->bottom) > tolerance ||
+          fabs(object.position[edge->ve][1] - plan->bottom) > tolerance)
+        on_bottom[edge->lf] = on_bottom[edge->rf] = 0;
+    }
+    for (long e = 0; ok && e < object.edge_count; ++e) {
       const struct winged_edge *edge = &object.edges[e];
       rim_edges += outline_next[edge->vs] == edge->ve || outline_next[edge->ve] == edge->vs;
+      bottom_rim_edges += on_bottom[edge->lf] != on_bottom[edge->rf];
     }
-    for (size_t h = 0; h < object.hard->length; ++h) {
+    for (size_t h = 0; ok && h < object.hard->length; ++h) {
       long e;
       if (!index_in(&object.hard->items[h], object.edge_count, &e)) {
         ok = failed(error, error_size, "object 1, hard edge %zu: not an edge's number", h);
@@ -312,18 +324,23 @@ int wings_read_floor_plan(const char *path, struct floor_plan *plan, char *error
       const struct winged_edge *edge = &object.edges[e];
       const double *a = object.position[edge->vs], *b = object.position[edge->ve];
       const int upright = a[0] == b[0] && a[2] == b[2];
-      const int on_top = fabs(a[1] - plan->top) <= tolerance && fabs(b[1] - plan->top) <= tolerance;
       const int rim = outline_next[edge->vs] == edge->ve || outline_next[edge->ve] == edge->vs;
+      const int bottom_rim = on_bottom[edge->lf] != on_bottom[edge->rf];
       for (int i = 0; i < plan->corners && upright; ++i)
         if (plan->xz[i][0] == a[0] && plan->xz[i][1] == a[2]) plan->rounded[i] = 1;
-      /* (A hard upright in the middle of a straight side, or a hard edge between two top faces,
-       * has nothing to round.) */
+      /* (A hard upright in the middle of a straight side, or a hard edge between two top or two
+       * bottom faces, has nothing to round.) */
       if (rim) ++hard_rim_edges;
-      else if (!upright && !on_top) ++plan->sharp_hard_edges;
+      else if (bottom_rim) ++hard_bottom_rim_edges;
     }
     plan->top_rounded = hard_rim_edges > 0 && hard_rim_edges == rim_edges;
+    plan->bottom_rounded = hard_bottom_rim_edges > 0 && hard_bottom_rim_edges == bottom_rim_edges;
     if (!plan->top_rounded) plan->sharp_hard_edges += (int)hard_rim_edges;
-    else plan->max_radius = fmin(plan->max_radius, (plan->top - plan->bottom) / 2);
+    if (!plan->bottom_rounded) plan->sharp_hard_edges += (int)hard_bottom_rim_edges;
+    /* Two rounded rims share the height; one takes at most half of it, as on a face's side. */
+    if (plan->top_rounded || plan->bottom_rounded)
+      plan->max_radius = fmin(plan->max_radius, (plan->top - plan->bottom) / 2);
+    free(on_bottom);
   }
   free(outline_next);
   free(object.position);

@@ -16,9 +16,11 @@ struct floor_plan {
   double bottom, top; /* heights */
   double min_x, max_x, min_z, max_z;
   int top_rounded;    /* whether every edge around the top is hard (the top's rim is rounded) */
-  double max_radius;  /* half the outline's shortest side (and of the height, top_rounded) */
-  int sharp_hard_edges; /* hard edges this program leaves sharp: along the bottom, or some but
-                           not all of those around the top */
+  int bottom_rounded; /* whether every edge around the bottom is hard */
+  double max_radius;  /* half the outline's shortest side (and of the height, with a rim
+                         rounded) */
+  int sharp_hard_edges; /* hard edges this program leaves sharp: some but not all of those
+                           around the top or around the bottom */
 };
 
 /* Reads the first object of a .wings file. Returns 0 and writes the reason into `error` when the

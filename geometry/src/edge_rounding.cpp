@@ -202,8 +202,18 @@ bool faceHasEdge(const Topology& topo, std::size_t face, std::size_t edge) {
 // face, b in its right face, the three at right angles, and the end face's two flat edges running
 // on from b's and a's lines backwards (flatA along -a, flatB along -b). There a torus piece joins
 // the fillet and the two strips (see edge_rounding.h).
+// One of a and b may be a sharp crease (sharpA, sharpB): the torus piece then still turns the
+// rounded one's quarter circle all the way round to the sharp one's line, and ends there in a flat
+// cap (see edge_rounding.h).
 struct TorusCorner {
   std::size_t c = 0, a = 0, b = 0, flatA = 0, flatB = 0;
+  bool sharpA = false, sharpB = false;
+  // The sharp one of a and b, when there is one.
+  std::optional<std::size_t> sharp() const {
+    if (sharpA) return a;
+    if (sharpB) return b;
+    return std::nullopt;
+  }
 };
 
 std::optional<TorusCorner> torusCornerAt(const Topology& topo, std::uint32_t v) {
@@ -215,11 +225,13 @@ std::optional<TorusCorner> torusCornerAt(const Topology& topo, std::uint32_t v) 
     if (edge.right < 0) return std::nullopt;
     const Dihedral dihedral = dihedralOf(topo, edge);
     if (dihedral == Dihedral::Flat) flat.push_back(e);
-    else if (!edge.rounded) return std::nullopt;
     else if (dihedral == Dihedral::Concave) concave.push_back(e);
     else convex.push_back(e);
   }
   if (concave.size() != 1 || convex.size() != 2 || flat.size() != 2) return std::nullopt;
+  // The fillet and at least one of the convex creases rounded (both sharp: the fillet's web).
+  if (!topo.edges()[concave[0]].rounded || (!topo.edges()[convex[0]].rounded && !topo.edges()[convex[1]].rounded))
+    return std::nullopt;
   TorusCorner corner;
   corner.c = concave[0];
   const auto left = static_cast<std::size_t>(topo.edges()[corner.c].left);
@@ -239,6 +251,8 @@ std::optional<TorusCorner> torusCornerAt(const Topology& topo, std::uint32_t v) 
     else return std::nullopt;
   }
   if (corner.flatA == corner.flatB) return std::nullopt;
+  corner.sharpA = !topo.edges()[corner.a].rounded;
+  corner.sharpB = !topo.edges()[corner.b].rounded;
   return corner;
 }
 
@@ -275,8 +289,8 @@ void checkCorner(const Topology& topo, std::uint32_t v) {
                         (edge.rounded ? " and other creases that are rounded or not at right angles"
                                       : ", which is not rounded") +
                         "; a rounded concave edge must end where its two other creases are convex and at right "
-                        "angles, both sharp or both rounded (with the end face split by flat edges along their "
-                        "continuations)");
+                        "angles, and where one of them is rounded, the end face must be split by flat edges along "
+                        "their continuations");
   }
   if (creases.size() == 3 && all.size() == 3 && perpendicular(creases[0], creases[1]) &&
       perpendicular(creases[1], creases[2]) && perpendicular(creases[0], creases[2]))
@@ -346,6 +360,12 @@ struct CornerPiece {
   // the face's two edges there; the point beside a rounded one of them is v moved along both.
   bool torus = false;
   std::vector<TorusArc> torusArcs;
+  // The end face beside the sharp crease at a torus corner with one (see TorusCorner): after its
+  // arcs (or before them), the segment along the cap's side to the point where its sharp edge
+  // starts.
+  bool step = false;
+  bool stepAtEnd = false;
+  glm::dvec3 stepPoint{0.0};
 };
 
 class RoundingBuilder {
@@ -417,12 +437,15 @@ class RoundingBuilder {
     const auto [piece2, piece3] = secondHalf.subdivideU(1.0 - thirty_);
     const BezierSurface* pieces[] = {&piece0, &piece1, &piece2, &piece3};
     const std::size_t endFaces[] = {besideA, between, between, besideB};
+    // The patches of piece 0 (a's end, u = 0) and piece 3 (b's end, u = 1), for a cap there.
+    std::vector<std::size_t> endPatches[2];
     for (int k = 0; k < 4; ++k) {
       const auto [nearEnd, nearFillet] = pieces[k]->subdivideV(0.5);
       info.face = static_cast<int>(endFaces[k]);
       info.faceNormal = endNormal;
       info.acrossNormals.clear();
       const bool flipped = add(nearEnd, info);
+      if (k == 0 || k == 3) endPatches[k / 3].push_back(surface_.patches.size() - 1);
       TorusArc arc;
       for (int i = 0; i < 3; ++i) arc.row[static_cast<std::size_t>(i)] = nearEnd.homogeneousControlPoint(i, 0);
       arc.face = endFaces[k];
@@ -433,7 +456,40 @@ class RoundingBuilder {
       info.faceNormal = -topo_.normal(face);
       info.acrossNormals = {-topo_.normal(other)};
       add(nearFillet, info);
+      if (k == 0 || k == 3) endPatches[k / 3].push_back(surface_.patches.size() - 1);
     }
+    if (const auto sharp = t.sharp()) addCap(v, t, *sharp, t.sharpA ? PatchSide::UMin : PatchSide::UMax, endPatches[t.sharpA ? 0 : 1]);
+  }
+
+  // The cap where a torus piece ends at a sharp crease s (a or b): the piece of the plane normal
+  // to s through the torus's end arc (the rounded crease's quarter circle, turned round to s's
+  // line) between that arc and its middle control point, s's end R along it. The solid beyond
+  // keeps its sharp crease; the cap is the step between the two, a crease all round. It takes
+  // the chart of the face holding s and the fillet.
+  void addCap(std::uint32_t v, const TorusCorner& t, std::size_t sharp, PatchSide side, const std::vector<std::size_t>& torusPatches) {
+    const std::size_t partner = sharp == t.a ? t.flatB : t.flatA;  // the end face's flat edge across it
+    const glm::dvec3 corner = offsetPoint(v, {sharp});
+    const glm::dvec3 onFace = offsetPoint(v, {sharp, t.c}), onEnd = offsetPoint(v, {sharp, partner});
+    const glm::dvec3 normal = -topo_.direction(v, sharp);
+    const EdgeRecord& fillet = topo_.edges()[t.c];
+    const auto face = static_cast<std::size_t>(faceHasEdge(topo_, static_cast<std::size_t>(fillet.left), sharp) ? fillet.left : fillet.right);
+    RoundedPatchInfo info;
+    info.face = static_cast<int>(face);
+    info.capNormal = normal;
+    FaceOutline outline;
+    outline.face = static_cast<int>(face);
+    outline.normal = normal;
+    std::vector<PatchSideRef> along;
+    for (std::size_t patch : torusPatches) along.push_back({patch, side});
+    if (glm::dot(glm::cross(onFace - corner, onEnd - corner), normal) > 0.0) {  // counter-clockwise
+      outline.pieces = {{corner, onFace, {}}, {onFace, onEnd, along}, {onEnd, corner, {}}};
+    } else {
+      outline.pieces = {{corner, onEnd, {}}, {onEnd, onFace, along}, {onFace, corner, {}}};
+    }
+    surface_.outlines.push_back(std::move(outline));
+    const auto [nearFace, nearEnd] = quarterMoon(onFace, corner, onEnd);
+    add(nearFace, info, normal);
+    add(nearEnd, info, normal);
   }
 
   const std::vector<bool>& touched() const { return touched_; }
@@ -470,6 +526,14 @@ class RoundingBuilder {
       }
       piece.start = projected(piece.torusArcs.front().row[0]);
       piece.end = projected(piece.torusArcs.back().row[2]);
+      const auto sharp = t.sharp();
+      if (sharp && faceHasEdge(topo_, f, *sharp)) {
+        // The sharp crease's end of the arcs: a's comes first in u order, b's last.
+        piece.step = true;
+        piece.stepAtEnd = t.sharpB != (rank(previous) > rank(next));
+        piece.stepPoint = offsetPoint(v, {*sharp});
+        (piece.stepAtEnd ? piece.end : piece.start) = piece.stepPoint;
+      }
       return piece;
     }
     if (previousRounded || nextRounded) {
@@ -501,9 +565,18 @@ class RoundingBuilder {
     const std::size_t count = face.vertices.size();
     std::vector<CornerPiece> corners;
     for (std::size_t i = 0; i < count; ++i) corners.push_back(corner(f, i));
+    // The fan's centre. A face with a cap's step at a corner is not convex there (the torus
+    // takes a rounded bite out of it beside the step); the fan then starts from the middle of its
+    // other corners, which sees the bite's whole outline.
+    const bool stepped = std::any_of(corners.begin(), corners.end(), [](const CornerPiece& c) { return c.step; });
     glm::dvec3 centre(0.0);
-    for (const CornerPiece& c : corners) centre += c.start + c.end;
-    centre /= static_cast<double>(2 * count);
+    std::size_t summed = 0;
+    for (const CornerPiece& c : corners) {
+      if (stepped && c.step) continue;
+      centre += c.start + c.end;
+      summed += 2;
+    }
+    centre /= static_cast<double>(summed);
     const glm::dvec3 normal = topo_.normal(f);
     RoundedPatchInfo info;
     info.face = static_cast<int>(f);
@@ -511,6 +584,12 @@ class RoundingBuilder {
     outline.face = static_cast<int>(f);
     for (std::size_t i = 0; i < count; ++i) {
       const CornerPiece& c = corners[i];
+      auto addStepSide = [&](const glm::dvec3& from, const glm::dvec3& to) {
+        outline.pieces.push_back({from, to, {}});
+        const glm::dvec3 points[] = {from, centre, to, centre};
+        add(BezierSurface(1, 1, points), info, normal);
+      };
+      if (c.step && !c.stepAtEnd) addStepSide(c.stepPoint, projected(c.torusArcs.front().row[0]));
       for (const TorusArc& arc : c.torusArcs) {
         outline.pieces.push_back({projected(arc.row[0]), projected(arc.row[2]), {arc.along}});
         const glm::dvec4 net[] = {arc.row[0], glm::dvec4(centre * arc.row[0].w, arc.row[0].w),
@@ -518,6 +597,7 @@ class RoundingBuilder {
                                   arc.row[2], glm::dvec4(centre * arc.row[2].w, arc.row[2].w)};
         add(BezierSurface::fromHomogeneous(2, 1, std::vector<glm::dvec4>(std::begin(net), std::end(net))), info, normal);
       }
+      if (c.step && c.stepAtEnd) addStepSide(projected(c.torusArcs.back().row[2]), c.stepPoint);
       if (c.arc) {
         const std::uint32_t v = face.vertices[i];
         outline.pieces.push_back({c.start, c.end, {}});
@@ -537,6 +617,14 @@ class RoundingBuilder {
       // beside it ends, so that the two meet at the same point.
       std::vector<glm::dvec3> stops{a};
       for (std::uint32_t end : {from, to}) {
+        // A side along a fillet that ends at a torus corner with a sharp crease in this face: split
+        // where the fillet ends and the cap above it begins.
+        const auto torus = tori_.find(end);
+        if (torus != tori_.end() && edge == torus->second.c) {
+          const auto sharp = torus->second.sharp();
+          if (sharp && faceHasEdge(topo_, f, *sharp)) stops.push_back(offsetPoint(end, {*sharp, edge}));
+          continue;
+        }
         const auto concave = concaveEndAt(topo_, end);
         if (!concave || faceHasEdge(topo_, f, *concave) || dihedralOf(topo_, topo_.edges()[edge]) == Dihedral::Flat)
           continue;
@@ -577,6 +665,16 @@ class RoundingBuilder {
     // the end face's edges there, as the torus's net has it.
     auto beside = [&](std::uint32_t v, const CornerPiece& c) { return c.torus ? offsetPoint(v, c.terms) : c.start; };
     auto end = [&](std::uint32_t v, glm::dvec3& onLeft, glm::dvec3& middle, glm::dvec3& onRight) {
+      const auto torus = tori_.find(v);
+      if (torus != tori_.end() && torus->second.c == edgeIndex) {
+        // A fillet ends where the torus piece begins, R below the end face, on both faces (the
+        // one beside a sharp crease keeps its corner above, beside the cap).
+        const TorusCorner& t = torus->second;
+        onLeft = offsetPoint(v, {t.a, edgeIndex});
+        middle = offsetPoint(v, {edgeIndex});
+        onRight = offsetPoint(v, {t.b, edgeIndex});
+        return;
+      }
       const CornerPiece l = cornerAt(left, v), r = cornerAt(right, v);
       onLeft = beside(v, l);
       onRight = beside(v, r);
@@ -624,6 +722,8 @@ class RoundingBuilder {
     // A mitre at v: only one of the two faces' corners moved along the edge; the half on that
     // face (which holds the other rounded edge) slides.
     auto mitre = [&](std::uint32_t v, std::size_t face, std::size_t other) {
+      const auto torus = tori_.find(v);
+      if (torus != tori_.end() && torus->second.c == edgeIndex) return glm::dvec3(0.0);  // a fillet's torus end
       const bool here = movedAlong(cornerAt(face, v)), there = movedAlong(cornerAt(other, v));
       return here && !there ? topo_.direction(v, edgeIndex) : glm::dvec3(0.0);
     };
@@ -680,15 +780,44 @@ class RoundingBuilder {
     add(equatorB, forFace(faceBC, faceAB, faceCA));
   }
 
-  // The flat web at v, where the concave rounded edge c ends between two sharp edges: the piece
-  // of the end plane between those edges and the strip's end arc (whose middle control point is
-  // v itself), split in the middle as the strip is. It belongs to a face of that plane beside it
-  // (for its chart and material). Each half is ruled between its arc half and the sharp edge's
-  // segment from the arc's end to v (a fan from v would have its rulings along the arc's tangents
-  // at both ends, the web's cusps, and no normal along them). The segment is a rational quadratic
-  // with the arc's end weights w0, w2, middle weight (w0 + w2) / 2 and middle point
+  // The flat piece of a plane between a quarter arc (from a to b, its middle control point
+  // `corner`) and the two segments from its ends to `corner`, in two halves as the arc is split
+  // (first the one at a). Each half is ruled between its arc half and the segment from its cusp
+  // to the corner (a fan from the corner would have its rulings along the arc's tangents at both
+  // ends, the cusps, and no normal along them). The segment is a rational quadratic with the
+  // arc's end weights w0, w2, middle weight (w0 + w2) / 2 and middle point
   // (w2 P0 + w0 P2) / (w0 + w2): then its denominator is linear and the point moves along the
   // segment in proportion to u, as the neighbouring face's side does.
+  std::pair<BezierSurface, BezierSurface> quarterMoon(const glm::dvec3& a, const glm::dvec3& corner, const glm::dvec3& b) const {
+    const glm::dvec3 points[] = {a, corner, corner, corner, b, corner};
+    const double weights[] = {1.0, 1.0, weight_, weight_, 1.0, 1.0};
+    const auto [nearA, nearB] = BezierSurface(2, 1, points, weights).subdivideU(0.5);
+    // Row v = 1 of each half: from its cusp (a at u = 0, b at u = 1) along the segment to the
+    // corner. The arc half's middle control point lies on that segment (the arc's tangent at the
+    // cusp).
+    auto ruled = [&](const BezierSurface& half, int cusp) {
+      const glm::dvec4 first = half.homogeneousControlPoint(0, 0), last = half.homogeneousControlPoint(2, 0);
+      const double w0 = first.w, w2 = last.w;
+      const glm::dvec3 p0 = cusp == 0 ? glm::dvec3(first) / w0 : corner;
+      const glm::dvec3 p2 = cusp == 0 ? corner : glm::dvec3(last) / w2;
+      const double middleWeight = (w0 + w2) / 2.0;
+      const glm::dvec3 middle = (w2 * p0 + w0 * p2) / (w0 + w2);
+      const glm::dvec4 edgeRow[] = {glm::dvec4(p0 * w0, w0), glm::dvec4(middle * middleWeight, middleWeight),
+                                    glm::dvec4(p2 * w2, w2)};
+      std::vector<glm::dvec4> net;
+      for (int i = 0; i < 3; ++i) {
+        net.push_back(half.homogeneousControlPoint(i, 0));
+        net.push_back(edgeRow[i]);
+      }
+      return BezierSurface::fromHomogeneous(2, 1, std::move(net));
+    };
+    return {ruled(nearA, 0), ruled(nearB, 2)};
+  }
+
+  // The flat web at v, where the concave rounded edge c ends between two sharp edges: the piece
+  // of the end plane between those edges and the strip's end arc (whose middle control point is
+  // v itself), split in the middle as the strip is (a quarter moon, above). It belongs to a face
+  // of that plane beside it (for its chart and material).
   void addWeb(std::uint32_t v) {
     const std::size_t c = *concaveEndAt(topo_, v);
     std::vector<std::size_t> sharp;
@@ -709,36 +838,16 @@ class RoundingBuilder {
     pendingArcs_.push_back({surface_.outlines.size(), 1, v, c});
     outline.pieces.push_back({b, corner, {}});
     surface_.outlines.push_back(std::move(outline));
-    const glm::dvec3 points[] = {a, corner, corner, corner, b, corner};
-    const double weights[] = {1.0, 1.0, weight_, weight_, 1.0, 1.0};
-    const auto [nearA, nearB] = BezierSurface(2, 1, points, weights).subdivideU(0.5);
-    // Row v = 1 of each half: from its cusp (a at u = 0, b at u = 1) along the sharp edge to v.
-    // The arc half's middle control point lies on that edge (the arc's tangent at the cusp).
-    auto ruled = [&](const BezierSurface& half, int cusp) {
-      const glm::dvec4 first = half.homogeneousControlPoint(0, 0), last = half.homogeneousControlPoint(2, 0);
-      const double w0 = first.w, w2 = last.w;
-      const glm::dvec3 p0 = cusp == 0 ? glm::dvec3(first) / w0 : corner;
-      const glm::dvec3 p2 = cusp == 0 ? corner : glm::dvec3(last) / w2;
-      const double middleWeight = (w0 + w2) / 2.0;
-      const glm::dvec3 middle = (w2 * p0 + w0 * p2) / (w0 + w2);
-      const glm::dvec4 edgeRow[] = {glm::dvec4(p0 * w0, w0), glm::dvec4(middle * middleWeight, middleWeight),
-                                    glm::dvec4(p2 * w2, w2)};
-      std::vector<glm::dvec4> net;
-      for (int i = 0; i < 3; ++i) {
-        net.push_back(half.homogeneousControlPoint(i, 0));
-        net.push_back(edgeRow[i]);
-      }
-      return BezierSurface::fromHomogeneous(2, 1, std::move(net));
-    };
+    const auto [nearA, nearB] = quarterMoon(a, corner, b);
     if (splitFillets_.count(c) == 0) {
-      add(ruled(nearA, 0), info, normal);
-      add(ruled(nearB, 2), info, normal);
+      add(nearA, info, normal);
+      add(nearB, info, normal);
       return;
     }
     // Split as the fillet is: each half starts (nearA) or ends (nearB) at a touching point, so its
     // cut lies at 30 degrees from there, as the fillet's halves' cuts do.
-    const auto [a0, a1] = ruled(nearA, 0).subdivideU(thirty_);
-    const auto [b0, b1] = ruled(nearB, 2).subdivideU(1.0 - thirty_);
+    const auto [a0, a1] = nearA.subdivideU(thirty_);
+    const auto [b0, b1] = nearB.subdivideU(1.0 - thirty_);
     for (const BezierSurface* piece : {&a0, &a1, &b0, &b1}) add(*piece, info, normal);
   }
 
@@ -1014,11 +1123,16 @@ namespace {
 
 // A flat face as triangles: the polygon through `contour` (counter-clockwise seen from outside,
 // in the face's plane), triangulated in that plane, with the face's normal and chart.
-void appendFlatPolygon(const MarkedPolyhedron& poly, std::size_t f, const std::vector<glm::dvec3>& contour, RoundedMesh& out) {
-  const glm::dvec3 normal = newellNormal(poly, poly.faces[f]);
+// `planeNormal` is the polygon's plane's normal when it is not the face's (a cap), else zero.
+void appendFlatPolygon(const MarkedPolyhedron& poly, std::size_t f, const std::vector<glm::dvec3>& contour, RoundedMesh& out,
+                       const glm::dvec3& planeNormal = glm::dvec3(0.0)) {
+  if (contour.size() < 3) return;  // a face the rounding used up (R half its width): nothing left of it
+  const bool ownPlane = planeNormal != glm::dvec3(0.0);
+  const glm::dvec3 normal = ownPlane ? planeNormal : newellNormal(poly, poly.faces[f]);
   const FaceChart chart = faceChart(poly, f);
   const glm::dvec3 origin = contour[0];
-  glm::dvec3 x = poly.vertices[poly.faces[f].vertices[1]] - poly.vertices[poly.faces[f].vertices[0]];
+  glm::dvec3 x = ownPlane ? contour[1] - contour[0]
+                          : poly.vertices[poly.faces[f].vertices[1]] - poly.vertices[poly.faces[f].vertices[0]];
   x = glm::normalize(x - normal * glm::dot(x, normal));
   const glm::dvec3 y = glm::cross(normal, x);
   std::vector<PlanarPoint> planar;
@@ -1106,14 +1220,18 @@ RoundedMesh tessellateRounded(const MarkedPolyhedron& poly, const RoundedSurface
           if (!onSide(ref.side, vertexUv[i])) continue;
           const glm::dvec3& p = out.mesh.positions[i];
           if (p == piece.start || p == piece.end) continue;
-          inside.emplace_back(glm::dot(p - piece.start, direction), p);
+          // Only the part of the patch's side this piece runs along (a fillet's side runs on
+          // past a cap's).
+          const double along = glm::dot(p - piece.start, direction);
+          if (!(along > 0.0 && along < glm::dot(direction, direction))) continue;
+          inside.emplace_back(along, p);
         }
       }
       std::sort(inside.begin(), inside.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
       for (std::size_t j = 0; j < inside.size(); ++j)
         if (j == 0 || inside[j].second != inside[j - 1].second) contour.push_back(inside[j].second);
     }
-    appendFlatPolygon(poly, static_cast<std::size_t>(outline.face), contour, out);
+    appendFlatPolygon(poly, static_cast<std::size_t>(outline.face), contour, out, outline.normal);
   }
   // The faces no rounding reaches, as they are.
   for (std::size_t f = 0; f < poly.faces.size(); ++f) {

@@ -7,7 +7,8 @@
 %%
 %% Usage: escript scenes/models/make_wings_models.escript REPOSITORY_ROOT
 %% Writes scenes/models/*.wings, examples/homework45/l_block.wings,
-%% tests/homework45/l_block_uprights.wings and tests/unit/data/wings/*.wings and *.term.
+%% tests/homework45/l_block_uprights.wings, tests/homework45/l_block_all_hard.wings and
+%% tests/unit/data/wings/*.wings and *.term.
 
 main([Root]) ->
     Models = filename:join(Root, "scenes/models"),
@@ -34,6 +35,11 @@ main([Root]) ->
     %% the top and the bottom in torus pieces.
     write(filename:join(Models, "l_all_hard.wings"),
           [object("L", LBlockVs, LBlockFs, fun(_, _) -> true end, top_paint, true)], Materials, []),
+    %% The same with one top rim edge where the inner upright ends left sharp: the torus piece
+    %% above the fillet ends in a flat cap against it.
+    OneSharpRim = fun(A, B) -> lists:sort([A, B]) =/= [{0.0, 0.75, 0.0}, {0.75, 0.75, 0.0}] end,
+    write(filename:join(Models, "l_one_sharp_rim.wings"),
+          [object("L", LBlockVs, LBlockFs, OneSharpRim, top_paint, true)], Materials, []),
     %% The same L of unit cubes with only its uprights marked, and one two cubes tall (its
     %% concave upright runs straight through a corner of four faces).
     {LVsUp, LFsUp} = cubes([{0, 0, 0}, {1, 0, 0}, {0, 0, 1}], 1.0, {0.0, 0.0, 0.0}),
@@ -51,12 +57,15 @@ main([Root]) ->
     HwHard = fun(A, B) -> upright(A, B) orelse top_rim(A, B, 1.0, HwCells, 1.0, {-1.0, 0.0, -1.0}) end,
     write(filename:join(Root, "examples/homework45/l_block.wings"),
           [object("L", HwVs, HwFs, HwHard, top_paint, true)], Materials, []),
+    %% The same with every edge hard: the bottom's rim is rounded too.
+    All = fun(_, _) -> true end,
+    write(filename:join(Root, "tests/homework45/l_block_all_hard.wings"),
+          [object("L", HwVs, HwFs, All, top_paint, true)], Materials, []),
     %% The same with only its uprights hard (its test compares the two).
     write(filename:join(Root, "tests/homework45/l_block_uprights.wings"),
           [object("L", HwVs, HwFs, Upright, top_paint, true)], Materials, []),
     %% Unit test files.
     {CubeVs, CubeFs} = cubes([{0, 0, 0}], 1.0, {0.0, 0.0, 0.0}),
-    All = fun(_, _) -> true end,
     None = fun(_, _) -> false end,
     write(filename:join(Tests, "cube_all_hard.wings"),
           [object("Cube", CubeVs, CubeFs, All, top_paint, true)], Materials, []),

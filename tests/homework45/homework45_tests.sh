@@ -1,14 +1,16 @@
 #!/bin/sh
 # Homework 4-5's program headless (SDL_VIDEODRIVER=dummy, set by ctest), driven by
 # GLASS_GLUT_EVENTS; its snapshots compared with png_probe's same/differ.
-#   homework45_tests.sh PROGRAM PNG_PROBE WORK_DIR MODEL UPRIGHTS_MODEL
-# (UPRIGHTS_MODEL: the same L with only its uprights hard, its top's rim sharp.)
+#   homework45_tests.sh PROGRAM PNG_PROBE WORK_DIR MODEL UPRIGHTS_MODEL ALL_HARD_MODEL
+# (UPRIGHTS_MODEL: the same L with only its uprights hard, its top's rim sharp; ALL_HARD_MODEL:
+# with every edge hard, the bottom's rim too.)
 set -eu
 program=$1
 probe=$2
 work=$3
 model=$4
 uprights_model=$5
+all_hard_model=$6
 . "$(dirname "$0")/../shell_test_support.sh"
 
 # repeat N LINE: the event line N times.
@@ -80,6 +82,16 @@ GLASS_GLUT_SNAPSHOT=last_uprights.png GLASS_GLUT_EVENTS=uprights_events.txt "$pr
 [ "$status" -eq 0 ] || fail "the program exited with $status on the uprights-only L: $(cat err.txt)"
 "$probe" uprights_sharp.png same sharp.png || fail "the two Ls differ before rounding"
 "$probe" uprights_round5.png differ round5.png || fail "the rounded rim does not show"
+# With every edge hard the bottom's rim is rounded too: the same sharp, different rounded, and
+# nothing reported as left sharp.
+sed 's/uprights_/all_hard_/' uprights_events.txt >all_hard_events.txt
+status=0
+GLASS_GLUT_SNAPSHOT=last_all_hard.png GLASS_GLUT_EVENTS=all_hard_events.txt "$program" "$all_hard_model" \
+  >out.txt 2>err.txt || status=$?
+[ "$status" -eq 0 ] || fail "the program exited with $status on the all-hard L: $(cat err.txt)"
+[ ! -s err.txt ] || fail "the all-hard L reports: $(cat err.txt)"
+"$probe" all_hard_sharp.png same sharp.png || fail "the all-hard L differs before rounding"
+"$probe" all_hard_round5.png differ round5.png || fail "the rounded bottom rim does not show"
 # The default L's hard edges are all rounded: nothing is reported as left sharp.
 GLASS_GLUT_SNAPSHOT=quiet.png "$program" >out.txt 2>err.txt || fail "the default model"
 [ ! -s err.txt ] || fail "the default model reports: $(cat err.txt)"

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "pipeline_test_support.h"
+#include "texture/client_pixels.h"
 
 using glass::test::ScopedContext;
 
@@ -123,4 +124,47 @@ TEST_CASE("pipeline read pixels: formats, types, depth and stencil") {
   CHECK(outside[0] == 70);
   CHECK(outside[4] == kUntouched);
   CHECK(glGetError() == GL_NO_ERROR);
+}
+
+// glReadPixels copies stored bytes for GL_UNSIGNED_BYTE colour formats without luminance
+// (packByteColorSpan) instead of taking each byte b as b / 255 and converting it back. The copy
+// must write exactly what the conversion writes: every byte value, in every format it takes,
+// with padding, row length and skips that place the span inside a larger block.
+TEST_CASE("pack_byte_color_span_matches_floats") {
+  using glass::gl::PixelLayout;
+  std::vector<uint8_t> bytes(256 * 4);
+  for (int i = 0; i < 256; ++i)
+    for (int k = 0; k < 4; ++k) bytes[static_cast<size_t>(i) * 4 + k] = static_cast<uint8_t>((i + 67 * k) & 255);
+  std::vector<float> floats(bytes.size());
+  for (size_t i = 0; i < bytes.size(); ++i) floats[i] = static_cast<float>(bytes[i]) / 255.0f;
+
+  const GLenum formats[] = {GL_RGBA, GL_BGRA, GL_RGB, GL_BGR, GL_RED, GL_GREEN, GL_BLUE, GL_ALPHA};
+  for (const GLenum format : formats) {
+    for (const int alignment : {1, 2, 4, 8}) {
+      PixelLayout layout{};
+      layout.alignment = alignment;
+      layout.rowLength = 300;
+      layout.skipPixels = 3;
+      layout.skipRows = 1;
+      CAPTURE(format);
+      CAPTURE(alignment);
+      std::vector<uint8_t> copied(300 * 4 * 4 + 64, kUntouched), converted = copied;
+      const int width = 260, column = 2, row = 1;
+      REQUIRE(glass::gl::packByteColorSpan(bytes.data(), 256, width, column, row, format,
+                                           GL_UNSIGNED_BYTE, layout, copied.data()));
+      glass::gl::packColorSpan(floats.data(), 256, width, column, row, format, GL_UNSIGNED_BYTE,
+                               layout, glass::gl::LuminancePacking::Sum, converted.data());
+      CHECK(copied == converted);
+    }
+  }
+  // What it does not take is left to the conversion, with nothing written.
+  PixelLayout layout{};
+  std::vector<uint8_t> untouched(64, kUntouched), buffer = untouched;
+  CHECK_FALSE(glass::gl::packByteColorSpan(bytes.data(), 4, 4, 0, 0, GL_LUMINANCE, GL_UNSIGNED_BYTE,
+                                           layout, buffer.data()));
+  CHECK_FALSE(glass::gl::packByteColorSpan(bytes.data(), 4, 4, 0, 0, GL_RGBA, GL_UNSIGNED_SHORT,
+                                           layout, buffer.data()));
+  CHECK_FALSE(glass::gl::packByteColorSpan(bytes.data(), 4, 4, 0, 0, GL_LUMINANCE_ALPHA,
+                                           GL_UNSIGNED_BYTE, layout, buffer.data()));
+  CHECK(buffer == untouched);
 }

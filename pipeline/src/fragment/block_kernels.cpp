@@ -7,6 +7,10 @@
 //   depth     the triangle walk computed it; the reference path's depth test after the early
 //             test passes for the same fragments (the stored value has not changed in between:
 //             a block holds each pixel once), so the kernel only stores it.
+//   stencil   with the stencil test on, the kernel runs the reference path's own function
+//             (stencil_depth_tests.h) on each covered pixel before shading; a block holds each
+//             pixel once, so testing all of them first and then shading the ones that passed
+//             gives what testing and shading one fragment after another gives.
 //   varyings  the reference path (emitBlockFragments, rasterizer/src/triangle_rasterize.cpp)
 //             computes float((p_column + p_row) / (q_column + q_row)) with p_column = a0 + dx x,
 //             p_row = dy y, q_column = invW0 + invWdx x, q_row = invWdy y at the pixel centre;
@@ -16,7 +20,8 @@
 //             division is skipped.
 //   colour    the same functions as the reference path on the same floats: texture_hooks.h's
 //             lookup (through Sampler2D, which gives sampleTexture's bits) and environment, then
-//             floatToColorByte (here on a row of pixels at a time) and one store.
+//             floatToColorByte (here on a row of pixels at a time) and one store, or the
+//             reference path's blend() with the stored pixel when blending is on.
 //
 // Equality between targets: every vector operation here is one IEEE operation per lane (add,
 // multiply, exact division, conversion with round-to-nearest), which gives the same bits at any
@@ -32,11 +37,16 @@
 #include <bit>
 #include <cstring>
 #include <optional>
+#include <utility>
 
 #include "core/context.h"
 #include "core/simd_dispatch.h"
 #include "fragment/block_kernels.h"
+#include "fragment/blending.h"
+#include "fragment/stencil_depth_tests.h"
 #include "fragment/color_conversion.h"
+#include "fragment/fog_hooks.h"
+#include "fragment/fog_state.h"
 #include "glass/raster/triangle.h"
 #include "texture/row_sampler_2d-inl.h"
 #include "texture/sampler_2d.h"
@@ -316,38 +326,98 @@ void storeCoveredWords(void* row, const uint32_t* words, unsigned mask) {
   }
 }
 
-template <bool kWriteDepth, bool kWriteColor, KernelTexturing kTexturing>
-void shadeBlock(Context& ctx, const raster::TriangleSetup& setup, const raster::CoveredBlock& block) {
+// The stencil and depth tests and their writes on each covered pixel of the block, in the
+// reference path's order and with its function (stencil_depth_tests.h); passed gets, per row,
+// the pixels that passed both.
+void testStencilAndDepthOfBlock(raster::Framebuffer& fb, const StencilDepthSettings& tests,
+                                const raster::CoveredBlock& block, uint8_t passed[kSize]) {
+  for (int j = 0; j < kSize; ++j) {
+    unsigned mask = block.rowMask[j];
+    const int y = block.by + j;
+    for (unsigned rest = mask; rest != 0; rest &= rest - 1) {
+      const int i = std::countr_zero(rest), x = block.bx + i;
+      uint8_t* stencil = tests.stencilTest ? fb.stencilAt(x, y) : nullptr;
+      uint32_t* depth = tests.depthTest ? fb.depthAt(x, y) : nullptr;
+      if (testStencilAndDepth(tests, stencil, depth, block.depth[j][i]) != StencilDepthOutcome::Passed)
+        mask &= ~(1u << i);
+    }
+    passed[j] = static_cast<uint8_t>(mask);
+  }
+}
+
+// Blends the colours words[i] (RGBA8, as packColorBytes lays them out) of the pixels of mask
+// into the colour buffer's row, pixel by pixel with the reference path's function.
+void blendCoveredWords(const BlendSettings& settings, uint8_t* row, const uint32_t* words, unsigned mask) {
+  for (unsigned rest = mask; rest != 0; rest &= rest - 1) {
+    const int i = std::countr_zero(rest);
+    uint8_t source[4], blended[4];
+    std::memcpy(source, words + i, 4);
+    uint8_t* pixel = row + 4 * i;
+    blend(settings, source, pixel, blended);
+    std::memcpy(pixel, blended, 4);
+  }
+}
+
+// The fog of fog_hooks.h's applyFog on the pixels of mask, whose fog coordinates are c[i]: the
+// same function for the factor and the same expression for each colour component.
+void applyFogRow(const FogState& fog, const float* c, unsigned mask, float color[4][kSize]) {
+  for (unsigned rest = mask; rest != 0; rest &= rest - 1) {
+    const int i = std::countr_zero(rest);
+    const float f = fogFactor(fog, c[i]);
+    for (int k = 0; k < 3; ++k) color[k][i] = f * color[k][i] + (1.0f - f) * fog.color[k];
+  }
+}
+
+template <bool kWriteDepth, bool kWriteColor, KernelTexturing kTexturing, bool kFog>
+void shadeBlock(Context& ctx, const KernelPixelOps& ops, const raster::TriangleSetup& setup,
+                const raster::CoveredBlock& block) {
   raster::Framebuffer& fb = ctx.framebuffer;
   const int bx = block.bx, by = block.by;
-  if constexpr (kWriteDepth) {
-    for (int j = 0; j < kSize; ++j) {
-      if (block.rowMask[j] != 0)
-        storeCoveredWords(fb.depthAt(bx, by + j), block.depth[j], block.rowMask[j]);
+  uint8_t rowMask[kSize];  // the pixels to shade
+  if (ops.stencilAndDepth) {
+    testStencilAndDepthOfBlock(fb, ops.tests, block, rowMask);
+  } else {
+    std::memcpy(rowMask, block.rowMask, sizeof rowMask);
+    if constexpr (kWriteDepth) {
+      for (int j = 0; j < kSize; ++j) {
+        if (rowMask[j] != 0) storeCoveredWords(fb.depthAt(bx, by + j), block.depth[j], rowMask[j]);
+      }
     }
   }
   if constexpr (kWriteColor) {
+    unsigned any = 0;
+    for (const uint8_t mask : rowMask) any |= mask;
+    if (any == 0) return;
     typename TexturingStage<kTexturing>::Varyings varyings(setup.planes, block);
     [[maybe_unused]] typename TexturingStage<kTexturing>::Texturing texturing(ctx, setup, bx, by);
+    using FogVaryings = BlockVaryings<varying::kFogCoordinate>;
+    std::optional<FogVaryings> fogCoordinate;
+    if constexpr (kFog) fogCoordinate.emplace(setup.planes, block);
     for (int j = 0; j < kSize; ++j) {
-      const unsigned mask = block.rowMask[j];
+      const unsigned mask = rowMask[j];
       if (mask == 0) continue;
       varyings.computeRow(j);
-      alignas(64) uint32_t words[kSize];
-      if constexpr (kTexturing == KernelTexturing::None) {
-        packRowColors(varyings.row(0), varyings.row(1), varyings.row(2), varyings.row(3), words);
-      } else {
-        alignas(64) float color[4][kSize];
-        for (int c = 0; c < 4; ++c) std::memcpy(color[c], varyings.row(c), sizeof color[c]);
+      alignas(64) float color[4][kSize];
+      for (int c = 0; c < 4; ++c) std::memcpy(color[c], varyings.row(c), sizeof color[c]);
+      if constexpr (kTexturing != KernelTexturing::None) {
         if (texturing.active()) {
           alignas(64) float sq[kSize], tq[kSize];
           divideRow(varyings.row(4), varyings.row(6), sq);
           divideRow(varyings.row(5), varyings.row(6), tq);
           texturing.applyRow(bx, by + j, mask, sq, tq, color);
         }
-        packRowColors(color[0], color[1], color[2], color[3], words);
       }
-      storeCoveredWords(fb.colorAt(bx, by + j), words, mask);
+      if constexpr (kFog) {
+        fogCoordinate->computeRow(j);
+        applyFogRow(ctx.fog, fogCoordinate->row(0), mask, color);
+      }
+      alignas(64) uint32_t words[kSize];
+      packRowColors(color[0], color[1], color[2], color[3], words);
+      if (ops.blend) {
+        blendCoveredWords(ops.blendSettings, fb.colorAt(bx, by + j), words, mask);
+      } else {
+        storeCoveredWords(fb.colorAt(bx, by + j), words, mask);
+      }
     }
   }
 }
@@ -357,10 +427,14 @@ template <int kIndex>
 constexpr BlockKernel kernelAt() {
   constexpr bool writeDepth = kIndex & 1, writeColor = kIndex & 2;
   constexpr KernelTexturing texturing = (kIndex & 4) ? KernelTexturing::Single2D : KernelTexturing::None;
-  return &shadeBlock<writeDepth, writeColor, texturing>;
+  constexpr bool fog = kIndex & 8;
+  return &shadeBlock<writeDepth, writeColor, texturing, fog>;
 }
-constexpr BlockKernel kKernels[8] = {kernelAt<0>(), kernelAt<1>(), kernelAt<2>(), kernelAt<3>(),
-                                     kernelAt<4>(), kernelAt<5>(), kernelAt<6>(), kernelAt<7>()};
+template <int... kIndices>
+constexpr std::array<BlockKernel, sizeof...(kIndices)> kernelTable(std::integer_sequence<int, kIndices...>) {
+  return {kernelAt<kIndices>()...};
+}
+constexpr auto kKernels = kernelTable(std::make_integer_sequence<int, 16>());
 
 }  // namespace
 
@@ -376,8 +450,10 @@ namespace glass::gl {
 namespace {
 
 int kernelIndex(const BlockKernelKey& key) {
+  // Texturing and fog matter only when colour is written.
   const bool textured = key.writeColor && key.texturing == KernelTexturing::Single2D;
-  return (key.writeDepth ? 1 : 0) | (key.writeColor ? 2 : 0) | (textured ? 4 : 0);
+  const bool fog = key.writeColor && key.fog;
+  return (key.writeDepth ? 1 : 0) | (key.writeColor ? 2 : 0) | (textured ? 4 : 0) | (fog ? 8 : 0);
 }
 
 }  // namespace

@@ -15,6 +15,8 @@
 
 #include <cstdint>
 
+#include "fragment/blending.h"
+#include "fragment/stencil_depth_tests.h"
 #include "glass/raster/triangle_block.h"
 
 namespace glass::gl {
@@ -29,18 +31,35 @@ enum class KernelTexturing : uint8_t {
 };
 
 // The state a kernel is compiled for. Kernels exist only for draws whose fragments need no
-// per-fragment lighting, colour sum, fog, alpha or stencil test, blending or logic op, and
-// write either all four colour channels or none; FragmentProcessor::prepare checks that. The
-// depth test, when on, is the triangle walk's early test (glass/raster/depth_test.h), so a
-// kernel sees only fragments that passed it and writes their depth when the depth mask is on.
+// per-fragment lighting, colour sum, alpha test or logic op, and write either all four colour
+// channels or none; FragmentProcessor::prepare checks that.
 struct BlockKernelKey {
-  bool writeDepth = false;
+  bool writeDepth = false;  // store the walk's depths (without the stencil test; see below)
   bool writeColor = false;
   KernelTexturing texturing = KernelTexturing::None;
+  bool fog = false;  // fog_hooks.h's applyFog after texturing
+};
+
+// What a kernel does with the pixels it shades, decided once per draw and read at run time
+// (one test per block or row: the work they select is per pixel anyway).
+//
+// Without the stencil test, the depth test, when on, is the triangle walk's early test
+// (glass/raster/depth_test.h), so a kernel sees only fragments that passed it and writes their
+// depth when the key says so. With the stencil test on, a fragment that fails the depth test may
+// still change the stencil buffer, so the walk makes no early test; the kernel then runs the
+// stencil and depth tests and their writes on each covered pixel itself (stencil_depth_tests.h,
+// the reference path's own function) and shades the pixels that pass.
+struct KernelPixelOps {
+  bool stencilAndDepth = false;
+  StencilDepthSettings tests;
+  bool blend = false;  // blend with the colour buffer (blending.h) instead of replacing it
+  BlendSettings blendSettings;
+
+  bool operator==(const KernelPixelOps&) const = default;
 };
 
 // Shades and writes the pixels of one covered block of a triangle.
-using BlockKernel = void (*)(Context& ctx, const raster::TriangleSetup& setup,
+using BlockKernel = void (*)(Context& ctx, const KernelPixelOps& ops, const raster::TriangleSetup& setup,
                              const raster::CoveredBlock& block);
 
 // The kernel compiled for the key.

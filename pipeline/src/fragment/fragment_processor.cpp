@@ -40,18 +40,19 @@ void FragmentProcessor::prepare(Context& ctx, bool phong) {
   s_.alphaFunc = f.alphaFunc;
   s_.alphaRefByte = floatToColorByte(f.alphaRef);
 
-  s_.stencilTest = stencilTestActive(ctx);
-  s_.stencilFunc = f.stencilFunc;
-  s_.stencilRef = static_cast<uint8_t>(f.stencilRef);
-  s_.stencilValueMask = f.stencilValueMask & 0xFFu;
-  s_.stencilWriteMask = f.stencilWriteMask & 0xFFu;
-  s_.stencilFail = f.stencilFail;
-  s_.stencilDepthFail = f.stencilDepthFail;
-  s_.stencilDepthPass = f.stencilDepthPass;
+  StencilDepthSettings& tests = s_.tests;
+  tests.stencilTest = stencilTestActive(ctx);
+  tests.stencilFunc = f.stencilFunc;
+  tests.stencilRef = static_cast<uint8_t>(f.stencilRef);
+  tests.stencilValueMask = f.stencilValueMask & 0xFFu;
+  tests.stencilWriteMask = f.stencilWriteMask & 0xFFu;
+  tests.stencilFail = f.stencilFail;
+  tests.stencilDepthFail = f.stencilDepthFail;
+  tests.stencilDepthPass = f.stencilDepthPass;
 
-  s_.depthTest = depthTestActive(ctx);
-  s_.depthFunc = f.depthFunc;
-  s_.depthMask = f.depthMask;
+  tests.depthTest = depthTestActive(ctx);
+  tests.depthFunc = f.depthFunc;
+  tests.depthMask = f.depthMask;
 
   // With GL_COLOR_LOGIC_OP enabled, the logic op replaces blending (spec 4.1.10).
   s_.logicOp = f.colorLogicOp;
@@ -93,7 +94,12 @@ void FragmentProcessor::prepare(Context& ctx, bool phong) {
     s_.scissorY1 = static_cast<int>(std::min<long long>(INT_MAX, static_cast<long long>(box.y) + box.height));
   }
   kernel_ = chooseKernel();
-  kernelNeedsEarlyDepth_ = s_.depthTest && s_.depthFunc != GL_ALWAYS;
+  pixelOps_.stencilAndDepth = s_.tests.stencilTest;
+  pixelOps_.tests = s_.tests;
+  pixelOps_.blend = s_.blend;
+  pixelOps_.blendSettings = s_.blendSettings;
+  // With the stencil test on, the kernel makes the depth test itself (block_kernels.h).
+  kernelNeedsEarlyDepth_ = s_.tests.depthTest && s_.tests.depthFunc != GL_ALWAYS && !s_.tests.stencilTest;
 }
 
 BlockKernel FragmentProcessor::chooseKernel() const {
@@ -101,12 +107,13 @@ BlockKernel FragmentProcessor::chooseKernel() const {
   // The overdraw, normals and mipmap views and GLASS_STATS see fragments in the general path (teaching/teaching_hooks.h).
   if (s_.fragmentCounts != nullptr || s_.fragmentColors != nullptr || s_.statistics != nullptr) return nullptr;
   // What no kernel does (block_kernels.h).
-  if (s_.phong || s_.colorSum || s_.fog || s_.alphaTest || s_.stencilTest || s_.blend ||
-      s_.logicOp || (s_.writesColor && !s_.allChannels))
+  if (s_.phong || s_.colorSum || s_.alphaTest || s_.logicOp || (s_.writesColor && !s_.allChannels))
     return nullptr;
   BlockKernelKey key;
-  key.writeDepth = s_.depthTest && s_.depthMask;
+  // With the stencil test on, the kernel's stencil and depth tests write the depth.
+  key.writeDepth = s_.tests.depthTest && s_.tests.depthMask && !s_.tests.stencilTest;
   key.writeColor = s_.writesColor;
+  key.fog = s_.fog;
   if (s_.texturing) {
     if (singleTexture2D(*ctx_) == nullptr) return nullptr;
     key.texturing = KernelTexturing::Single2D;
@@ -117,7 +124,7 @@ BlockKernel FragmentProcessor::chooseKernel() const {
 void FragmentProcessor::processTriangleBlock(const raster::TriangleSetup& setup,
                                              const raster::CoveredBlock& block) {
   if (kernel_ != nullptr && (!kernelNeedsEarlyDepth_ || setup.earlyDepth.buffer != nullptr)) {
-    kernel_(*ctx_, setup, block);
+    kernel_(*ctx_, pixelOps_, setup, block);
   } else {
     raster::FragmentSink::processTriangleBlock(setup, block);
   }
@@ -170,31 +177,16 @@ void FragmentProcessor::processFragments(const raster::FragmentBatch& batch,
       continue;
     }
 
-    uint8_t* stencil = s_.stencilTest ? fb.stencilAt(fragment.x, fragment.y) : nullptr;
-    if (stencil) {
-      const unsigned stored = *stencil & s_.stencilValueMask;
-      if (!passesComparison(s_.stencilFunc, s_.stencilRef & s_.stencilValueMask, stored)) {
-        writeStencil(*stencil, applyStencilOperation(s_.stencilFail, *stencil, s_.stencilRef),
-                     s_.stencilWriteMask);
-        ++tally.stencilRejected;
-        continue;
-      }
+    uint8_t* stencil = s_.tests.stencilTest ? fb.stencilAt(fragment.x, fragment.y) : nullptr;
+    uint32_t* depth = s_.tests.depthTest ? fb.depthAt(fragment.x, fragment.y) : nullptr;
+    const StencilDepthOutcome outcome = testStencilAndDepth(s_.tests, stencil, depth, fragment.depth);
+    if (outcome == StencilDepthOutcome::StencilFailed) {
+      ++tally.stencilRejected;
+      continue;
     }
-    if (s_.depthTest) {
-      uint32_t* depth = fb.depthAt(fragment.x, fragment.y);
-      if (!passesComparison(s_.depthFunc, fragment.depth, *depth)) {
-        if (stencil) {
-          writeStencil(*stencil, applyStencilOperation(s_.stencilDepthFail, *stencil, s_.stencilRef),
-                       s_.stencilWriteMask);
-        }
-        ++tally.depthRejected;
-        continue;
-      }
-      if (s_.depthMask) *depth = fragment.depth;
-    }
-    if (stencil) {
-      writeStencil(*stencil, applyStencilOperation(s_.stencilDepthPass, *stencil, s_.stencilRef),
-                   s_.stencilWriteMask);
+    if (outcome == StencilDepthOutcome::DepthFailed) {
+      ++tally.depthRejected;
+      continue;
     }
 
     ++tally.passed;

@@ -15,6 +15,7 @@
 
 #include "fragment/blending.h"
 #include "fragment/block_kernels.h"
+#include "fragment/stencil_depth_tests.h"
 #include "glass/raster/fragment.h"
 #include "teaching/frame_statistics.h"
 #include "teaching/teaching_view.h"
@@ -64,16 +65,7 @@ class FragmentProcessor final : public raster::FragmentSink {
     GLenum alphaFunc = GL_ALWAYS;
     uint8_t alphaRefByte = 0;  // the reference as the colour buffer's 8-bit value
 
-    bool stencilTest = false;
-    GLenum stencilFunc = GL_ALWAYS;
-    uint8_t stencilRef = 0;
-    unsigned stencilValueMask = 0xFF;
-    unsigned stencilWriteMask = 0xFF;
-    GLenum stencilFail = GL_KEEP, stencilDepthFail = GL_KEEP, stencilDepthPass = GL_KEEP;
-
-    bool depthTest = false;
-    GLenum depthFunc = GL_LESS;
-    bool depthMask = true;
+    StencilDepthSettings tests;
 
     bool blend = false;
     BlendSettings blendSettings;
@@ -105,6 +97,7 @@ class FragmentProcessor final : public raster::FragmentSink {
   Context* ctx_ = nullptr;
   Settings s_;
   BlockKernel kernel_ = nullptr;
+  KernelPixelOps pixelOps_;  // what kernel_ does with the pixels it shades, from s_
   // The kernel relies on the triangle walk's early depth test (the depth test is on and not
   // GL_ALWAYS); a triangle set up without it goes the reference way.
   bool kernelNeedsEarlyDepth_ = false;

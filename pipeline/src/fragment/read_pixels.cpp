@@ -94,6 +94,10 @@ void readPixels(Context& ctx, int x, int y, int width, int height, GLenum format
       transferDepths(transfer, values.data(), count);
       packDepthSpan(values.data(), count, width, first, row, type, pack, pixels);
     } else {
+      // Bytes as they are stored, when the reference steps below would give them back unchanged.
+      if (colorTransferChangesNothing(transfer) &&
+          packByteColorSpan(fb.colorAt(px, py), count, width, first, row, format, type, pack, pixels))
+        continue;
       for (int i = 0; i < count; ++i) {
         const uint8_t* c = fb.colorAt(px + i, py);
         for (int k = 0; k < 4; ++k) values[static_cast<size_t>(i) * 4 + k] = static_cast<float>(c[k]) / 255.0f;

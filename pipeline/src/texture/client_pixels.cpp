@@ -346,6 +346,28 @@ void packColorSpan(const float* rgba, int count, int width, int column, int row,
   }
 }
 
+bool packByteColorSpan(const uint8_t* rgba8, int count, int width, int column, int row, GLenum format,
+                       GLenum type, const PixelLayout& layout, void* pixels) {
+  if (type != GL_UNSIGNED_BYTE) return false;
+  const SpanFormat span = spanFormat(width, format, type, layout);
+  const FormatComponents& components = span.components;
+  for (int c = 0; c < components.count; ++c)
+    if (components.slot[c] == kLuminance) return false;  // a sum, not a copy
+  unsigned char* out = static_cast<unsigned char*>(pixels) + span.block.firstByte +
+                       static_cast<size_t>(row) * span.block.rowBytes +
+                       static_cast<size_t>(column) * span.block.groupBytes;
+  if (format == GL_RGBA) {
+    std::memcpy(out, rgba8, static_cast<size_t>(count) * 4);
+    return true;
+  }
+  for (int i = 0; i < count; ++i) {
+    unsigned char* group = out + static_cast<size_t>(i) * span.block.groupBytes;
+    const uint8_t* in = rgba8 + static_cast<size_t>(i) * 4;
+    for (int c = 0; c < components.count; ++c) group[c] = in[components.slot[c]];
+  }
+  return true;
+}
+
 namespace {
 
 // A count as an element of the given type: the number itself, saturated to the type's range.

@@ -78,6 +78,13 @@ enum class LuminancePacking { Red, Sum };
 // rgba: 4 floats per pixel, clamped to [0, 1] and converted by table 4.7.
 void packColorSpan(const float* rgba, int count, int width, int column, int row, GLenum format,
                    GLenum type, const PixelLayout& layout, LuminancePacking luminance, void* pixels);
+// packColorSpan for colours that are bytes b read as b / 255 (a colour buffer read without
+// transfer operations), when the result is the bytes themselves: GL_UNSIGNED_BYTE and a format
+// without luminance. Writes the span and returns true then; returns false (nothing written)
+// otherwise. rgba8: 4 bytes per pixel. The unit test pack_byte_color_span_matches_floats shows it
+// writes what packColorSpan writes for every byte value, format and layout it takes.
+bool packByteColorSpan(const uint8_t* rgba8, int count, int width, int column, int row, GLenum format,
+                       GLenum type, const PixelLayout& layout, void* pixels);
 // glGetHistogram's counts (OpenGL 1.4 specification, section 6.1.9, "Histogram Query"): a
 // one-row block of `count` groups, 4 counts each in RGBA order (luminance from R), written as
 // numbers, not normalized: each saturated to its type's range (its field's for packed types).

@@ -93,17 +93,17 @@ void Interpreter::Executor::run(const DrawModel &s) {
   const Model &model = program_.models[static_cast<std::size_t>(s.model)];
   if (s.round && model.roundable != nullptr) {
     const double radius = value(*s.round);
-    std::vector<ModelPart> rounded;
+    std::shared_ptr<const std::vector<ModelPart>> rounded;
     try {
       if (!(radius >= 0.0)) throw geometry::RoundingError("the radius must be 0 or more");
-      rounded = roundedWingsParts(*model.roundable, radius);
+      rounded = model.roundable->rounded.partsFor(*model.roundable, radius);
     } catch (const geometry::RoundingError &error) {
       std::ostringstream text;
       text.precision(6);
       text << "cannot round the model with radius " << radius << ": " << error.what();
       fail(text.str());
     }
-    drawModelParts(model, rounded, s);
+    drawModelParts(model, *rounded, s);
     return;
   }
   drawModelParts(model, model.parts, s);

@@ -4,6 +4,7 @@
 
 #include "glass/scene/program.h"
 #include "glass/scene/wings_file.h"
+#include "load/rounded_parts_cache.h"
 
 #include <string>
 #include <vector>
@@ -12,6 +13,8 @@ namespace glass::scene {
 
 struct RoundableModel {
   std::vector<WingsObject> objects;
+  // The rounded parts of the radii drawn last (drawing and checking a radius go through it).
+  mutable RoundedPartsCache rounded;
 };
 
 // Reads `path` into `model`: its materials, its objects drawn sharp as model.parts, and the

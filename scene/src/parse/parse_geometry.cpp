@@ -197,7 +197,7 @@ void Parser::parseModel(StatementReader &r) {
       const Model &model = program_.models[static_cast<std::size_t>(draw.model)];
       try {
         if (radius < 0.0) throw geometry::RoundingError("the radius must be 0 or more");
-        if (radius > 0.0) roundedWingsParts(*model.roundable, radius);
+        if (radius > 0.0) model.roundable->rounded.partsFor(*model.roundable, radius);
       } catch (const geometry::RoundingError &error) {
         r.fail(round->where, round->length, "cannot round '" + written + "' with radius " + formatRadius(radius) + ": " + error.what());
       }

@@ -35,6 +35,16 @@
 //   their corners to. That arc crosses those flat edges at 30 and 60 degrees, so the torus is
 //   split there (and in the middle, 45 degrees, as strips are), and so is the fillet along its
 //   whole run, so that their shared sides stay equal;
+// - where one of those two convex creases is rounded and the other sharp, the torus piece is the
+//   same (the rounded crease's quarter circle turned all the way round the fillet's axis, to the
+//   sharp crease's line R beyond the corner), and ends there in a flat cap: the piece of the
+//   plane normal to the sharp edge between the torus's end arc and that arc's middle control
+//   point, the point R along the sharp edge where its crease begins. Beyond it the sharp edge
+//   keeps its full corner, so the cap is a step, a crease all round, in the sharp edge's
+//   direction (an edge rounding that ends in the middle of a smooth crease has no smooth
+//   ending). The end face beside the sharp edge loses its corner to the torus's arc and the
+//   cap's top side; the face holding the sharp edge and the fillet keeps its sharp edge from the
+//   cap on, and its side along the fillet is shared by the fillet (up to the torus) and the cap;
 // - every face shrinks by R away from its marked edges; it is a fan of flat patches from its
 //   centre to the pieces of its boundary (segments of degree 1, arcs of degree 2).
 //
@@ -63,8 +73,9 @@
 // concave; corners where a convex marked edge ends have three edges at right angles (a corner of
 // a cube) or two marked edges in one straight line with flat edges across (where coplanar faces
 // of two cubes meet); a concave marked edge runs straight through such corners or ends where its
-// two other creases are convex and at right angles, both sharp (a web) or both rounded (a torus
-// piece, with the end face's two flat edges along their continuations); faces next to a marked
+// two other creases are convex and at right angles, both sharp (a web), both rounded (a torus
+// piece) or one of each (a torus piece and a cap), the end face split by two flat edges along
+// their continuations where one of them is rounded; faces next to a marked
 // edge have right angles there; every face is convex. Anything else is refused with a message naming the edge, vertex or face.
 // R = 0 gives the sharp object.
 #pragma once
@@ -133,6 +144,9 @@ struct RoundedPatchInfo {
   // fillet's faceNormal and acrossNormals.
   bool torus = false;
   double majorRadius = 0.0;
+  // A cap (a flat piece where a torus piece ends at a sharp crease): the normal of its plane,
+  // which is no face's. Zero for every other patch.
+  glm::dvec3 capNormal{0.0};
 };
 
 // The point of a rounded patch's centre (point, line or circle) nearest p: p lies at distance R
@@ -154,6 +168,7 @@ struct FaceOutline {
   };
   int face = -1;
   std::vector<Piece> pieces;
+  glm::dvec3 normal{0.0};  // the plane's normal where it is not the face's (a cap), else zero
 };
 
 struct RoundedSurface {
