@@ -115,6 +115,55 @@ void arrayElement(Context& ctx, int index) {
   compileOrExecuteOn(ctx, [=](Context& c) { applyElement(c, layout, values); });
 }
 
+namespace {
+
+// Whether the elements of a draw go through the batched vertex path (vertex_batch.h): with the
+// fast paths on, when the elements issue vertices, and when no vertex is traced (a traced vertex
+// goes the reference way, one vertex at a time: teaching/vertex_trace.h). Called after
+// beginCommand, which prepares the draw.
+bool batchesElements(Context& ctx, const ArrayElementLayout& layout) {
+  return fastPathsEnabled() && layout.vertex && ctx.draw->vertexSetup().trace == nullptr;
+}
+
+// Client arrays over the stored values of a compiled draw's elements: each attribute read as it
+// was stored, GL_FLOAT components (the edge flag as its byte), so that readElement gives back
+// exactly the stored values and the batched path can replay them.
+ArrayState arraysOverElements(const std::vector<ArrayElementValues>& elements) {
+  const ArrayElementValues& e = elements.front();
+  constexpr int kStride = sizeof(ArrayElementValues);
+  ArrayState arrays;
+  arrays.vertex = {true, 4, GL_FLOAT, kStride, e.vertex};
+  arrays.color = {true, 4, GL_FLOAT, kStride, e.color};
+  arrays.normal = {true, 3, GL_FLOAT, kStride, e.normal};
+  for (int u = 0; u < kTextureUnitCount; ++u) arrays.texCoord[u] = {true, 4, GL_FLOAT, kStride, e.texCoord[u]};
+  static_assert(sizeof(bool) == 1, "the edge flag is read as one byte");
+  arrays.edgeFlag = {true, 1, GL_UNSIGNED_BYTE, kStride, &e.edgeFlag};
+  arrays.fogCoord = {true, 1, GL_FLOAT, kStride, &e.fogCoord};
+  arrays.secondaryColor = {true, 3, GL_FLOAT, kStride, e.secondaryColor};
+  return arrays;
+}
+
+// Replays a display list's array draw: the stored elements through the batched path over
+// arrays made of them (the context's own arrays are put back after), or one at a time.
+void replayCompiledDraw(Context& ctx, const CompiledArrayDraw& draw) {
+  beginCommand(ctx, draw.mode);
+  if (!ctx.assembly.active) return;
+  if (!draw.elements.empty() && batchesElements(ctx, draw.layout)) {
+    struct RestoredArrays {
+      Context& ctx;
+      ArrayState saved;
+      ~RestoredArrays() { ctx.arrays = saved; }
+    } restore{ctx, ctx.arrays};
+    ctx.arrays = arraysOverElements(draw.elements);
+    drawArrayElementsBatched(ctx, draw.layout, nullptr, 0, static_cast<int>(draw.elements.size()));
+  } else {
+    for (const ArrayElementValues& e : draw.elements) applyElement(ctx, draw.layout, e);
+  }
+  endCommand(ctx);
+}
+
+}  // namespace
+
 void drawArrayElements(Context& ctx, GLenum mode, const int* indices, int first, int count) {
   const ArrayElementLayout layout = currentElementLayout(ctx.arrays);
   if (ctx.lists.isCompiling()) {
@@ -126,26 +175,19 @@ void drawArrayElements(Context& ctx, GLenum mode, const int* indices, int first,
       readElement(ctx.arrays, layout, indices ? indices[i] : first + i, draw->elements[i]);
     }
     std::shared_ptr<const CompiledArrayDraw> compiled = std::move(draw);
-    compileOrExecuteOn(ctx, [compiled](Context& c) {
-      beginCommand(c, compiled->mode);
-      if (!c.assembly.active) return;
-      for (const ArrayElementValues& e : compiled->elements) applyElement(c, compiled->layout, e);
-      endCommand(c);
-    });
+    compileOrExecuteOn(ctx, [compiled](Context& c) { replayCompiledDraw(c, *compiled); });
     return;
   }
   beginCommand(ctx, mode);
   if (!ctx.assembly.active) return;
-  // A traced vertex goes the reference way, one vertex at a time (teaching/vertex_trace.h).
-  if (fastPathsEnabled() && layout.vertex && ctx.draw->vertexSetup().trace == nullptr) {
+  if (batchesElements(ctx, layout)) {
     drawArrayElementsBatched(ctx, layout, indices, first, count);
-    endCommand(ctx);
-    return;
-  }
-  ArrayElementValues values;
-  for (int i = 0; i < count; ++i) {
-    readElement(ctx.arrays, layout, indices ? indices[i] : first + i, values);
-    applyElement(ctx, layout, values);
+  } else {
+    ArrayElementValues values;
+    for (int i = 0; i < count; ++i) {
+      readElement(ctx.arrays, layout, indices ? indices[i] : first + i, values);
+      applyElement(ctx, layout, values);
+    }
   }
   // Indexed quads split along v1-v3, as Mesa's clipping path splits them (primitive_assembly.cpp).
   if (indices != nullptr) ctx.assembly.pendingNeedsClipping = true;
