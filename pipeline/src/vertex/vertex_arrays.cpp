@@ -182,12 +182,13 @@ void drawArrayElements(Context& ctx, GLenum mode, const int* indices, int first,
   if (!ctx.assembly.active) return;
   if (batchesElements(ctx, layout)) {
     drawArrayElementsBatched(ctx, layout, indices, first, count);
-  } else {
-    ArrayElementValues values;
-    for (int i = 0; i < count; ++i) {
-      readElement(ctx.arrays, layout, indices ? indices[i] : first + i, values);
-      applyElement(ctx, layout, values);
-    }
+    endCommand(ctx);
+    return;
+  }
+  ArrayElementValues values;
+  for (int i = 0; i < count; ++i) {
+    readElement(ctx.arrays, layout, indices ? indices[i] : first + i, values);
+    applyElement(ctx, layout, values);
   }
   // Indexed quads split along v1-v3, as Mesa's clipping path splits them (primitive_assembly.cpp).
   if (indices != nullptr) ctx.assembly.pendingNeedsClipping = true;
