@@ -374,7 +374,7 @@ void shadeBlock(Context& ctx, const KernelPixelOps& ops, const raster::TriangleS
   raster::Framebuffer& fb = ctx.framebuffer;
   const int bx = block.bx, by = block.by;
   uint8_t rowMask[kSize];  // the pixels to shade
-  if (ops.stencilAndDepth) {
+  if (ops.tests.stencilTest) {
     testStencilAndDepthOfBlock(fb, ops.tests, block, rowMask);
   } else {
     std::memcpy(rowMask, block.rowMask, sizeof rowMask);

@@ -50,8 +50,7 @@ struct BlockKernelKey {
 // stencil and depth tests and their writes on each covered pixel itself (stencil_depth_tests.h,
 // the reference path's own function) and shades the pixels that pass.
 struct KernelPixelOps {
-  bool stencilAndDepth = false;
-  StencilDepthSettings tests;
+  StencilDepthSettings tests;  // the kernel runs them when tests.stencilTest is on
   bool blend = false;  // blend with the colour buffer (blending.h) instead of replacing it
   BlendSettings blendSettings;
 

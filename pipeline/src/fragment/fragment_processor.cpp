@@ -14,7 +14,6 @@
 #include "fragment/fog_hooks.h"
 #include "glass/raster/triangle.h"
 #include "fragment/logic_op.h"
-#include "fragment/stencil_operation.h"
 #include "lighting/lighting_hooks.h"
 #include "teaching/teaching_hooks.h"
 #include "texture/texture_hooks.h"
@@ -94,7 +93,6 @@ void FragmentProcessor::prepare(Context& ctx, bool phong) {
     s_.scissorY1 = static_cast<int>(std::min<long long>(INT_MAX, static_cast<long long>(box.y) + box.height));
   }
   kernel_ = chooseKernel();
-  pixelOps_.stencilAndDepth = s_.tests.stencilTest;
   pixelOps_.tests = s_.tests;
   pixelOps_.blend = s_.blend;
   pixelOps_.blendSettings = s_.blendSettings;

@@ -69,6 +69,8 @@ void readPixels(Context& ctx, int x, int y, int width, int height, GLenum format
   const int count = end - first;
   if (count <= 0) return;
 
+  // Colour bytes as they are stored, when the transfer operations would give them back unchanged.
+  const bool copiesStoredBytes = colorTransferChangesNothing(transfer);
   std::vector<float> values(static_cast<size_t>(count) * 4);
   std::vector<uint32_t> raw(static_cast<size_t>(count));
   std::vector<int32_t> indices(static_cast<size_t>(count));
@@ -94,8 +96,8 @@ void readPixels(Context& ctx, int x, int y, int width, int height, GLenum format
       transferDepths(transfer, values.data(), count);
       packDepthSpan(values.data(), count, width, first, row, type, pack, pixels);
     } else {
-      // Bytes as they are stored, when the reference steps below would give them back unchanged.
-      if (colorTransferChangesNothing(transfer) &&
+      // packByteColorSpan takes the formats whose bytes are copied as they are.
+      if (copiesStoredBytes &&
           packByteColorSpan(fb.colorAt(px, py), count, width, first, row, format, type, pack, pixels))
         continue;
       for (int i = 0; i < count; ++i) {
