@@ -5,6 +5,7 @@
 #include <GL/gl.h>
 #include <glass/context.h>
 
+#include <array>
 #include <initializer_list>
 
 namespace {
@@ -223,4 +224,41 @@ TEST_CASE("glPushClientAttrib restores pixel store and vertex arrays") {
   CHECK(glIsEnabled(GL_VERTEX_ARRAY) == GL_FALSE);
   glPopClientAttrib();
   CHECK(glGetError() == GL_STACK_UNDERFLOW);
+}
+
+TEST_CASE("glPopAttrib leaves colour-material parameters holding the current colour") {
+  ScopedContext scope;
+  const GLfloat yellow[4] = {0.7f, 0.6f, 0.1f, 1.0f}, red[4] = {0.8f, 0.1f, 0.1f, 1.0f};
+  const GLfloat blue[4] = {0.1f, 0.2f, 0.9f, 1.0f};
+  const auto material = [](GLenum face, GLenum pname) {
+    std::array<GLfloat, 4> v{};
+    glGetMaterialfv(face, pname, v.data());
+    return v;
+  };
+  const auto asArray = [](const GLfloat* c) { return std::array<GLfloat, 4>{c[0], c[1], c[2], c[3]}; };
+  glColorMaterial(GL_FRONT_AND_BACK, GL_AMBIENT_AND_DIFFUSE);
+  glEnable(GL_COLOR_MATERIAL);
+  glColor4fv(yellow);
+
+  // The material comes back yellow, the current colour stays red: the tracked ones are red.
+  glPushAttrib(GL_LIGHTING_BIT);
+  glColor4fv(red);
+  glPopAttrib();
+  CHECK(material(GL_FRONT, GL_DIFFUSE) == asArray(red));
+  CHECK(material(GL_BACK, GL_AMBIENT) == asArray(red));
+
+  // The colour comes back (red), the material stays blue: red again.
+  glPushAttrib(GL_CURRENT_BIT);
+  glColor4fv(blue);
+  CHECK(material(GL_FRONT, GL_AMBIENT) == asArray(blue));
+  glPopAttrib();
+  CHECK(material(GL_FRONT, GL_AMBIENT) == asArray(red));
+
+  // A parameter not tracked keeps what the pop brought back.
+  const GLfloat grey[4] = {0.3f, 0.3f, 0.3f, 1.0f};
+  glPushAttrib(GL_LIGHTING_BIT);
+  glMaterialfv(GL_FRONT, GL_SPECULAR, grey);
+  glPopAttrib();
+  CHECK(material(GL_FRONT, GL_SPECULAR) == std::array<GLfloat, 4>{0.0f, 0.0f, 0.0f, 1.0f});
+  CHECK(glGetError() == GL_NO_ERROR);
 }

@@ -18,6 +18,7 @@
 #include "core/context.h"
 #include "core/errors.h"
 #include "core/state_value.h"
+#include "lighting/lighting_hooks.h"
 #include "lists/command_recording.h"
 #include "texture/texture_object.h"
 
@@ -305,6 +306,11 @@ void restoreAttributes(Context& ctx, const AttribEntry& e) {
     ctx.lighting = e.lighting;
     r.shadeModel = e.raster.shadeModel;
   }
+  // While colour material is on, the parameters it names track the current colour (spec
+  // 2.13.3), whichever of the material, the colour and the enable came back: popping
+  // GL_LIGHTING_BIT alone does not bring back a material that differs from the current colour
+  // (Mesa's pipeline reads the current colour for them in that case too).
+  if (mask & (GL_CURRENT_BIT | GL_LIGHTING_BIT | GL_ENABLE_BIT)) onCurrentColorChanged(ctx);
   if (mask & GL_FOG_BIT) ctx.fog = e.fog;
   FragmentState& f = ctx.fragment;
   const FragmentState& s = e.fragment;

@@ -10,6 +10,7 @@
 #include "lighting/color_material.h"
 #include "lists/command_recording.h"
 #include "primitive/queued_drawing.h"
+#include "vertex/gathered_vertices.h"
 #include "texture/integer_colors.h"
 
 namespace glass::gl {
@@ -60,6 +61,7 @@ void setMaterial(Context& ctx, GLenum face, GLenum pname, const float* v) {
     recordError(ctx, GL_INVALID_VALUE);
     return;
   }
+  flushGatheredVertices(ctx);  // vertices before this glMaterial are lit with the old material
   finishDrawReadingContext(ctx);  // per-fragment lighting may still need the old material
   LightingState& l = ctx.lighting;
   for (int f = 0; f < 2; ++f) {

@@ -3,6 +3,7 @@
 #include "core/context.h"
 #include "lighting/lighting_hooks.h"
 #include "primitive/draw_pipeline.h"
+#include "vertex/gathered_vertices.h"
 #include "vertex/primitive_assembly.h"
 #include "vertex/vertex_stage.h"
 
@@ -12,6 +13,7 @@ void beginCommand(Context& ctx, GLenum mode) {
   if (ctx.assembly.active) return recordError(ctx, GL_INVALID_OPERATION);
   if (!isPrimitiveMode(mode)) return recordError(ctx, GL_INVALID_ENUM);
   beginPrimitive(ctx, mode);
+  startGathering(ctx);
 }
 
 void endCommand(Context& ctx) {
@@ -22,6 +24,7 @@ void endCommand(Context& ctx) {
 void vertexCommand(Context& ctx, float x, float y, float z, float w) {
   if (!ctx.assembly.active) return;
   const float object[4] = {x, y, z, w};
+  if (gatherVertex(ctx, object)) return;
   PipelineVertex vertex{};
   processVertex(ctx, ctx.draw->vertexSetup(), object, vertex);
   assembleVertex(ctx, vertex);

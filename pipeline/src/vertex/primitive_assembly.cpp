@@ -2,6 +2,7 @@
 
 #include "core/context.h"
 #include "primitive/draw_pipeline.h"
+#include "vertex/gathered_vertices.h"
 
 namespace glass::gl {
 
@@ -64,6 +65,8 @@ void beginPrimitive(Context& ctx, GLenum mode) {
   pa.vertexCount = 0;
   pa.pending.clear();
   pa.pendingNeedsClipping = false;
+  pa.gathering = false;  // glBegin turns it on (gathered_vertices.h)
+  pa.gatheredCount = 0;
   ctx.draw->prepare();
 }
 
@@ -156,6 +159,7 @@ void assembleVertex(Context& ctx, const PipelineVertex& v) {
 }
 
 void endPrimitive(Context& ctx) {
+  flushGatheredVertices(ctx);
   PrimitiveAssembly& pa = ctx.assembly;
   if (pa.mode == GL_LINE_LOOP && pa.vertexCount >= 2) {
     ctx.draw->drawLine(pa.window[0], pa.first, pa.first, false);

@@ -6,6 +6,7 @@
 
 #include <GL/gl.h>
 
+#include <memory>
 #include <vector>
 
 #include "vertex/pipeline_vertex.h"
@@ -22,6 +23,12 @@ struct PrimitiveAssembly {
   // GL_POLYGON and GL_QUADS hold their vertices until glEnd (primitive_assembly.cpp says why).
   std::vector<PipelineVertex> pending;
   bool pendingNeedsClipping = false;  // some pending vertex lies outside a clip plane
+  // Immediate mode's vertices not yet through the vertex stage (gathered_vertices.h): whether
+  // this glBegin gathers them, and the first gatheredCount rows of `gathered` (allocated at the
+  // first gathered vertex, kept from then on).
+  bool gathering = false;
+  int gatheredCount = 0;
+  std::shared_ptr<struct VertexRows> gathered;
 };
 
 struct Context;

@@ -18,21 +18,14 @@
 namespace glass::gl {
 namespace {
 
-constexpr int K = kLightingBatch;  // elements per batch
+constexpr int K = kVertexBatch;  // elements per batch
+static_assert(kVertexBatch == kLightingBatch);
 // Post-transform cache entries (a power of two): direct-mapped by index.
 constexpr int kCacheEntries = 256;
 
-// The attributes of a batch's elements, one row per component: from the arrays, or the current
-// value repeated where an array is off (what processVertex would read from ctx.current).
-struct BatchAttributes {
-  float vertex[4][K];
-  float color[4][K];
-  float normal[3][K];
-  float secondaryColor[3][K];
-  float fogCoord[1][K];
-  float texCoord[kTextureUnitCount][4][K];
-  bool edgeFlag[K];
-};
+// A batch's elements from the arrays, or the current value repeated where an array is off (what
+// processVertex would read from ctx.current).
+using BatchAttributes = VertexRows;
 
 struct PostTransformCache {
   uint64_t tag[kCacheEntries];     // the index an entry holds, or kEmpty
@@ -140,10 +133,11 @@ void transformNormals(const VertexStageSetup& s, const float (&in)[3][K], int co
 
 float clamp01(float v) { return std::clamp(v, 0.0f, 1.0f); }
 
-// processVertex for the `count` elements fetched into work.in, into work.out[0 .. count).
-void processBatch(Context& ctx, const ArrayElementLayout& layout, const VertexStageSetup& s,
-                  int count, BatchWork& work) {
-  BatchAttributes& in = work.in;
+// processVertex for the `count` elements of `in`, into work.out[0 .. count). With colorPerVertex,
+// colour material takes each element's colour (in.color); otherwise the stored material already
+// tracks the current colour.
+void processBatch(Context& ctx, bool colorPerVertex, const VertexStageSetup& s,
+                  const BatchAttributes& in, int count, BatchWork& work) {
   transformRows(s.modelviewProjection, in.vertex, count, work.clip);
   if (s.needEyePosition) transformRows(s.modelview, in.vertex, count, work.eye);
   LightingInput& lighting = work.lighting;
@@ -158,9 +152,7 @@ void processBatch(Context& ctx, const ArrayElementLayout& layout, const VertexSt
       eyePointFromHomogeneous(eye, point);
       for (int c = 0; c < 3; ++c) lighting.point[c][i] = point[c];
     }
-    // Colour material takes each vertex's colour when the colours come from an array; otherwise
-    // the stored material already tracks the current colour.
-    lighting.color = layout.color ? in.color : nullptr;
+    lighting.color = colorPerVertex ? in.color : nullptr;
     const LightingState& l = ctx.lighting;
     lightBatch(l, kFrontMaterial, false, lighting, work.front);
     if (l.model.twoSide) lightBatch(l, kBackMaterial, true, lighting, work.back);
@@ -234,7 +226,7 @@ void drawSequential(Context& ctx, const ArrayElementLayout& layout, const Vertex
   for (int start = 0; start < count; start += K) {
     const int n = std::min(K, count - start);
     fetchBatch(ctx, layout, s, nullptr, first + start, n, work.in);
-    processBatch(ctx, layout, s, n, work);
+    processBatch(ctx, layout.color, s, work.in, n, work);
     for (int i = 0; i < n; ++i) assembleVertex(ctx, work.out[i]);
   }
 }
@@ -271,7 +263,7 @@ void drawIndexed(Context& ctx, const ArrayElementLayout& layout, const VertexSta
     }
     if (misses > 0) {
       fetchBatch(ctx, layout, s, missIndex, 0, misses, work.in);
-      processBatch(ctx, layout, s, misses, work);
+      processBatch(ctx, layout.color, s, work.in, misses, work);
     }
     for (int p = 0; p < n; ++p) assembleVertex(ctx, *positions[p]);
     for (int m = 0; m < misses; ++m) {
@@ -284,6 +276,21 @@ void drawIndexed(Context& ctx, const ArrayElementLayout& layout, const VertexSta
 }
 
 }  // namespace
+
+void processVertexRows(Context& ctx, const VertexRows& rows, int count) {
+  if (count <= 0) return;
+  const VertexStageSetup& s = ctx.draw->vertexSetup();
+  BatchWork& work = batchWork();
+  // The batch sets the current texture and fog coordinates of each vertex while it works.
+  float texCoord[kTextureUnitCount][4];
+  std::copy(&ctx.current.texCoord[0][0], &ctx.current.texCoord[0][0] + 4 * kTextureUnitCount, &texCoord[0][0]);
+  const float fogCoord = ctx.current.fogCoord;
+  std::fill(work.out, work.out + count, PipelineVertex{});  // as processVertex's fresh vertex
+  processBatch(ctx, true, s, rows, count, work);
+  for (int i = 0; i < count; ++i) assembleVertex(ctx, work.out[i]);
+  std::copy(&texCoord[0][0], &texCoord[0][0] + 4 * kTextureUnitCount, &ctx.current.texCoord[0][0]);
+  ctx.current.fogCoord = fogCoord;
+}
 
 void drawArrayElementsBatched(Context& ctx, const ArrayElementLayout& layout, const int* indices,
                               int first, int count) {

@@ -12,11 +12,27 @@
 // and tests/image/fast_paths.cmake compares the two on every image test.
 #pragma once
 
+#include "texture/texture_units.h"
 #include "vertex/array_draw.h"
 
 namespace glass::gl {
 
 struct Context;
+
+inline constexpr int kVertexBatch = 64;  // vertices per batch
+
+// The attributes of up to kVertexBatch vertices, one row per component, as a batch reads them.
+// Rows the vertex stage does not need (VertexStageSetup: normals without lighting, unused
+// texture units, ...) need not be filled.
+struct VertexRows {
+  float vertex[4][kVertexBatch];
+  float color[4][kVertexBatch];
+  float normal[3][kVertexBatch];
+  float secondaryColor[3][kVertexBatch];
+  float fogCoord[1][kVertexBatch];
+  float texCoord[kTextureUnitCount][4][kVertexBatch];
+  bool edgeFlag[kVertexBatch];
+};
 
 // The vertices of a glDrawArrays (indices null: elements first .. first + count - 1) or
 // glDrawElements (indices[0 .. count)), between beginCommand and endCommand, with
@@ -24,5 +40,11 @@ struct Context;
 // those the last element set, as after the reference path.
 void drawArrayElementsBatched(Context& ctx, const ArrayElementLayout& layout, const int* indices,
                               int first, int count);
+
+// The vertex stage for vertices 0 .. count - 1 of `rows` (count <= kVertexBatch), between
+// beginCommand and endCommand, handing them to primitive assembly in order: immediate mode's
+// gathered vertices (gathered_vertices.h). Colour material takes each vertex's colour. The
+// current attributes are left as they were.
+void processVertexRows(Context& ctx, const VertexRows& rows, int count);
 
 }  // namespace glass::gl
