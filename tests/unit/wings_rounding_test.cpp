@@ -611,6 +611,16 @@ TEST_CASE("Rounding: a torus piece that ends at a sharp crease closes in a flat 
           CHECK(point.y >= 1.0 - radius - 1e-12);
           CHECK(point.z >= 1.0 - radius - 1e-12);
         }
+      // Its texture is the face's chart with the cap turned flat onto the face: lengths kept
+      // (the file has no UVs, so the chart is an orthonormal frame), not squeezed onto a line.
+      const FaceChart chart = faceChart(l, static_cast<std::size_t>(s.info[p].face));
+      for (double u : kSamples)
+        for (double v : kSamples) {
+          const glm::dvec3 a = s.patches[p].evaluate(u, v), b = s.patches[p].evaluate(1.0 - v, u);
+          const glm::dvec2 ta = roundedTexCoord(s.info[p], chart, radius, a);
+          const glm::dvec2 tb = roundedTexCoord(s.info[p], chart, radius, b);
+          CHECK(std::abs(glm::length(ta - tb) - glm::length(a - b)) < 1e-12);
+        }
     }
     // Two cap halves; the torus pieces at both ends of the concave edge, whole.
     CHECK(caps == 2);
@@ -627,6 +637,21 @@ TEST_CASE("Rounding: a torus piece that ends at a sharp crease closes in a flat 
     const double fullyRounded = meshVolume(tessellateRounded(full, roundMarkedEdges(full, radius), fine));
     const RoundedMesh mesh = tessellateRounded(l, s, fine);
     checkWatertight(mesh);
+    // The drawn caps' triangles (in the plane x = 1 + R, facing -x) keep their lengths in the
+    // texture too.
+    std::size_t capTriangles = 0;
+    for (std::size_t t = 0; t < mesh.mesh.indices.size(); t += 3) {
+      const std::uint32_t *corner = &mesh.mesh.indices[t];
+      if (mesh.mesh.normals[corner[0]] != glm::dvec3(-1.0, 0.0, 0.0)) continue;
+      if (std::abs(mesh.mesh.positions[corner[0]].x - (1.0 + radius)) > 1e-12) continue;
+      ++capTriangles;
+      for (int k = 0; k < 3; ++k) {
+        const std::uint32_t i = corner[k], j = corner[(k + 1) % 3];
+        CHECK(std::abs(glm::length(mesh.mesh.texCoords[i] - mesh.mesh.texCoords[j]) -
+                       glm::length(mesh.mesh.positions[i] - mesh.mesh.positions[j])) < 1e-9);
+      }
+    }
+    CHECK(capTriangles > 0);
     const double kept = meshVolume(mesh) - fullyRounded;
     const double strip = (1.0 - std::numbers::pi / 4.0) * radius * radius * (1.0 - 2.0 * radius);
     CHECK(kept >= strip - 1e-6);
