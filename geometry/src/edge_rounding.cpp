@@ -1248,6 +1248,20 @@ RoundedMesh tessellateRounded(const MarkedPolyhedron& poly, const RoundedSurface
           inside.emplace_back(along, p);
         }
       }
+      if (piece.along.empty()) {
+        // A straight side no patch runs along, which a patch may still reach when the face
+        // between them is used up (R half its width): a cap's side then meets a strip's side
+        // directly. Its vertices on the segment go into the outline too, so the two share them.
+        const double length2 = glm::dot(direction, direction);
+        for (std::size_t i = 0; i < meshVertices && length2 > 0.0; ++i) {
+          const glm::dvec3& p = out.mesh.positions[i];
+          const double along = glm::dot(p - piece.start, direction);
+          if (!(along > 0.0 && along < length2)) continue;
+          const glm::dvec3 off = p - piece.start - (along / length2) * direction;
+          if (glm::dot(off, off) > 1e-24 * length2) continue;
+          inside.emplace_back(along, p);
+        }
+      }
       std::sort(inside.begin(), inside.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
       for (std::size_t j = 0; j < inside.size(); ++j)
         if (j == 0 || inside[j].second != inside[j - 1].second) contour.push_back(inside[j].second);

@@ -283,6 +283,26 @@ TEST_CASE("Rounding: the L at its largest radius, where faces one cube wide are 
   }
 }
 
+TEST_CASE("Rounding: the Ls at R = 0.5, where faces one cube wide are used up, are closed at every depth") {
+  // Every side face of concave_l.wings is one cube wide: at R = 0.5 the strips along its two
+  // rims meet with nothing between them; with one rim edge sharp, the cap's sides meet the
+  // strips of the edges beyond the used-up faces directly.
+  for (std::string name : {"concave_l.wings", "concave_l_one_sharp.wings"}) {
+    const MarkedPolyhedron l = readShape(name);
+    REQUIRE(maximumRoundingRadius(l) == 0.5);
+    const RoundedSurface s = roundMarkedEdges(l, 0.5);
+    checkRadius(s);
+    for (int depth = 0; depth <= 6; ++depth) {
+      CAPTURE(name);
+      CAPTURE(depth);
+      AdaptiveOptions options;
+      options.criterion = ObjectSpaceTolerance{1e-6};
+      options.maxDepth = depth;
+      CHECK(checkWatertight(tessellateRounded(l, s, options)) > 0);
+    }
+  }
+}
+
 TEST_CASE("Rounding: the corner kinds, and R = 0 gives the sharp object") {
   auto count = [](const RoundedSurface &s, bool rounded) {
     std::size_t n = 0;
@@ -629,9 +649,6 @@ TEST_CASE("Rounding: a torus piece that ends at a sharp crease closes in a flat 
     // strip's (1 - pi / 4) R^2 per length where the rounded L has a plain strip (x in
     // [1 + R, 2 - R]; the torus pieces and caps are the same in both), and at most the R^3 box
     // at its far end, where a mitre replaces the sphere corner.
-    // (At R = 0.5 the faces one cube wide are used up, and the meshes of both Ls are not
-    // closed where their patches meet across them.)
-    if (radius == 0.5) continue;
     const MarkedPolyhedron full = readShape("concave_l.wings");
     const AdaptiveOptions fine{ObjectSpaceTolerance{1e-7}, 6};
     const double fullyRounded = meshVolume(tessellateRounded(full, roundMarkedEdges(full, radius), fine));
