@@ -249,23 +249,32 @@ TEST_CASE("Rounding: every seam is exact, with continuous normals and texture co
   }
 }
 
+namespace {
+
+// The rounded surface tessellated at depths 0 to 6: closed each time, with no fewer triangles
+// at each depth than at the one before, and unit normals.
+void checkClosedAtEveryDepth(const MarkedPolyhedron &poly, const RoundedSurface &s) {
+  std::size_t previous = 0;
+  for (int depth = 0; depth <= 6; ++depth) {
+    CAPTURE(depth);
+    AdaptiveOptions options;
+    options.criterion = ObjectSpaceTolerance{1e-6};
+    options.maxDepth = depth;
+    const RoundedMesh mesh = tessellateRounded(poly, s, options);
+    const std::size_t triangles = checkWatertight(mesh);
+    CHECK(triangles >= previous);
+    previous = triangles;
+    for (const glm::dvec3 &n : mesh.mesh.normals) CHECK(std::abs(glm::length(n) - 1.0) < 1e-9);
+  }
+}
+
+} // namespace
+
 TEST_CASE("Rounding: closed meshes without cracks at every tessellation depth") {
   for (std::string name : kRoundable) {
+    CAPTURE(name);
     const MarkedPolyhedron poly = readShape(name);
-    const RoundedSurface s = roundMarkedEdges(poly, 0.25);
-    std::size_t previous = 0;
-    for (int depth = 0; depth <= 6; ++depth) {
-      CAPTURE(name);
-      CAPTURE(depth);
-      AdaptiveOptions options;
-      options.criterion = ObjectSpaceTolerance{1e-6};
-      options.maxDepth = depth;
-      const RoundedMesh mesh = tessellateRounded(poly, s, options);
-      const std::size_t triangles = checkWatertight(mesh);
-      CHECK(triangles >= previous);
-      previous = triangles;
-      for (const glm::dvec3 &n : mesh.mesh.normals) CHECK(std::abs(glm::length(n) - 1.0) < 1e-9);
-    }
+    checkClosedAtEveryDepth(poly, roundMarkedEdges(poly, 0.25));
   }
 }
 
@@ -290,16 +299,10 @@ TEST_CASE("Rounding: the Ls at R = 0.5, where faces one cube wide are used up, a
   for (std::string name : {"concave_l.wings", "concave_l_one_sharp.wings"}) {
     const MarkedPolyhedron l = readShape(name);
     REQUIRE(maximumRoundingRadius(l) == 0.5);
+    CAPTURE(name);
     const RoundedSurface s = roundMarkedEdges(l, 0.5);
     checkRadius(s);
-    for (int depth = 0; depth <= 6; ++depth) {
-      CAPTURE(name);
-      CAPTURE(depth);
-      AdaptiveOptions options;
-      options.criterion = ObjectSpaceTolerance{1e-6};
-      options.maxDepth = depth;
-      CHECK(checkWatertight(tessellateRounded(l, s, options)) > 0);
-    }
+    checkClosedAtEveryDepth(l, s);
   }
 }
 
