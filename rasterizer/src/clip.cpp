@@ -18,6 +18,7 @@
 #include "glass/raster/clip.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <vector>
 
@@ -106,9 +107,14 @@ unsigned outcode(const ClipVertex& v, const ClipSettings& settings) {
   if (!(std::isfinite(v.clip[0]) && std::isfinite(v.clip[1]) && std::isfinite(v.clip[2]) &&
         std::isfinite(v.clip[3])))
     return enabled | kNotFinite;
+  // The six frustum planes, always enabled, without branches; then the enabled user planes.
   unsigned code = 0;
-  for (int plane = 0; plane < kAllPlanes; ++plane)
-    if ((enabled >> plane & 1u) && !(planeDistance(v, plane) >= 0.0f)) code |= 1u << plane;
+  for (int plane = 0; plane < kFrustumPlanes; ++plane)
+    code |= static_cast<unsigned>(!(planeDistance(v, plane) >= 0.0f)) << plane;
+  for (unsigned user = enabled >> kFrustumPlanes; user != 0; user &= user - 1) {
+    const int plane = kFrustumPlanes + std::countr_zero(user);
+    if (!(planeDistance(v, plane) >= 0.0f)) code |= 1u << plane;
+  }
   return code;
 }
 

@@ -117,7 +117,14 @@ void TileScene::addTriangle(const TriangleSetup& setup, FragmentSink& sink) {
   r.perspectiveCorrect = setup.perspectiveCorrect;
   r.frontFacing = setup.frontFacing;
   r.earlyDepth = setup.earlyDepth;
+  // Each varying's plane as a0, dx, dy, in the order runTile reads them back.
   const AttributePlanes& planes = setup.planes;
+  double planeValues[3 * kMaxVaryings];
+  for (int k = 0; k < r.varyingCount; ++k) {
+    planeValues[3 * k] = planes.a0[k];
+    planeValues[3 * k + 1] = planes.dx[k];
+    planeValues[3 * k + 2] = planes.dy[k];
+  }
 
   // Bin the triangle to the tiles its bounding box overlaps, except those no pixel centre of
   // which is inside: the coverage walk would reject every block of such a tile anyway. This
@@ -129,11 +136,7 @@ void TileScene::addTriangle(const TriangleSetup& setup, FragmentSink& sink) {
       Bin& bin = binOf(ty * tilesX_ + tx);
       bin.order.push_back(Kind::Triangle);
       bin.triangles.push_back(r);
-      for (int k = 0; k < r.varyingCount; ++k) {
-        bin.planes.push_back(planes.a0[k]);
-        bin.planes.push_back(planes.dx[k]);
-        bin.planes.push_back(planes.dy[k]);
-      }
+      bin.planes.insert(bin.planes.end(), planeValues, planeValues + 3 * r.varyingCount);
       prefetchAppend(bin.triangles, 1);
       prefetchAppend(bin.planes, 3 * static_cast<size_t>(r.varyingCount));
       bytes_ += 1 + sizeof(TriangleRecord) + 3 * sizeof(double) * static_cast<size_t>(r.varyingCount);

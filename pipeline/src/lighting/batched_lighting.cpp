@@ -1,11 +1,27 @@
-#include "lighting/batched_lighting.h"
+// lightBatch (batched_lighting.h), compiled once per SIMD target (hwy/foreach_target.h
+// re-includes this file per target, as for the fragment kernels): the loops over a batch's
+// vertices are plain C++ that the compiler turns into vector code of each target's width.
+//
+// Equality between targets: every operation in the loops is one IEEE operation per lane
+// (add, multiply, exact division and square root, compare and select); -ffp-contract=off keeps
+// multiplies and adds apart on targets with FMA, and the power of the specular term is the same
+// library call on every target. So every target gives the same bits, and image_simd_targets
+// compares them on every image test.
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "lighting/batched_lighting.cpp"
+#include <hwy/foreach_target.h>  // IWYU pragma: keep
+#include <hwy/highway.h>
 
 #include <cmath>
 
+#include "core/simd_dispatch.h"
+#include "lighting/batched_lighting.h"
 #include "lighting/color_material.h"
 #include "lighting/lighting_math.h"
 
+HWY_BEFORE_NAMESPACE();
 namespace glass::gl {
+namespace HWY_NAMESPACE {
 namespace {
 
 constexpr int K = kLightingBatch;
@@ -95,7 +111,7 @@ void spotRows(const LightSource& light, const Rows3& toLight, int n, float* spot
 
 }  // namespace
 
-void lightBatch(const LightingState& state, int face, bool reverseNormal, const LightingInput& in,
+void LightBatch(const LightingState& state, int face, bool reverseNormal, const LightingInput& in,
                 LitColorRows& out) {
   const int n = in.count;
   MaterialRows m;
@@ -184,4 +200,20 @@ void lightBatch(const LightingState& state, int face, bool reverseNormal, const 
   }
 }
 
+}  // namespace HWY_NAMESPACE
 }  // namespace glass::gl
+HWY_AFTER_NAMESPACE();
+
+#if HWY_ONCE
+namespace glass::gl {
+
+constexpr SimdFunctions<decltype(&HWY_STATIC_DISPATCH(LightBatch))> kLightBatch =
+    GLASS_SIMD_FUNCTIONS(LightBatch);
+
+void lightBatch(const LightingState& state, int face, bool reverseNormal, const LightingInput& in,
+                LitColorRows& out) {
+  chosenSimdFunction(kLightBatch)(state, face, reverseNormal, in, out);
+}
+
+}  // namespace glass::gl
+#endif  // HWY_ONCE

@@ -180,6 +180,9 @@ void drawArrayElements(Context& ctx, GLenum mode, const int* indices, int first,
   }
   beginCommand(ctx, mode);
   if (!ctx.assembly.active) return;
+  // Indexed quads split along v1-v3, as Mesa's draw module splits indexed vertices
+  // (primitive_assembly.cpp, drawQuads), on the batched path as on the reference path.
+  if (indices != nullptr) ctx.assembly.pendingNeedsClipping = true;
   if (batchesElements(ctx, layout)) {
     drawArrayElementsBatched(ctx, layout, indices, first, count);
     endCommand(ctx);
@@ -190,8 +193,6 @@ void drawArrayElements(Context& ctx, GLenum mode, const int* indices, int first,
     readElement(ctx.arrays, layout, indices ? indices[i] : first + i, values);
     applyElement(ctx, layout, values);
   }
-  // Indexed quads split along v1-v3, as Mesa's clipping path splits them (primitive_assembly.cpp).
-  if (indices != nullptr) ctx.assembly.pendingNeedsClipping = true;
   endCommand(ctx);
 }
 
