@@ -121,10 +121,22 @@ enum rim_level { BOTTOM, TOP };
 static double rim_height(enum rim_level level) { return level == TOP ? block_max[1] : block_min[1]; }
 static double rim_outward(enum rim_level level) { return level == TOP ? 1.0 : -1.0; }
 
-/* The radius a rim is rounded with: the current radius when its edges are marked hard. */
-static float rim_radius(enum rim_level level)
+/* Whether the rim along side i (from corner i to corner i + 1, any i taken round the outline)
+ * at `level` is rounded: its edges there are marked hard and the radius is not 0. */
+static int side_rounded(int i, enum rim_level level)
 {
-  return (level == TOP ? plan.top_rounded : plan.bottom_rounded) ? radius : 0.0f;
+  const int n = plan.corners;
+  i = (i % n + n) % n;
+  return radius > 0 && (level == TOP ? plan.top_hard[i] : plan.bottom_hard[i]);
+}
+
+/* The radius the rim along side i at `level` is rounded with (0: sharp). */
+static double side_radius(int i, enum rim_level level) { return side_rounded(i, level) ? radius : 0.0; }
+
+/* Whether the rim is rounded on either side of corner k at `level`. */
+static int corner_rounded(int k, enum rim_level level)
+{
+  return side_rounded(k - 1, level) || side_rounded(k, level);
 }
 
 /* The texture's t on the sides at height y: 0 at the bottom, 1 at the top, the rims' arcs
@@ -212,10 +224,11 @@ static void control_point(float out[4], double x, double y, double z, double w)
  * inside the solid at a convex corner, outside it (a fillet filling the corner) at a concave one;
  * the control points are the same. The texture s runs from s0 to s0 + the arc's length, so the
  * checkerboard continues from the face. */
-static void rounded_edge(const float from[2], const float corner[2], const float to[2], float s0)
+static void rounded_edge(int k, const float from[2], const float corner[2], const float to[2], float s0)
 {
   const float w = (float)(sqrt(2.0) / 2.0);
-  const float y0 = block_min[1] + rim_radius(BOTTOM), y1 = block_max[1] - rim_radius(TOP);
+  const float y0 = block_min[1] + (corner_rounded(k, BOTTOM) ? radius : 0.0f);
+  const float y1 = block_max[1] - (corner_rounded(k, TOP) ? radius : 0.0f);
   float points[2][3][4]; /* [v][u][xyzw] */
   for (int v = 0; v < 2; ++v) {
     float y = v ? y1 : y0;
@@ -290,12 +303,12 @@ static void upright_axis(int i, double out[2])
 
 /* Where the top (or the bottom) meets its rim at corner k, in (x, z): above a rounded upright,
  * its axis (a convex corner, where the sphere closes) or the arc twice as far from it (a concave
- * one, the torus's inner rim, drawn by the caller); above a sharp upright, R in from both sides:
- * the mitre's top. */
+ * one, the torus's inner rim, drawn by the caller); above a sharp upright, R in from each side
+ * whose rim is rounded: the mitre's top when both are, else where the one rounded strip ends, in
+ * the plane of the sharp side. */
 static void rim_top_corner(int k, enum rim_level level, double out[2])
 {
   const int n = plan.corners;
-  const double r = rim_radius(level);
   if (plan.rounded[k] && radius > 0) {
     upright_axis(k, out);
     return;
@@ -303,7 +316,48 @@ static void rim_top_corner(int k, enum rim_level level, double out[2])
   double before[2], after[2];
   inward((k + n - 1) % n, before);
   inward(k, after);
-  for (int c = 0; c < 2; ++c) out[c] = plan.xz[k][c] + r * (before[c] + after[c]);
+  const double r_before = side_radius(k - 1, level), r_after = side_radius(k, level);
+  for (int c = 0; c < 2; ++c) out[c] = plan.xz[k][c] + r_before * before[c] + r_after * after[c];
+}
+
+/* The unit vector along side i, in the direction of the walk. */
+static void along_side(int i, double out[2])
+{
+  double in[2];
+  inward(i, in);
+  out[0] = -in[1];
+  out[1] = in[0];
+}
+
+static void piece_vertex(const double p[3], const double e[2], float s_e, const double s_direction[2])
+{
+  glTexCoord2f(s_e + (float)((p[0] - e[0]) * s_direction[0] + (p[2] - e[1]) * s_direction[1]), side_t(p[1]));
+  glVertex3dv(p);
+}
+
+/* A flat piece where a rounded rim's strip ends against a sharp edge, in the vertical plane
+ * through e and c (x, z, R apart): the strip's end is the rim's quarter circle around c at R in
+ * from the rim's height, from e (R in) to c (at the rim's height), the same rational quadratic as
+ * the strip's patch (control points e R in, e at the rim weighted sqrt(2)/2, c at the rim), so
+ * they share their points. With `disk` the piece is the quarter disk inside the arc (fanned from
+ * its centre), else the quarter moon between the arc and the square's corner e at the rim (fanned
+ * from that corner). Its texture: t as on the sides, s from s_e at e along `s_direction`. */
+static void rim_end_piece(const double e[2], const double c[2], enum rim_level level, const double normal[2],
+                          float s_e, const double s_direction[2], int disk)
+{
+  const double rim = rim_height(level), inner = rim - rim_outward(level) * radius, w = sqrt(2.0) / 2.0;
+  const double centre[3] = {disk ? c[0] : e[0], disk ? inner : rim, disk ? c[1] : e[1]};
+  glNormal3d(normal[0], 0, normal[1]);
+  glBegin(GL_TRIANGLE_FAN);
+  piece_vertex(centre, e, s_e, s_direction);
+  for (int step = 0; step <= ARC_STEPS; ++step) {
+    const double u = (double)step / ARC_STEPS;
+    const double b0 = (1 - u) * (1 - u), b1 = 2 * u * (1 - u) * w, b2 = u * u, sum = b0 + b1 + b2;
+    const double p[3] = {((b0 + b1) * e[0] + b2 * c[0]) / sum, (b0 * inner + (b1 + b2) * rim) / sum,
+                         ((b0 + b1) * e[1] + b2 * c[1]) / sum};
+    piece_vertex(p, e, s_e, s_direction);
+  }
+  glEnd();
 }
 
 /* The rounded rim along side i: the rim's quarter circle (from the side at R below the top, over
@@ -315,7 +369,7 @@ static void rim_top_corner(int k, enum rim_level level, double out[2])
 static void rim_strip(int i, enum rim_level level, float s0, float s1)
 {
   const int n = plan.corners;
-  const double r = rim_radius(level), w = sqrt(2.0) / 2.0;
+  const double r = side_radius(i, level), w = sqrt(2.0) / 2.0;
   const double top = rim_height(level), out = rim_outward(level), height = block_max[1] - block_min[1];
   float net[2][3][4], tex[2][3][2];
   double centre[2][3][3];
@@ -368,7 +422,7 @@ static void rim_strip(int i, enum rim_level level, float s0, float s1)
  * radii 2 R and R around the fillet's axis). */
 static void rim_corner(int i, enum rim_level level, float s0)
 {
-  const double r = rim_radius(level), w = sqrt(2.0) / 2.0;
+  const double r = radius, w = sqrt(2.0) / 2.0;
   const double top = rim_height(level), out = rim_outward(level), height = block_max[1] - block_min[1];
   float from[2], to[2];
   corner_ends(i, from, to);
@@ -402,15 +456,25 @@ static void GLAPIENTRY top_vertex(void *data)
   glVertex3dv(p);
 }
 
+/* One point of the top's (or the bottom's) outline, at height y. */
+static void outline_point(GLdouble (*outline)[3], int *count, double x, double y, double z)
+{
+  outline[*count][0] = x;
+  outline[*count][1] = y;
+  outline[*count][2] = z;
+  ++*count;
+}
+
 /* The top or the bottom: the outline with its rounded corners, which may be concave, so GLU's
- * tessellator cuts it into triangles (facing up or down: the normal is given). */
+ * tessellator cuts it into triangles (facing up or down: the normal is given). Along a side whose
+ * rim is rounded the outline runs R in from the side, along a sharp one on the side's edge. */
 static void block_end(enum rim_level level)
 {
   static GLUtesselator *tess;
   static GLdouble (*outline)[3];
   static int capacity;
-  const double r = rim_radius(level), y = rim_height(level), out = rim_outward(level);
-  const int needed = plan.corners * (ARC_STEPS + 1);
+  const double y = rim_height(level), out = rim_outward(level);
+  const int needed = plan.corners * (ARC_STEPS + 3);
   if (!tess) {
     tess = gluNewTess();
     gluTessCallback(tess, GLU_TESS_BEGIN, (void (GLAPIENTRY *)(void))glBegin);
@@ -428,31 +492,48 @@ static void block_end(enum rim_level level)
   for (int i = 0; i < plan.corners; ++i) {
     float from[2], to[2], corner[2] = {(float)plan.xz[i][0], (float)plan.xz[i][1]};
     corner_ends(i, from, to);
-    if (r > 0 && !(plan.rounded[i] && !plan.convex[i])) {
-      /* The rounded rim moved the corner in (a sphere's pole or a mitre's top). */
-      double at[2];
-      rim_top_corner(i, level, at);
-      outline[count][0] = at[0];
-      outline[count][1] = y;
-      outline[count][2] = at[1];
-      ++count;
+    const int before = side_rounded(i - 1, level), after = side_rounded(i, level);
+    const int upright = plan.rounded[i] && radius > 0;
+    double arc[3];
+    if (!before && !after) {
+      /* A sharp rim on both sides: the corner, or the upright's arc. */
+      const int steps = upright ? ARC_STEPS : 0;
+      for (int step = 0; step <= steps; ++step) {
+        arc_point(from, corner, to, (double)step / ARC_STEPS, arc);
+        outline_point(outline, &count, arc[0], y, arc[2]);
+      }
       continue;
     }
-    if (r > 0) {
+    double at[2];
+    rim_top_corner(i, level, at);
+    if (!upright) {
+      /* The mitre's top, or where the one rounded strip ends in the sharp side's plane; at a
+       * concave corner that end's cap reaches from the corner to it. */
+      if (!plan.convex[i] && after && !before) outline_point(outline, &count, corner[0], y, corner[1]);
+      outline_point(outline, &count, at[0], y, at[1]);
+      if (!plan.convex[i] && before && !after) outline_point(outline, &count, corner[0], y, corner[1]);
+      continue;
+    }
+    /* Above a rounded upright: a sharp side's edge runs on to where the upright's arc begins (or
+     * ends), and the cap of the sphere or torus piece's end from there. */
+    if (!before) outline_point(outline, &count, from[0], y, from[1]);
+    if (plan.convex[i]) {
+      /* The sphere's pole. */
+      outline_point(outline, &count, at[0], y, at[1]);
+    } else {
       /* Above a fillet: the torus's inner rim, the fillet's arc scaled by 2 from its axis. */
-      double axis[2];
-      upright_axis(i, axis);
+      float far_from[2], far_corner[2], far_to[2];
       for (int c = 0; c < 2; ++c) {
-        from[c] = (float)(axis[c] + 2 * (from[c] - axis[c]));
-        corner[c] = (float)(axis[c] + 2 * (corner[c] - axis[c]));
-        to[c] = (float)(axis[c] + 2 * (to[c] - axis[c]));
+        far_from[c] = (float)(at[c] + 2 * (from[c] - at[c]));
+        far_corner[c] = (float)(at[c] + 2 * (corner[c] - at[c]));
+        far_to[c] = (float)(at[c] + 2 * (to[c] - at[c]));
+      }
+      for (int step = 0; step <= ARC_STEPS; ++step) {
+        arc_point(far_from, far_corner, far_to, (double)step / ARC_STEPS, arc);
+        outline_point(outline, &count, arc[0], y, arc[2]);
       }
     }
-    const int steps = plan.rounded[i] && radius > 0 ? ARC_STEPS : 0;
-    for (int step = 0; step <= steps; ++step) {
-      arc_point(from, corner, to, (double)step / ARC_STEPS, outline[count]);
-      outline[count++][1] = y;
-    }
+    if (!after) outline_point(outline, &count, to[0], y, to[1]);
   }
   glNormal3f(0, (float)out, 0);
   gluTessBeginPolygon(tess, NULL);
@@ -462,13 +543,98 @@ static void block_end(enum rim_level level)
   gluTessEndPolygon(tess);
 }
 
+/* At corner k, where the rim at `level` is rounded on one side of it or on both: above a rounded
+ * upright the sphere or torus piece, and where one side's rim is sharp a flat cap ending it, in
+ * the plane normal to that side through the upright's arc's end (the torus or sphere is kept
+ * whole and steps down to the sharp edge, as the library's rounding does); above a sharp concave
+ * corner with one side rounded, the quarter moon that ends that side's strip, in the sharp side's
+ * plane past the corner. (Above a sharp convex corner the sharp side's face is cut instead:
+ * side_face.) s is the texture's s where the corner's arc begins. */
+static void corner_pieces(int k, enum rim_level level, float s)
+{
+  const int n = plan.corners;
+  const int before = side_rounded(k - 1, level), after = side_rounded(k, level);
+  if (!before && !after) return;
+  if (plan.rounded[k]) {
+    rim_corner(k, level, s);
+    if (before && after) return;
+    float from[2], to[2];
+    corner_ends(k, from, to);
+    double axis[2], e[2], c[2], normal[2], direction[2];
+    upright_axis(k, axis);
+    const double scale = plan.convex[k] ? 0.0 : 2.0;
+    for (int m = 0; m < 2; ++m) {
+      e[m] = after ? from[m] : to[m];
+      c[m] = axis[m] + scale * (e[m] - axis[m]);
+      normal[m] = (plan.xz[k][m] - e[m]) / radius;
+      direction[m] = (c[m] - e[m]) / radius;
+    }
+    rim_end_piece(e, c, level, normal, after ? s : s + (float)(PI / 2) * radius, direction, 0);
+    return;
+  }
+  if (plan.convex[k] || (before && after)) return;
+  const int sharp = after ? (k + n - 1) % n : k, rounded = after ? k : (k + n - 1) % n;
+  double in_rounded[2], in_sharp[2], direction[2], c[2];
+  inward(rounded, in_rounded);
+  inward(sharp, in_sharp);
+  along_side(sharp, direction);
+  for (int m = 0; m < 2; ++m) c[m] = plan.xz[k][m] + radius * in_rounded[m];
+  const double normal[2] = {-in_sharp[0], -in_sharp[1]};
+  rim_end_piece(plan.xz[k], c, level, normal, s, direction, 0);
+}
+
+/* Whether the rim of side i at `level` is cut at its end `end` (0: corner i, 1: corner i + 1):
+ * its own rim sharp there, the corner convex with a sharp upright and the next side's rim
+ * rounded. That side's strip ends in this side's plane, and of the corner's R x R square below
+ * the rim this side keeps only the quarter disk under the strip's arc. */
+static int side_cut(int i, int end, enum rim_level level)
+{
+  const int k = (i + end) % plan.corners;
+  return !side_rounded(i, level) && side_rounded(end ? i + 1 : i - 1, level) && plan.convex[k] &&
+         !(plan.rounded[k] && radius > 0);
+}
+
+/* The flat face of side i from `start` to `end` (x, z), between its rims (R in from a rounded
+ * one), with the texture's s from s0 to s1 along it; outwards is to the right of the walk. */
+static void side_face(int i, const float start[2], const float end[2], float s0, float s1)
+{
+  const float along[3] = {end[0] - start[0], 0, end[1] - start[1]};
+  const float length = sqrtf(along[0] * along[0] + along[2] * along[2]);
+  if (length <= 0) return;
+  const float normal[3] = {-along[2] / length, 0, along[0] / length};
+  const double low = block_min[1] + side_radius(i, BOTTOM), high = block_max[1] - side_radius(i, TOP);
+  const int cut[2][2] = {{side_cut(i, 0, BOTTOM), side_cut(i, 1, BOTTOM)}, {side_cut(i, 0, TOP), side_cut(i, 1, TOP)}};
+  const double inner_low = low + (cut[BOTTOM][0] || cut[BOTTOM][1] ? radius : 0);
+  const double inner_high = high - (cut[TOP][0] || cut[TOP][1] ? radius : 0);
+  const float base[3] = {start[0], (float)inner_low, start[1]}, up[3] = {0, (float)(inner_high - inner_low), 0};
+  grid(base, along, up, normal, 4, s0, s1, side_t(inner_low), side_t(inner_high));
+  for (int level = BOTTOM; level <= TOP; ++level) {
+    if (!cut[level][0] && !cut[level][1]) continue;
+    /* The band between the rim and R in from it, short of the cut squares, then the quarter
+     * disks in them. */
+    const double y0 = level == TOP ? inner_high : low, y1 = level == TOP ? high : inner_low;
+    const float r0 = cut[level][0] ? radius : 0.0f, r1 = cut[level][1] ? radius : 0.0f;
+    const float band_base[3] = {start[0] + along[0] / length * r0, (float)y0, start[1] + along[2] / length * r0};
+    const float band_along[3] = {along[0] / length * (length - r0 - r1), 0, along[2] / length * (length - r0 - r1)};
+    const float band_up[3] = {0, (float)(y1 - y0), 0};
+    grid(band_base, band_along, band_up, normal, 4, s0 + r0, s1 - r1, side_t(y0), side_t(y1));
+    for (int at = 0; at < 2; ++at) {
+      if (!cut[level][at]) continue;
+      const int k = (i + at) % plan.corners;
+      double in_other[2], c[2], direction[2];
+      inward(at ? (i + 1) % plan.corners : (i + plan.corners - 1) % plan.corners, in_other);
+      along_side(i, direction);
+      for (int m = 0; m < 2; ++m) c[m] = plan.xz[k][m] + radius * in_other[m];
+      const double face_normal[2] = {normal[0], normal[2]};
+      rim_end_piece(plan.xz[k], c, (enum rim_level)level, face_normal, at ? s1 : s0, direction, 1);
+    }
+  }
+}
+
 /* The object: its sides and rounded edges, in order around it so that the texture's s is the
  * length walked around it; then the top. */
 static void block(int textured)
 {
-  const float height = block_max[1] - block_min[1];
-  const float low = rim_radius(BOTTOM), high = rim_radius(TOP);
-  const float up[3] = {0, height - low - high, 0};
   float s = 0;
   if (textured) {
     glEnable(GL_TEXTURE_2D);
@@ -480,21 +646,15 @@ static void block(int textured)
     float corner[2] = {(float)plan.xz[i][0], (float)plan.xz[i][1]};
     corner_ends(i, from, to);
     corner_ends(next, next_from, unused);
-    if (plan.rounded[i] && radius > 0) {
-      rounded_edge(from, corner, to, s);
-      if (high > 0) rim_corner(i, TOP, s);
-      if (low > 0) rim_corner(i, BOTTOM, s);
-      s += (float)(PI / 2) * radius;
-    }
-    /* The side from this corner to the next; outwards is to the right of the walk. */
-    const float along[3] = {next_from[0] - to[0], 0, next_from[1] - to[1]};
-    const float length = sqrtf(along[0] * along[0] + along[2] * along[2]);
-    if (length <= 0) continue;
-    const float base[3] = {to[0], block_min[1] + low, to[1]};
-    const float normal[3] = {-along[2] / length, 0, along[0] / length};
-    grid(base, along, up, normal, 4, s, s + length, side_t(base[1]), side_t(block_max[1] - high));
-    if (high > 0) rim_strip(i, TOP, s, s + length);
-    if (low > 0) rim_strip(i, BOTTOM, s, s + length);
+    if (plan.rounded[i] && radius > 0) rounded_edge(i, from, corner, to, s);
+    corner_pieces(i, TOP, s);
+    corner_pieces(i, BOTTOM, s);
+    if (plan.rounded[i] && radius > 0) s += (float)(PI / 2) * radius;
+    /* The side from this corner to the next. */
+    const float length = hypotf(next_from[0] - to[0], next_from[1] - to[1]);
+    side_face(i, to, next_from, s, s + length);
+    if (side_rounded(i, TOP)) rim_strip(i, TOP, s, s + length);
+    if (side_rounded(i, BOTTOM)) rim_strip(i, BOTTOM, s, s + length);
     s += length;
   }
   block_end(TOP);
@@ -771,7 +931,8 @@ static void load_object(int argc, char **argv)
   }
   if (plan.sharp_hard_edges > 0)
     fprintf(stderr, "homework45: %s: %d hard edges stay sharp (this program rounds the upright edges, and "
-            "the top's and the bottom's rims when all the edges of each are hard)\n", path, plan.sharp_hard_edges);
+            "the top's and the bottom's rims along each side whose edges there are all hard)\n", path,
+            plan.sharp_hard_edges);
   block_min[0] = (float)plan.min_x, block_max[0] = (float)plan.max_x;
   block_min[1] = (float)plan.bottom, block_max[1] = (float)plan.top;
   block_min[2] = (float)plan.min_z, block_max[2] = (float)plan.max_z;

@@ -77,6 +77,14 @@ static int index_in(const struct term *t, long count, long *out)
   return 1;
 }
 
+/* Whether the list of hard edges names edge e. */
+static int term_list_has_integer(const struct term *list, long e)
+{
+  for (size_t k = 0; k < list->length; ++k)
+    if (list->items[k].kind == TERM_INTEGER && list->items[k].integer == e) return 1;
+  return 0;
+}
+
 static double big_endian_double(const unsigned char *bytes)
 {
   unsigned long long bits = 0;
@@ -138,9 +146,10 @@ static int read_object(const struct term *root, struct object *object, char *err
 
 /* The outline of the top faces (those with every vertex at the top), walked along their edges
  * that border a face which is not on top, into plan->xz; *outline_next gets the vertex after
- * each one of it (-1 elsewhere), for the caller to free. */
+ * each one of it (-1 elsewhere) and *outline_side the side (corner k to corner k + 1) its edge to
+ * that vertex lies on, both for the caller to free. */
 static int trace_outline(const struct object *o, struct floor_plan *plan, char *error, size_t size,
-                         long **outline_next)
+                         long **outline_next, long **outline_side)
 {
   const double extent = fmax(plan->top - plan->bottom, 1e-300);
   const double tolerance = 1e-9 * extent;
@@ -191,8 +200,15 @@ static int trace_outline(const struct object *o, struct floor_plan *plan, char *
   plan->xz = calloc((size_t)loop, sizeof *plan->xz);
   plan->rounded = calloc((size_t)loop, sizeof *plan->rounded);
   plan->convex = calloc((size_t)loop, sizeof *plan->convex);
-  if (!plan->xz || !plan->rounded || !plan->convex) {
+  plan->top_hard = calloc((size_t)loop, sizeof *plan->top_hard);
+  plan->bottom_hard = calloc((size_t)loop, sizeof *plan->bottom_hard);
+  long *corner_vertex = calloc((size_t)loop, sizeof *corner_vertex);
+  long *side = malloc((size_t)o->vertex_count * sizeof *side + 1);
+  if (!plan->xz || !plan->rounded || !plan->convex || !plan->top_hard || !plan->bottom_hard ||
+      !corner_vertex || !side) {
     free(next);
+    free(corner_vertex);
+    free(side);
     return failed(error, size, "out of memory");
   }
   long v = start;
@@ -205,14 +221,26 @@ static int trace_outline(const struct object *o, struct floor_plan *plan, char *
     const double scale = hypot(ax, az) * hypot(bx, bz);
     if (fabs(turn) <= 1e-9 * scale && along > 0) continue; /* straight on */
     if (fabs(along) > 1e-9 * scale)
-      return free(next), failed(error, size, "object 1: its outline turns at vertex %ld by an angle other than "
-                                "90 degrees", here);
+      return free(next), free(corner_vertex), free(side),
+             failed(error, size, "object 1: its outline turns at vertex %ld by an angle other than 90 degrees", here);
+    corner_vertex[plan->corners] = here;
     plan->xz[plan->corners][0] = o->position[here][0];
     plan->xz[plan->corners][1] = o->position[here][2];
     plan->convex[plan->corners] = turn > 0; /* turning left in (x, z); made "convex" below */
     ++plan->corners;
   }
+  /* The side of each outline edge, named by the vertex it leaves: the corners come in the
+   * order of the walk. */
+  for (long w = 0; w < o->vertex_count; ++w) side[w] = -1;
+  v = corner_vertex[0];
+  for (long k = 0, c = 0, current = 0; k < loop && plan->corners > 0; ++k) {
+    if (c < plan->corners && v == corner_vertex[c]) current = c++;
+    side[v] = current;
+    v = next[v];
+  }
+  free(corner_vertex);
   *outline_next = next;
+  *outline_side = side;
   return 1;
 }
 
@@ -269,8 +297,8 @@ int wings_read_floor_plan(const char *path, struct floor_plan *plan, char *error
     if (!twin) ok = failed(error, error_size, "object 1, vertex %ld: no vertex above or below it (the object "
                            "does not stand upright)", v);
   }
-  long *outline_next = NULL;
-  if (ok) ok = trace_outline(&object, plan, error, error_size, &outline_next);
+  long *outline_next = NULL, *outline_side = NULL;
+  if (ok) ok = trace_outline(&object, plan, error, error_size, &outline_next, &outline_side);
   if (ok && plan->corners < 4) ok = failed(error, error_size, "object 1: its outline has %d corners", plan->corners);
   if (ok) {
     /* Counter-clockwise seen from above: the signed area in (z, x) is positive. */
@@ -281,7 +309,8 @@ int wings_read_floor_plan(const char *path, struct floor_plan *plan, char *error
     }
     /* Walked counter-clockwise seen from above, the outline turns right in (x, z) at its convex
      * corners; reversing the walk turns every left turn into a right one. */
-    if (area < 0) {
+    const int reversed = area < 0;
+    if (reversed) {
       for (int i = 0, j = plan->corners - 1; i < j; ++i, --j) {
         double x = plan->xz[i][0], z = plan->xz[i][1];
         int left = plan->convex[i];
@@ -296,13 +325,17 @@ int wings_read_floor_plan(const char *path, struct floor_plan *plan, char *error
       const double *a = plan->xz[i], *b = plan->xz[(i + 1) % plan->corners];
       plan->max_radius = fmin(plan->max_radius, hypot(b[0] - a[0], b[1] - a[1]) / 2);
     }
-    /* Hard edges: uprights round their corner; those around the top round its rim when all of
-     * them are hard; others stay sharp here. */
-    long rim_edges = 0, hard_rim_edges = 0, bottom_rim_edges = 0, hard_bottom_rim_edges = 0;
+    /* Hard edges: uprights round their corner; those along the top (or the bottom) of a side
+     * round that stretch of the rim when all of them there are hard; others stay sharp here. */
+    const int n = plan->corners;
+    /* Per side in the order of the walk (before any reversal): rim edges and hard ones, at the
+     * top ([0]) and at the bottom ([1]). */
+    long *counts = calloc(4 * (size_t)n + 1, sizeof *counts);
+    long *top_twin = malloc((size_t)object.vertex_count * sizeof *top_twin + 1);
     /* The bottom's rim: edges along the bottom between a bottom face and a side face (one
      * layer of cubes: a side face has vertices at the top too). */
     int *on_bottom = calloc((size_t)object.face_count + 1, sizeof *on_bottom);
-    if (!on_bottom) ok = failed(error, error_size, "out of memory");
+    if (!on_bottom || !counts || !top_twin) ok = failed(error, error_size, "out of memory");
     for (long f = 0; ok && f < object.face_count; ++f) on_bottom[f] = 1;
     for (long e = 0; ok && e < object.edge_count; ++e) {
       const struct winged_edge *edge = &object.edges[e];
@@ -310,10 +343,33 @@ int wings_read_floor_plan(const char *path, struct floor_plan *plan, char *error
           fabs(object.position[edge->ve][1] - plan->bottom) > tolerance)
         on_bottom[edge->lf] = on_bottom[edge->rf] = 0;
     }
+    /* The outline vertex above each vertex (itself on the outline), -1 where there is none. */
+    for (long v = 0; ok && v < object.vertex_count; ++v) {
+      top_twin[v] = -1;
+      for (long w = 0; w < object.vertex_count && top_twin[v] < 0; ++w)
+        if (outline_side[w] >= 0 && object.position[w][0] == object.position[v][0] &&
+            object.position[w][2] == object.position[v][2])
+          top_twin[v] = w;
+    }
     for (long e = 0; ok && e < object.edge_count; ++e) {
       const struct winged_edge *edge = &object.edges[e];
-      rim_edges += outline_next[edge->vs] == edge->ve || outline_next[edge->ve] == edge->vs;
-      bottom_rim_edges += on_bottom[edge->lf] != on_bottom[edge->rf];
+      const int rim = outline_next[edge->vs] == edge->ve || outline_next[edge->ve] == edge->vs;
+      const int bottom_rim = !rim && on_bottom[edge->lf] != on_bottom[edge->rf];
+      /* The side the edge runs along: that of the outline edge it is (or lies below). */
+      const long a = rim ? edge->vs : top_twin[edge->vs], b = rim ? edge->ve : top_twin[edge->ve];
+      long at = -1;
+      if ((rim || bottom_rim) && a >= 0 && b >= 0)
+        at = outline_next[a] == b ? outline_side[a] : outline_next[b] == a ? outline_side[b] : -1;
+      const int hard = term_list_has_integer(object.hard, e);
+      if ((rim || bottom_rim) && at < 0) {
+        /* (Not below an outline edge: no side to round it along.) */
+        plan->sharp_hard_edges += hard;
+        continue;
+      }
+      if (rim || bottom_rim) {
+        counts[4 * at + (bottom_rim ? 2 : 0)] += 1;
+        counts[4 * at + (bottom_rim ? 2 : 0) + 1] += hard;
+      }
     }
     for (size_t h = 0; ok && h < object.hard->length; ++h) {
       long e;
@@ -324,25 +380,31 @@ int wings_read_floor_plan(const char *path, struct floor_plan *plan, char *error
       const struct winged_edge *edge = &object.edges[e];
       const double *a = object.position[edge->vs], *b = object.position[edge->ve];
       const int upright = a[0] == b[0] && a[2] == b[2];
-      const int rim = outline_next[edge->vs] == edge->ve || outline_next[edge->ve] == edge->vs;
-      const int bottom_rim = on_bottom[edge->lf] != on_bottom[edge->rf];
       for (int i = 0; i < plan->corners && upright; ++i)
         if (plan->xz[i][0] == a[0] && plan->xz[i][1] == a[2]) plan->rounded[i] = 1;
       /* (A hard upright in the middle of a straight side, or a hard edge between two top or two
        * bottom faces, has nothing to round.) */
-      if (rim) ++hard_rim_edges;
-      else if (bottom_rim) ++hard_bottom_rim_edges;
     }
-    plan->top_rounded = hard_rim_edges > 0 && hard_rim_edges == rim_edges;
-    plan->bottom_rounded = hard_bottom_rim_edges > 0 && hard_bottom_rim_edges == bottom_rim_edges;
-    if (!plan->top_rounded) plan->sharp_hard_edges += (int)hard_rim_edges;
-    if (!plan->bottom_rounded) plan->sharp_hard_edges += (int)hard_bottom_rim_edges;
+    int any_rim = 0;
+    for (int side = 0; ok && side < n; ++side) {
+      /* Reversing the corners' order turns side k (corner k to k + 1) into side n - 2 - k. */
+      const int to = reversed ? (2 * n - 2 - side) % n : side;
+      for (int level = 0; level < 2; ++level) {
+        const long edges = counts[4 * side + 2 * level], hard = counts[4 * side + 2 * level + 1];
+        const int whole = hard > 0 && hard == edges;
+        (level ? plan->bottom_hard : plan->top_hard)[to] = whole;
+        if (!whole) plan->sharp_hard_edges += (int)hard;
+        any_rim |= whole;
+      }
+    }
     /* Two rounded rims share the height; one takes at most half of it, as on a face's side. */
-    if (plan->top_rounded || plan->bottom_rounded)
-      plan->max_radius = fmin(plan->max_radius, (plan->top - plan->bottom) / 2);
+    if (any_rim) plan->max_radius = fmin(plan->max_radius, (plan->top - plan->bottom) / 2);
+    free(counts);
+    free(top_twin);
     free(on_bottom);
   }
   free(outline_next);
+  free(outline_side);
   free(object.position);
   free(object.edges);
   erlang_term_free(root);
@@ -356,7 +418,9 @@ void floor_plan_free(struct floor_plan *plan)
   free(plan->xz);
   free(plan->rounded);
   free(plan->convex);
+  free(plan->top_hard);
+  free(plan->bottom_hard);
   plan->xz = NULL;
-  plan->rounded = plan->convex = NULL;
+  plan->rounded = plan->convex = plan->top_hard = plan->bottom_hard = NULL;
   plan->corners = 0;
 }

@@ -15,12 +15,13 @@ struct floor_plan {
   int *convex;        /* whether the solid's angle at the corner is 90 (else 270) degrees */
   double bottom, top; /* heights */
   double min_x, max_x, min_z, max_z;
-  int top_rounded;    /* whether every edge around the top is hard (the top's rim is rounded) */
-  int bottom_rounded; /* whether every edge around the bottom is hard */
+  int *top_hard;      /* whether every edge along the top of side i (from corner i to
+                         corner i + 1) is hard: that stretch of the top's rim is rounded */
+  int *bottom_hard;   /* the same along the bottom of side i */
   double max_radius;  /* half the outline's shortest side (and of the height, with a rim
                          rounded) */
-  int sharp_hard_edges; /* hard edges this program leaves sharp: some but not all of those
-                           around the top or around the bottom */
+  int sharp_hard_edges; /* hard edges this program leaves sharp: those along the top or the
+                           bottom of a side whose edges there are hard only in part */
 };
 
 /* Reads the first object of a .wings file. Returns 0 and writes the reason into `error` when the

@@ -1049,7 +1049,21 @@ glm::dvec2 torusTexCoord(const RoundedPatchInfo& info, const FaceChart& chart, d
 
 }  // namespace
 
+glm::dvec3 capFoldedOntoFace(const FaceChart& chart, const glm::dvec3& capNormal, const glm::dvec3& p) {
+  // The cap stands at a right angle to its face (its normal lies along the sharp edge, in the
+  // face's plane); projected onto the face it would collapse to a line and the texture stretch
+  // across it. Turned about the line where the two planes meet, outwards along the cap's normal
+  // (the side of the torus piece it faces), it lies flat on the face: a rigid motion, so the
+  // texture keeps its scale and meets the face's own along that line.
+  const glm::dvec3 across = glm::cross(chart.sAxis, chart.tAxis);
+  if (glm::length(across) == 0.0) return p;  // a face whose texture has no extent: nothing to keep
+  const glm::dvec3 normal = glm::normalize(across);
+  const double height = glm::dot(p - chart.origin, normal);
+  return p - height * normal + std::abs(height) * capNormal;
+}
+
 glm::dvec2 roundedTexCoord(const RoundedPatchInfo& info, const FaceChart& chart, double radius, const glm::dvec3& p) {
+  if (info.capNormal != glm::dvec3(0.0)) return chart.at(capFoldedOntoFace(chart, info.capNormal, p));
   if (!info.rounded) return chart.at(p);
   if (info.torus) return torusTexCoord(info, chart, radius, p);
   const glm::dvec3 centre = roundingCentre(info, p);
@@ -1156,7 +1170,7 @@ void appendFlatPolygon(const MarkedPolyhedron& poly, std::size_t f, const std::v
   for (const glm::dvec3& p : points) {
     out.mesh.positions.push_back(p);
     out.mesh.normals.push_back(normal);
-    out.mesh.texCoords.push_back(chart.at(p));
+    out.mesh.texCoords.push_back(chart.at(ownPlane ? capFoldedOntoFace(chart, planeNormal, p) : p));
   }
   for (const TessellatedTriangle& t : tess.triangles) {
     for (int k : t.vertices) out.mesh.indices.push_back(base + static_cast<std::uint32_t>(k));
@@ -1231,6 +1245,20 @@ RoundedMesh tessellateRounded(const MarkedPolyhedron& poly, const RoundedSurface
           // past a cap's).
           const double along = glm::dot(p - piece.start, direction);
           if (!(along > 0.0 && along < glm::dot(direction, direction))) continue;
+          inside.emplace_back(along, p);
+        }
+      }
+      if (piece.along.empty()) {
+        // A straight side no patch runs along, which a patch may still reach when the face
+        // between them is used up (R half its width): a cap's side then meets a strip's side
+        // directly. Its vertices on the segment go into the outline too, so the two share them.
+        const double length2 = glm::dot(direction, direction);
+        for (std::size_t i = 0; i < meshVertices && length2 > 0.0; ++i) {
+          const glm::dvec3& p = out.mesh.positions[i];
+          const double along = glm::dot(p - piece.start, direction);
+          if (!(along > 0.0 && along < length2)) continue;
+          const glm::dvec3 off = p - piece.start - (along / length2) * direction;
+          if (glm::dot(off, off) > 1e-24 * length2) continue;
           inside.emplace_back(along, p);
         }
       }

@@ -7,7 +7,8 @@
 %%
 %% Usage: escript scenes/models/make_wings_models.escript REPOSITORY_ROOT
 %% Writes scenes/models/*.wings, examples/homework45/l_block.wings,
-%% tests/homework45/l_block_uprights.wings, tests/homework45/l_block_all_hard.wings and
+%% tests/homework45/l_block_uprights.wings, tests/homework45/l_block_all_hard.wings,
+%% tests/homework45/l_block_partial*.wings and
 %% tests/unit/data/wings/*.wings and *.term.
 
 main([Root]) ->
@@ -64,6 +65,32 @@ main([Root]) ->
     %% The same with only its uprights hard (its test compares the two).
     write(filename:join(Root, "tests/homework45/l_block_uprights.wings"),
           [object("L", HwVs, HwFs, Upright, top_paint, true)], Materials, []),
+    %% Partly marked rims: the top's along the back (z = -1) and along the inner side of the arm
+    %% (x = 0, z >= 0), the bottom's along the right (x = 1) and the arm's front (z = 0, x >= 0);
+    %% the uprights at x = -1 and the inner one hard. Where a rounded stretch meets a sharp one
+    %% above a rounded upright the sphere or torus piece ends in a cap; above a sharp one the
+    %% strip ends in the sharp side's plane.
+    Partial = fun(A, B) ->
+                  (upright(A, B) andalso (element(1, A) == -1.0 orelse {element(1, A), element(3, A)} == {0.0, 0.0}))
+                  orelse level_side(A, B, 1.0, z, -1.0, any) orelse level_side(A, B, 1.0, x, 0.0, z)
+                  orelse level_side(A, B, 0.0, x, 1.0, any) orelse level_side(A, B, 0.0, z, 0.0, x)
+              end,
+    write(filename:join(Root, "tests/homework45/l_block_partial.wings"),
+          [object("L", HwVs, HwFs, Partial, top_paint, true)], Materials, []),
+    %% The same rims with every upright sharp, the top's along the arm's end (z = 1) too: strips
+    %% ending in a sharp side's plane at convex corners (cutting that side's face) and at the
+    %% concave one (a quarter moon past the corner).
+    PartialSharp = fun(A, B) ->
+                       level_side(A, B, 1.0, z, -1.0, any) orelse level_side(A, B, 1.0, x, 0.0, z)
+                       orelse level_side(A, B, 1.0, z, 1.0, any) orelse level_side(A, B, 0.0, z, 0.0, x)
+                   end,
+    write(filename:join(Root, "tests/homework45/l_block_partial_sharp_uprights.wings"),
+          [object("L", HwVs, HwFs, PartialSharp, top_paint, true)], Materials, []),
+    %% The back's top rim (two edges) hard only along x >= 0: a side hard in part stays sharp,
+    %% reported.
+    HalfSide = fun(A, B) -> level_side(A, B, 1.0, z, -1.0, x) end,
+    write(filename:join(Root, "tests/homework45/l_block_half_side.wings"),
+          [object("L", HwVs, HwFs, HalfSide, top_paint, true)], Materials, []),
     %% Unit test files.
     {CubeVs, CubeFs} = cubes([{0, 0, 0}], 1.0, {0.0, 0.0, 0.0}),
     None = fun(_, _) -> false end,
@@ -150,6 +177,14 @@ top_ring_and_upright({AX, AY, AZ}, {BX, BY, BZ}, Top, {OX, _, OZ}) ->
     (AY == Top andalso BY == Top) orelse (AX == OX andalso BX == OX andalso AZ == OZ andalso BZ == OZ).
 
 upright({AX, _, AZ}, {BX, _, BZ}) -> AX == BX andalso AZ == BZ.
+
+%% An edge at height Y with coordinate Axis (x or z) equal to Value at both ends, and, unless
+%% Half is any, its other coordinate (Half) at least 0 at both ends.
+level_side({AX, AY, AZ}, {BX, BY, BZ}, Y, Axis, Value, Half) ->
+    Coordinate = fun(x, {X, _}) -> X; (z, {_, Z}) -> Z end,
+    {A, B} = {{AX, AZ}, {BX, BZ}},
+    AY == Y andalso BY == Y andalso Coordinate(Axis, A) == Value andalso Coordinate(Axis, B) == Value
+        andalso (Half == any orelse (Coordinate(Half, A) >= 0 andalso Coordinate(Half, B) >= 0)).
 
 %% A top edge (y = Top) on the outside of an L of cubes of size Size from Low to Low + 2 Size in
 %% x and z.

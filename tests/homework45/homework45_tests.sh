@@ -1,9 +1,12 @@
 #!/bin/sh
 # Homework 4-5's program headless (SDL_VIDEODRIVER=dummy, set by ctest), driven by
 # GLASS_GLUT_EVENTS; its snapshots compared with png_probe's same/differ.
-#   homework45_tests.sh PROGRAM PNG_PROBE WORK_DIR MODEL UPRIGHTS_MODEL ALL_HARD_MODEL
+#   homework45_tests.sh PROGRAM PNG_PROBE WORK_DIR MODEL UPRIGHTS_MODEL ALL_HARD_MODEL PARTIAL_MODEL
+#                       PARTIAL_SHARP_UPRIGHTS_MODEL HALF_SIDE_MODEL
 # (UPRIGHTS_MODEL: the same L with only its uprights hard, its top's rim sharp; ALL_HARD_MODEL:
-# with every edge hard, the bottom's rim too.)
+# with every edge hard, the bottom's rim too; PARTIAL_MODEL and PARTIAL_SHARP_UPRIGHTS_MODEL: the
+# rims of the top and the bottom hard along some sides only, with some uprights hard or none;
+# HALF_SIDE_MODEL: one side's top rim hard along half of it.)
 set -eu
 program=$1
 probe=$2
@@ -11,6 +14,9 @@ work=$3
 model=$4
 uprights_model=$5
 all_hard_model=$6
+partial_model=$7
+partial_sharp_model=$8
+half_side_model=$9
 . "$(dirname "$0")/../shell_test_support.sh"
 
 # repeat N LINE: the event line N times.
@@ -92,6 +98,40 @@ GLASS_GLUT_SNAPSHOT=last_all_hard.png GLASS_GLUT_EVENTS=all_hard_events.txt "$pr
 [ ! -s err.txt ] || fail "the all-hard L reports: $(cat err.txt)"
 "$probe" all_hard_sharp.png same sharp.png || fail "the all-hard L differs before rounding"
 "$probe" all_hard_round5.png differ round5.png || fail "the rounded bottom rim does not show"
+# Rims hard along some sides only: rounded there, ending in caps, quarter moons and cut faces
+# where they meet a sharp stretch; nothing reported as left sharp, the same L sharp, a picture of
+# its own rounded, changing with every press.
+for kind in partial partial_sharp; do
+  eval "file=\$${kind}_model"
+  {
+    echo "snapshot ${kind}_sharp.png"
+    for press in 1 2 3 4 5; do
+      echo "key R"
+      echo "snapshot ${kind}_round$press.png"
+    done
+  } >${kind}_events.txt
+  status=0
+  GLASS_GLUT_SNAPSHOT=last_$kind.png GLASS_GLUT_EVENTS=${kind}_events.txt "$program" "$file" \
+    >out.txt 2>err.txt || status=$?
+  [ "$status" -eq 0 ] || fail "the program exited with $status on $file: $(cat err.txt)"
+  [ ! -s err.txt ] || fail "$file reports: $(cat err.txt)"
+  "$probe" ${kind}_sharp.png same sharp.png || fail "$file differs from the L before rounding"
+  for other in round5.png all_hard_round5.png uprights_round5.png; do
+    "$probe" ${kind}_round5.png differ $other || fail "$file rounded looks like $other"
+  done
+  previous=${kind}_sharp.png
+  for press in 1 2 3 4 5; do
+    "$probe" "$previous" differ ${kind}_round$press.png || fail "$file: R pressed $press times did not change the picture"
+    previous=${kind}_round$press.png
+  done
+done
+"$probe" partial_round5.png differ partial_sharp_round5.png || fail "the partly marked Ls look the same"
+# A side whose top edges are hard only in part stays sharp, and the program says how many.
+status=0
+GLASS_GLUT_SNAPSHOT=half_side.png "$program" "$half_side_model" >out.txt 2>err.txt || status=$?
+[ "$status" -eq 0 ] || fail "the program exited with $status on the half-hard side: $(cat err.txt)"
+grep -q "^homework45: .*l_block_half_side.wings: 1 hard edges stay sharp" err.txt ||
+  fail "no message about the half-hard side: $(cat err.txt)"
 # The default L's hard edges are all rounded: nothing is reported as left sharp.
 GLASS_GLUT_SNAPSHOT=quiet.png "$program" >out.txt 2>err.txt || fail "the default model"
 [ ! -s err.txt ] || fail "the default model reports: $(cat err.txt)"

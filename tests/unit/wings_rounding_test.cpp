@@ -249,23 +249,32 @@ TEST_CASE("Rounding: every seam is exact, with continuous normals and texture co
   }
 }
 
+namespace {
+
+// The rounded surface tessellated at depths 0 to 6: closed each time, with no fewer triangles
+// at each depth than at the one before, and unit normals.
+void checkClosedAtEveryDepth(const MarkedPolyhedron &poly, const RoundedSurface &s) {
+  std::size_t previous = 0;
+  for (int depth = 0; depth <= 6; ++depth) {
+    CAPTURE(depth);
+    AdaptiveOptions options;
+    options.criterion = ObjectSpaceTolerance{1e-6};
+    options.maxDepth = depth;
+    const RoundedMesh mesh = tessellateRounded(poly, s, options);
+    const std::size_t triangles = checkWatertight(mesh);
+    CHECK(triangles >= previous);
+    previous = triangles;
+    for (const glm::dvec3 &n : mesh.mesh.normals) CHECK(std::abs(glm::length(n) - 1.0) < 1e-9);
+  }
+}
+
+} // namespace
+
 TEST_CASE("Rounding: closed meshes without cracks at every tessellation depth") {
   for (std::string name : kRoundable) {
+    CAPTURE(name);
     const MarkedPolyhedron poly = readShape(name);
-    const RoundedSurface s = roundMarkedEdges(poly, 0.25);
-    std::size_t previous = 0;
-    for (int depth = 0; depth <= 6; ++depth) {
-      CAPTURE(name);
-      CAPTURE(depth);
-      AdaptiveOptions options;
-      options.criterion = ObjectSpaceTolerance{1e-6};
-      options.maxDepth = depth;
-      const RoundedMesh mesh = tessellateRounded(poly, s, options);
-      const std::size_t triangles = checkWatertight(mesh);
-      CHECK(triangles >= previous);
-      previous = triangles;
-      for (const glm::dvec3 &n : mesh.mesh.normals) CHECK(std::abs(glm::length(n) - 1.0) < 1e-9);
-    }
+    checkClosedAtEveryDepth(poly, roundMarkedEdges(poly, 0.25));
   }
 }
 
@@ -280,6 +289,20 @@ TEST_CASE("Rounding: the L at its largest radius, where faces one cube wide are 
     options.criterion = ObjectSpaceTolerance{1e-6};
     options.maxDepth = depth;
     CHECK(checkWatertight(tessellateRounded(l, s, options)) > 0);
+  }
+}
+
+TEST_CASE("Rounding: the Ls at R = 0.5, where faces one cube wide are used up, are closed at every depth") {
+  // Every side face of concave_l.wings is one cube wide: at R = 0.5 the strips along its two
+  // rims meet with nothing between them; with one rim edge sharp, the cap's sides meet the
+  // strips of the edges beyond the used-up faces directly.
+  for (std::string name : {"concave_l.wings", "concave_l_one_sharp.wings"}) {
+    const MarkedPolyhedron l = readShape(name);
+    REQUIRE(maximumRoundingRadius(l) == 0.5);
+    CAPTURE(name);
+    const RoundedSurface s = roundMarkedEdges(l, 0.5);
+    checkRadius(s);
+    checkClosedAtEveryDepth(l, s);
   }
 }
 
@@ -611,6 +634,16 @@ TEST_CASE("Rounding: a torus piece that ends at a sharp crease closes in a flat 
           CHECK(point.y >= 1.0 - radius - 1e-12);
           CHECK(point.z >= 1.0 - radius - 1e-12);
         }
+      // Its texture is the face's chart with the cap turned flat onto the face: lengths kept
+      // (the file has no UVs, so the chart is an orthonormal frame), not squeezed onto a line.
+      const FaceChart chart = faceChart(l, static_cast<std::size_t>(s.info[p].face));
+      for (double u : kSamples)
+        for (double v : kSamples) {
+          const glm::dvec3 a = s.patches[p].evaluate(u, v), b = s.patches[p].evaluate(1.0 - v, u);
+          const glm::dvec2 ta = roundedTexCoord(s.info[p], chart, radius, a);
+          const glm::dvec2 tb = roundedTexCoord(s.info[p], chart, radius, b);
+          CHECK(std::abs(glm::length(ta - tb) - glm::length(a - b)) < 1e-12);
+        }
     }
     // Two cap halves; the torus pieces at both ends of the concave edge, whole.
     CHECK(caps == 2);
@@ -619,14 +652,26 @@ TEST_CASE("Rounding: a torus piece that ends at a sharp crease closes in a flat 
     // strip's (1 - pi / 4) R^2 per length where the rounded L has a plain strip (x in
     // [1 + R, 2 - R]; the torus pieces and caps are the same in both), and at most the R^3 box
     // at its far end, where a mitre replaces the sphere corner.
-    // (At R = 0.5 the faces one cube wide are used up, and the meshes of both Ls are not
-    // closed where their patches meet across them.)
-    if (radius == 0.5) continue;
     const MarkedPolyhedron full = readShape("concave_l.wings");
     const AdaptiveOptions fine{ObjectSpaceTolerance{1e-7}, 6};
     const double fullyRounded = meshVolume(tessellateRounded(full, roundMarkedEdges(full, radius), fine));
     const RoundedMesh mesh = tessellateRounded(l, s, fine);
     checkWatertight(mesh);
+    // The drawn caps' triangles (in the plane x = 1 + R, facing -x) keep their lengths in the
+    // texture too.
+    std::size_t capTriangles = 0;
+    for (std::size_t t = 0; t < mesh.mesh.indices.size(); t += 3) {
+      const std::uint32_t *corner = &mesh.mesh.indices[t];
+      if (mesh.mesh.normals[corner[0]] != glm::dvec3(-1.0, 0.0, 0.0)) continue;
+      if (std::abs(mesh.mesh.positions[corner[0]].x - (1.0 + radius)) > 1e-12) continue;
+      ++capTriangles;
+      for (int k = 0; k < 3; ++k) {
+        const std::uint32_t i = corner[k], j = corner[(k + 1) % 3];
+        CHECK(std::abs(glm::length(mesh.mesh.texCoords[i] - mesh.mesh.texCoords[j]) -
+                       glm::length(mesh.mesh.positions[i] - mesh.mesh.positions[j])) < 1e-9);
+      }
+    }
+    CHECK(capTriangles > 0);
     const double kept = meshVolume(mesh) - fullyRounded;
     const double strip = (1.0 - std::numbers::pi / 4.0) * radius * radius * (1.0 - 2.0 * radius);
     CHECK(kept >= strip - 1e-6);

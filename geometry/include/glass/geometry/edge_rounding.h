@@ -211,7 +211,11 @@ struct FaceChart {
 };
 FaceChart faceChart(const MarkedPolyhedron& polyhedron, std::size_t face);
 
-// The texture coordinates of point p of a patch with this info.
+// Point p of a cap (its plane's normal capNormal) turned about the line where the cap's plane
+// meets the face of `chart`, onto that face: where the cap takes its texture coordinates.
+glm::dvec3 capFoldedOntoFace(const FaceChart& chart, const glm::dvec3& capNormal, const glm::dvec3& p);
+
+// The texture coordinates of point p of a patch with this info (a cap's folded onto its face).
 glm::dvec2 roundedTexCoord(const RoundedPatchInfo& info, const FaceChart& chart, double radius, const glm::dvec3& p);
 
 }  // namespace glass::geometry
