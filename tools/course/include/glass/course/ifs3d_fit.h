@@ -65,9 +65,9 @@ struct Ifs3FitOptions {
   // best maps so far are finished and returned (Ifs3Fit::stoppedByBudget). Counted, not timed, so
   // that the maps depend on the cloud alone, not on the machine or its load. 0: no limit (the
   // attempts bound the work). No limit by default: on the fit battery's clouds (10,000 points) the
-  // systems found took 2 to 39 million queries (those found on the third or fourth attempt 19 to
-  // 39), the unfitted ones 38 to 44 million, so no budget makes the unfitted fail fast without
-  // giving up found ones. `glass ifs3d fit --work 12` gives up in about a third of the time.
+  // systems found took 2 to 39 million queries (those found after the first attempt 9 to 39), the
+  // unfitted ones 36 to 46 million, so no budget makes the unfitted fail fast without giving up
+  // found ones (docs/course.md). `glass ifs3d fit --work 12` gives up in about a third of the time.
   std::uint64_t workBudget = 0;
   std::uint64_t seed = 1;
 };
