@@ -7,10 +7,12 @@
 // was that list for the change that brought the pool of included maps, `fresh2` (40001 on) for the
 // change that brought the residual search. Odd seeds get 5% of their points replaced by noise.
 //
-//   ifs3d_fit_battery [tuning|held-out|fresh|fresh2] [--points N] [--first K] [--count C] [--write DIR]
+//   ifs3d_fit_battery [tuning|held-out|fresh|fresh2] [--points N] [--first K] [--count C] [--write DIR] [--budget MQ]
 //
 // --write DIR writes each system as DIR/seed_S.ifs3 and the found maps as DIR/seed_S_found.ifs3,
-// to look at a failure with `glass ifs3d view`.
+// to look at a failure with `glass ifs3d view`. --budget sets the fit's work budget in millions of
+// nearest-neighbour queries (Ifs3FitOptions::workBudget; 0: no limit); the `work` column is the
+// work each fit did, in the same unit, and `budget` marks a fit stopped by it.
 //
 // A fit succeeds when every entry of every found 3 x 4 matrix is within kTolerance of the true
 // one (maps paired in the best order).
@@ -63,6 +65,7 @@ int main(int argc, char** argv) {
   std::size_t points = 10000;
   int first = 0, count = 16;
   std::string writeDirectory;
+  glass::course::Ifs3FitOptions options;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     if (arg == "tuning") {
@@ -79,18 +82,20 @@ int main(int argc, char** argv) {
       first = std::atoi(argv[++i]);
     } else if (arg == "--write" && i + 1 < argc) {
       writeDirectory = argv[++i];
+    } else if (arg == "--budget" && i + 1 < argc) {
+      options.workBudget = static_cast<std::uint64_t>(std::atof(argv[++i]) * 1e6);
     } else if (arg == "--count" && i + 1 < argc) {
       count = std::atoi(argv[++i]);
     } else {
-      std::fprintf(stderr, "usage: ifs3d_fit_battery [tuning|held-out|fresh|fresh2] [--points N] [--first K] [--count C] [--write DIR]\n");
+      std::fprintf(stderr, "usage: ifs3d_fit_battery [tuning|held-out|fresh|fresh2] [--points N] [--first K] [--count C] [--write DIR] [--budget MQ]\n");
       return 2;
     }
   }
   const char* const listNames[] = {"tuning", "held-out", "fresh", "fresh2"};
   std::printf("%s seeds, %zu points a cloud, success: every matrix entry within %.2f\n", listNames[static_cast<int>(list)], points,
               kTolerance);
-  std::printf("%6s %6s %8s %10s %10s %10s %10s %9s %8s%s\n", "seed", "noise", "sum|det|", "map error", "collage", "regen.", "spacing", "converged",
-              "seconds", "  attempts, each map's error");
+  std::printf("%6s %6s %8s %10s %10s %10s %10s %9s %8s %6s%s\n", "seed", "noise", "sum|det|", "map error", "collage", "regen.", "spacing", "converged",
+              "seconds", "work", "  attempts, each map's error");
   int successes = 0, converged = 0, wrongButConverged = 0;
   double totalSeconds = 0.0;
   for (int index = first; index < first + count; ++index) {
@@ -99,7 +104,7 @@ int main(int argc, char** argv) {
     const double noise = seed % 2 == 1 ? 0.05 : 0.0;
     const std::vector<glm::dvec3> cloud = glass::course::ifs3Cloud(ifs, points, noise, seed + 5);
     const auto start = std::chrono::steady_clock::now();
-    const glass::course::Ifs3Fit fit = glass::course::fitIfs3(cloud);
+    const glass::course::Ifs3Fit fit = glass::course::fitIfs3(cloud, options);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::vector<glass::geometry::Affine3> truth;
     for (const auto& map : ifs.maps) truth.push_back(map.transform);
@@ -127,9 +132,9 @@ int main(int argc, char** argv) {
       std::snprintf(text, sizeof text, " %.4f", e);
       each += text;
     }
-    std::printf("%6llu %6.2f %8.3f %10.4f %10.6f %10.6f %10.6f %9s %8.2f %s%s\n", static_cast<unsigned long long>(seed), noise, volume, error,
-                fit.trimmedCollageDistance, regenerated, fit.pointSpacing, fit.converged() ? "yes" : "no", seconds, each.c_str(),
-                success ? "" : "  WRONG");
+    std::printf("%6llu %6.2f %8.3f %10.4f %10.6f %10.6f %10.6f %9s %8.2f %6.1f %s%s%s\n", static_cast<unsigned long long>(seed), noise, volume, error,
+                fit.trimmedCollageDistance, regenerated, fit.pointSpacing, fit.converged() ? "yes" : "no", seconds, fit.work / 1e6, each.c_str(),
+                success ? "" : "  WRONG", fit.stoppedByBudget ? " (budget)" : "");
     std::fflush(stdout);
   }
   std::printf("found the maps: %d of %d (%.0f%%); said converged: %d; wrong but said converged: %d; mean %.2f s a fit\n",

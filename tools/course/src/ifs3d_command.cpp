@@ -30,10 +30,11 @@ The study guide's homework 3: a 3D affine fractal given as a cloud of points.
   glass ifs3d points FILE.ifs3 -n N -o CLOUD.txt [--seed S]
       N points of the attractor by the chaos game (seeded: the same seed gives the same file),
       one "x y z" a line: homework clouds, and inputs with known answers.
-  glass ifs3d fit CLOUD.txt [-o FOUND.ifs3] [--maps K] [--seed S]
+  glass ifs3d fit CLOUD.txt [-o FOUND.ifs3] [--maps K] [--seed S] [--work M]
       the K (default 4) affine maps whose attractor the cloud samples, by the collage theorem:
       prints each 3 x 4 matrix and its decomposition T R S, the collage distance, the Chamfer
       distance between the cloud and a cloud regenerated from the maps, and the dimension.
+      The search stops after M million nearest-neighbour queries (0: no limit) and says so.
   glass ifs3d show FILE.ifs3
       the maps, their decompositions T R S and the fractal dimension (Moran's equation when every
       map is a similarity, else box counting of a million chaos-game points).
@@ -254,6 +255,8 @@ int runFit(ArgumentList& list, std::ostream& out, std::ostream& err) {
       options.maps = static_cast<int>(parseInteger(list.value(arg), arg, 1, 16));
     } else if (arg == "--seed") {
       options.seed = static_cast<std::uint64_t>(parseInteger(list.value(arg), arg, 0, 1LL << 62));
+    } else if (arg == "--work") {
+      options.workBudget = static_cast<std::uint64_t>(parseInteger(list.value(arg), arg, 0, 1000000)) * 1000000u;
     } else if (!arg.empty() && arg[0] == '-') {
       throw UsageError("unknown option '" + arg + "' for fit (see glass ifs3d --help)");
     } else if (file.empty()) {
@@ -287,6 +290,10 @@ int runFit(ArgumentList& list, std::ostream& out, std::ostream& err) {
   if (!fit.converged()) {
     out << "Warning: the collage distance is not well below the cloud's point spacing (" << format("%.6f", fit.pointSpacing)
         << "): the search may have stopped in a local minimum, and some maps may be wrong. Try other seeds (--seed).\n";
+    if (fit.stoppedByBudget) {
+      out << "The search stopped at its work budget (" << format("%.1f", static_cast<double>(fit.work) / 1e6)
+          << " million nearest-neighbour queries, " << fit.attempts << " attempts); --work M lets it search longer.\n";
+    }
   }
   out << "Shares of the cloud (written as the maps' probabilities):";
   for (double share : fit.shares) out << " " << format("%.4f", share);

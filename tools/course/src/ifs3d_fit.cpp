@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
+#include <optional>
 
 #include <glm/geometric.hpp>
 #include <glm/mat3x3.hpp>
@@ -52,6 +53,16 @@ Trimmed trimmedMean(std::vector<double> values, double trim) {
   return out;
 }
 
+// The search's work, counted as it goes in nearest-neighbour queries (k-d tree searches, most of
+// its time), against the budget of Ifs3FitOptions::workBudget. Counted rather than timed, so that
+// where the search stops depends on the cloud alone, not on the machine or its load.
+struct WorkMeter {
+  std::uint64_t used = 0;
+  std::uint64_t budget = 0;  // 0: no limit
+  void add(std::size_t queries) { used += queries; }
+  bool spent() const { return budget != 0 && used >= budget; }
+};
+
 struct Moments {
   glm::dvec3 mean{0.0};
   glm::dmat3 covariance{0.0};
@@ -84,7 +95,7 @@ glm::dmat3 symmetricPower(const glm::dmat3& sigma, double power) {
 // the correspondences left after trimming, and so does the score, the trimmed symmetric Chamfer
 // distance. Returns the best score seen with `maps` set to the maps that scored it.
 double refine(std::vector<g::Affine3>& maps, std::span<const glm::dvec3> source, std::span<const glm::dvec3> target,
-              const g::KdTree3& targetTree, std::span<const glm::dvec3> targetSample, int steps, double trim) {
+              const g::KdTree3& targetTree, std::span<const glm::dvec3> targetSample, int steps, double trim, WorkMeter& work) {
   const std::size_t k = maps.size(), n = source.size();
   double bestScore = std::numeric_limits<double>::infinity();
   std::vector<g::Affine3> bestMaps = maps;
@@ -96,6 +107,7 @@ double refine(std::vector<g::Affine3>& maps, std::span<const glm::dvec3> source,
     for (std::size_t i = 0; i < k; ++i)
       for (std::size_t s = 0; s < n; ++s) images[i * n + s] = maps[i].apply(source[s]);
     const g::KdTree3 imageTree(images);
+    work.add(images.size() + targetSample.size());
     for (std::size_t j = 0; j < images.size(); ++j) {
       const g::KdTree3::Nearest nearest = targetTree.nearest(images[j]);
       forward[j] = std::sqrt(nearest.distanceSquared);
@@ -143,7 +155,7 @@ double refine(std::vector<g::Affine3>& maps, std::span<const glm::dvec3> source,
 // part left out (within the trimming), or a map that is not contractive. Infinity when the
 // points leave every bound.
 double regeneratedDistance(const std::vector<g::Affine3>& maps, const g::KdTree3& targetTree, std::span<const glm::dvec3> target,
-                           double trim, std::uint64_t seed) {
+                           double trim, std::uint64_t seed, WorkMeter& work) {
   g::IteratedFunctionSystem3 ifs;
   for (const g::Affine3& map : maps) ifs.maps.push_back({map, std::nullopt, std::nullopt});
   const auto probabilities = g::chaosGameProbabilities3(ifs);
@@ -155,6 +167,7 @@ double regeneratedDistance(const std::vector<g::Affine3>& maps, const g::KdTree3
     points.push_back(p.position);
   }
   const g::KdTree3 pointTree(points);
+  work.add(points.size() + target.size());
   std::vector<double> forward, backward;
   forward.reserve(points.size());
   backward.reserve(target.size());
@@ -217,7 +230,7 @@ std::vector<int> kMeans(std::span<const glm::dvec3> points, int k, std::uint64_t
 // The affine map of the whole cloud onto one part: moments give the scale and position, the
 // orientation is searched.
 g::Affine3 fitPart(std::span<const glm::dvec3> cloud, const Moments& cloudMoments, std::span<const glm::dvec3> part,
-                   const std::vector<glm::dmat3>& orientations, double trim, std::uint64_t seed) {
+                   const std::vector<glm::dmat3>& orientations, double trim, std::uint64_t seed, WorkMeter& work) {
   const Moments partMoments = moments(part);
   const glm::dmat3 partRoot = symmetricPower(partMoments.covariance, 0.5);
   const glm::dmat3 cloudInverseRoot = symmetricPower(cloudMoments.covariance, -0.5);
@@ -232,7 +245,7 @@ g::Affine3 fitPart(std::span<const glm::dvec3> cloud, const Moments& cloudMoment
   for (const glm::dmat3& q : orientations) {
     const glm::dmat3 a = partRoot * q * cloudInverseRoot;
     std::vector<g::Affine3> maps{g::Affine3::fromParts(a, partMoments.mean - a * cloudMoments.mean)};
-    const double score = refine(maps, coarseSource, part, partTree, coarseTarget, 2, trim);
+    const double score = refine(maps, coarseSource, part, partTree, coarseTarget, 2, trim, work);
     candidates.push_back({score, maps[0]});
   }
   std::stable_sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) { return a.score < b.score; });
@@ -241,7 +254,7 @@ g::Affine3 fitPart(std::span<const glm::dvec3> cloud, const Moments& cloudMoment
   Candidate best{std::numeric_limits<double>::infinity(), candidates.front().map};
   for (std::size_t c = 0; c < std::min<std::size_t>(4, candidates.size()); ++c) {
     std::vector<g::Affine3> maps{candidates[c].map};
-    const double score = refine(maps, fineSource, part, partTree, fineTarget, 15, trim);
+    const double score = refine(maps, fineSource, part, partTree, fineTarget, 15, trim, work);
     if (score < best.score) best = {score, maps[0]};
   }
   return best.map;
@@ -266,13 +279,14 @@ struct InclusionPool {
   std::vector<PoolMap> maps;
   std::vector<std::size_t> eligible;  // the maps whose image lies in the cloud, most covering first
   // The points of coverSample within reach of the images of `maps` (of source).
-  std::vector<char> coveredBy(std::span<const g::Affine3> maps) const {
+  std::vector<char> coveredBy(std::span<const g::Affine3> maps, WorkMeter& work) const {
     std::vector<char> covered(coverSample.size(), 0);
     if (maps.empty()) return covered;
     std::vector<glm::dvec3> images;
     for (const g::Affine3& map : maps)
       for (const glm::dvec3& p : source) images.push_back(map.apply(p));
     const g::KdTree3 imageTree(images);
+    work.add(coverSample.size());
     for (std::size_t i = 0; i < coverSample.size(); ++i) covered[i] = imageTree.nearest(coverSample[i]).distanceSquared < reach * reach;
     return covered;
   }
@@ -294,11 +308,13 @@ struct InclusionPool {
 };
 
 InclusionPool inclusionPool(std::span<const glm::dvec3> cloud, const g::KdTree3& cloudTree, const Moments& cloudMoments,
-                            const std::vector<glm::dmat3>& orientations, int k, double spacing, double trim, std::uint64_t seed) {
+                            const std::vector<glm::dmat3>& orientations, int k, double spacing, double trim, std::uint64_t seed,
+                            WorkMeter& work) {
   constexpr int kResolution = 40;
   constexpr std::size_t kProbes = 12, kPerRatio = 50;
   constexpr double kRatios[] = {0.3, 0.38, 0.47, 0.58};
   const DistanceGrid grid(cloud, cloudTree, kResolution);
+  work.add(static_cast<std::size_t>(grid.size(0)) * grid.size(1) * grid.size(2));
   const double h = grid.cell(), cap = 3.0 * h;
   const std::vector<glm::dvec3> spread = sample(cloud, 2000, seed);
   const std::vector<glm::dvec3> probes = spreadPoints(spread, kProbes);
@@ -367,7 +383,7 @@ InclusionPool inclusionPool(std::span<const glm::dvec3> cloud, const g::KdTree3&
   pool.reach = 1.5 * h;
   const std::vector<glm::dvec3> inclusionSource = sample(cloud, 300, seed + 3);
   const auto coveredIndices = [&](const g::Affine3& map) {
-    const std::vector<char> covered = pool.coveredBy(std::span<const g::Affine3>(&map, 1));
+    const std::vector<char> covered = pool.coveredBy(std::span<const g::Affine3>(&map, 1), work);
     std::vector<std::uint32_t> indices;
     for (std::size_t i = 0; i < covered.size(); ++i)
       if (covered[i]) indices.push_back(static_cast<std::uint32_t>(i));
@@ -380,7 +396,7 @@ InclusionPool inclusionPool(std::span<const glm::dvec3> cloud, const g::KdTree3&
       std::vector<glm::dvec3> part;
       for (const std::uint32_t i : covered) part.push_back(pool.coverSample[i]);
       std::vector<g::Affine3> maps{map};
-      refine(maps, pool.source, cloud, cloudTree, part, 4, trim);
+      refine(maps, pool.source, cloud, cloudTree, part, 4, trim, work);
       map = maps[0];
     }
     // A map that is not contractive cannot be one of the system's.
@@ -506,12 +522,66 @@ constexpr std::size_t kResidualCandidates = 3, kResidualTargets = 2;
 constexpr int kResidualTrialSteps = 8;
 constexpr int kResidualGridResolution = 40;
 
+// The maps measured on the whole cloud (Ifs3Fit), sorted by where they send its centre.
+Ifs3Fit measuredFit(std::vector<g::Affine3> winner, std::span<const glm::dvec3> cloud, const g::KdTree3& cloudTree,
+                    const Ifs3FitOptions& options, double spacing, WorkMeter& work) {
+  Ifs3Fit best;
+  const glm::dvec3 centre = moments(cloud).mean;
+  std::stable_sort(winner.begin(), winner.end(), [&](const g::Affine3& a, const g::Affine3& b) {
+    const glm::dvec3 pa = a.apply(centre), pb = b.apply(centre);
+    if (pa.x != pb.x) return pa.x < pb.x;
+    if (pa.y != pb.y) return pa.y < pb.y;
+    return pa.z < pb.z;
+  });
+  best.maps = winner;
+  best.pointSpacing = spacing;
+  // The collage distance on the whole cloud, plain and with the worst few per cent each way left
+  // out (rankTrim) as the search ranks candidates (the cloud has no isolated noise points left,
+  // withoutIsolatedPoints), and the shares: which map's image is nearest to each cloud point.
+  std::vector<glm::dvec3> images;
+  images.reserve(cloud.size() * winner.size());
+  for (const g::Affine3& map : winner)
+    for (const glm::dvec3& p : cloud) images.push_back(map.apply(p));
+  const g::KdTree3 imageTree(images);
+  work.add(images.size() + cloud.size());
+  std::vector<double> forward, backward;
+  forward.reserve(images.size());
+  backward.reserve(cloud.size());
+  std::vector<double> counts(winner.size(), 0.0);
+  for (const glm::dvec3& p : images) forward.push_back(std::sqrt(cloudTree.nearest(p).distanceSquared));
+  for (const glm::dvec3& p : cloud) {
+    const g::KdTree3::Nearest nearest = imageTree.nearest(p);
+    backward.push_back(std::sqrt(nearest.distanceSquared));
+    counts[nearest.index / cloud.size()] += 1.0;
+  }
+  const auto mean = [](const std::vector<double>& values) {
+    double sum = 0.0;
+    for (const double v : values) sum += v;
+    return sum / static_cast<double>(values.size());
+  };
+  best.collageDistance = (mean(backward) + mean(forward)) / 2.0;
+  best.trimmedCollageDistance = (trimmedMean(forward, options.rankTrim).mean + trimmedMean(backward, options.rankTrim).mean) / 2.0;
+  best.regeneratedDistance = regeneratedDistance(winner, cloudTree, cloud, options.rankTrim, options.seed + 43, work);
+  for (double& c : counts) c /= static_cast<double>(cloud.size());
+  best.shares = counts;
+  return best;
+}
+
+// The maps a search stage leaves, finished: a last refinement on a larger sample, then measured.
+Ifs3Fit finishedFit(std::vector<g::Affine3> winner, std::span<const glm::dvec3> cloud, const g::KdTree3& cloudTree,
+                    const Ifs3FitOptions& options, double spacing, WorkMeter& work) {
+  const std::size_t perStep = static_cast<std::size_t>(std::max(options.sample, 50));
+  const std::vector<glm::dvec3> largeSource = sample(cloud, 2 * perStep, options.seed + 21);
+  const std::vector<glm::dvec3> largeTarget = sample(cloud, 4 * perStep, options.seed + 22);
+  refine(winner, largeSource, cloud, cloudTree, largeTarget, options.refineSteps, options.trim, work);
+  return measuredFit(std::move(winner), cloud, cloudTree, options, spacing, work);
+}
+
 // One attempt of the whole fit, from the seed in options: from k-means splits of the cloud, or
 // from the inclusion search.
 Ifs3Fit fitOnce(std::span<const glm::dvec3> cloud, const g::KdTree3& cloudTree, const Ifs3FitOptions& options, double spacing,
-                bool withPool, bool fromPool) {
+                bool withPool, bool fromPool, WorkMeter& work) {
   const int k = std::max(1, options.maps);
-  Ifs3Fit best;
   const Moments cloudMoments = moments(cloud);
   const std::vector<glm::dmat3> orientations = startingOrientations();
   const std::size_t perStep = static_cast<std::size_t>(std::max(options.sample, 50));
@@ -525,16 +595,29 @@ Ifs3Fit fitOnce(std::span<const glm::dvec3> cloud, const g::KdTree3& cloudTree, 
   // A candidate whose chaos game runs off (a map not yet contractive) ranks after every one that
   // has an attractor, by its collage distance.
   const auto attractorDistance = [&](const std::vector<g::Affine3>& maps, double collage) {
-    const double d = regeneratedDistance(maps, targetSampleTree, targetSample, options.rankTrim, options.seed + 41);
+    const double d = regeneratedDistance(maps, targetSampleTree, targetSample, options.rankTrim, options.seed + 41, work);
     return std::isfinite(d) ? d : 1e6 + collage;
   };
   std::vector<g::Affine3> winner;
   double winnerScore = std::numeric_limits<double>::infinity();
+  // Early exit: after a stage that found a closer winner, the winner is measured on the whole
+  // cloud; when it has converged, it is finished and returned, since the later stages only look
+  // for a closer one. Most clouds are fitted by the first stages, so this saves most of an attempt.
+  std::vector<g::Affine3> checked;
+  const auto convergedWinner = [&]() -> std::optional<Ifs3Fit> {
+    if (winner.empty() || winner == checked) return std::nullopt;
+    checked = winner;
+    if (!measuredFit(winner, cloud, cloudTree, options, spacing, work).converged()) return std::nullopt;
+    Ifs3Fit fit = finishedFit(winner, cloud, cloudTree, options, spacing, work);
+    if (!fit.converged()) return std::nullopt;
+    return fit;
+  };
   InclusionPool pool;
-  if (withPool) pool = inclusionPool(cloud, cloudTree, cloudMoments, orientations, k, spacing, options.trim, options.seed);
+  if (withPool) pool = inclusionPool(cloud, cloudTree, cloudMoments, orientations, k, spacing, options.trim, options.seed, work);
   if (fromPool) {
     for (std::vector<g::Affine3>& maps : greedyStarts(pool, k, kInclusionStarts)) {
-      const double collage = refine(maps, source, cloud, cloudTree, targetSample, options.refineSteps, options.trim);
+      if (work.spent() && !winner.empty()) break;
+      const double collage = refine(maps, source, cloud, cloudTree, targetSample, options.refineSteps, options.trim, work);
       const double score = attractorDistance(maps, collage);
       if (score < winnerScore) {
         winnerScore = score;
@@ -543,6 +626,7 @@ Ifs3Fit fitOnce(std::span<const glm::dvec3> cloud, const g::KdTree3& cloudTree, 
     }
   }
   for (int start = 0; start < (fromPool && !winner.empty() ? 0 : std::max(1, options.starts)); ++start) {
+    if (work.spent() && !winner.empty()) break;
     const std::uint64_t seed = options.seed + 1000 * static_cast<std::uint64_t>(start + 1);
     const std::vector<int> labels = kMeans(clusterSample, k, seed);
     std::vector<g::Affine3> maps;
@@ -551,9 +635,9 @@ Ifs3Fit fitOnce(std::span<const glm::dvec3> cloud, const g::KdTree3& cloudTree, 
       for (std::size_t i = 0; i < clusterSample.size(); ++i)
         if (labels[i] == part) points.push_back(clusterSample[i]);
       if (points.size() < 10) points = sample(clusterSample, 10, seed + static_cast<std::uint64_t>(part));
-      maps.push_back(fitPart(cloud, cloudMoments, points, orientations, options.trim, seed + 7 * static_cast<std::uint64_t>(part)));
+      maps.push_back(fitPart(cloud, cloudMoments, points, orientations, options.trim, seed + 7 * static_cast<std::uint64_t>(part), work));
     }
-    const double collage = refine(maps, source, cloud, cloudTree, targetSample, options.refineSteps, options.trim);
+    const double collage = refine(maps, source, cloud, cloudTree, targetSample, options.refineSteps, options.trim, work);
     const double score = attractorDistance(maps, collage);
     if (score < winnerScore) {
       winnerScore = score;
@@ -566,7 +650,8 @@ Ifs3Fit fitOnce(std::span<const glm::dvec3> cloud, const g::KdTree3& cloudTree, 
   // uncovered (farther from them than three times the typical distance to all images), which
   // finds a map's part even when the map itself is wrong; then the points whose nearest image is
   // the map's own, better when parts overlap.
-  for (int round = 0; round < 2 * k; ++round) {
+  if (auto fit = convergedWinner()) return std::move(*fit);
+  for (int round = 0; round < 2 * k && !work.spent(); ++round) {
     const int part = round % k;
     const bool uncovered = round < k;
     std::vector<glm::dvec3> images, others;
@@ -577,6 +662,7 @@ Ifs3Fit fitOnce(std::span<const glm::dvec3> cloud, const g::KdTree3& cloudTree, 
       }
     }
     const g::KdTree3 imageTree(images);
+    work.add((uncovered ? 2 : 1) * clusterSample.size());
     std::vector<glm::dvec3> points;
     if (uncovered) {
       if (others.empty()) continue;
@@ -595,8 +681,8 @@ Ifs3Fit fitOnce(std::span<const glm::dvec3> cloud, const g::KdTree3& cloudTree, 
     if (points.size() < 10) continue;
     std::vector<g::Affine3> maps = winner;
     maps[static_cast<std::size_t>(part)] =
-        fitPart(cloud, cloudMoments, points, orientations, options.trim, options.seed + 31 * static_cast<std::uint64_t>(round + 1));
-    const double collage = refine(maps, source, cloud, cloudTree, targetSample, options.refineSteps, options.trim);
+        fitPart(cloud, cloudMoments, points, orientations, options.trim, options.seed + 31 * static_cast<std::uint64_t>(round + 1), work);
+    const double collage = refine(maps, source, cloud, cloudTree, targetSample, options.refineSteps, options.trim, work);
     const double score = attractorDistance(maps, collage);
     if (score < winnerScore) {
       winnerScore = score;
@@ -606,15 +692,17 @@ Ifs3Fit fitOnce(std::span<const glm::dvec3> cloud, const g::KdTree3& cloudTree, 
 
   // Re-seeding from the pool: each map in turn, then each pair of maps, replaced by the maps of
   // the pool that cover most of what the others leave (greedily), when that beats the winner.
+  if (auto fit = convergedWinner()) return std::move(*fit);
   std::vector<std::vector<int>> replaced;
   for (int a = 0; a < (pool.maps.empty() ? 0 : k); ++a) replaced.push_back({a});
   for (int a = 0; a < (pool.maps.empty() ? 0 : k); ++a)
     for (int b = a + 1; b < k; ++b) replaced.push_back({a, b});
   for (const std::vector<int>& parts : replaced) {
+    if (work.spent()) break;
     std::vector<g::Affine3> kept;
     for (int i = 0; i < k; ++i)
       if (std::find(parts.begin(), parts.end(), i) == parts.end()) kept.push_back(winner[static_cast<std::size_t>(i)]);
-    std::vector<char> covered = pool.coveredBy(kept);
+    std::vector<char> covered = pool.coveredBy(kept, work);
     std::vector<std::size_t> chosen;
     for (std::size_t n = 0; n < parts.size(); ++n) {
       std::size_t gain = 0;
@@ -626,7 +714,7 @@ Ifs3Fit fitOnce(std::span<const glm::dvec3> cloud, const g::KdTree3& cloudTree, 
     if (chosen.size() != parts.size()) continue;
     std::vector<g::Affine3> maps = winner;
     for (std::size_t n = 0; n < parts.size(); ++n) maps[static_cast<std::size_t>(parts[n])] = pool.maps[chosen[n]].map;
-    const double collage = refine(maps, source, cloud, cloudTree, targetSample, options.refineSteps, options.trim);
+    const double collage = refine(maps, source, cloud, cloudTree, targetSample, options.refineSteps, options.trim, work);
     const double score = attractorDistance(maps, collage);
     if (score < winnerScore) {
       winnerScore = score;
@@ -637,12 +725,17 @@ Ifs3Fit fitOnce(std::span<const glm::dvec3> cloud, const g::KdTree3& cloudTree, 
   // Re-seeding from the residual: the points no image reaches lie in the image of a map the
   // winner lacks (ifs3d_residual_search.h); the candidates found for them replace the maps the
   // others make least needed, when that beats the winner. Again while it helps.
-  {
+  if (auto fit = convergedWinner()) return std::move(*fit);
+  if (!work.spent()) {
     const DistanceGrid grid(cloud, cloudTree, kResidualGridResolution);
+    work.add(static_cast<std::size_t>(grid.size(0)) * grid.size(1) * grid.size(2));
     const std::vector<glm::dvec3> cloudProbes = sample(cloud, 2000, options.seed + 51);
     const ResidualSearch search{&grid, cloudMoments.mean, cloudProbes, orientations};
-    for (int round = 0; round < options.residualRounds; ++round) {
+    for (int round = 0; round < options.residualRounds && !work.spent(); ++round) {
+      if (round > 0)
+        if (auto fit = convergedWinner()) return std::move(*fit);
       std::vector<glm::dvec3> residual = uncoveredPoints(winner, cloud, clusterSample, kUncoveredSpacings * spacing);
+      work.add((1 + winner.size()) * clusterSample.size());  // and as many for the maps' own cover
       if (residual.size() > kResidualMostPoints) residual = sample(residual, kResidualMostPoints, options.seed + 53);
       const std::vector<std::size_t> replaceable = mapsByOwnCover(winner, source, clusterSample, 1.5 * grid.cell());
       // Each candidate in place of each of the least needed maps, refined briefly; the best of
@@ -653,10 +746,10 @@ Ifs3Fit fitOnce(std::span<const glm::dvec3> cloud, const g::KdTree3& cloudTree, 
       for (std::size_t n = 0; n < std::min<std::size_t>(kResidualClusters, clusters.size()); ++n) {
         if (clusters[n].size() < kResidualMinimumShare * static_cast<double>(clusterSample.size())) break;
         for (const g::Affine3& candidate : residualCandidates(search, clusters[n], kResidualCandidates)) {
-          for (std::size_t r = 0; r < std::min<std::size_t>(kResidualTargets, replaceable.size()); ++r) {
+          for (std::size_t r = 0; r < std::min<std::size_t>(kResidualTargets, replaceable.size()) && !work.spent(); ++r) {
             std::vector<g::Affine3> maps = winner;
             maps[replaceable[r]] = candidate;
-            const double collage = refine(maps, source, cloud, cloudTree, targetSample, kResidualTrialSteps, options.trim);
+            const double collage = refine(maps, source, cloud, cloudTree, targetSample, kResidualTrialSteps, options.trim, work);
             const double score = attractorDistance(maps, collage);
             if (score < bestTrialScore) {
               bestTrialScore = score;
@@ -666,7 +759,7 @@ Ifs3Fit fitOnce(std::span<const glm::dvec3> cloud, const g::KdTree3& cloudTree, 
         }
       }
       if (bestTrial.empty()) break;
-      const double collage = refine(bestTrial, source, cloud, cloudTree, targetSample, options.refineSteps, options.trim);
+      const double collage = refine(bestTrial, source, cloud, cloudTree, targetSample, options.refineSteps, options.trim, work);
       const double score = attractorDistance(bestTrial, collage);
       if (!(score < winnerScore)) break;
       winnerScore = score;
@@ -674,41 +767,7 @@ Ifs3Fit fitOnce(std::span<const glm::dvec3> cloud, const g::KdTree3& cloudTree, 
     }
   }
 
-  // A last refinement on a larger sample, then the measures on the whole cloud.
-  const std::vector<glm::dvec3> largeSource = sample(cloud, 2 * perStep, options.seed + 21);
-  const std::vector<glm::dvec3> largeTarget = sample(cloud, 4 * perStep, options.seed + 22);
-  refine(winner, largeSource, cloud, cloudTree, largeTarget, options.refineSteps, options.trim);
-
-  const glm::dvec3 centre = cloudMoments.mean;
-  std::stable_sort(winner.begin(), winner.end(), [&](const g::Affine3& a, const g::Affine3& b) {
-    const glm::dvec3 pa = a.apply(centre), pb = b.apply(centre);
-    if (pa.x != pb.x) return pa.x < pb.x;
-    if (pa.y != pb.y) return pa.y < pb.y;
-    return pa.z < pb.z;
-  });
-  best.maps = winner;
-  std::vector<glm::dvec3> images;
-  images.reserve(cloud.size() * winner.size());
-  for (const g::Affine3& map : winner)
-    for (const glm::dvec3& p : cloud) images.push_back(map.apply(p));
-  best.collageDistance = chamferDistance(cloud, images);
-  // The same with the worst few per cent each way left out (rankTrim), as the search ranks
-  // candidates; the cloud has no isolated noise points left (withoutIsolatedPoints).
-  {
-    const g::KdTree3 imageTree(images);
-    std::vector<double> forward, backward;
-    for (const glm::dvec3& p : images) forward.push_back(std::sqrt(cloudTree.nearest(p).distanceSquared));
-    for (const glm::dvec3& p : cloud) backward.push_back(std::sqrt(imageTree.nearest(p).distanceSquared));
-    best.trimmedCollageDistance = (trimmedMean(forward, options.rankTrim).mean + trimmedMean(backward, options.rankTrim).mean) / 2.0;
-  }
-  best.regeneratedDistance = regeneratedDistance(winner, cloudTree, cloud, options.rankTrim, options.seed + 43);
-  // Shares: which map's image is nearest to each cloud point.
-  const g::KdTree3 imageTree(images);
-  std::vector<double> counts(winner.size(), 0.0);
-  for (const glm::dvec3& p : cloud) counts[imageTree.nearest(p).index / cloud.size()] += 1.0;
-  for (double& c : counts) c /= static_cast<double>(cloud.size());
-  best.shares = counts;
-  return best;
+  return finishedFit(std::move(winner), cloud, cloudTree, options, spacing, work);
 }
 
 
@@ -765,14 +824,15 @@ Ifs3Fit fitIfs3(std::span<const glm::dvec3> fullCloud, const Ifs3FitOptions& opt
   }
   spacing = spacing / 2000.0 * std::cbrt(std::min<double>(2000.0, static_cast<double>(cloud.size())) / static_cast<double>(cloud.size()));
   int attempts = 0;
-  for (int attempt = 0; attempt < std::max(1, options.attempts); ++attempt) {
+  WorkMeter work{0, options.workBudget};
+  for (int attempt = 0; attempt < std::max(1, options.attempts) && !(attempt > 0 && work.spent()); ++attempt) {
     ++attempts;
     Ifs3FitOptions seeded = options;
     seeded.seed = options.seed + 7919 * static_cast<std::uint64_t>(attempt);
     // Attempts alternate between the two kinds of start: k-means first, the cheaper one, which
     // finds the maps when the parts are apart; the inclusion search's pool next, for
     // overlapping parts; from the second attempt on, the pool also re-seeds single maps.
-    Ifs3Fit fit = fitOnce(cloud, cloudTree, seeded, spacing, attempt > 0, attempt % 2 == 1);
+    Ifs3Fit fit = fitOnce(cloud, cloudTree, seeded, spacing, attempt > 0, attempt % 2 == 1, work);
     if (fit.regeneratedDistance < best.regeneratedDistance) best = std::move(fit);
     best.pointSpacing = spacing;
     if (best.converged()) break;
@@ -780,6 +840,8 @@ Ifs3Fit fitIfs3(std::span<const glm::dvec3> fullCloud, const Ifs3FitOptions& opt
   best.pointSpacing = spacing;
   best.isolatedShare = isolatedShare;
   best.attempts = attempts;
+  best.work = work.used;
+  best.stoppedByBudget = work.spent() && !best.converged();
   // The plain collage distance on the whole cloud as given, noise included.
   if (!best.maps.empty() && cloud.size() != fullCloud.size()) {
     std::vector<glm::dvec3> images;
