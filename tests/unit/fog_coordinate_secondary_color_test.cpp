@@ -163,3 +163,30 @@ TEST_CASE("glPointParameter: defaults, values, errors, attribute stack") {
   glGetFloatv(GL_POINT_SIZE_MAX, v);
   CHECK(v[0] == 12.0f);
 }
+
+// Spec 3.9 clamps the colour sum to [0, 1] before fog (3.10) blends it with the fog colour.
+// Primary (0.8, 0.5, 0.2) + secondary (0.5, 0.2, 0.1) = (1.3, 0.7, 0.3), clamped (1, 0.7, 0.3);
+// f = 1/2 towards (0.2, 0.4, 0.6) gives (0.6, 0.55, 0.45) = (153, 140, 115). Fogging the
+// unclamped sum would give red 0.75 (191). Where no sum exceeds 1, the order shows instead:
+// (0.6, 0.3, 0.2) + (0.3, 0.5, 0.4) fogged is (0.55, 0.6, 0.6) = (140, 153, 153), where fogging
+// the primary and adding the secondary after would give (0.7, 0.85, 0.8).
+TEST_CASE("Colour sum is clamped, then fogged") {
+  ScopedContext context(8, 8);
+  glEnable(GL_FOG);
+  glFogi(GL_FOG_MODE, GL_LINEAR);
+  glFogf(GL_FOG_START, 0.0f);
+  glFogf(GL_FOG_END, 10.0f);
+  const GLfloat fogColor[4] = {0.2f, 0.4f, 0.6f, 1.0f};
+  glFogfv(GL_FOG_COLOR, fogColor);
+  glFogi(GL_FOG_COORDINATE_SOURCE, GL_FOG_COORDINATE);
+  glFogCoordf(5.0f);
+  glEnable(GL_COLOR_SUM);
+  glColor3f(0.8f, 0.5f, 0.2f);
+  glSecondaryColor3f(0.5f, 0.2f, 0.1f);
+  glRectf(-1, -1, 0, 1);
+  glColor3f(0.6f, 0.3f, 0.2f);
+  glSecondaryColor3f(0.3f, 0.5f, 0.4f);
+  glRectf(0, -1, 1, 1);
+  CHECK(pixelAt(2, 4) == Rgba{153, 140, 115, 255});
+  CHECK(pixelAt(6, 4) == Rgba{140, 153, 153, 255});
+}
