@@ -59,8 +59,8 @@ bool fogEnabled(const Context& ctx) { return ctx.fog.enabled; }
 
 // With GL_FOG_COORDINATE as the source, the vertex's glFogCoord value instead; its magnitude,
 // as Mesa takes it (a fog coordinate of -5 fogs like 5).
-float fogCoordinate(const Context& ctx, const float eyePosition[4]) {
-  if (ctx.fog.coordinateSource == GL_FOG_COORDINATE) return std::fabs(ctx.current.fogCoord);
+float fogCoordinate(const Context& ctx, const float eyePosition[4], float vertexFogCoord) {
+  if (ctx.fog.coordinateSource == GL_FOG_COORDINATE) return std::fabs(vertexFogCoord);
   return std::fabs(eyePosition[2]);
 }
 

@@ -21,8 +21,9 @@ bool queryFogState(const Context& ctx, GLenum pname, StateValue& value);
 bool fogEnabled(const Context& ctx);
 
 // Per vertex, when fog is enabled: the value interpolated in varying slot 8 (spec 3.10: the eye
-// distance c, which may be approximated by |z_e|).
-float fogCoordinate(const Context& ctx, const float eyePosition[4]);
+// distance c, which may be approximated by |z_e|). vertexFogCoord is the vertex's glFogCoord
+// value, used with GL_FOG_COORDINATE as the source.
+float fogCoordinate(const Context& ctx, const float eyePosition[4], float vertexFogCoord);
 
 // The fog factor f (spec 3.10) for the eye distance c, clamped to [0, 1].
 struct FogState;

@@ -85,13 +85,14 @@ int textureUnitsInUse(const Context& ctx) {
 
 namespace {
 
-// One unit's (s, t, r, q): generation where enabled, else the current coordinates, then the
+// One unit's (s, t, r, q): generation where enabled, else the vertex's coordinates, then the
 // unit's texture matrix (spec 2.11.4: transformed as a column vector).
-void unitTexCoords(const Context& ctx, int unit, const float objectPosition[4],
-                   const float eyePosition[4], const float eyeNormal[3], float out[4]) {
+void unitTexCoords(const Context& ctx, int unit, const float vertexTexCoord[4],
+                   const float objectPosition[4], const float eyePosition[4],
+                   const float eyeNormal[3], float out[4]) {
   const TextureUnit& u = ctx.texture.units[unit];
   float coords[4];
-  for (int i = 0; i < 4; ++i) coords[i] = ctx.current.texCoord[unit][i];
+  for (int i = 0; i < 4; ++i) coords[i] = vertexTexCoord[i];
   bool anyEyeVectors = false;
   for (const TexGenCoordinate& g : u.texGen)
     anyEyeVectors |= g.enabled && isEyeSpaceVectorMode(g.mode);
@@ -106,10 +107,11 @@ void unitTexCoords(const Context& ctx, int unit, const float objectPosition[4],
 
 }  // namespace
 
-void computeTexCoords(const Context& ctx, int units, const float objectPosition[4],
-                      const float eyePosition[4], const float eyeNormal[3], float* varyings) {
+void computeTexCoords(const Context& ctx, int units, const float (*vertexTexCoords)[4],
+                      const float objectPosition[4], const float eyePosition[4],
+                      const float eyeNormal[3], float* varyings) {
   for (int u = 0; u < units; ++u) {
-    unitTexCoords(ctx, u, objectPosition, eyePosition, eyeNormal,
+    unitTexCoords(ctx, u, vertexTexCoords[u], objectPosition, eyePosition, eyeNormal,
                   varyings + varying::texCoordSlot(u));
   }
 }

@@ -27,10 +27,11 @@ int textureUnitsInUse(const Context& ctx);
 
 // Per vertex: texture coordinate generation and the texture matrix of units 0 .. units - 1,
 // giving (s, t, r, q) of unit u in varyings[varying::texCoordSlot(u) ..]. objectPosition is the
-// vertex as given, eyePosition = modelview * objectPosition, eyeNormal as for lighting. The
-// current texture coordinates are ctx.current.texCoord[u].
-void computeTexCoords(const Context& ctx, int units, const float objectPosition[4],
-                      const float eyePosition[4], const float eyeNormal[3], float* varyings);
+// vertex as given, eyePosition = modelview * objectPosition, eyeNormal as for lighting,
+// vertexTexCoords[u] the vertex's glMultiTexCoord values of unit u.
+void computeTexCoords(const Context& ctx, int units, const float (*vertexTexCoords)[4],
+                      const float objectPosition[4], const float eyePosition[4],
+                      const float eyeNormal[3], float* varyings);
 
 // Per fragment, after rasterization: replaces color with the textured colour, each enabled unit
 // in turn applying its environment to the previous unit's result (spec 3.8.13, 3.8.17). The

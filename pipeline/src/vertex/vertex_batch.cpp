@@ -19,13 +19,8 @@ namespace glass::gl {
 namespace {
 
 constexpr int K = kVertexBatch;  // elements per batch
-static_assert(kVertexBatch == kLightingBatch);
 // Post-transform cache entries (a power of two): direct-mapped by index.
 constexpr int kCacheEntries = 256;
-
-// A batch's elements from the arrays, or the current value repeated where an array is off (what
-// processVertex would read from ctx.current).
-using BatchAttributes = VertexRows;
 
 struct PostTransformCache {
   uint64_t tag[kCacheEntries];     // the index an entry holds, or kEmpty
@@ -36,7 +31,7 @@ struct PostTransformCache {
 
 // Everything a batch works in, allocated once per thread and reused by every draw.
 struct BatchWork {
-  BatchAttributes in;
+  VertexRows in;
   float clip[4][K];
   float eye[4][K];
   LightingInput lighting;  // V and n of each vertex
@@ -70,7 +65,7 @@ void fetchOrRepeat(const ClientArray& array, bool enabled, bool normalized, cons
 
 // readElement for every element of the batch, in rows.
 void fetchBatch(const Context& ctx, const ArrayElementLayout& layout, const VertexStageSetup& s,
-                const int* indices, int first, int count, BatchAttributes& in) {
+                const int* indices, int first, int count, VertexRows& in) {
   const ArrayState& a = ctx.arrays;
   const CurrentState& current = ctx.current;
   fetchOrRepeat(a.vertex, true, false, kPointDefaults, nullptr, indices, first, count, in.vertex);
@@ -136,8 +131,8 @@ float clamp01(float v) { return std::clamp(v, 0.0f, 1.0f); }
 // processVertex for the `count` elements of `in`, into work.out[0 .. count). With colorPerVertex,
 // colour material takes each element's colour (in.color); otherwise the stored material already
 // tracks the current colour.
-void processBatch(Context& ctx, bool colorPerVertex, const VertexStageSetup& s,
-                  const BatchAttributes& in, int count, BatchWork& work) {
+void processBatch(const Context& ctx, bool colorPerVertex, const VertexStageSetup& s,
+                  const VertexRows& in, int count, BatchWork& work) {
   transformRows(s.modelviewProjection, in.vertex, count, work.clip);
   if (s.needEyePosition) transformRows(s.modelview, in.vertex, count, work.eye);
   LightingInput& lighting = work.lighting;
@@ -186,21 +181,18 @@ void processBatch(Context& ctx, bool colorPerVertex, const VertexStageSetup& s,
       }
     }
 
-    // The rarer stages read the current attributes from the context, as for one vertex.
     float eye[4] = {0.0f, 0.0f, 0.0f, 1.0f};
     if (s.needEyePosition) {
       for (int r = 0; r < 4; ++r) eye[r] = work.eye[r][i];
     }
-    if (s.fog) {
-      ctx.current.fogCoord = in.fogCoord[0][i];
-      varyings[varying::kFogCoordinate] = fogCoordinate(ctx, eye);
-    }
+    if (s.fog) varyings[varying::kFogCoordinate] = fogCoordinate(ctx, eye, in.fogCoord[0][i]);
     if (s.texturing) {
+      float texCoord[kTextureUnitCount][4];
       for (int u = 0; u < s.textureUnits; ++u)
-        for (int c = 0; c < 4; ++c) ctx.current.texCoord[u][c] = in.texCoord[u][c][i];
+        for (int c = 0; c < 4; ++c) texCoord[u][c] = in.texCoord[u][c][i];
       const float object[4] = {in.vertex[0][i], in.vertex[1][i], in.vertex[2][i], in.vertex[3][i]};
       const float normal[3] = {lighting.normal[0][i], lighting.normal[1][i], lighting.normal[2][i]};
-      computeTexCoords(ctx, s.textureUnits, object, eye, normal, varyings);
+      computeTexCoords(ctx, s.textureUnits, texCoord, object, eye, normal, varyings);
     }
     if (s.eyeNormalVarying) {
       const float w = eye[3] != 0.0f ? eye[3] : 1.0f;
@@ -281,15 +273,9 @@ void processVertexRows(Context& ctx, const VertexRows& rows, int count) {
   if (count <= 0) return;
   const VertexStageSetup& s = ctx.draw->vertexSetup();
   BatchWork& work = batchWork();
-  // The batch sets the current texture and fog coordinates of each vertex while it works.
-  float texCoord[kTextureUnitCount][4];
-  std::copy(&ctx.current.texCoord[0][0], &ctx.current.texCoord[0][0] + 4 * kTextureUnitCount, &texCoord[0][0]);
-  const float fogCoord = ctx.current.fogCoord;
   std::fill(work.out, work.out + count, PipelineVertex{});  // as processVertex's fresh vertex
   processBatch(ctx, true, s, rows, count, work);
   for (int i = 0; i < count; ++i) assembleVertex(ctx, work.out[i]);
-  std::copy(&texCoord[0][0], &texCoord[0][0] + 4 * kTextureUnitCount, &ctx.current.texCoord[0][0]);
-  ctx.current.fogCoord = fogCoord;
 }
 
 void drawArrayElementsBatched(Context& ctx, const ArrayElementLayout& layout, const int* indices,

@@ -12,6 +12,7 @@
 // and tests/image/fast_paths.cmake compares the two on every image test.
 #pragma once
 
+#include "lighting/batched_lighting.h"
 #include "texture/texture_units.h"
 #include "vertex/array_draw.h"
 
@@ -19,7 +20,8 @@ namespace glass::gl {
 
 struct Context;
 
-inline constexpr int kVertexBatch = 64;  // vertices per batch
+// Vertices per batch: as many as batched lighting takes at once.
+inline constexpr int kVertexBatch = kLightingBatch;
 
 // The attributes of up to kVertexBatch vertices, one row per component, as a batch reads them.
 // Rows the vertex stage does not need (VertexStageSetup: normals without lighting, unused

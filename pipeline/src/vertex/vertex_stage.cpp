@@ -121,8 +121,9 @@ void processVertex(const Context& ctx, const VertexStageSetup& s, const float ob
     }
   }
 
-  if (s.fog) varyings[varying::kFogCoordinate] = fogCoordinate(ctx, eye);
-  if (s.texturing) computeTexCoords(ctx, s.textureUnits, object, eye, normal, varyings);
+  if (s.fog) varyings[varying::kFogCoordinate] = fogCoordinate(ctx, eye, ctx.current.fogCoord);
+  if (s.texturing)
+    computeTexCoords(ctx, s.textureUnits, ctx.current.texCoord, object, eye, normal, varyings);
   if (s.eyeNormalVarying) {
     const float w = eye[3] != 0.0f ? eye[3] : 1.0f;
     for (int i = 0; i < 3; ++i) {
