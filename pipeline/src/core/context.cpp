@@ -41,8 +41,16 @@ void resizeFramebuffer(Context& ctx, int width, int height) {
 }
 
 namespace {
+// Every GL call reads this. In a shared library the default (general-dynamic) model asks
+// __tls_get_addr for it each time; the initial-exec model is one load from the thread pointer.
+// It takes 8 bytes of the static TLS block, which the C library keeps a reserve of for libraries
+// loaded later with dlopen (as Python's OpenGL package loads libOSMesa), as other GL libraries
+// rely on for their current context too.
+#if defined(__GNUC__)
+__attribute__((tls_model("initial-exec")))
+#endif
 thread_local Context* current = nullptr;
-}
+}  // namespace
 
 Context* currentContext() { return current; }
 void setCurrentContext(Context* ctx) { current = ctx; }
