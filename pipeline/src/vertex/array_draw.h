@@ -32,10 +32,16 @@ struct ArrayElementValues {
   float secondaryColor[3] = {0.0f, 0.0f, 0.0f};
 };
 
+// A glDrawArrays or glDrawElements compiled into a display list: the values readElement read of
+// each element, packed per attribute the layout reads (floats, `components` per element; the edge
+// flags as bytes), so that a list holds only the attributes its draws use.
 struct CompiledArrayDraw {
   GLenum mode = GL_POINTS;
   ArrayElementLayout layout;
-  std::vector<ArrayElementValues> elements;
+  int count = 0;  // elements
+  std::vector<float> vertex, color, normal, fogCoord, secondaryColor;
+  std::vector<float> texCoord[kTextureUnitCount];
+  std::vector<unsigned char> edgeFlag;
 };
 
 ArrayElementLayout currentElementLayout(const ArrayState& arrays);

@@ -125,39 +125,78 @@ bool batchesElements(Context& ctx, const ArrayElementLayout& layout) {
   return fastPathsEnabled() && layout.vertex && ctx.draw->vertexSetup().trace == nullptr;
 }
 
-// Client arrays over the stored values of a compiled draw's elements: each attribute read as it
-// was stored, GL_FLOAT components (the edge flag as its byte), so that readElement gives back
-// exactly the stored values and the batched path can replay them.
-ArrayState arraysOverElements(const std::vector<ArrayElementValues>& elements) {
-  const ArrayElementValues& e = elements.front();
-  constexpr int kStride = sizeof(ArrayElementValues);
+// The components of the attributes a compiled draw stores, as readElement gives them.
+constexpr int kVertexComponents = 4, kColorComponents = 4, kNormalComponents = 3;
+constexpr int kTexCoordComponents = 4, kSecondaryColorComponents = 3;
+
+// Room for draw.count elements of each attribute of draw.layout.
+void reserveElements(CompiledArrayDraw& draw) {
+  const ArrayElementLayout& layout = draw.layout;
+  const auto reserve = [&draw](bool stored, std::vector<float>& values, int components) {
+    if (stored) values.reserve(static_cast<size_t>(draw.count) * static_cast<size_t>(components));
+  };
+  reserve(layout.vertex, draw.vertex, kVertexComponents);
+  reserve(layout.color, draw.color, kColorComponents);
+  reserve(layout.normal, draw.normal, kNormalComponents);
+  for (int u = 0; u < kTextureUnitCount; ++u) reserve(layout.texCoord[u], draw.texCoord[u], kTexCoordComponents);
+  reserve(layout.fogCoord, draw.fogCoord, 1);
+  reserve(layout.secondaryColor, draw.secondaryColor, kSecondaryColorComponents);
+  if (layout.edgeFlag) draw.edgeFlag.reserve(static_cast<size_t>(draw.count));
+}
+
+// Appends the attributes of draw.layout from one element's values to the draw's packed arrays.
+void storeElement(const ArrayElementValues& e, CompiledArrayDraw& draw) {
+  const ArrayElementLayout& layout = draw.layout;
+  const auto append = [](std::vector<float>& to, const float* values, int n) {
+    to.insert(to.end(), values, values + n);
+  };
+  if (layout.vertex) append(draw.vertex, e.vertex, kVertexComponents);
+  if (layout.color) append(draw.color, e.color, kColorComponents);
+  if (layout.normal) append(draw.normal, e.normal, kNormalComponents);
+  for (int u = 0; u < kTextureUnitCount; ++u)
+    if (layout.texCoord[u]) append(draw.texCoord[u], e.texCoord[u], kTexCoordComponents);
+  if (layout.fogCoord) draw.fogCoord.push_back(e.fogCoord);
+  if (layout.secondaryColor) append(draw.secondaryColor, e.secondaryColor, kSecondaryColorComponents);
+  if (layout.edgeFlag) draw.edgeFlag.push_back(e.edgeFlag ? 1 : 0);
+}
+
+// Client arrays over a compiled draw's packed values: each attribute tightly packed, GL_FLOAT
+// components (the edge flags as bytes), so that readElement gives back exactly the stored values
+// and the batched path can replay them. Attributes the layout does not read stay disabled.
+ArrayState arraysOverStoredElements(const CompiledArrayDraw& draw) {
+  const auto over = [](const std::vector<float>& values, int components) {
+    return ClientArray{!values.empty(), components, GL_FLOAT, 0, values.data()};
+  };
   ArrayState arrays;
-  arrays.vertex = {true, 4, GL_FLOAT, kStride, e.vertex};
-  arrays.color = {true, 4, GL_FLOAT, kStride, e.color};
-  arrays.normal = {true, 3, GL_FLOAT, kStride, e.normal};
-  for (int u = 0; u < kTextureUnitCount; ++u) arrays.texCoord[u] = {true, 4, GL_FLOAT, kStride, e.texCoord[u]};
-  static_assert(sizeof(bool) == 1, "the edge flag is read as one byte");
-  arrays.edgeFlag = {true, 1, GL_UNSIGNED_BYTE, kStride, &e.edgeFlag};
-  arrays.fogCoord = {true, 1, GL_FLOAT, kStride, &e.fogCoord};
-  arrays.secondaryColor = {true, 3, GL_FLOAT, kStride, e.secondaryColor};
+  arrays.vertex = over(draw.vertex, kVertexComponents);
+  arrays.color = over(draw.color, kColorComponents);
+  arrays.normal = over(draw.normal, kNormalComponents);
+  for (int u = 0; u < kTextureUnitCount; ++u) arrays.texCoord[u] = over(draw.texCoord[u], kTexCoordComponents);
+  arrays.fogCoord = over(draw.fogCoord, 1);
+  arrays.secondaryColor = over(draw.secondaryColor, kSecondaryColorComponents);
+  arrays.edgeFlag = {!draw.edgeFlag.empty(), 1, GL_UNSIGNED_BYTE, 0, draw.edgeFlag.data()};
   return arrays;
 }
 
-// Replays a display list's array draw: the stored elements through the batched path over
-// arrays made of them (the context's own arrays are put back after), or one at a time.
+// Replays a display list's array draw: the stored elements through the batched path, or one at
+// a time, over arrays made of them (the context's own arrays are put back after).
 void replayCompiledDraw(Context& ctx, const CompiledArrayDraw& draw) {
   beginCommand(ctx, draw.mode);
   if (!ctx.assembly.active) return;
-  if (!draw.elements.empty() && batchesElements(ctx, draw.layout)) {
-    struct RestoredArrays {
-      Context& ctx;
-      ArrayState saved;
-      ~RestoredArrays() { ctx.arrays = saved; }
-    } restore{ctx, ctx.arrays};
-    ctx.arrays = arraysOverElements(draw.elements);
-    drawArrayElementsBatched(ctx, draw.layout, nullptr, 0, static_cast<int>(draw.elements.size()));
+  struct RestoredArrays {
+    Context& ctx;
+    ArrayState saved;
+    ~RestoredArrays() { ctx.arrays = saved; }
+  } restore{ctx, ctx.arrays};
+  ctx.arrays = arraysOverStoredElements(draw);
+  if (draw.count > 0 && batchesElements(ctx, draw.layout)) {
+    drawArrayElementsBatched(ctx, draw.layout, nullptr, 0, draw.count);
   } else {
-    for (const ArrayElementValues& e : draw.elements) applyElement(ctx, draw.layout, e);
+    ArrayElementValues values;
+    for (int i = 0; i < draw.count; ++i) {
+      readElement(ctx.arrays, draw.layout, i, values);
+      applyElement(ctx, draw.layout, values);
+    }
   }
   endCommand(ctx);
 }
@@ -170,9 +209,12 @@ void drawArrayElements(Context& ctx, GLenum mode, const int* indices, int first,
     auto draw = std::make_shared<CompiledArrayDraw>();
     draw->mode = mode;
     draw->layout = layout;
-    draw->elements.resize(static_cast<size_t>(count));
+    draw->count = count;
+    reserveElements(*draw);
+    ArrayElementValues values;
     for (int i = 0; i < count; ++i) {
-      readElement(ctx.arrays, layout, indices ? indices[i] : first + i, draw->elements[i]);
+      readElement(ctx.arrays, layout, indices ? indices[i] : first + i, values);
+      storeElement(values, *draw);
     }
     std::shared_ptr<const CompiledArrayDraw> compiled = std::move(draw);
     compileOrExecuteOn(ctx, [compiled](Context& c) { replayCompiledDraw(c, *compiled); });
