@@ -13,6 +13,7 @@
 #include <optional>
 #include <set>
 #include <sstream>
+#include <tuple>
 
 namespace glass::geometry {
 
@@ -205,9 +206,14 @@ bool faceHasEdge(const Topology& topo, std::size_t face, std::size_t edge) {
 // One of a and b may be a sharp crease (sharpA, sharpB): the torus piece then still turns the
 // rounded one's quarter circle all the way round to the sharp one's line, and ends there in a flat
 // cap (see edge_rounding.h).
+// The same corner turned inside out (`standing`): a convex rounded edge c (the upright of a cube
+// standing on a layer's top) ends between two rounded concave edges a and b (the fillets along
+// the cube's foot), the end face (the layer's top) split by flat edges along -a and -b. The torus
+// piece is then the fillets' quarter circle swept around c's axis, concave, with the same net.
 struct TorusCorner {
   std::size_t c = 0, a = 0, b = 0, flatA = 0, flatB = 0;
   bool sharpA = false, sharpB = false;
+  bool standing = false;
   // The sharp one of a and b, when there is one.
   std::optional<std::size_t> sharp() const {
     if (sharpA) return a;
@@ -228,16 +234,29 @@ std::optional<TorusCorner> torusCornerAt(const Topology& topo, std::uint32_t v) 
     else if (dihedral == Dihedral::Concave) concave.push_back(e);
     else convex.push_back(e);
   }
-  if (concave.size() != 1 || convex.size() != 2 || flat.size() != 2) return std::nullopt;
-  // The fillet and at least one of the convex creases rounded (both sharp: the fillet's web).
-  if (!topo.edges()[concave[0]].rounded || (!topo.edges()[convex[0]].rounded && !topo.edges()[convex[1]].rounded))
-    return std::nullopt;
+  if (flat.size() != 2) return std::nullopt;
   TorusCorner corner;
-  corner.c = concave[0];
+  std::vector<std::size_t> sides;
+  if (concave.size() == 1 && convex.size() == 2) {
+    // The fillet and at least one of the convex creases rounded (both sharp: the fillet's web).
+    if (!topo.edges()[concave[0]].rounded || (!topo.edges()[convex[0]].rounded && !topo.edges()[convex[1]].rounded))
+      return std::nullopt;
+    corner.c = concave[0];
+    sides = convex;
+  } else if (concave.size() == 2 && convex.size() == 1) {
+    // Standing: all three rounded (a sharp upright or a sharp foot has no patch here).
+    if (!topo.edges()[convex[0]].rounded || !topo.edges()[concave[0]].rounded || !topo.edges()[concave[1]].rounded)
+      return std::nullopt;
+    corner.c = convex[0];
+    corner.standing = true;
+    sides = concave;
+  } else {
+    return std::nullopt;
+  }
   const auto left = static_cast<std::size_t>(topo.edges()[corner.c].left);
-  const bool firstOnLeft = faceHasEdge(topo, left, convex[0]);
-  corner.a = firstOnLeft ? convex[0] : convex[1];
-  corner.b = firstOnLeft ? convex[1] : convex[0];
+  const bool firstOnLeft = faceHasEdge(topo, left, sides[0]);
+  corner.a = firstOnLeft ? sides[0] : sides[1];
+  corner.b = firstOnLeft ? sides[1] : sides[0];
   if (!faceHasEdge(topo, left, corner.a) || !faceHasEdge(topo, static_cast<std::size_t>(topo.edges()[corner.c].right), corner.b))
     return std::nullopt;
   const glm::dvec3 da = topo.direction(v, corner.a), db = topo.direction(v, corner.b), dc = topo.direction(v, corner.c);
@@ -254,6 +273,26 @@ std::optional<TorusCorner> torusCornerAt(const Topology& topo, std::uint32_t v) 
   corner.sharpA = !topo.edges()[corner.a].rounded;
   corner.sharpB = !topo.edges()[corner.b].rounded;
   return corner;
+}
+
+// At a standing torus corner, turns the records of the fillets a and b round where needed so that
+// each runs with the end face on its left: the fillet's arc then runs from the end face to the
+// upright's face, as the torus's minor arc does, and a fillet split at 30 and 60 degrees (see
+// RoundingBuilder::findTori) is split by the same operations on the same points as the torus.
+// A fillet between two standing corners has the same end face (the layer's top) at both.
+void orientStandingFillets(Topology& topo) {
+  for (std::uint32_t v = 0; v < topo.poly().vertices.size(); ++v) {
+    const auto corner = torusCornerAt(topo, v);
+    if (!corner || !corner->standing) continue;
+    const EdgeRecord& upright = topo.edges()[corner->c];
+    for (const auto& [fillet, wall] : {std::pair{corner->a, upright.left}, std::pair{corner->b, upright.right}}) {
+      EdgeRecord& e = topo.edges()[fillet];
+      if (e.right != wall) {
+        std::swap(e.from, e.to);
+        std::swap(e.left, e.right);
+      }
+    }
+  }
 }
 
 void checkCorner(const Topology& topo, std::uint32_t v) {
@@ -395,18 +434,57 @@ class RoundingBuilder {
         splitFillets_.insert(corner->c);
       }
     }
+    // Two fillets at a vertex are split alike: where the crease runs straight through, and at a
+    // standing corner, whose torus piece's minor arcs are split for both or neither. So are two
+    // rounded convex edges where their crease runs straight through (an upright two layers high
+    // above a standing corner).
     for (bool grown = true; grown;) {
       grown = false;
       for (std::uint32_t v = 0; v < touched_.size(); ++v) {
-        std::vector<std::size_t> fillets;
-        for (std::size_t e : topo_.edgesAt(v))
+        std::vector<std::size_t> fillets, convex;
+        for (std::size_t e : topo_.edgesAt(v)) {
           if (topo_.edges()[e].concave) fillets.push_back(e);
-        if (fillets.size() != 2 || splitFillets_.count(fillets[0]) == splitFillets_.count(fillets[1])) continue;
-        splitFillets_.insert(fillets[0]);
-        splitFillets_.insert(fillets[1]);
-        grown = true;
+          else if (dihedralOf(topo_, topo_.edges()[e]) == Dihedral::Convex) convex.push_back(e);
+        }
+        const bool straightConvex = fillets.empty() && convex.size() == 2 && topo_.edges()[convex[0]].rounded &&
+                                    topo_.edges()[convex[1]].rounded &&
+                                    glm::dot(topo_.direction(v, convex[0]), topo_.direction(v, convex[1])) < -1.0 + kAngleTolerance;
+        for (const auto* pair : {&fillets, &convex}) {
+          if (pair->size() != 2 || (pair == &convex && !straightConvex)) continue;
+          if (splitFillets_.count((*pair)[0]) == splitFillets_.count((*pair)[1])) continue;
+          splitFillets_.insert((*pair)[0]);
+          splitFillets_.insert((*pair)[1]);
+          grown = true;
+        }
       }
     }
+    for (std::size_t e : splitFillets_) {
+      const EdgeRecord& edge = topo_.edges()[e];
+      if (edge.concave) continue;
+      for (std::uint32_t end : {edge.from, edge.to}) checkSplitUprightEnd(e, end);
+    }
+  }
+
+  // A rounded convex edge split at 30 and 60 degrees (an upright above a standing corner) meets,
+  // at `end`, a torus piece, its continuation (split alike), a sphere corner (split to match,
+  // when it is the corner's only split edge) or the face across its end. Anything else (a mitre,
+  // whose other strip would have to be split the other way round) is refused.
+  void checkSplitUprightEnd(std::size_t e, std::uint32_t end) const {
+    if (tori_.count(end) > 0 && tori_.at(end).c == e) return;
+    std::vector<std::size_t> rounded;
+    for (std::size_t other : topo_.edgesAt(end))
+      if (topo_.edges()[other].rounded) rounded.push_back(other);
+    if (rounded.size() == 1) return;  // the strip ends at the face across it
+    const auto split = std::count_if(rounded.begin(), rounded.end(), [&](std::size_t r) { return splitFillets_.count(r) > 0; });
+    if (rounded.size() == 2 && split == 2 &&
+        glm::dot(topo_.direction(end, rounded[0]), topo_.direction(end, rounded[1])) < -1.0 + kAngleTolerance)
+      return;
+    if (rounded.size() == 3 && topo_.edgesAt(end).size() == 3 && split == 1) return;
+    throw RoundingError(describeVertex(end) + ", where the rounded upright " + describeEdge(topo_.edges()[e]) +
+                        " above a cube's foot ends, has " + std::to_string(rounded.size()) + " rounded edges, " +
+                        std::to_string(split) +
+                        " of them split to meet torus pieces; such an upright must end at a sphere corner, the face "
+                        "across it or a crease running straight on");
   }
 
   // The torus piece at v (see edge_rounding.h): a surface of revolution around the fillet's axis,
@@ -432,11 +510,18 @@ class RoundingBuilder {
       else between = f;
     }
     const glm::dvec3 endNormal = topo_.normal(between);
+    // From the tube's centre circle towards the end face: out of the solid for a fillet's end,
+    // into it for a standing upright's foot (the tube lies above the layer's top).
+    const glm::dvec3 towardsEnd = t.standing ? -endNormal : endNormal;
+    // The faces beside c seen from c's axis: their outward normals for a convex upright, reversed
+    // for a fillet (see RoundedPatchInfo).
+    const double side = t.standing ? 1.0 : -1.0;
     RoundedPatchInfo info;
     info.rounded = true;
     info.torus = true;
+    info.concave = t.standing;
     info.centre = offsetPoint(v, {t.a, t.b, t.c});
-    info.axis = endNormal;
+    info.axis = towardsEnd;
     info.majorRadius = 2.0 * radius_;
     // The same splits as the fillet's: in the middle, then at 30 and 60 degrees.
     const auto [firstHalf, secondHalf] = BezierSurface(2, 2, points, weights).subdivideU(0.5);
@@ -446,24 +531,41 @@ class RoundingBuilder {
     const std::size_t endFaces[] = {besideA, between, between, besideB};
     // The patches of piece 0 (a's end, u = 0) and piece 3 (b's end, u = 1), for a cap there.
     std::vector<std::size_t> endPatches[2];
+    // At a standing corner whose fillets are split at 30 and 60 degrees (they meet a torus piece
+    // at their other ends too), the minor arcs are split there as well: v runs from the end face
+    // to the upright as the fillets' u does (orientStandingFillets), so the same splits of the
+    // same points give the same curves.
+    const bool splitMinor = t.standing && splitFillets_.count(t.a) > 0;
     for (int k = 0; k < 4; ++k) {
       const auto [nearEnd, nearFillet] = pieces[k]->subdivideV(0.5);
+      std::vector<BezierSurface> endParts{nearEnd}, filletParts{nearFillet};
+      if (splitMinor) {
+        const auto [end0, end1] = nearEnd.subdivideV(thirty_);
+        const auto [fillet0, fillet1] = nearFillet.subdivideV(1.0 - thirty_);
+        endParts = {end0, end1};
+        filletParts = {fillet0, fillet1};
+      }
       info.face = static_cast<int>(endFaces[k]);
-      info.faceNormal = endNormal;
+      info.faceNormal = towardsEnd;
       info.acrossNormals.clear();
-      const bool flipped = add(nearEnd, info);
-      if (k == 0 || k == 3) endPatches[k / 3].push_back(surface_.patches.size() - 1);
-      TorusArc arc;
-      for (int i = 0; i < 3; ++i) arc.row[static_cast<std::size_t>(i)] = nearEnd.homogeneousControlPoint(i, 0);
-      arc.face = endFaces[k];
-      arc.along = {surface_.patches.size() - 1, flipped ? PatchSide::VMax : PatchSide::VMin};
-      torusArcs_[v].push_back(arc);
+      for (std::size_t part = 0; part < endParts.size(); ++part) {
+        const bool flipped = add(endParts[part], info);
+        if (k == 0 || k == 3) endPatches[k / 3].push_back(surface_.patches.size() - 1);
+        if (part != 0) continue;
+        TorusArc arc;
+        for (int i = 0; i < 3; ++i) arc.row[static_cast<std::size_t>(i)] = nearEnd.homogeneousControlPoint(i, 0);
+        arc.face = endFaces[k];
+        arc.along = {surface_.patches.size() - 1, flipped ? PatchSide::VMax : PatchSide::VMin};
+        torusArcs_[v].push_back(arc);
+      }
       const std::size_t face = k < 2 ? left : right, other = k < 2 ? right : left;
       info.face = static_cast<int>(face);
-      info.faceNormal = -topo_.normal(face);
-      info.acrossNormals = {-topo_.normal(other)};
-      add(nearFillet, info);
-      if (k == 0 || k == 3) endPatches[k / 3].push_back(surface_.patches.size() - 1);
+      info.faceNormal = side * topo_.normal(face);
+      info.acrossNormals = {side * topo_.normal(other)};
+      for (const BezierSurface& part : filletParts) {
+        add(part, info);
+        if (k == 0 || k == 3) endPatches[k / 3].push_back(surface_.patches.size() - 1);
+      }
     }
     if (const auto sharp = t.sharp()) addCap(v, t, *sharp, t.sharpA ? PatchSide::UMin : PatchSide::UMax, endPatches[t.sharpA ? 0 : 1]);
   }
@@ -755,7 +857,21 @@ class RoundingBuilder {
   // The eighth of a sphere where the rounded edges a, b, c (all of v's edges) meet.
   void addSphereCorner(std::uint32_t v) {
     const auto& edges = topo_.edgesAt(v);
-    const std::size_t a = edges[0], b = edges[1], c = edges[2];
+    std::size_t a = edges[0], b = edges[1], c = edges[2];
+    // An upright split at 30 and 60 degrees (above a standing corner) is c, with a in its left
+    // face: the sphere's last row is then that strip's end arc in the strip's own order, and the
+    // sphere is split along it by the same operations (the cuts run through the pole).
+    const auto split = std::find_if(edges.begin(), edges.end(), [&](std::size_t e) { return splitFillets_.count(e) > 0; });
+    const bool splitC = split != edges.end();
+    if (splitC) {
+      c = *split;
+      std::vector<std::size_t> rest;
+      for (std::size_t e : edges)
+        if (e != c) rest.push_back(e);
+      const bool firstOnLeft = faceHasEdge(topo_, static_cast<std::size_t>(topo_.edges()[c].left), rest[0]);
+      a = firstOnLeft ? rest[0] : rest[1];
+      b = firstOnLeft ? rest[1] : rest[0];
+    }
     const std::size_t faceAB = faceWithEdges(v, a, b), faceCA = faceWithEdges(v, c, a), faceBC = faceWithEdges(v, b, c);
     const glm::dvec3 pole = cornerAt(faceAB, v).start;
     const glm::dvec3 points[] = {pole,
@@ -781,10 +897,22 @@ class RoundingBuilder {
       info.acrossNormals = {topo_.normal(other1), topo_.normal(other2)};
       return info;
     };
-    add(poleA, forFace(faceAB, faceCA, faceBC));
-    add(poleB, forFace(faceAB, faceCA, faceBC));
-    add(equatorA, forFace(faceCA, faceAB, faceBC));
-    add(equatorB, forFace(faceBC, faceAB, faceCA));
+    if (!splitC) {
+      add(poleA, forFace(faceAB, faceCA, faceBC));
+      add(poleB, forFace(faceAB, faceCA, faceBC));
+      add(equatorA, forFace(faceCA, faceAB, faceBC));
+      add(equatorB, forFace(faceBC, faceAB, faceCA));
+      return;
+    }
+    // Split at 30 degrees from each touching point, as the strip's halves are (the pole's halves
+    // too, which share the cut curves).
+    for (const auto& [half, first, face, other1, other2] :
+         {std::tuple{&poleA, true, faceAB, faceCA, faceBC}, std::tuple{&poleB, false, faceAB, faceCA, faceBC},
+          std::tuple{&equatorA, true, faceCA, faceAB, faceBC}, std::tuple{&equatorB, false, faceBC, faceAB, faceCA}}) {
+      const auto [low, high] = half->subdivideV(first ? thirty_ : 1.0 - thirty_);
+      add(low, forFace(face, other1, other2));
+      add(high, forFace(face, other1, other2));
+    }
   }
 
   // The flat piece of a plane between a quarter arc (from a to b, its middle control point
@@ -1108,6 +1236,7 @@ RoundedSurface roundMarkedEdges(const MarkedPolyhedron& poly, double radius) {
       text << "radius " << radius << " is too large: the largest is " << largest << ", " << limit;
       throw RoundingError(text.str());
     }
+    orientStandingFillets(topo);
     for (std::uint32_t v = 0; v < touched.size(); ++v)
       if (touched[v]) checkCorner(topo, v);
     // Torus pieces first: the end faces' outlines take their arcs.

@@ -60,6 +60,33 @@ PatchBoundaries::PatchBoundaries(std::span<const BezierSurface> patches) : sides
       if (!key.empty() && !entry.collapsed) byCurve[key].push_back({p, side});
     }
   }
+  // A pole shared by several patches is one point: a patch cut from a rational net between its
+  // weight-1 control points (a sphere corner split through its pole) has none of weight 1 in its
+  // collapsed row, and its projected control point may differ from the exact pole in the last
+  // bit. It takes the exact point of a neighbour's pole within the same slack.
+  std::vector<const Side*> exactPoles;
+  std::vector<Side*> inexactPoles;
+  for (std::size_t p = 0; p < patches.size(); ++p) {
+    for (PatchSide side : kAllSides) {
+      Side& entry = sides_[p][sideIndex(side)];
+      if (!entry.collapsed) continue;
+      const BezierCurve curve = patches[p].boundary(side);
+      const auto row = curve.homogeneousControlPoints();
+      if (std::any_of(row.begin(), row.end(), [](const glm::dvec4& h) { return h.w == 1.0; }))
+        exactPoles.push_back(&entry);
+      else
+        inexactPoles.push_back(&entry);
+    }
+  }
+  for (Side* pole : inexactPoles) {
+    const double slack = 1e-14 * (1.0 + glm::length(pole->collapsedPoint));
+    for (const Side* exact : exactPoles) {
+      if (glm::length(exact->collapsedPoint - pole->collapsedPoint) <= slack) {
+        pole->collapsedPoint = exact->collapsedPoint;
+        break;
+      }
+    }
+  }
   for (const auto& [key, refs] : byCurve) {
     for (const PatchSideRef& a : refs) {
       Side& entry = sides_[a.patch][sideIndex(a.side)];

@@ -126,6 +126,38 @@ main([Root]) ->
     {TwoVs, TwoFs} = cubes([{0, 0, 0}, {1, 0, 0}, {0, 0, 1}, {0, 1, 0}], 1.0, {0.0, 0.0, 0.0}),
     write(filename:join(Tests, "two_layers.wings"),
           [object("Steps", TwoVs, TwoFs, All, none, false)], Materials, []),
+    %% A cube standing on a slab of 2 x 2 cubes at one corner, every edge marked: at the foot of
+    %% its inner upright the upright meets the two fillets along its foot (a standing torus
+    %% piece); at the two feet beside the slab's sides a fillet ends between two rounded convex
+    %% edges (a torus piece as in the L).
+    {SlabVs, SlabFs} = cubes([{X, 0, Z} || X <- [0, 1], Z <- [0, 1]] ++ [{0, 1, 0}], 1.0, {0.0, 0.0, 0.0}),
+    write(filename:join(Tests, "slab_corner_cube.wings"),
+          [object("Slab", SlabVs, SlabFs, All, none, false)], Materials, []),
+    write(filename:join(Models, "slab_cube.wings"),
+          [object("Slab", SlabVs, SlabFs, All, top_paint, true)], Materials, []),
+    %% A tower of two cubes on the same corner: the upright above the standing corner runs
+    %% straight on through the corner where the two cubes' sides meet.
+    {TowerVs, TowerFs} = cubes([{X, 0, Z} || X <- [0, 1], Z <- [0, 1]] ++ [{0, 1, 0}, {0, 2, 0}], 1.0, {0.0, 0.0, 0.0}),
+    write(filename:join(Tests, "slab_tower.wings"),
+          [object("Tower", TowerVs, TowerFs, All, top_paint, true)], Materials, []),
+    %% A cube in the middle of a slab of 3 x 3 cubes, every edge marked: four standing corners,
+    %% joined by fillets that meet no other torus piece.
+    {MiddleVs, MiddleFs} = cubes([{X, 0, Z} || X <- [0, 1, 2], Z <- [0, 1, 2]] ++ [{1, 1, 1}], 1.0, {0.0, 0.0, 0.0}),
+    write(filename:join(Tests, "slab_middle_cube.wings"),
+          [object("Slab", MiddleVs, MiddleFs, All, top_paint, true)], Materials, []),
+    %% A cube on the end of an arm of an L of five cubes (arms two cubes long), every edge
+    %% marked: the fillets along its foot end between rounded convex edges at both ends.
+    {ArmVs, ArmFs} = cubes([{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {0, 0, 1}, {0, 0, 2}, {2, 1, 0}], 1.0, {0.0, 0.0, 0.0}),
+    write(filename:join(Tests, "l_arm_cube.wings"),
+          [object("Arm", ArmVs, ArmFs, All, top_paint, true)], Materials, []),
+    %% The corner cube on its slab with the slab's bottom edges and its three uprights away from
+    %% the cube sharp (its top rim meets in mitres there), with texture coordinates.
+    SlabMixed = fun({AX, AY, AZ} = A, {_, BY, _} = B) ->
+                        not (AY == 0.0 andalso BY == 0.0) andalso
+                            not (upright(A, B) andalso max(AY, BY) =< 1.0 andalso {AX, AZ} =/= {0.0, 0.0})
+                end,
+    write(filename:join(Tests, "slab_corner_cube_mixed.wings"),
+          [object("Slab", SlabVs, SlabFs, SlabMixed, top_paint, true)], Materials, []),
     %% Broken and unsupported files.
     Cube = object("Cube", CubeVs, CubeFs, All, top_paint, true),
     write_term(filename:join(Tests, "version_3.wings"), {wings, 3, {[Cube], Materials, []}}),

@@ -210,7 +210,13 @@ std::size_t checkWatertight(const RoundedMesh &rounded) {
   int unmatched = 0;
   for (const auto &[edge, count] : edges) {
     const auto back = edges.find({edge.second, edge.first});
-    if (count != 1 || back == edges.end() || back->second != 1) ++unmatched;
+    if (count != 1 || back == edges.end() || back->second != 1) {
+      if (++unmatched <= 8) {
+        const auto &[a, b] = edge;
+        MESSAGE("unmatched edge (" << std::get<0>(a) << ", " << std::get<1>(a) << ", " << std::get<2>(a) << ") to ("
+                                   << std::get<0>(b) << ", " << std::get<1>(b) << ", " << std::get<2>(b) << ")");
+      }
+    }
   }
   CHECK(unmatched == 0);
   return idx.size() / 3;
@@ -231,7 +237,8 @@ double meshVolume(const RoundedMesh &mesh) {
 
 const char *const kRoundable[] = {"cube_all_hard.wings", "cube_top_ring.wings", "cube_one_edge.wings",   "block.wings",
                                   "l_uprights.wings",    "l_tall_uprights.wings", "l_block.wings", "concave_l.wings",
-                                  "concave_l_one_sharp.wings"};
+                                  "concave_l_one_sharp.wings", "slab_corner_cube.wings", "slab_middle_cube.wings",
+                                  "slab_corner_cube_mixed.wings", "l_arm_cube.wings", "slab_tower.wings"};
 
 TEST_CASE("Rounding: every seam is exact, with continuous normals and texture coordinates") {
   for (std::string name : kRoundable) {
@@ -677,4 +684,71 @@ TEST_CASE("Rounding: a torus piece that ends at a sharp crease closes in a flat 
     CHECK(kept >= strip - 1e-6);
     CHECK(kept <= strip + radius * radius * radius + 1e-6);
   }
+}
+
+TEST_CASE("Rounding: a cube standing on a layer's top, its uprights ending in concave torus pieces") {
+  // A unit cube on a slab of unit cubes (its top at y = 1), every edge marked. At the foot of each
+  // upright that stands on the slab's top (not above the slab's side), the upright's quarter
+  // cylinder (axis x = X - R sx, z = Z - R sz) meets the fillets along the cube's foot in a torus
+  // piece turned around that axis: its tube (radius R) centred on the circle of radius 2 R at
+  // y = 1 + R, below the tube's centre and between the cylinder and the slab's top, normals
+  // towards the tube's centre (the solid lies outside it).
+  struct Case {
+    std::string name;
+    glm::dvec2 cube;  // the cube's x and z extent starts here
+    int standing;     // uprights whose foot is a standing corner
+  };
+  for (const Case &c : {Case{"slab_corner_cube.wings", {0.0, 0.0}, 1}, Case{"slab_middle_cube.wings", {1.0, 1.0}, 4}}) {
+    const MarkedPolyhedron poly = readShape(c.name);
+    for (double radius : {0.05, 0.25, 0.4}) {
+      CAPTURE(c.name);
+      CAPTURE(radius);
+      const RoundedSurface s = roundMarkedEdges(poly, radius);
+      int pieces = 0;
+      for (std::size_t p = 0; p < s.patches.size(); ++p) {
+        if (!s.info[p].torus || !s.info[p].concave) continue;
+        ++pieces;
+        const glm::dvec3 middle = s.patches[p].evaluate(0.5, 0.5);
+        // The upright's axis: R inside the cube from its nearest corner.
+        const double cornerX = middle.x > c.cube.x + 0.5 ? c.cube.x + 1.0 : c.cube.x;
+        const double cornerZ = middle.z > c.cube.y + 0.5 ? c.cube.y + 1.0 : c.cube.y;
+        const double axisX = cornerX + (cornerX > c.cube.x + 0.5 ? -radius : radius);
+        const double axisZ = cornerZ + (cornerZ > c.cube.y + 0.5 ? -radius : radius);
+        for (double u : kSamples)
+          for (double v : kSamples) {
+            const glm::dvec3 point = s.patches[p].evaluate(u, v);
+            const double fromAxis = std::hypot(point.x - axisX, point.z - axisZ);
+            const double tubeHeight = 1.0 + radius;
+            CHECK(std::abs(std::hypot(fromAxis - 2.0 * radius, point.y - tubeHeight) - radius) < 1e-9);
+            CHECK(fromAxis >= radius * (1.0 - 1e-12));
+            CHECK(fromAxis <= 2.0 * radius * (1.0 + 1e-12));
+            CHECK(point.y <= tubeHeight + 1e-12);
+            CHECK(point.y >= 1.0 - 1e-12);
+            // In the quarter around the axis that faces out of the cube's corner.
+            CHECK((point.x - axisX) * (cornerX - axisX) >= -1e-12);
+            CHECK((point.z - axisZ) * (cornerZ - axisZ) >= -1e-12);
+            const glm::dvec3 n = s.patches[p].normal(u, v);
+            const glm::dvec3 radial = glm::normalize(glm::dvec3(point.x - axisX, 0.0, point.z - axisZ));
+            const glm::dvec3 tube(axisX + 2.0 * radius * radial.x, tubeHeight, axisZ + 2.0 * radius * radial.z);
+            CHECK(glm::length(n - (tube - point) / radius) < 1e-9);
+            // On the slab's top the normal is the top's (up); on the cylinder's foot it points
+            // away from the upright's axis, as the cylinder's does.
+            if (std::abs(point.y - 1.0) < 1e-12) CHECK(glm::length(n - glm::dvec3(0.0, 1.0, 0.0)) < 1e-9);
+            if (std::abs(fromAxis - radius) < 1e-12) CHECK(glm::length(n - radial) < 1e-9);
+          }
+      }
+      // Each standing corner: cut at 30, 45 and 60 degrees around the axis and in the middle of
+      // the tube, and where the fillets are split at 30 and 60 degrees (slab_corner_cube: they
+      // meet a fillet's torus piece at their other ends), at those angles along the tube too.
+      CHECK(pieces == c.standing * (c.standing == 1 ? 16 : 8));
+      checkSeams(poly, s);
+      checkRadius(s);
+      checkClosedAtEveryDepth(poly, s);
+    }
+  }
+  // A cube on an L's corner cube makes the L's inner upright end at the foot of the cube's inner
+  // upright, where convex and concave creases alternate around the vertex (three of each): no
+  // patch is built for that kind, and the message names it.
+  const MarkedPolyhedron steps = readShape("two_layers.wings");
+  CHECK_THROWS_WITH_AS(roundMarkedEdges(steps, 0.1), doctest::Contains("6 creases meet there"), RoundingError);
 }

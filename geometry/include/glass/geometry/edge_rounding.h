@@ -45,6 +45,16 @@
 //   ending). The end face beside the sharp edge loses its corner to the torus's arc and the
 //   cap's top side; the face holding the sharp edge and the fillet keeps its sharp edge from the
 //   cap on, and its side along the fillet is shared by the fillet (up to the torus) and the cap;
+// - the same corner turned inside out, where a cube stands on a layer's top: a convex rounded
+//   edge (the cube's upright) ends between two rounded concave edges (the fillets along its
+//   foot), the layer's top split by flat edges along their continuations. The fillets' quarter
+//   circle swept around the upright's axis at distance 2 R is again a torus piece with the same
+//   net (the upright's end arc, the fillets' end arcs and an arc of radius 2 R in the layer's
+//   top), now concave: its normals point towards its tube's centre circle, which lies R above the
+//   layer's top. It is split as the fillet's torus is, and the upright along its whole run with
+//   it (the sphere corner at its top too, in its halves' 30 degree cuts); where the fillets are
+//   split at 30 and 60 degrees because they meet a fillet's torus piece at their other ends, the
+//   torus piece is split there along its tube as well;
 // - every face shrinks by R away from its marked edges; it is a fan of flat patches from its
 //   centre to the pieces of its boundary (segments of degree 1, arcs of degree 2).
 //
@@ -75,7 +85,9 @@
 // of two cubes meet); a concave marked edge runs straight through such corners or ends where its
 // two other creases are convex and at right angles, both sharp (a web), both rounded (a torus
 // piece) or one of each (a torus piece and a cap), the end face split by two flat edges along
-// their continuations where one of them is rounded; faces next to a marked
+// their continuations where one of them is rounded; a rounded convex edge ends between two
+// rounded concave ones in the same way (a cube standing on a layer's top, every crease there
+// rounded), running up to a sphere corner, the face across its end or straight on; faces next to a marked
 // edge have right angles there; every face is convex. Anything else is refused with a message naming the edge, vertex or face.
 // R = 0 gives the sharp object.
 #pragma once
