@@ -214,6 +214,7 @@ struct TorusCorner {
   std::size_t c = 0, a = 0, b = 0, flatA = 0, flatB = 0;
   bool sharpA = false, sharpB = false;
   bool standing = false;
+  bool sharpC = false;  // standing only: the upright is sharp (a horn piece, see hornCornerAt)
   // The sharp one of a and b, when there is one.
   std::optional<std::size_t> sharp() const {
     if (sharpA) return a;
@@ -222,7 +223,7 @@ struct TorusCorner {
   }
 };
 
-std::optional<TorusCorner> torusCornerAt(const Topology& topo, std::uint32_t v) {
+std::optional<TorusCorner> creaseCornerAt(const Topology& topo, std::uint32_t v) {
   const auto& all = topo.edgesAt(v);
   if (all.size() != 5) return std::nullopt;
   std::vector<std::size_t> concave, convex, flat;
@@ -244,11 +245,12 @@ std::optional<TorusCorner> torusCornerAt(const Topology& topo, std::uint32_t v) 
     corner.c = concave[0];
     sides = convex;
   } else if (concave.size() == 2 && convex.size() == 1) {
-    // Standing: all three rounded (a sharp upright or a sharp foot has no patch here).
-    if (!topo.edges()[convex[0]].rounded || !topo.edges()[concave[0]].rounded || !topo.edges()[concave[1]].rounded)
-      return std::nullopt;
+    // Standing: both fillets rounded (a sharp foot has no patch here); the upright rounded (a
+    // torus piece) or sharp (a horn piece).
+    if (!topo.edges()[concave[0]].rounded || !topo.edges()[concave[1]].rounded) return std::nullopt;
     corner.c = convex[0];
     corner.standing = true;
+    corner.sharpC = !topo.edges()[convex[0]].rounded;
     sides = concave;
   } else {
     return std::nullopt;
@@ -275,6 +277,22 @@ std::optional<TorusCorner> torusCornerAt(const Topology& topo, std::uint32_t v) 
   return corner;
 }
 
+// A torus corner (see TorusCorner): every kind but the horn's.
+std::optional<TorusCorner> torusCornerAt(const Topology& topo, std::uint32_t v) {
+  auto corner = creaseCornerAt(topo, v);
+  if (corner && corner->sharpC) return std::nullopt;
+  return corner;
+}
+
+// A standing corner whose upright is left sharp: the two fillets along the cube's foot meet round
+// the upright's foot in a piece of the horn torus that a ball of radius R rolling along them
+// sweeps as it turns about the sharp edge (its centre R from the edge, R above the layer's top).
+std::optional<TorusCorner> hornCornerAt(const Topology& topo, std::uint32_t v) {
+  auto corner = creaseCornerAt(topo, v);
+  if (corner && !corner->sharpC) return std::nullopt;
+  return corner;
+}
+
 // At a standing torus corner, turns the records of the fillets a and b round where needed so that
 // each runs with the end face on its left: the fillet's arc then runs from the end face to the
 // upright's face, as the torus's minor arc does, and a fillet split at 30 and 60 degrees (see
@@ -282,7 +300,7 @@ std::optional<TorusCorner> torusCornerAt(const Topology& topo, std::uint32_t v) 
 // A fillet between two standing corners has the same end face (the layer's top) at both.
 void orientStandingFillets(Topology& topo) {
   for (std::uint32_t v = 0; v < topo.poly().vertices.size(); ++v) {
-    const auto corner = torusCornerAt(topo, v);
+    const auto corner = creaseCornerAt(topo, v);
     if (!corner || !corner->standing) continue;
     const EdgeRecord& upright = topo.edges()[corner->c];
     for (const auto& [fillet, wall] : {std::pair{corner->a, upright.left}, std::pair{corner->b, upright.right}}) {
@@ -310,7 +328,7 @@ void checkCorner(const Topology& topo, std::uint32_t v) {
   auto perpendicular = [&](std::size_t a, std::size_t b) {
     return std::abs(glm::dot(topo.direction(v, a), topo.direction(v, b))) < kAngleTolerance;
   };
-  if (torusCornerAt(topo, v)) return;  // a concave fillet meeting two rounded convex edges
+  if (creaseCornerAt(topo, v)) return;  // a torus or horn piece
   if (concaveEndAt(topo, v) && concave.size() == 1 && creases.size() == 3) {
     // A concave fillet ending where two sharp convex edges leave at right angles: its web.
     std::vector<std::size_t> others;
@@ -433,6 +451,7 @@ class RoundingBuilder {
         tori_.emplace(v, *corner);
         splitFillets_.insert(corner->c);
       }
+      if (const auto corner = hornCornerAt(topo_, v)) horns_.emplace(v, *corner);
     }
     // Two fillets at a vertex are split alike: where the crease runs straight through, and at a
     // standing corner, whose torus piece's minor arcs are split for both or neither. So are two
@@ -537,14 +556,8 @@ class RoundingBuilder {
     // same points give the same curves.
     const bool splitMinor = t.standing && splitFillets_.count(t.a) > 0;
     for (int k = 0; k < 4; ++k) {
-      const auto [nearEnd, nearFillet] = pieces[k]->subdivideV(0.5);
-      std::vector<BezierSurface> endParts{nearEnd}, filletParts{nearFillet};
-      if (splitMinor) {
-        const auto [end0, end1] = nearEnd.subdivideV(thirty_);
-        const auto [fillet0, fillet1] = nearFillet.subdivideV(1.0 - thirty_);
-        endParts = {end0, end1};
-        filletParts = {fillet0, fillet1};
-      }
+      const auto [endParts, filletParts] = splitAlongTube(*pieces[k], splitMinor);
+      const BezierSurface& nearEnd = endParts.front();
       info.face = static_cast<int>(endFaces[k]);
       info.faceNormal = towardsEnd;
       info.acrossNormals.clear();
@@ -568,6 +581,67 @@ class RoundingBuilder {
       }
     }
     if (const auto sharp = t.sharp()) addCap(v, t, *sharp, t.sharpA ? PatchSide::UMin : PatchSide::UMax, endPatches[t.sharpA ? 0 : 1]);
+  }
+
+  // A torus or horn piece split along its tube (v) as the strips are: in the middle, and where
+  // `atThirty`, at 30 degrees from each end too, as fillets split to meet a torus piece are.
+  // The parts at v = 0 come first in the first vector, those at v = 1 in the second.
+  std::pair<std::vector<BezierSurface>, std::vector<BezierSurface>> splitAlongTube(const BezierSurface& piece, bool atThirty) const {
+    const auto [low, high] = piece.subdivideV(0.5);
+    if (!atThirty) return {{low}, {high}};
+    const auto [low0, low1] = low.subdivideV(thirty_);
+    const auto [high0, high1] = high.subdivideV(1.0 - thirty_);
+    return {{low0, low1}, {high0, high1}};
+  }
+
+  // The horn piece at v (see hornCornerAt): a surface of revolution about the sharp upright's
+  // line, u from fillet a's end to fillet b's (the major arc, radius R in the layer's top), v from
+  // the layer's top to the point R up the upright (the fillets' quarter circle, whose middle
+  // control point is v itself, on the line). Its first and last rows are the fillets' end arcs,
+  // from the same points. Split in the middle both ways (and at 30 and 60 degrees along the tube
+  // where the fillets are): the halves at the top take its chart, those at the walls theirs.
+  void addHorn(std::uint32_t v) {
+    const TorusCorner& t = horns_.at(v);
+    const glm::dvec3 top = offsetPoint(v, {t.c}), corner = offsetPoint(v, {});
+    const glm::dvec3 points[] = {offsetPoint(v, {t.flatB}),          corner, top,
+                                 offsetPoint(v, {t.flatA, t.flatB}), corner, top,
+                                 offsetPoint(v, {t.flatA}),          corner, top};
+    const double w = weight_;
+    const double weights[] = {1.0, w, 1.0, w, w * w, w, 1.0, w, 1.0};
+    const EdgeRecord& upright = topo_.edges()[t.c];
+    const auto wallA = static_cast<std::size_t>(upright.left), wallB = static_cast<std::size_t>(upright.right);
+    std::size_t besideA = 0, besideB = 0;
+    for (std::size_t f : {topo_.edges()[t.flatA].left, topo_.edges()[t.flatA].right, topo_.edges()[t.flatB].left,
+                          topo_.edges()[t.flatB].right}) {
+      if (faceHasEdge(topo_, f, t.a)) besideA = f;
+      else if (faceHasEdge(topo_, f, t.b)) besideB = f;
+    }
+    const glm::dvec3 towardsEnd = -topo_.normal(besideA);
+    RoundedPatchInfo info;
+    info.rounded = true;
+    info.torus = true;
+    info.concave = true;
+    info.centre = top;
+    info.axis = towardsEnd;
+    info.majorRadius = radius_;
+    const bool splitMinor = splitFillets_.count(t.a) > 0;
+    const auto [halfA, halfB] = BezierSurface(2, 2, points, weights).subdivideU(0.5);
+    for (const auto& [half, face, wall, along] : {std::tuple{&halfA, besideA, wallA, t.a}, std::tuple{&halfB, besideB, wallB, t.b}}) {
+      const auto [topParts, wallParts] = splitAlongTube(*half, splitMinor);
+      info.face = static_cast<int>(face);
+      info.faceNormal = towardsEnd;
+      info.acrossNormals.clear();
+      info.hornBeyond = glm::dvec3(0.0);
+      for (std::size_t part = 0; part < topParts.size(); ++part) {
+        const bool flipped = add(topParts[part], info);
+        if (part == 0) hornArcs_[v].push_back({surface_.patches.size() - 1, flipped ? PatchSide::VMax : PatchSide::VMin});
+      }
+      info.face = static_cast<int>(wall);
+      info.faceNormal = -topo_.normal(wall);
+      info.acrossNormals = {towardsEnd};
+      info.hornBeyond = -topo_.direction(v, along);
+      for (const BezierSurface& part : wallParts) add(part, info);
+    }
   }
 
   // The cap where a torus piece ends at a sharp crease s (a or b): the piece of the plane normal
@@ -650,6 +724,13 @@ class RoundingBuilder {
       if (previousRounded) piece.terms.push_back(next);
       if (nextRounded) piece.terms.push_back(previous);
       piece.start = piece.end = offsetPoint(v, piece.terms);
+    } else if (horns_.count(v) > 0) {
+      // The layer's top at a horn piece loses the quarter disk of radius R round the upright's
+      // foot: an arc about v, from R along one flat edge to R along the other.
+      piece.arc = true;
+      piece.start = offsetPoint(v, {previous});
+      piece.middle = offsetPoint(v, {previous, next});
+      piece.end = offsetPoint(v, {next});
     } else if (touched_[v] && !concaveEndAt(topo_, v)) {
       // The face across the end of a convex rounded edge loses its corner to the strip's end arc.
       // (At the end of a concave one the corner stays, and the web fills in beside it.)
@@ -760,6 +841,11 @@ class RoundingBuilder {
       }
     }
     for (const PendingArc& p : pendingArcs_) {
+      const auto horn = hornArcs_.find(p.vertex);
+      if (horn != hornArcs_.end()) {
+        surface_.outlines[p.outline].pieces[p.piece].along = horn->second;
+        continue;
+      }
       const auto found = stripEnds_.find({p.edge, p.vertex});
       if (found != stripEnds_.end()) surface_.outlines[p.outline].pieces[p.piece].along = found->second;
     }
@@ -1041,6 +1127,8 @@ class RoundingBuilder {
   std::vector<PendingArc> pendingArcs_;
   std::map<std::pair<std::size_t, std::size_t>, std::vector<PatchSideRef>> stripSides_;
   std::map<std::uint32_t, TorusCorner> tori_;
+  std::map<std::uint32_t, TorusCorner> horns_;
+  std::map<std::uint32_t, std::vector<PatchSideRef>> hornArcs_;
   std::map<std::uint32_t, std::vector<TorusArc>> torusArcs_;
   std::set<std::size_t> splitFillets_;
   std::map<std::pair<std::size_t, std::uint32_t>, std::vector<PatchSideRef>> stripEnds_;
@@ -1143,7 +1231,11 @@ FaceChart faceChart(const MarkedPolyhedron& poly, std::size_t f) {
 glm::dvec3 roundingCentre(const RoundedPatchInfo& info, const glm::dvec3& p) {
   if (info.torus) {
     const glm::dvec3 offset = p - info.centre;
-    const glm::dvec3 radial = offset - info.axis * glm::dot(offset, info.axis);
+    glm::dvec3 radial = offset - info.axis * glm::dot(offset, info.axis);
+    if (radial == glm::dvec3(0.0)) {
+      // On the axis: a horn piece's point on its sharp upright, R from every centre on the circle.
+      radial = glm::cross(info.axis, std::abs(info.axis.x) < 0.5 ? glm::dvec3(1.0, 0.0, 0.0) : glm::dvec3(0.0, 1.0, 0.0));
+    }
     return info.centre + info.majorRadius * glm::normalize(radial);
   }
   if (info.alongAxis) return info.centre + info.axis * glm::dot(p - info.centre, info.axis);
@@ -1169,6 +1261,17 @@ glm::dvec2 torusTexCoord(const RoundedPatchInfo& info, const FaceChart& chart, d
   const glm::dvec3 inward = glm::normalize(info.centre + info.axis * glm::dot(tube - info.centre, info.axis) - tube);
   if (glm::dot(info.faceNormal, info.axis) > 0.5)
     return chart.at(tube + radius * info.faceNormal + unrolledTowards(direction, inward, radius) * inward);
+  if (info.hornBeyond != glm::dvec3(0.0)) {
+    // A horn piece next to a wall: as the fillet's end unrolls onto the wall (onto the upright's
+    // line), then on beyond that line by the length of the turn about it at this point's distance.
+    const glm::dvec3 offset = p - info.centre;
+    const glm::dvec3 radial = offset - info.axis * glm::dot(offset, info.axis);
+    const double distance = glm::length(radial);
+    const double turned = distance > 0.0 ? std::atan2(glm::dot(radial, info.hornBeyond), -glm::dot(radial, info.faceNormal)) : 0.0;
+    glm::dvec3 flat = info.centre + distance * turned * info.hornBeyond;
+    for (const glm::dvec3& across : info.acrossNormals) flat += unrolledTowards(direction, across, radius) * across;
+    return chart.at(flat);
+  }
   glm::dvec3 flat = info.centre + radius * info.faceNormal;
   for (const glm::dvec3& across : info.acrossNormals) flat += unrolledTowards(-inward, across, radius) * across;
   flat += unrolledTowards(direction, info.axis, radius) * info.axis;
@@ -1243,6 +1346,8 @@ RoundedSurface roundMarkedEdges(const MarkedPolyhedron& poly, double radius) {
     builder.findTori();
     for (std::uint32_t v = 0; v < touched.size(); ++v)
       if (touched[v] && torusCornerAt(topo, v)) builder.addTorus(v);
+    for (std::uint32_t v = 0; v < touched.size(); ++v)
+      if (touched[v] && hornCornerAt(topo, v)) builder.addHorn(v);
   }
   for (std::size_t f = 0; f < poly.faces.size(); ++f) {
     const auto& face = poly.faces[f];

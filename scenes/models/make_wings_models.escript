@@ -150,6 +150,11 @@ main([Root]) ->
     {ArmVs, ArmFs} = cubes([{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {0, 0, 1}, {0, 0, 2}, {2, 1, 0}], 1.0, {0.0, 0.0, 0.0}),
     write(filename:join(Tests, "l_arm_cube.wings"),
           [object("Arm", ArmVs, ArmFs, All, top_paint, true)], Materials, []),
+    %% The same with the cube's uprights sharp: the fillets along its foot meet round each
+    %% upright's foot in a horn piece.
+    SharpUprights = fun({_, AY, _} = A, {_, BY, _} = B) -> not (upright(A, B) andalso min(AY, BY) >= 1.0) end,
+    write(filename:join(Tests, "slab_middle_cube_sharp_uprights.wings"),
+          [object("Slab", MiddleVs, MiddleFs, SharpUprights, top_paint, true)], Materials, []),
     %% The corner cube on its slab with the slab's bottom edges and its three uprights away from
     %% the cube sharp (its top rim meets in mitres there), with texture coordinates.
     SlabMixed = fun({AX, AY, AZ} = A, {_, BY, _} = B) ->

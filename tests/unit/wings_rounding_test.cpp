@@ -130,6 +130,12 @@ void checkSeams(const MarkedPolyhedron &poly, const RoundedSurface &s) {
           onPolygon = onPolygon && onPolygonFaces(poly, s, s.patches[p].evaluate(a.x, a.y));
         }
         CAPTURE(p);
+        CAPTURE(static_cast<int>(side));
+        if (!onPolygon) {
+          const glm::dvec2 a = onSide(side, 0.0), b = onSide(side, 1.0);
+          const glm::dvec3 pa = s.patches[p].evaluate(a.x, a.y), pb = s.patches[p].evaluate(b.x, b.y);
+          MESSAGE("unmatched side from " << pa.x << " " << pa.y << " " << pa.z << " to " << pb.x << " " << pb.y << " " << pb.z);
+        }
         CHECK(onPolygon);
         continue;
       }
@@ -161,6 +167,12 @@ void checkSeams(const MarkedPolyhedron &poly, const RoundedSurface &s) {
         const glm::dvec2 ua = onSide(side, t), ub = onSide(m.side, m.reversed ? 1.0 - t : t);
         const glm::dvec3 pa = s.patches[p].evaluate(ua.x, ua.y), pb = s.patches[m.patch].evaluate(ub.x, ub.y);
         const glm::dvec3 na = patchNormal(poly, s, p, ua.x, ua.y), nb = patchNormal(poly, s, m.patch, ub.x, ub.y);
+        // A horn piece's point on its sharp upright is a cusp (see checkRadius): no one normal.
+        const auto onHornAxis = [&](const RoundedPatchInfo &info) {
+          const glm::dvec3 offset = pa - info.centre;
+          return info.torus && glm::length(offset - info.axis * glm::dot(offset, info.axis)) < 1e-12;
+        };
+        if (onHornAxis(a) || onHornAxis(b)) continue;
         // Cubes' faces meet at right angles, or are coplanar (a flat edge).
         if (stripEnd || cap) CHECK(std::abs(glm::dot(na, nb)) < 1e-9);
         else if (sharpEdge) CHECK((std::abs(glm::dot(na, nb)) < 1e-9 || glm::length(na - nb) < 1e-9));
@@ -188,7 +200,11 @@ void checkRadius(const RoundedSurface &s) {
         const glm::dvec3 point = s.patches[p].evaluate(u, v);
         const glm::dvec3 centre = roundingCentre(info, point);
         CHECK(std::abs(glm::length(point - centre) - s.radius) < 1e-9);
-        // The normal points straight away from the centre (towards it for a concave fillet).
+        // The normal points straight away from the centre (towards it for a concave fillet), but
+        // at a horn piece's point on its sharp upright (on its axis), where every direction
+        // around the axis is one (a cusp, where the upright's crease begins).
+        const glm::dvec3 fromCentre = point - info.centre;
+        if (info.torus && glm::length(fromCentre - info.axis * glm::dot(fromCentre, info.axis)) < 1e-12) continue;
         const double outward = info.concave ? -1.0 : 1.0;
         CHECK(glm::length(s.patches[p].normal(u, v) - outward * (point - centre) / s.radius) < 1e-9);
       }
@@ -238,7 +254,8 @@ double meshVolume(const RoundedMesh &mesh) {
 const char *const kRoundable[] = {"cube_all_hard.wings", "cube_top_ring.wings", "cube_one_edge.wings",   "block.wings",
                                   "l_uprights.wings",    "l_tall_uprights.wings", "l_block.wings", "concave_l.wings",
                                   "concave_l_one_sharp.wings", "slab_corner_cube.wings", "slab_middle_cube.wings",
-                                  "slab_corner_cube_mixed.wings", "l_arm_cube.wings", "slab_tower.wings"};
+                                  "slab_corner_cube_mixed.wings", "l_arm_cube.wings", "slab_tower.wings",
+                                  "slab_middle_cube_sharp_uprights.wings"};
 
 TEST_CASE("Rounding: every seam is exact, with continuous normals and texture coordinates") {
   for (std::string name : kRoundable) {
@@ -751,4 +768,49 @@ TEST_CASE("Rounding: a cube standing on a layer's top, its uprights ending in co
   // patch is built for that kind, and the message names it.
   const MarkedPolyhedron steps = readShape("two_layers.wings");
   CHECK_THROWS_WITH_AS(roundMarkedEdges(steps, 0.1), doctest::Contains("6 creases meet there"), RoundingError);
+}
+
+TEST_CASE("Rounding: a cube's sharp upright standing on a layer's top, its fillets meeting in a horn piece") {
+  // The cube in the middle of the slab of 3 x 3 cubes (x, z in [1, 2], y in [1, 2]) with its
+  // uprights left sharp. Round the foot of each, the fillets along the foot meet in a piece of the
+  // horn torus about the upright's line: its tube (radius R) centred on the circle of radius R at
+  // y = 1 + R, between the slab's top and the point R up the upright, outside the cube.
+  const MarkedPolyhedron poly = readShape("slab_middle_cube_sharp_uprights.wings");
+  for (double radius : {0.05, 0.25, 0.4}) {
+    CAPTURE(radius);
+    const RoundedSurface s = roundMarkedEdges(poly, radius);
+    int pieces = 0, touchingTop = 0;
+    for (std::size_t p = 0; p < s.patches.size(); ++p) {
+      if (!s.info[p].torus) continue;
+      ++pieces;
+      const glm::dvec3 middle = s.patches[p].evaluate(0.5, 0.5);
+      const double edgeX = middle.x > 1.5 ? 2.0 : 1.0, edgeZ = middle.z > 1.5 ? 2.0 : 1.0;
+      const double outX = edgeX > 1.5 ? 1.0 : -1.0, outZ = edgeZ > 1.5 ? 1.0 : -1.0;
+      bool touches = false;
+      for (double u : kSamples)
+        for (double v : kSamples) {
+          const glm::dvec3 point = s.patches[p].evaluate(u, v);
+          const double fromEdge = std::hypot(point.x - edgeX, point.z - edgeZ);
+          CHECK(std::abs(std::hypot(fromEdge - radius, point.y - (1.0 + radius)) - radius) < 1e-9);
+          CHECK(fromEdge <= radius * (1.0 + 1e-12));
+          CHECK(point.y >= 1.0 - 1e-12);
+          CHECK(point.y <= 1.0 + radius + 1e-12);
+          CHECK((point.x - edgeX) * outX >= -1e-12);
+          CHECK((point.z - edgeZ) * outZ >= -1e-12);
+          if (fromEdge < 1e-12) continue;  // the cusp on the upright
+          const glm::dvec3 radial = glm::normalize(glm::dvec3(point.x - edgeX, 0.0, point.z - edgeZ));
+          const glm::dvec3 tube(edgeX + radius * radial.x, 1.0 + radius, edgeZ + radius * radial.z);
+          const glm::dvec3 n = s.patches[p].normal(u, v);
+          CHECK(glm::length(n - (tube - point) / radius) < 1e-9);
+          if (std::abs(point.y - 1.0) < 1e-12) {
+            CHECK(glm::length(n - glm::dvec3(0.0, 1.0, 0.0)) < 1e-9);
+            touches = true;
+          }
+        }
+      if (touches) ++touchingTop;
+    }
+    // Four feet, each in four pieces (split in the middle both ways), two on the slab's top.
+    CHECK(pieces == 4 * 4);
+    CHECK(touchingTop == 4 * 2);
+  }
 }

@@ -55,6 +55,10 @@
 //   it (the sphere corner at its top too, in its halves' 30 degree cuts); where the fillets are
 //   split at 30 and 60 degrees because they meet a fillet's torus piece at their other ends, the
 //   torus piece is split there along its tube as well;
+// - where the cube's upright there is left sharp, the two fillets meet round its foot in a piece
+//   of a horn torus: their quarter circle turned a quarter round the upright's line (major radius
+//   R), its inner side collapsed to the point R up the upright, where the upright's crease
+//   begins; the layer's top loses its corner to the piece's quarter circle of radius R there;
 // - every face shrinks by R away from its marked edges; it is a fan of flat patches from its
 //   centre to the pieces of its boundary (segments of degree 1, arcs of degree 2).
 //
@@ -87,7 +91,7 @@
 // piece) or one of each (a torus piece and a cap), the end face split by two flat edges along
 // their continuations where one of them is rounded; a rounded convex edge ends between two
 // rounded concave ones in the same way (a cube standing on a layer's top, every crease there
-// rounded), running up to a sphere corner, the face across its end or straight on; faces next to a marked
+// rounded, or the upright sharp: a horn piece), running up to a sphere corner, the face across its end or straight on; faces next to a marked
 // edge have right angles there; every face is convex. Anything else is refused with a message naming the edge, vertex or face.
 // R = 0 gives the sharp object.
 #pragma once
@@ -159,6 +163,10 @@ struct RoundedPatchInfo {
   // A cap (a flat piece where a torus piece ends at a sharp crease): the normal of its plane,
   // which is no face's. Zero for every other patch.
   glm::dvec3 capNormal{0.0};
+  // A horn piece's half next to a wall (a torus piece of major radius R turned about a sharp
+  // upright, see roundMarkedEdges): the direction in the wall's plane, away from the wall across
+  // the upright's line, along which the turn about the upright unrolls. Zero for every other patch.
+  glm::dvec3 hornBeyond{0.0};
 };
 
 // The point of a rounded patch's centre (point, line or circle) nearest p: p lies at distance R
