@@ -10,6 +10,7 @@
 #include <glm/geometric.hpp>
 #include <glm/mat3x3.hpp>
 
+#include "glass/course/ifs3d_collage_path.h"
 #include "glass/course/ifs3d_distance_grid.h"
 #include "glass/course/ifs3d_orientations.h"
 #include "glass/course/ifs3d_residual_search.h"
@@ -522,38 +523,6 @@ constexpr std::size_t kResidualCandidates = 3, kResidualTargets = 2;
 constexpr int kResidualTrialSteps = 8;
 constexpr int kResidualGridResolution = 40;
 
-// Whether every map stretches the cloud by a ratio the course's systems have: its largest
-// singular value between kPathStretches. The collage distance bounds the attractor's distance
-// only through the maps' contraction (Barnsley's collage theorem, d <= collage / (1 - s)), so a
-// path ranked by it must not let one map swell over two parts while another shrinks to a point.
-constexpr double kPathStretches[2] = {0.15, 0.85};
-bool stretchesWithin(std::span<const g::Affine3> maps) {
-  for (const g::Affine3& map : maps) {
-    const glm::dmat3 l = map.linearPart();
-    const glm::dvec3 squared = g::symmetricEigen(glm::transpose(l) * l).values;
-    const double largest = std::sqrt(std::max({squared.x, squared.y, squared.z}));
-    if (!(largest >= kPathStretches[0] && largest <= kPathStretches[1])) return false;
-  }
-  return true;
-}
-
-// The maps ordered by how far their images of `source` fall from the cloud (the mean distance,
-// trimmed by `trim`), farthest first.
-std::vector<std::size_t> mapsByInclusion(std::span<const g::Affine3> maps, std::span<const glm::dvec3> source, const g::KdTree3& cloudTree,
-                                         double trim, WorkMeter& work) {
-  std::vector<double> inclusion;
-  for (const g::Affine3& map : maps) {
-    std::vector<double> distances;
-    for (const glm::dvec3& p : source) distances.push_back(std::sqrt(cloudTree.nearest(map.apply(p)).distanceSquared));
-    inclusion.push_back(trimmedMean(distances, trim).mean);
-  }
-  work.add(maps.size() * source.size());
-  std::vector<std::size_t> order(maps.size());
-  std::iota(order.begin(), order.end(), std::size_t{0});
-  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return inclusion[a] > inclusion[b]; });
-  return order;
-}
-
 // The maps measured on the whole cloud (Ifs3Fit), sorted by where they send its centre.
 Ifs3Fit measuredFit(std::vector<g::Affine3> winner, std::span<const glm::dvec3> cloud, const g::KdTree3& cloudTree,
                     const Ifs3FitOptions& options, double spacing, WorkMeter& work) {
@@ -784,10 +753,11 @@ Ifs3Fit fitOnce(std::span<const glm::dvec3> cloud, const g::KdTree3& cloudTree, 
       // On the path, the maps to replace are those whose image lies farthest out of the cloud
       // (a right map's lies in it whatever the others do); otherwise the least needed.
       const std::vector<std::size_t> replaceable =
-          byCollage ? mapsByInclusion(base, source, cloudTree, options.rankTrim, work) : mapsByOwnCover(base, source, clusterSample, 1.5 * grid.cell());
+          byCollage ? mapsByInclusion(base, source, cloudTree, options.rankTrim) : mapsByOwnCover(base, source, clusterSample, 1.5 * grid.cell());
+      if (byCollage) work.add(base.size() * source.size());
       const auto tryMaps = [&](std::vector<g::Affine3> maps) {
         const double collage = refine(maps, source, cloud, cloudTree, targetSample, kResidualTrialSteps, options.trim, work);
-        if (byCollage && !stretchesWithin(maps)) return;
+        if (byCollage && !stretchesWithinCollagePath(maps)) return;
         const double score = byCollage ? strictCollage(maps) : attractorDistance(maps, collage);
         if (score < best.score) best = {std::move(maps), score};
       };
@@ -840,7 +810,7 @@ Ifs3Fit fitOnce(std::span<const glm::dvec3> cloud, const g::KdTree3& cloudTree, 
       Trial trial = bestResidualTrial(path, true);
       if (trial.maps.empty()) break;
       refine(trial.maps, source, cloud, cloudTree, targetSample, options.refineSteps, options.trim, work);
-      const double collage = stretchesWithin(trial.maps) ? strictCollage(trial.maps) : std::numeric_limits<double>::infinity();
+      const double collage = stretchesWithinCollagePath(trial.maps) ? strictCollage(trial.maps) : std::numeric_limits<double>::infinity();
       if (!(collage < pathCollage)) break;
       path = std::move(trial.maps);
       pathCollage = collage;
