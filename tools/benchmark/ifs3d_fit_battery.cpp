@@ -5,9 +5,11 @@
 // being changed, though, so a third list, `fresh`, was added unrun, to be run once after a change
 // is finished (and then replaced by another unseen list for the next change): `fresh` (7001 on)
 // was that list for the change that brought the pool of included maps, `fresh2` (40001 on) for the
-// change that brought the residual search. Odd seeds get 5% of their points replaced by noise.
+// change that brought the residual search. `own` (120001 on) is on no list: seeds to work a change
+// out on besides the tuning list, as free to look at as it. Odd seeds get 5% of their points
+// replaced by noise.
 //
-//   ifs3d_fit_battery [tuning|held-out|fresh|fresh2] [--points N] [--first K] [--count C] [--write DIR] [--budget MQ]
+//   ifs3d_fit_battery [tuning|held-out|fresh|fresh2|own] [--points N] [--first K] [--count C] [--write DIR] [--budget MQ] [--collage-path R]
 //
 // --write DIR writes each system as DIR/seed_S.ifs3 and the found maps as DIR/seed_S_found.ifs3,
 // to look at a failure with `glass ifs3d view`. --budget sets the fit's work budget in millions of
@@ -31,10 +33,10 @@ namespace {
 
 constexpr double kTolerance = 0.03;
 
-enum class SeedList { Tuning, HeldOut, Fresh, Fresh2 };
+enum class SeedList { Tuning, HeldOut, Fresh, Fresh2, Own };
 
 std::uint64_t seedOf(SeedList list, int index) {
-  const std::uint64_t base = list == SeedList::Tuning ? 1u : list == SeedList::HeldOut ? 1001u : list == SeedList::Fresh ? 7001u : 40001u;
+  const std::uint64_t base = list == SeedList::Tuning ? 1u : list == SeedList::HeldOut ? 1001u : list == SeedList::Fresh ? 7001u : list == SeedList::Fresh2 ? 40001u : 120001u;
   return base + static_cast<std::uint64_t>(index);
 }
 
@@ -76,6 +78,8 @@ int main(int argc, char** argv) {
       list = SeedList::Fresh;
     } else if (arg == "fresh2") {
       list = SeedList::Fresh2;
+    } else if (arg == "own") {
+      list = SeedList::Own;
     } else if (arg == "--points" && i + 1 < argc) {
       points = static_cast<std::size_t>(std::atol(argv[++i]));
     } else if (arg == "--first" && i + 1 < argc) {
@@ -84,14 +88,16 @@ int main(int argc, char** argv) {
       writeDirectory = argv[++i];
     } else if (arg == "--budget" && i + 1 < argc) {
       options.workBudget = static_cast<std::uint64_t>(std::atof(argv[++i]) * 1e6);
+    } else if (arg == "--collage-path" && i + 1 < argc) {
+      options.collagePathRounds = std::atoi(argv[++i]);
     } else if (arg == "--count" && i + 1 < argc) {
       count = std::atoi(argv[++i]);
     } else {
-      std::fprintf(stderr, "usage: ifs3d_fit_battery [tuning|held-out|fresh|fresh2] [--points N] [--first K] [--count C] [--write DIR] [--budget MQ]\n");
+      std::fprintf(stderr, "usage: ifs3d_fit_battery [tuning|held-out|fresh|fresh2|own] [--points N] [--first K] [--count C] [--write DIR] [--budget MQ] [--collage-path R]\n");
       return 2;
     }
   }
-  const char* const listNames[] = {"tuning", "held-out", "fresh", "fresh2"};
+  const char* const listNames[] = {"tuning", "held-out", "fresh", "fresh2", "own"};
   std::printf("%s seeds, %zu points a cloud, success: every matrix entry within %.2f\n", listNames[static_cast<int>(list)], points,
               kTolerance);
   std::printf("%6s %6s %8s %10s %10s %10s %10s %9s %8s %6s%s\n", "seed", "noise", "sum|det|", "map error", "collage", "regen.", "spacing", "converged",

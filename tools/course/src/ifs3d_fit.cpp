@@ -10,6 +10,7 @@
 #include <glm/geometric.hpp>
 #include <glm/mat3x3.hpp>
 
+#include "glass/course/ifs3d_collage_path.h"
 #include "glass/course/ifs3d_distance_grid.h"
 #include "glass/course/ifs3d_orientations.h"
 #include "glass/course/ifs3d_residual_search.h"
@@ -598,6 +599,11 @@ Ifs3Fit fitOnce(std::span<const glm::dvec3> cloud, const g::KdTree3& cloudTree, 
     const double d = regeneratedDistance(maps, targetSampleTree, targetSample, options.rankTrim, options.seed + 41, work);
     return std::isfinite(d) ? d : 1e6 + collage;
   };
+  // The collage distance trimmed only as the ranking is (rankTrim): the refinement's own trims
+  // more, and a map partly off the cloud can hide in that share.
+  const auto strictCollage = [&](std::vector<g::Affine3> maps) {
+    return refine(maps, source, cloud, cloudTree, targetSample, 0, options.rankTrim, work);
+  };
   std::vector<g::Affine3> winner;
   double winnerScore = std::numeric_limits<double>::infinity();
   // Early exit: after a stage that found a closer winner, the winner is measured on the whole
@@ -731,39 +737,89 @@ Ifs3Fit fitOnce(std::span<const glm::dvec3> cloud, const g::KdTree3& cloudTree, 
     work.add(static_cast<std::size_t>(grid.size(0)) * grid.size(1) * grid.size(2));
     const std::vector<glm::dvec3> cloudProbes = sample(cloud, 2000, options.seed + 51);
     const ResidualSearch search{&grid, cloudMoments.mean, cloudProbes, orientations};
-    for (int round = 0; round < options.residualRounds && !work.spent(); ++round) {
-      if (round > 0)
-        if (auto fit = convergedWinner()) return std::move(*fit);
-      std::vector<glm::dvec3> residual = uncoveredPoints(winner, cloud, clusterSample, kUncoveredSpacings * spacing);
-      work.add((1 + winner.size()) * clusterSample.size());  // and as many for the maps' own cover
+    // The best of the maps `base` becomes with candidates for its residual's largest clusters in
+    // place of its least needed maps, each refined briefly, ranked by their attractor; or, on the
+    // collage path (`byCollage`), in place of the maps whose image lies farthest out of the cloud,
+    // the candidates of the two largest clusters also together, ranked by the collage distance.
+    struct Trial {
+      std::vector<g::Affine3> maps;
+      double score = std::numeric_limits<double>::infinity();
+    };
+    const auto bestResidualTrial = [&](const std::vector<g::Affine3>& base, bool byCollage) {
+      Trial best;
+      std::vector<glm::dvec3> residual = uncoveredPoints(base, cloud, clusterSample, kUncoveredSpacings * spacing);
+      work.add((1 + base.size()) * clusterSample.size());  // and as many for the maps' own cover
       if (residual.size() > kResidualMostPoints) residual = sample(residual, kResidualMostPoints, options.seed + 53);
-      const std::vector<std::size_t> replaceable = mapsByOwnCover(winner, source, clusterSample, 1.5 * grid.cell());
-      // Each candidate in place of each of the least needed maps, refined briefly; the best of
-      // these refined in full.
-      std::vector<g::Affine3> bestTrial;
-      double bestTrialScore = std::numeric_limits<double>::infinity();
+      // On the path, the maps to replace are those whose image lies farthest out of the cloud
+      // (a right map's lies in it whatever the others do); otherwise the least needed.
+      const std::vector<std::size_t> replaceable =
+          byCollage ? mapsByInclusion(base, source, cloudTree, options.rankTrim) : mapsByOwnCover(base, source, clusterSample, 1.5 * grid.cell());
+      if (byCollage) work.add(base.size() * source.size());
+      const auto tryMaps = [&](std::vector<g::Affine3> maps) {
+        const double collage = refine(maps, source, cloud, cloudTree, targetSample, kResidualTrialSteps, options.trim, work);
+        if (byCollage && !stretchesWithinCollagePath(maps)) return;
+        const double score = byCollage ? strictCollage(maps) : attractorDistance(maps, collage);
+        if (score < best.score) best = {std::move(maps), score};
+      };
       const std::vector<std::vector<glm::dvec3>> clusters = residualClusters(residual, kResidualLink * grid.cell());
+      std::vector<std::vector<g::Affine3>> candidates;  // per cluster
       for (std::size_t n = 0; n < std::min<std::size_t>(kResidualClusters, clusters.size()); ++n) {
         if (clusters[n].size() < kResidualMinimumShare * static_cast<double>(clusterSample.size())) break;
-        for (const g::Affine3& candidate : residualCandidates(search, clusters[n], kResidualCandidates)) {
+        candidates.push_back(residualCandidates(search, clusters[n], kResidualCandidates));
+        for (const g::Affine3& candidate : candidates.back()) {
           for (std::size_t r = 0; r < std::min<std::size_t>(kResidualTargets, replaceable.size()) && !work.spent(); ++r) {
-            std::vector<g::Affine3> maps = winner;
+            std::vector<g::Affine3> maps = base;
             maps[replaceable[r]] = candidate;
-            const double collage = refine(maps, source, cloud, cloudTree, targetSample, kResidualTrialSteps, options.trim, work);
-            const double score = attractorDistance(maps, collage);
-            if (score < bestTrialScore) {
-              bestTrialScore = score;
-              bestTrial = maps;
-            }
+            tryMaps(std::move(maps));
           }
         }
       }
-      if (bestTrial.empty()) break;
-      const double collage = refine(bestTrial, source, cloud, cloudTree, targetSample, options.refineSteps, options.trim, work);
-      const double score = attractorDistance(bestTrial, collage);
+      if (byCollage && candidates.size() == 2 && replaceable.size() >= 2) {
+        for (const g::Affine3& first : candidates[0])
+          for (const g::Affine3& second : candidates[1])
+            for (int swapped = 0; swapped < 2 && !work.spent(); ++swapped) {
+              std::vector<g::Affine3> maps = base;
+              maps[replaceable[swapped]] = first;
+              maps[replaceable[1 - swapped]] = second;
+              tryMaps(std::move(maps));
+            }
+      }
+      return best;
+    };
+    for (int round = 0; round < options.residualRounds && !work.spent(); ++round) {
+      if (round > 0)
+        if (auto fit = convergedWinner()) return std::move(*fit);
+      Trial trial = bestResidualTrial(winner, false);
+      if (trial.maps.empty()) break;
+      const double collage = refine(trial.maps, source, cloud, cloudTree, targetSample, options.refineSteps, options.trim, work);
+      const double score = attractorDistance(trial.maps, collage);
       if (!(score < winnerScore)) break;
       winnerScore = score;
-      winner = bestTrial;
+      winner = std::move(trial.maps);
+    }
+    // When no candidate brings the attractor closer, several maps are wrong at once: the residual
+    // lies in many pieces, and a right map for one of them leaves the attractor as far as before
+    // while the others are wrong. The collage distance sees each right map (its image lies in the
+    // cloud and covers its piece), so a path of replacements, each lowering the collage distance,
+    // goes on from the winner; the winner becomes its end when that attractor is closer.
+    if (options.collagePathRounds > 0)
+      if (auto fit = convergedWinner()) return std::move(*fit);
+    std::vector<g::Affine3> path = winner;
+    double pathCollage = options.collagePathRounds > 0 ? strictCollage(path) : 0.0;
+    for (int round = 0; round < options.collagePathRounds && !work.spent(); ++round) {
+      Trial trial = bestResidualTrial(path, true);
+      if (trial.maps.empty()) break;
+      refine(trial.maps, source, cloud, cloudTree, targetSample, options.refineSteps, options.trim, work);
+      const double collage = stretchesWithinCollagePath(trial.maps) ? strictCollage(trial.maps) : std::numeric_limits<double>::infinity();
+      if (!(collage < pathCollage)) break;
+      path = std::move(trial.maps);
+      pathCollage = collage;
+      const double score = attractorDistance(path, collage);
+      if (score < winnerScore) {
+        winnerScore = score;
+        winner = path;
+        if (auto fit = convergedWinner()) return std::move(*fit);
+      }
     }
   }
 

@@ -33,6 +33,11 @@
 //  5. Early exit: after each stage that found closer maps, they are measured on the whole cloud;
 //     when they have converged they are finished and returned, and the later stages are skipped.
 //     A work budget (Ifs3FitOptions::workBudget) stops a search that does not converge.
+//  6. The collage path: when step 4 stalls, several maps are wrong at once and no single right
+//     map brings the attractor closer. Replacements from the residual (single maps, and pairs
+//     from its two largest clusters in place of the two least needed maps) are then kept while
+//     they lower the collage distance; the winner becomes the path's maps whenever their
+//     attractor is closer than its own.
 // Everything is seeded and counted, never timed: the same cloud gives the same maps.
 #pragma once
 
@@ -60,6 +65,10 @@ struct Ifs3FitOptions {
   double rankTrim = 0.02;
   // Rounds of the residual search in each attempt (step 4 above), while a round helps.
   int residualRounds = 3;
+  // Rounds of the collage path after it (step 6 above): replacements from the residual, single
+  // maps and pairs, kept while the collage distance goes down even when the attractor does not
+  // come closer yet. 0: none.
+  int collagePathRounds = 4;
   // The work the search may do, in nearest-neighbour queries (k-d tree searches, most of its
   // time), counted as it goes: once spent, no further start, re-seeding or attempt begins, and the
   // best maps so far are finished and returned (Ifs3Fit::stoppedByBudget). Counted, not timed, so
