@@ -3,11 +3,12 @@
 #include <cmath>
 
 #include "glass/geometry/rotation.h"
+#include "glass/geometry/portable_math.h"
 
 namespace glass::geometry {
 
 Affine2 Affine2::rotation(double radians) {
-  const double c = std::cos(radians), s = std::sin(radians);
+  const double c = portable::cos(radians), s = portable::sin(radians);
   return fromRows(c, -s, 0, s, c, 0);
 }
 

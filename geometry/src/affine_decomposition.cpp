@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <numbers>
+#include "glass/geometry/portable_math.h"
 
 namespace glass::geometry {
 
@@ -28,7 +29,7 @@ std::optional<AffineDecomposition> decomposeAffine(const Affine2& a) {
 
   // The direction of the first column, turned by a half turn if needed so that theta lies in
   // (-pi/2, pi/2]; s1 carries the sign.
-  double theta = std::atan2(c1y, c1x);
+  double theta = portable::atan2(c1y, c1x);
   double s1 = length1;
   if (theta > std::numbers::pi / 2.0) {
     theta -= std::numbers::pi;

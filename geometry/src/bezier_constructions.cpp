@@ -3,6 +3,7 @@
 #include <array>
 #include <cmath>
 #include <numbers>
+#include "glass/geometry/portable_math.h"
 
 namespace glass::geometry {
 namespace {
@@ -22,9 +23,9 @@ BezierCurve rationalQuadratic(const glm::dvec3& p0, const glm::dvec3& p1, const 
 BezierCurve circularArc(double startAngle, double endAngle, const CirclePlacement& circle) {
   const double middle = 0.5 * (startAngle + endAngle);
   const double halfSpan = 0.5 * (endAngle - startAngle);
-  const double middleWeight = std::cos(halfSpan);
+  const double middleWeight = portable::cos(halfSpan);
   const auto onCircle = [&](double angle, double distance) {
-    return circle.center + distance * (snapped(std::cos(angle)) * circle.xAxis + snapped(std::sin(angle)) * circle.yAxis);
+    return circle.center + distance * (snapped(portable::cos(angle)) * circle.xAxis + snapped(portable::sin(angle)) * circle.yAxis);
   };
   // The end tangents meet on the bisector at distance r / cos(h) from the centre.
   return rationalQuadratic(onCircle(startAngle, circle.radius), onCircle(middle, circle.radius / middleWeight),

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "glass/geometry/ifs_dimension.h"
+#include "glass/geometry/portable_math.h"
 
 namespace glass::geometry::box_counting {
 
@@ -37,7 +38,7 @@ std::optional<BoxCountingEstimate> estimate(std::size_t pointCount, double side,
   int n = 0;
   for (const BoxCount& count : estimate.counts) {
     if (count.level < estimate.firstFittedLevel || count.level > estimate.lastFittedLevel) continue;
-    const double x = count.level, y = std::log2(static_cast<double>(count.boxes));
+    const double x = count.level, y = portable::log2(static_cast<double>(count.boxes));
     sumX += x;
     sumY += y;
     sumXX += x * x;

@@ -14,6 +14,7 @@
 #include <set>
 #include <sstream>
 #include <tuple>
+#include "glass/geometry/portable_math.h"
 
 namespace glass::geometry {
 
@@ -39,7 +40,7 @@ double thirtyDegreeParameter() {
     const double s = 0.5 * (low + high);
     if (s == low || s == high) break;
     const glm::dvec3 p = (1.0 - s) * (1.0 - s) * q0 + 2.0 * s * (1.0 - s) * q1 + s * s * q2;
-    if (std::atan2(p.y, p.x) < std::numbers::pi / 6.0) low = s;
+    if (portable::atan2(p.y, p.x) < std::numbers::pi / 6.0) low = s;
     else high = s;
   }
   return 0.5 * (low + high);
@@ -167,7 +168,7 @@ void classifyForRounding(Topology& topo) {
     if (std::abs(cosine) > kAngleTolerance) {
       std::ostringstream angle;
       angle.precision(4);
-      angle << 180.0 - std::acos(std::clamp(cosine, -1.0, 1.0)) * 180.0 / std::numbers::pi;
+      angle << 180.0 - portable::acos(std::clamp(cosine, -1.0, 1.0)) * 180.0 / std::numbers::pi;
       throw RoundingError("marked " + describeEdge(e) + " joins faces " + std::to_string(e.left) + " and " +
                           std::to_string(e.right) + " at " + angle.str() +
                           " degrees; rounding supports right angles only (an object made of cubes)");
@@ -383,7 +384,7 @@ void checkFaceCorners(const Topology& topo, std::size_t f, const std::vector<boo
     if (std::abs(cosine) > kAngleTolerance) {
       std::ostringstream angle;
       angle.precision(4);
-      angle << std::acos(std::clamp(cosine, -1.0, 1.0)) * 180.0 / std::numbers::pi;
+      angle << portable::acos(std::clamp(cosine, -1.0, 1.0)) * 180.0 / std::numbers::pi;
       throw RoundingError("face " + std::to_string(f) + " has an angle of " + angle.str() + " degrees at " +
                           describeVertex(v) + ", where a rounded edge ends; rounding needs right angles there");
     }
@@ -1247,7 +1248,7 @@ namespace {
 // (4 / pi) times the arc length from the touching point whose direction is perpendicular to
 // `across`, to the point of the circle of radius R in `direction`: the unrolled distance.
 double unrolledTowards(const glm::dvec3& direction, const glm::dvec3& across, double radius) {
-  return (4.0 / std::numbers::pi) * std::asin(std::clamp(glm::dot(direction, across), -1.0, 1.0)) * radius;
+  return (4.0 / std::numbers::pi) * portable::asin(std::clamp(glm::dot(direction, across), -1.0, 1.0)) * radius;
 }
 
 // A torus piece unrolled. Next to the end face, as a strip along its tube: from the tube's
@@ -1267,7 +1268,7 @@ glm::dvec2 torusTexCoord(const RoundedPatchInfo& info, const FaceChart& chart, d
     const glm::dvec3 offset = p - info.centre;
     const glm::dvec3 radial = offset - info.axis * glm::dot(offset, info.axis);
     const double distance = glm::length(radial);
-    const double turned = distance > 0.0 ? std::atan2(glm::dot(radial, info.hornBeyond), -glm::dot(radial, info.faceNormal)) : 0.0;
+    const double turned = distance > 0.0 ? portable::atan2(glm::dot(radial, info.hornBeyond), -glm::dot(radial, info.faceNormal)) : 0.0;
     glm::dvec3 flat = info.centre + distance * turned * info.hornBeyond;
     for (const glm::dvec3& across : info.acrossNormals) flat += unrolledTowards(direction, across, radius) * across;
     return chart.at(flat);
@@ -1304,7 +1305,7 @@ glm::dvec2 roundedTexCoord(const RoundedPatchInfo& info, const FaceChart& chart,
   glm::dvec3 flat = centre + radius * info.faceNormal;
   for (const glm::dvec3& across : info.acrossNormals) {
     const double sine = std::clamp(glm::dot(direction, across), -1.0, 1.0);
-    const double unrolled = (4.0 / std::numbers::pi) * std::asin(sine) * radius;
+    const double unrolled = (4.0 / std::numbers::pi) * portable::asin(sine) * radius;
     flat += unrolled * across;
     if (info.alongAxis) {
       const glm::dvec3 line = info.lineEnd - info.lineStart;

@@ -12,6 +12,7 @@
 
 #include "box_counting.h"
 #include "chaos_game.h"
+#include "glass/geometry/portable_math.h"
 
 namespace glass::geometry {
 
@@ -132,7 +133,7 @@ std::vector<glm::dvec3> attractorExtremes(const IteratedFunctionSystem3& ifs) {
   std::set<std::size_t> chosen;
   for (int k = 0; k < kDirections; ++k) {
     const double z = 1.0 - 2.0 * (k + 0.5) / kDirections, r = std::sqrt(1.0 - z * z);
-    const glm::dvec3 d{r * std::cos(golden * k), r * std::sin(golden * k), z};
+    const glm::dvec3 d{r * portable::cos(golden * k), r * portable::sin(golden * k), z};
     std::size_t best = 0;
     for (std::size_t i = 1; i < sample.size(); ++i) {
       if (glm::dot(sample[i], d) > glm::dot(sample[best], d)) best = i;

@@ -5,6 +5,7 @@
 #include <cstdint>
 
 #include "box_counting.h"
+#include "glass/geometry/portable_math.h"
 
 namespace glass::geometry {
 
@@ -32,7 +33,7 @@ std::optional<double> solveMoranEquation(std::span<const double> ratios) {
   auto g = [&](double d) {
     double sum = 0.0;
     for (double r : ratios) {
-      if (r > 0.0) sum += std::pow(r, d);
+      if (r > 0.0) sum += portable::pow(r, d);
     }
     return sum - 1.0;
   };

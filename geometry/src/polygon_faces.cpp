@@ -4,6 +4,7 @@
 #include <cmath>
 #include <deque>
 #include <numeric>
+#include "glass/geometry/portable_math.h"
 
 namespace glass::geometry {
 
@@ -52,7 +53,7 @@ class FaceFinder {
   double direction(int h) const {
     const PlanarPoint& a = points_[f_.origin[h]];
     const PlanarPoint& b = points_[f_.target(h)];
-    return std::atan2(b.y - a.y, b.x - a.x);
+    return portable::atan2(b.y - a.y, b.x - a.x);
   }
 
   // Around each vertex the outgoing half-edges run counter-clockwise; the face on the left of

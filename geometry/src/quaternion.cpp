@@ -4,6 +4,7 @@
 #include <limits>
 
 #include <glm/geometric.hpp>
+#include "glass/geometry/portable_math.h"
 
 namespace glass::geometry {
 
@@ -91,9 +92,9 @@ Quaternion slerp(const Quaternion& a, const Quaternion& b, double t) {
   // Below this angle sin(phi) loses most of its digits; the chord and the arc agree to ~1e-10.
   constexpr double kNearlyParallel = 1.0 - 1e-10;
   if (cosPhi > kNearlyParallel) return normalized((1.0 - t) * from + t * to);
-  const double phi = std::acos(cosPhi);
-  const double sinPhi = std::sin(phi);
-  return (std::sin((1.0 - t) * phi) / sinPhi) * from + (std::sin(t * phi) / sinPhi) * to;
+  const double phi = portable::acos(cosPhi);
+  const double sinPhi = portable::sin(phi);
+  return (portable::sin((1.0 - t) * phi) / sinPhi) * from + (portable::sin(t * phi) / sinPhi) * to;
 }
 
 }  // namespace glass::geometry

@@ -4,6 +4,7 @@
 #include <numbers>
 
 #include <glm/geometric.hpp>
+#include "glass/geometry/portable_math.h"
 
 namespace glass::geometry {
 
@@ -20,7 +21,7 @@ CosSin cosSinDegrees(double degrees) {
     }
   }
   const double radians = degrees * (std::numbers::pi / 180.0);
-  return {std::cos(radians), std::sin(radians)};
+  return {portable::cos(radians), portable::sin(radians)};
 }
 
 namespace {
@@ -48,7 +49,7 @@ glm::dmat3 matrixFromCosSin(const glm::dvec3& axis, CosSin angle) {
 }  // namespace
 
 Quaternion rotationQuaternion(const glm::dvec3& axis, double radians) {
-  return quaternionFromHalfAngle(axis, {std::cos(radians / 2.0), std::sin(radians / 2.0)});
+  return quaternionFromHalfAngle(axis, {portable::cos(radians / 2.0), portable::sin(radians / 2.0)});
 }
 
 Quaternion rotationQuaternionDegrees(const glm::dvec3& axis, double degrees) {
@@ -56,7 +57,7 @@ Quaternion rotationQuaternionDegrees(const glm::dvec3& axis, double degrees) {
 }
 
 glm::dmat3 rotationMatrix(const glm::dvec3& axis, double radians) {
-  return matrixFromCosSin(axis, {std::cos(radians), std::sin(radians)});
+  return matrixFromCosSin(axis, {portable::cos(radians), portable::sin(radians)});
 }
 
 glm::dmat3 rotationMatrixDegrees(const glm::dvec3& axis, double degrees) {
@@ -70,7 +71,7 @@ AxisAngle axisAngleFromQuaternion(const Quaternion& q) {
   const double sinHalf = glm::length(v);
   if (sinHalf == 0.0) return {};
   // atan2 rather than acos(w): accurate at both ends of [0, pi].
-  AxisAngle result{v / sinHalf, 2.0 * std::atan2(sinHalf, u.w)};
+  AxisAngle result{v / sinHalf, 2.0 * portable::atan2(sinHalf, u.w)};
   constexpr double kAtPi = 1e-12;
   if (std::numbers::pi - result.angle <= kAtPi) {
     result.angle = std::numbers::pi;

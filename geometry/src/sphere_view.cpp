@@ -4,6 +4,7 @@
 #include <numbers>
 
 #include <glm/geometric.hpp>
+#include "glass/geometry/portable_math.h"
 
 namespace glass::geometry {
 
@@ -47,7 +48,7 @@ SphereViewResult solveSphereView(const SphereViewProblem& problem) {
   s.zNear = d + s.planeOffset;
   s.backDistance = d + r;
   s.zFar = d + 2.0 * r;
-  s.fovyDegrees = 2.0 * std::atan(s.rimRadius / (problem.heightShare * s.zNear)) * (180.0 / std::numbers::pi);
+  s.fovyDegrees = 2.0 * portable::atan(s.rimRadius / (problem.heightShare * s.zNear)) * (180.0 / std::numbers::pi);
   s.aspect = problem.heightShare / problem.widthShare;
   result.solution = s;
   return result;

@@ -20,6 +20,7 @@
 #include <iostream>
 #include <string>
 #include <vector>
+#include "glass/geometry/portable_math.h"
 
 namespace glass::cli {
 
@@ -119,10 +120,10 @@ Viewer viewer;
 // The eye of the examine mode, on a sphere around the centre.
 void placeExamineEye() {
   scene::ViewCamera &c = viewer.camera;
-  const double cp = std::cos(radians(viewer.pitch));
-  c.eye[0] = viewer.centre[0] + viewer.distance * cp * std::sin(radians(viewer.yaw));
-  c.eye[1] = viewer.centre[1] + viewer.distance * std::sin(radians(viewer.pitch));
-  c.eye[2] = viewer.centre[2] + viewer.distance * cp * std::cos(radians(viewer.yaw));
+  const double cp = portable::cos(radians(viewer.pitch));
+  c.eye[0] = viewer.centre[0] + viewer.distance * cp * portable::sin(radians(viewer.yaw));
+  c.eye[1] = viewer.centre[1] + viewer.distance * portable::sin(radians(viewer.pitch));
+  c.eye[2] = viewer.centre[2] + viewer.distance * cp * portable::cos(radians(viewer.yaw));
   std::copy(viewer.centre, viewer.centre + 3, c.centre);
   c.up[0] = 0;
   c.up[1] = 1;
@@ -132,10 +133,10 @@ void placeExamineEye() {
 // The point the walking eye looks at: one unit ahead along the heading, tilted by lookPitch.
 void placeWalkTarget() {
   scene::ViewCamera &c = viewer.camera;
-  const double cp = std::cos(radians(viewer.lookPitch));
-  c.centre[0] = c.eye[0] + cp * std::sin(radians(viewer.heading));
-  c.centre[1] = c.eye[1] + std::sin(radians(viewer.lookPitch));
-  c.centre[2] = c.eye[2] + cp * std::cos(radians(viewer.heading));
+  const double cp = portable::cos(radians(viewer.lookPitch));
+  c.centre[0] = c.eye[0] + cp * portable::sin(radians(viewer.heading));
+  c.centre[1] = c.eye[1] + portable::sin(radians(viewer.lookPitch));
+  c.centre[2] = c.eye[2] + cp * portable::cos(radians(viewer.heading));
 }
 
 // Viewpoint 1 is the scene's own lookat; 2-5 look at its centre from the front, the right, above
@@ -153,8 +154,8 @@ void chooseViewpoint(int number) {
     std::copy(look, look + 9, viewer.camera.eye);  // eye, centre and up are consecutive
     std::copy(look + 3, look + 6, viewer.camera.centre);
     std::copy(look + 6, look + 9, viewer.camera.up);
-    viewer.yaw = std::atan2(dx, dz) * 180.0 / kPi;
-    viewer.pitch = std::asin(std::clamp(dy / viewer.distance, -1.0, 1.0)) * 180.0 / kPi;
+    viewer.yaw = portable::atan2(dx, dz) * 180.0 / kPi;
+    viewer.pitch = portable::asin(std::clamp(dy / viewer.distance, -1.0, 1.0)) * 180.0 / kPi;
     return;
   }
   static const double angles[5][2] = {{0, 0}, {0, 0}, {90, 0}, {0, 89}, {45, 35}};
@@ -172,7 +173,7 @@ void startWalking() {
   viewer.mode = Mode::Walk;
   scene::ViewCamera &c = viewer.camera;
   const double dx = c.centre[0] - c.eye[0], dz = c.centre[2] - c.eye[2];
-  viewer.heading = std::atan2(dx, dz) * 180.0 / kPi;
+  viewer.heading = portable::atan2(dx, dz) * 180.0 / kPi;
   viewer.lookPitch = 0;
   c.eye[1] = walkGround().groundY + viewer.body.eyeHeight;
   c.up[0] = 0;
@@ -186,7 +187,7 @@ void startWalking() {
 // near plane at distance n is n sqrt(1 + t^2 (1 + a^2)) from the eye, t = tan(fovy / 2) and a
 // the aspect ratio.
 double walkingNearPlane(int width, int height) {
-  const double t = std::tan(radians(viewer.camera.fovy) / 2);
+  const double t = portable::tan(radians(viewer.camera.fovy) / 2);
   const double a = height > 0 ? static_cast<double>(width) / height : 1.0;
   const double inside = 0.9 * viewer.body.radius / std::sqrt(1 + t * t * (1 + a * a));
   return std::min(viewer.sceneCamera.hasPerspective ? viewer.sceneCamera.zNear : 0.1, inside);
@@ -305,7 +306,7 @@ void changeFieldOfView(double degrees) {
 void setProjection(bool orthographic) {
   viewer.camera.orthographic = orthographic;
   // The same height at the centre as the perspective view shows there.
-  viewer.camera.halfHeight = viewer.distance * std::tan(radians(viewer.camera.fovy) / 2);
+  viewer.camera.halfHeight = viewer.distance * portable::tan(radians(viewer.camera.fovy) / 2);
   redraw();
 }
 
@@ -317,8 +318,8 @@ void walk(double forward, double turn) {
   viewer.heading += turn;
   if (forward != 0.0) {
     const double step = forward * std::max(viewer.distance, 1e-3) / 20;
-    const view::GroundPoint motion{step * std::sin(radians(viewer.heading)),
-                                   step * std::cos(radians(viewer.heading))};
+    const view::GroundPoint motion{step * portable::sin(radians(viewer.heading)),
+                                   step * portable::cos(radians(viewer.heading))};
     const view::GroundPoint at =
         view::slideMove({c.eye[0], c.eye[2]}, motion, viewer.body.radius, walkGround().obstacles);
     c.eye[0] = at.x;

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <numbers>
+#include "glass/geometry/portable_math.h"
 
 namespace glass::gl {
 
@@ -25,13 +26,14 @@ bool rotationMatrix(float angleDegrees, float x, float y, float z, Matrix4& r) {
   // The rounding is not the specification's business; glass takes Mesa's (m_matrix.c), because
   // it decides where a vertex that lies exactly on a clip plane or a polygon edge falls: the
   // angle in radians is computed in double, rounded to float, and its sine and cosine taken in
-  // float. At 90 degrees the cosine is then cosf(float(pi / 2)) = -4.37e-8, not 0, and a
+  // float (glass::portable, the correctly rounded float, which is glibc's cosf at the angles the
+  // tests compare). At 90 degrees the cosine is then cos(float(pi / 2)) = -4.37e-8, not 0, and a
   // glutWireSphere turned by glRotatef(90, 1, 0, 0) has its equator just below y = 0, so the
   // clip plane y >= 0 removes it, as in Mesa.
   const float radians =
       static_cast<float>(static_cast<double>(angleDegrees) * std::numbers::pi / 180.0);
-  const float s = std::sin(radians);
-  const float c = std::cos(radians);
+  const float s = portable::sin(radians);
+  const float c = portable::cos(radians);
   r = Matrix4::identity();
 
   // Rotations about a coordinate axis: the general formula below gives the same values

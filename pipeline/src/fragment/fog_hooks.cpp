@@ -18,6 +18,7 @@
 #include "core/context.h"
 #include "core/state_value.h"
 #include "vertex/varyings.h"
+#include "glass/geometry/portable_math.h"
 
 namespace glass::gl {
 
@@ -74,10 +75,10 @@ float fogFactor(const FogState& fog, float c) {
       f = range != 0.0f ? (fog.end - c) / range : fog.end - c;
       break;
     }
-    case GL_EXP: f = std::exp(-fog.density * c); break;
+    case GL_EXP: f = portable::exp(-fog.density * c); break;
     case GL_EXP2: {
       const float dc = fog.density * c;
-      f = std::exp(-(dc * dc));
+      f = portable::exp(-(dc * dc));
       break;
     }
     default: break;

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <numbers>
+#include "glass/geometry/portable_math.h"
 
 namespace {
 
@@ -34,10 +35,10 @@ void gluOrtho2D(GLdouble left, GLdouble right, GLdouble bottom, GLdouble top) {
 void gluPerspective(GLdouble fovy, GLdouble aspect, GLdouble zNear, GLdouble zFar) {
   const double radians = fovy / 2.0 * std::numbers::pi / 180.0;
   const double deltaZ = zFar - zNear;
-  const double sine = std::sin(radians);
+  const double sine = glass::portable::sin(radians);
   // As GLU: a degenerate frustum leaves the matrix unchanged.
   if (deltaZ == 0.0 || sine == 0.0 || aspect == 0.0) return;
-  const double cotangent = std::cos(radians) / sine;
+  const double cotangent = glass::portable::cos(radians) / sine;
   const GLdouble m[16] = {cotangent / aspect, 0.0, 0.0, 0.0,
                          0.0, cotangent, 0.0, 0.0,
                          0.0, 0.0, -(zFar + zNear) / deltaZ, -1.0,

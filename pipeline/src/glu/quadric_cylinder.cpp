@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "glu/quadric_tables.h"
+#include "glass/geometry/portable_math.h"
 
 namespace glass::gl::glu {
 namespace {
@@ -31,13 +32,13 @@ class CylinderTables {
     normMidCos_.resize(slices + 1);
     for (int i = 0; i < slices; ++i) {
       const double angle = static_cast<float>(2.0 * kPi * i / slices);
-      sin_[i] = static_cast<float>(std::sin(angle));
-      cos_[i] = static_cast<float>(std::cos(angle));
-      normSin_[i] = static_cast<float>(signedRatio * std::sin(angle));
-      normCos_[i] = static_cast<float>(signedRatio * std::cos(angle));
+      sin_[i] = static_cast<float>(portable::sin(angle));
+      cos_[i] = static_cast<float>(portable::cos(angle));
+      normSin_[i] = static_cast<float>(signedRatio * portable::sin(angle));
+      normCos_[i] = static_cast<float>(signedRatio * portable::cos(angle));
       const double mid = static_cast<float>(2.0 * kPi * (i - 0.5) / slices);
-      normMidSin_[i] = static_cast<float>(signedRatio * std::sin(mid));
-      normMidCos_[i] = static_cast<float>(signedRatio * std::cos(mid));
+      normMidSin_[i] = static_cast<float>(signedRatio * portable::sin(mid));
+      normMidCos_[i] = static_cast<float>(signedRatio * portable::cos(mid));
     }
     sin_[slices] = sin_[0];
     cos_[slices] = cos_[0];

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "glu/quadric_tables.h"
+#include "glass/geometry/portable_math.h"
 
 namespace glass::gl::glu {
 namespace {
@@ -54,10 +55,10 @@ class SphereTables {
     normMidCos_.resize(stacks + 1);
     for (int j = 0; j <= stacks; ++j) {
       const double phi = static_cast<float>(kPi * j / stacks);
-      normSin_[j] = sign * static_cast<float>(std::sin(phi));
-      normCos_[j] = sign * static_cast<float>(std::cos(phi));
-      posSin_[j] = static_cast<float>(radius * std::sin(phi));
-      posCos_[j] = static_cast<float>(radius * std::cos(phi));
+      normSin_[j] = sign * static_cast<float>(portable::sin(phi));
+      normCos_[j] = sign * static_cast<float>(portable::cos(phi));
+      posSin_[j] = static_cast<float>(radius * portable::sin(phi));
+      posCos_[j] = static_cast<float>(radius * portable::cos(phi));
       const SineCosine mid = sineCosineOf(kPi * (j - 0.5) / stacks);
       normMidSin_[j] = sign * mid.sine;
       normMidCos_[j] = sign * mid.cosine;

@@ -8,6 +8,7 @@
 #include <numbers>
 
 #include "glu/quadric_emitter.h"
+#include "glass/geometry/portable_math.h"
 
 namespace glass::gl::glu {
 
@@ -22,7 +23,7 @@ struct SineCosine {
 };
 inline SineCosine sineCosineOf(double angle) {
   const double a = static_cast<float>(angle);
-  return {static_cast<float>(std::sin(a)), static_cast<float>(std::cos(a))};
+  return {static_cast<float>(portable::sin(a)), static_cast<float>(portable::cos(a))};
 }
 
 // The fraction k / n rounded to float, as GLU's (float) k / n.

@@ -7,6 +7,7 @@
 #include <initializer_list>
 
 #include "glut/shape_mesh.h"
+#include "glass/geometry/portable_math.h"
 
 namespace glass::gl::glut {
 namespace {
@@ -126,14 +127,14 @@ ShapeMesh icosahedronMesh(bool wire) {
   // the upper ring starts at angle 0 and turns by +72 degrees, the lower one starts at 180 and
   // turns by -72 degrees (angles in the y-z plane, from +y towards +z).
   const double x = 1.0 / std::sqrt(5.0), r = 2.0 / std::sqrt(5.0);
-  const double degree = std::acos(-1.0) / 180.0;
+  const double degree = portable::acos(-1.0) / 180.0;
   Point corners[12];
   corners[0] = floatPoint(1, 0, 0);
   corners[11] = floatPoint(-1, 0, 0);
   for (int k = 0; k < 5; ++k) {
     const double up = 72.0 * k * degree, down = (180.0 - 72.0 * k) * degree;
-    corners[1 + k] = floatPoint(x, r * std::cos(up), r * std::sin(up));
-    corners[6 + k] = floatPoint(-x, r * std::cos(down), r * std::sin(down));
+    corners[1 + k] = floatPoint(x, r * portable::cos(up), r * portable::sin(up));
+    corners[6 + k] = floatPoint(-x, r * portable::cos(down), r * portable::sin(down));
   }
   // The exact zeros of the axis corners' rings.
   corners[1].z = 0.0;

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "glut/shape_mesh.h"
+#include "glass/geometry/portable_math.h"
 
 namespace glass::gl::glut {
 namespace {
@@ -25,8 +26,8 @@ struct CircleTable {
     cosine[0] = 1.0f;
     for (int k = 1; k < size; ++k) {
       const double angle = step * static_cast<float>(k);
-      sine[k] = static_cast<float>(std::sin(angle));
-      cosine[k] = static_cast<float>(std::cos(angle));
+      sine[k] = static_cast<float>(portable::sin(angle));
+      cosine[k] = static_cast<float>(portable::cos(angle));
     }
     sine[size] = halfCircle ? 0.0f : sine[0];
     cosine[size] = halfCircle ? -1.0f : cosine[0];

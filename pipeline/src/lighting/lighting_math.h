@@ -8,6 +8,7 @@
 #include <numbers>
 
 #include "lighting/lighting_state.h"
+#include "glass/geometry/portable_math.h"
 
 namespace glass::gl::lighting_math {
 
@@ -39,7 +40,7 @@ inline void directionalToLight(const LightSource& light, float toLight[3]) {
 // cos(c) of a spotlight's cutoff angle c, in degrees.
 inline float spotCosCutoff(const LightSource& light) {
   const double cutoffRadians = static_cast<double>(light.spotCutoff) * std::numbers::pi / 180.0;
-  return static_cast<float>(std::cos(cutoffRadians));
+  return static_cast<float>(portable::cos(cutoffRadians));
 }
 
 // The spotlight's direction s_d as a unit vector.
@@ -53,12 +54,12 @@ inline void unitSpotDirection(const LightSource& light, float direction[3]) {
 // spot_i from PV . s_d: (PV . s_d)^s inside the cone, 0 outside.
 inline float spotFactor(float cosine, float cosCutoff, float exponent) {
   if (cosine < cosCutoff) return 0.0f;
-  return std::pow(cosine > 0.0f ? cosine : 0.0f, exponent);
+  return portable::pow(cosine > 0.0f ? cosine : 0.0f, exponent);
 }
 
 // f_i (n . h_i)^s_rm for n . VP_i > 0, with the unit half vector h_i.
 inline float specularFactor(float nDotH, float shininess) {
-  return std::pow(nDotH > 0.0f ? nDotH : 0.0f, shininess);
+  return portable::pow(nDotH > 0.0f ? nDotH : 0.0f, shininess);
 }
 
 // One colour channel of light i's terms: scale * (a_cm a_cli + (n . VP_i) d_cm d_cli), added to

@@ -12,6 +12,7 @@
 #include <cmath>
 
 #include "glass/raster/fragment.h"
+#include "glass/geometry/portable_math.h"
 
 namespace glass::gl {
 
@@ -99,7 +100,7 @@ inline float levelOfDetailFromSquaredScale(double rhoSquared, float minLod, floa
                                            float bias = 0.0f) {
   // log2(0) is -infinity and log2(NaN) is NaN: both end at minLod, the magnification side.
   const float lambda =
-      rhoSquared > 0.0 ? 0.5f * std::log2(static_cast<float>(rhoSquared)) + bias : -HUGE_VALF;
+      rhoSquared > 0.0 ? 0.5f * portable::log2(static_cast<float>(rhoSquared)) + bias : -HUGE_VALF;
   if (!(lambda > minLod)) return minLod;
   if (lambda > maxLod) return maxLod;
   return lambda;

@@ -3,6 +3,7 @@
 #include "interpret/executor.h"
 
 #include <cmath>
+#include "glass/geometry/portable_math.h"
 
 namespace glass::scene {
 
@@ -89,9 +90,9 @@ void Interpreter::Executor::run(const ParametricTorus &s) {
       for (int side = 1; side >= 0; --side) {
         const double t = -kPi + 2.0 * kPi * (ring + side) / s.rings;
         glTexCoord2d(static_cast<double>(slice) / s.slices, static_cast<double>(ring + side) / s.rings);
-        glNormal3d(std::cos(t) * std::sin(p), std::sin(t), std::cos(t) * std::cos(p));
-        glVertex3d((major + minor * std::cos(t)) * std::sin(p), minor * std::sin(t),
-                   (major + minor * std::cos(t)) * std::cos(p));
+        glNormal3d(portable::cos(t) * portable::sin(p), portable::sin(t), portable::cos(t) * portable::cos(p));
+        glVertex3d((major + minor * portable::cos(t)) * portable::sin(p), minor * portable::sin(t),
+                   (major + minor * portable::cos(t)) * portable::cos(p));
       }
     }
     glEnd();

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include "glass/geometry/portable_math.h"
 
 namespace glass::scene {
 
@@ -205,14 +206,14 @@ std::array<double, 4> VertexTracer::litColor(const Vec4 &eye, const Vec3 &n, boo
     if (light.spotCutoff != 180.0) {
       Vec3 s = normalized3(light.spotDirection);
       double cosine = -dot3(toLight, s);
-      spot = cosine >= std::cos(light.spotCutoff * 3.14159265358979323846 / 180.0)
-                 ? std::pow(std::max(cosine, 0.0), light.spotExponent)
+      spot = cosine >= portable::cos(light.spotCutoff * 3.14159265358979323846 / 180.0)
+                 ? portable::pow(std::max(cosine, 0.0), light.spotExponent)
                  : 0.0;
     }
     double diffuse = std::max(dot3(n, toLight), 0.0);
     Vec3 toEye = localViewer_ ? normalized3({-v[0], -v[1], -v[2]}) : Vec3{0.0, 0.0, 1.0};
     Vec3 half = normalized3({toLight[0] + toEye[0], toLight[1] + toEye[1], toLight[2] + toEye[2]});
-    double specular = dot3(n, toLight) > 0.0 ? std::pow(std::max(dot3(n, half), 0.0), m.shininess) : 0.0;
+    double specular = dot3(n, toLight) > 0.0 ? portable::pow(std::max(dot3(n, half), 0.0), m.shininess) : 0.0;
     for (std::size_t k = 0; k < 3; ++k) {
       c[k] += attenuation * spot *
               (m.ambient[k] * light.ambient[k] + diffuse * m.diffuse[k] * light.diffuse[k] +

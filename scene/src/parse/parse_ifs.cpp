@@ -8,6 +8,7 @@
 #include <glass/geometry/ifs_format.h>
 
 #include <cmath>
+#include "glass/geometry/portable_math.h"
 
 namespace glass::scene {
 
@@ -197,7 +198,7 @@ void Parser::finishIfs(OpenBlock &block, const StatementReader &r) {
                              {{block.where, "this 'ifs' is recursive"}}};
       }
     }
-    double copies = std::pow(static_cast<double>(ifs.maps.size()), ifs.depth);
+    double copies = portable::pow(static_cast<double>(ifs.maps.size()), ifs.depth);
     if (copies > static_cast<double>(geometry::kMaxIfsBaseCopies)) {
       fail("'ifs' with " + std::to_string(ifs.maps.size()) + " maps at depth " + std::to_string(ifs.depth) +
            " would draw " + std::to_string(static_cast<long long>(copies)) + " copies of its base shape; the limit is " +

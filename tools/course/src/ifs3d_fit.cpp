@@ -18,6 +18,7 @@
 #include "glass/geometry/ifs3d.h"
 #include "glass/geometry/kd_tree.h"
 #include "glass/geometry/polar_decomposition.h"
+#include "glass/geometry/portable_math.h"
 
 namespace glass::course {
 
@@ -87,7 +88,7 @@ glm::dmat3 symmetricPower(const glm::dmat3& sigma, double power) {
   const g::SymmetricEigen e = g::symmetricEigen(sigma);
   const double floor = std::max(e.values[0], 1e-300) * 1e-8;
   glm::dmat3 d(0.0);
-  for (int k = 0; k < 3; ++k) d[k][k] = std::pow(std::max(e.values[k], floor), power);
+  for (int k = 0; k < 3; ++k) d[k][k] = portable::pow(std::max(e.values[k], floor), power);
   return e.vectors * d * glm::transpose(e.vectors);
 }
 

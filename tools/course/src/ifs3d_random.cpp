@@ -10,6 +10,7 @@
 
 #include "glass/geometry/deterministic_random.h"
 #include "glass/geometry/rotation.h"
+#include "glass/geometry/portable_math.h"
 
 namespace glass::course {
 
@@ -33,7 +34,7 @@ g::IteratedFunctionSystem3 randomIfs3(std::uint64_t seed) {
     // An axis uniform on the sphere (z uniform in [-1, 1], longitude uniform) and any angle.
     const double z = 2.0 * random.uniform() - 1.0, longitude = 2.0 * std::numbers::pi * random.uniform();
     const double rho = std::sqrt(std::max(0.0, 1.0 - z * z));
-    const glm::dvec3 axis{rho * std::cos(longitude), rho * std::sin(longitude), z};
+    const glm::dvec3 axis{rho * portable::cos(longitude), rho * portable::sin(longitude), z};
     const double angle = 360.0 * random.uniform() - 180.0;
     const g::Affine3 linear = g::Affine3::rotationDegrees(angle, axis) * g::Affine3::scaling(scales);
     // The image of the unit cube's corners: its box, placed at random inside the unit cube.

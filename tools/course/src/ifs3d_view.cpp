@@ -11,6 +11,7 @@
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
+#include "glass/geometry/portable_math.h"
 
 namespace glass::course {
 
@@ -20,7 +21,7 @@ namespace {
 
 glm::dvec3 direction(double azimuthDegrees, double elevationDegrees) {
   const double az = azimuthDegrees * std::numbers::pi / 180.0, el = elevationDegrees * std::numbers::pi / 180.0;
-  return {std::cos(el) * std::sin(az), std::sin(el), std::cos(el) * std::cos(az)};
+  return {portable::cos(el) * portable::sin(az), portable::sin(el), portable::cos(el) * portable::cos(az)};
 }
 
 }  // namespace
@@ -48,7 +49,7 @@ Ifs3Camera ifs3Camera(const glm::dvec3& lo, const glm::dvec3& hi, const Ifs3View
   Ifs3Camera camera;
   camera.centre = (lo + hi) / 2.0;
   const double radius = std::max(glm::length(hi - lo) / 2.0, 1e-6);
-  const double distance = radius / std::sin(camera.fovy / 2.0 * std::numbers::pi / 180.0) * 1.02;
+  const double distance = radius / portable::sin(camera.fovy / 2.0 * std::numbers::pi / 180.0) * 1.02;
   camera.eye = camera.centre + distance * direction(view.azimuth, view.elevation);
   camera.zNear = std::max(distance - 2.0 * radius, distance * 0.01);
   camera.zFar = distance + 2.0 * radius;

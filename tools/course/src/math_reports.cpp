@@ -13,6 +13,7 @@
 #include "glass/geometry/quaternion.h"
 #include "glass/geometry/rotation.h"
 #include "glass/geometry/triangle_normal.h"
+#include "glass/geometry/portable_math.h"
 
 namespace glass::course {
 
@@ -167,7 +168,7 @@ std::string rotateComposeReport(const std::vector<RotationStep>& rotations) {
   const double cosTheta = (e(1, 1) + e(2, 2) + e(3, 3) - 1.0) / 2.0;
   const glm::dvec3 skew{e(3, 2) - e(2, 3), e(1, 3) - e(3, 1), e(2, 1) - e(1, 2)};  // 2 sin(theta) u
   const double sinTheta = glm::length(skew) / 2.0;
-  const double theta = std::atan2(sinTheta, cosTheta);
+  const double theta = portable::atan2(sinTheta, cosTheta);
   out << "  cos(theta) = (m11 + m22 + m33 - 1) / 2 = " << describe(cosTheta) << "\n";
   out << "  sin(theta) = |(m32 - m23, m13 - m31, m21 - m12)| / 2 = " << describe(sinTheta) << "\n";
   out << "  theta = " << degrees(theta) << " degrees\n";

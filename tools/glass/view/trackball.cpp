@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include <glm/geometric.hpp>
+#include "glass/geometry/portable_math.h"
 
 namespace glass::cli::view {
 
@@ -25,7 +26,7 @@ geometry::Quaternion trackballDrag(double x0, double y0, double x1, double y1, i
   const glm::dvec3 axis = glm::cross(from, to);
   const double sine = glm::length(axis);
   if (!(sine > 1e-12)) return {};
-  const double angle = std::atan2(sine, glm::dot(from, to));
+  const double angle = portable::atan2(sine, glm::dot(from, to));
   return geometry::rotationQuaternion(axis / sine, angle);
 }
 
