@@ -195,6 +195,21 @@ TEST_CASE("Wings files: a file saved by Wings3D") {
   for (const auto &face : axes.shape.faces) CHECK(face.material >= 0);
   // Wings' faces are counter-clockwise seen from outside: the volume comes out positive.
   CHECK(signedVolume(axes.shape) > 0.0);
+
+  // The cube of Wings3D's material icon: [-1, 1]^3, each face cut 14 x 14, the 12 x 14 edges
+  // along the cube's edges hard; two materials, the faces in the second (its `opengl` diffuse
+  // colour), edges with vertex colours (color_lt, color_rt), which are read past.
+  const WingsFile boxFile = glass::scene::readWingsFile(dataPath("wings3d_material_box.wings"));
+  REQUIRE(boxFile.objects.size() == 1);
+  const auto &box = boxFile.objects[0].shape;
+  CHECK(box.vertices.size() == 6 * 14 * 14 + 2);
+  CHECK(box.faces.size() == 6 * 14 * 14);
+  CHECK(box.markedEdges.size() == 12 * 14);
+  REQUIRE(boxFile.materials.size() == 2);
+  CHECK(boxFile.materials[1].name == "default3");
+  CHECK(boxFile.materials[1].diffuse[0] == doctest::Approx(0.78985).epsilon(1e-4));
+  for (const auto &face : box.faces) CHECK(face.material == 1);
+  CHECK(signedVolume(box) / 6.0 == doctest::Approx(8.0).epsilon(1e-6));  // (six times the volume)
 }
 
 TEST_CASE("Wings files: broken and unsupported files name what is wrong") {

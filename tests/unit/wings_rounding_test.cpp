@@ -8,7 +8,9 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <iterator>
 #include <map>
 #include <numbers>
 #include <string>
@@ -51,18 +53,42 @@ bool collapsed(const BezierSurface &patch, PatchSide side) {
   return glm::length(pa - pb) < 1e-12 && glm::length(pb - pc) < 1e-12;
 }
 
-// The other patch side whose points equal this side's to `tolerance`, in either direction.
-std::vector<SideMatch> neighboursOf(const RoundedSurface &s, std::size_t p, PatchSide side, double tolerance) {
+// The points of every patch side at kSamples, evaluated once per surface: the seam checks
+// compare each side with every other, which for an object of a thousand faces is millions of
+// comparisons.
+class SideSamples {
+public:
+  explicit SideSamples(const RoundedSurface &s) : points_(s.patches.size() * 4) {
+    for (std::size_t p = 0; p < s.patches.size(); ++p)
+      for (int k = 0; k < 4; ++k)
+        for (std::size_t i = 0; i < std::size(kSamples); ++i) {
+          const glm::dvec2 a = onSide(kSides[k], kSamples[i]);
+          points_[p * 4 + static_cast<std::size_t>(k)][i] = s.patches[p].evaluate(a.x, a.y);
+        }
+  }
+  const std::array<glm::dvec3, std::size(kSamples)> &at(std::size_t patch, PatchSide side) const {
+    return points_[patch * 4 + static_cast<std::size_t>(std::find(std::begin(kSides), std::end(kSides), side) - std::begin(kSides))];
+  }
+  std::size_t patchCount() const { return points_.size() / 4; }
+
+private:
+  std::vector<std::array<glm::dvec3, std::size(kSamples)>> points_;
+};
+
+// The other patch sides whose points equal this side's to `tolerance`, in either direction
+// (kSamples is symmetric: the sample at 1 - t is the one at the mirrored index).
+std::vector<SideMatch> neighboursOf(const SideSamples &samples, std::size_t p, PatchSide side, double tolerance) {
   std::vector<SideMatch> found;
-  for (std::size_t q = 0; q < s.patches.size(); ++q) {
+  const auto &mine = samples.at(p, side);
+  const std::size_t n = mine.size();
+  for (std::size_t q = 0; q < samples.patchCount(); ++q) {
     for (PatchSide other : kSides) {
       if (q == p && other == side) continue;
+      const auto &theirs = samples.at(q, other);
       for (bool reversed : {false, true}) {
         bool all = true;
-        for (double t : kSamples) {
-          const glm::dvec2 a = onSide(side, t), b = onSide(other, reversed ? 1.0 - t : t);
-          if (glm::length(s.patches[p].evaluate(a.x, a.y) - s.patches[q].evaluate(b.x, b.y)) > tolerance) all = false;
-        }
+        for (std::size_t i = 0; i < n && all; ++i)
+          all = glm::length(mine[i] - theirs[reversed ? n - 1 - i : i]) <= tolerance;
         if (all) found.push_back({q, other, reversed});
       }
     }
@@ -119,10 +145,11 @@ void checkSeams(const MarkedPolyhedron &poly, const RoundedSurface &s) {
   std::map<int, FaceChart> charts;
   for (std::size_t f = 0; f < poly.faces.size(); ++f) charts[static_cast<int>(f)] = faceChart(poly, f);
   int shared = 0;
+  const SideSamples samples(s);
   for (std::size_t p = 0; p < s.patches.size(); ++p) {
     for (PatchSide side : kSides) {
       if (collapsed(s.patches[p], side)) continue;
-      const auto found = neighboursOf(s, p, side, 1e-12);
+      const auto found = neighboursOf(samples, p, side, 1e-12);
       if (found.empty()) {
         bool onPolygon = true;
         for (double t : kSamples) {
@@ -419,6 +446,39 @@ TEST_CASE("Rounding: radius limits and unsupported objects are refused with a re
   CHECK_THROWS_AS(roundMarkedEdges(axes, 0.01), RoundingError);
 }
 
+TEST_CASE("Rounding: a cube saved by Wings3D itself, each face cut 14 x 14, its twelve edges hard") {
+  // wings3d_material_box.wings (Wings3D's icons/orig/outliner-material-box.wings): the cube
+  // [-1, 1]^3, each face cut into 14 x 14 squares, the 168 edges along the cube's edges marked
+  // hard. The largest radius is half a square's side: a rounded strip may not pass the next cut.
+  const MarkedPolyhedron box = readShape("wings3d_material_box.wings");
+  CHECK(box.vertices.size() == 1178);
+  CHECK(box.faces.size() == 1176);
+  std::string limit;
+  const double largest = maximumRoundingRadius(box, &limit);
+  CHECK(largest == doctest::Approx(1.0 / 14.0).epsilon(1e-6));
+  CHECK(limit.find("half the side") != std::string::npos);
+  CHECK_THROWS_AS(roundMarkedEdges(box, 0.1), RoundingError);
+  for (double radius : {0.03, largest}) {
+    CAPTURE(radius);
+    const RoundedSurface s = roundMarkedEdges(box, radius);
+    checkSeams(box, s);
+    checkRadius(s);
+    // Closed, and holding the rounded cube's volume: the cube less a strip along each edge
+    // (R^2 (1 - pi/4) times its straight length) and a corner piece at each corner
+    // (R^3 (1 - pi/6)). The tessellation's chords lie inside the arcs, within its tolerance
+    // (1e-4: about 2e-4 of volume over the rounded area of 2.5).
+    AdaptiveOptions options;
+    options.criterion = ObjectSpaceTolerance{1e-4};
+    const RoundedMesh mesh = tessellateRounded(box, s, options);
+    checkWatertight(mesh);
+    const double pi = std::numbers::pi;
+    const double expected = 8.0 - 12.0 * (2.0 - 2.0 * radius) * radius * radius * (1.0 - pi / 4.0) -
+                            8.0 * radius * radius * radius * (1.0 - pi / 6.0);
+    CHECK(meshVolume(mesh) == doctest::Approx(expected).epsilon(1e-4));
+    CHECK(meshVolume(mesh) <= expected);
+  }
+}
+
 TEST_CASE("Rounding: a concave edge becomes a fillet outside the faces, ending in flat webs") {
   // The L of unit cubes (x, z in [0, 2], y in [0, 1]) with its uprights marked: the inner one, at
   // x = z = 1, is concave between the faces z = 1 (x in [1, 2], normal +z) and x = 1 (z in
@@ -582,11 +642,12 @@ TEST_CASE("Rounding: two rounded edges meet in a mitre, the rounded solid's own 
     const RoundedSurface s = roundMarkedEdges(cube, radius);
     int mitres = 0;
     double lowest = 1.0, highest = 0.0;
+    const SideSamples samples(s);
     for (std::size_t p = 0; p < s.patches.size(); ++p) {
       const RoundedPatchInfo &a = s.info[p];
       if (!a.alongAxis) continue;
       for (PatchSide side : kSides)
-        for (const SideMatch &m : neighboursOf(s, p, side, 1e-12)) {
+        for (const SideMatch &m : neighboursOf(samples, p, side, 1e-12)) {
           const RoundedPatchInfo &b = s.info[m.patch];
           if (m.patch < p || !b.alongAxis || glm::length(glm::cross(a.axis, b.axis)) < 0.5) continue;
           ++mitres;
