@@ -28,6 +28,13 @@ namespace {
 // cache; larger ones visit every tile of the framebuffer fewer times.
 constexpr size_t kSceneBudgetBytes = size_t{32} << 20;
 
+// With workers, a scene is handed over sooner, once it holds this much, whenever the workers have
+// nothing left to do: when binning is the slower half (many small lit triangles), the workers
+// then rasterize while the submitting thread goes on binning instead of waiting for the whole
+// budget (often the whole frame) to fill. When rasterizing is the slower half, the workers are
+// never idle and the scenes grow to the budget as before.
+constexpr size_t kIdleLaunchBytes = size_t{1} << 20;
+
 // Before a tile's bin runs, asks the memory system for the tile's depth and colour rows all at
 // once. Otherwise the first fragments to reach each cache line of the tile wait for it one line
 // at a time, which for scattered small primitives costs more than shading them. (A hint only:
@@ -58,6 +65,9 @@ struct TiledRasterizer::Impl {
     TileScene* scene = nullptr;
     std::atomic<int> nextTile{0};
     int users = 0;  // workers currently taking tiles from it (guarded by mutex)
+    // Set when the last worker leaves it with every tile claimed: a hint for afterSubmit, read
+    // without the mutex (land() still waits under it).
+    std::atomic<bool> finished{false};
   };
 
   Impl(const Framebuffer& fb, int threads)
@@ -105,7 +115,10 @@ struct TiledRasterizer::Impl {
       lock.unlock();
       takeTiles(scene);
       lock.lock();
-      if (--flight.users == 0) done.notify_all();
+      if (--flight.users == 0) {
+        flight.finished.store(true, std::memory_order_relaxed);
+        done.notify_all();
+      }
     }
   }
 
@@ -135,14 +148,21 @@ struct TiledRasterizer::Impl {
       std::lock_guard<std::mutex> lock(mutex);
       flight.scene = &scene;
       flight.nextTile.store(0, std::memory_order_relaxed);
+      flight.finished.store(false, std::memory_order_relaxed);
       ++flightNumber;
     }
     wake.notify_all();
     fillingIndex = 1 - fillingIndex;
   }
 
+  bool workersIdle() const {
+    return !workers.empty() &&
+           (flight.scene == nullptr || flight.finished.load(std::memory_order_relaxed));
+  }
+
   void afterSubmit() {
-    if (filling().bytes() >= kSceneBudgetBytes) launch();
+    const size_t bytes = filling().bytes();
+    if (bytes >= kSceneBudgetBytes || (bytes >= kIdleLaunchBytes && workersIdle())) launch();
   }
 
   void finish() {
