@@ -11,7 +11,6 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kHalfPi = 1.57079632679489661923;
-constexpr double kLog2E = 1.44269504088896340736;  // 1 / ln 2
 constexpr double kLn2 = 0.693147180559945309417;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
@@ -106,7 +105,7 @@ double lnReduced(double m) {
   const double s = (m - 1.0) / (m + 1.0);
   const double z = s * s;
   double sum = 0.0;
-  for (int n = 23; n >= 3; n -= 2) sum = z * (sum + kInverseOdd.value[n]);
+  for (int n = kLog2SeriesLastOdd; n >= 3; n -= 2) sum = z * (sum + kInverseOdd.value[n]);
   return 2.0 * (s + s * sum);
 }
 
@@ -218,7 +217,7 @@ double log2(double x) {
   const uint64_t bits = std::bit_cast<uint64_t>(x);
   e += static_cast<int>((bits >> 52) & 0x7FF) - 1023;
   double m = std::bit_cast<double>((bits & 0x000FFFFFFFFFFFFFull) | 0x3FF0000000000000ull);  // [1, 2)
-  if (m >= 1.41421356237309504880) {
+  if (m >= kLog2Sqrt2) {
     m *= 0.5;
     ++e;
   }

@@ -48,6 +48,7 @@
 #include "fragment/fog_hooks.h"
 #include "fragment/fog_state.h"
 #include "glass/raster/triangle.h"
+#include "texture/level_of_detail-inl.h"
 #include "texture/row_sampler_2d-inl.h"
 #include "texture/sampler_2d.h"
 #include "texture/texture_environment.h"
@@ -156,8 +157,9 @@ void divideRow(const float* numerator, const float* denominator, float quotient[
 // The per-block constants of texturing by singleTexture2D (texture_hooks.h), and one lambda per
 // 2x2 quad. A block's rows span at most five quad rows (pixelQuadOf pairs rows from the top of
 // the window, which an odd window height puts out of step with the blocks), each of four quads.
-// The first pixel of a quad row that needs a lambda computes rho^2 for the row's four quads at
-// once; a quad's lambda follows from it when one of its pixels first needs it.
+// The first pixel of a quad row that needs a lambda computes rho^2 and lambda for the row's four
+// quads at once (textureLevelOfDetail's operations, one quad per lane); a quad's mipmap levels
+// follow from it when one of its pixels first needs them.
 class QuadTexturing {
  public:
   QuadTexturing(const Context& ctx, const raster::TriangleSetup& setup, int bx, int by)
@@ -171,6 +173,9 @@ class QuadTexturing {
       sampler_.emplace(*texture_);
       base_ = texture_->baseImage().base;
       needsLambda_ = needsLevelOfDetail(*texture_);
+      minLod_ = texture_->params.minLod;
+      maxLod_ = texture_->params.maxLod;
+      lodBias_ = textureLodBias(*texture_, env_.lodBias);
       baseWidth_ = texture_->baseImage().width;
       baseHeight_ = texture_->baseImage().height;
     }
@@ -203,8 +208,7 @@ class QuadTexturing {
     const int row = quadRow(y) - firstQuadRow_, column = (x >> 1) & 3;
     if (!known_[row][column]) {
       if (!rowKnown_[row]) computeRowScales(row);
-      const float lambda = textureLevelOfDetail(*texture_, env_.lodBias, rhoSquared_[row][column]);
-      choice_[row][column] = sampler_->choose(lambda);
+      choice_[row][column] = sampler_->choose(lambda_[row][column]);
       known_[row][column] = true;
     }
     return choice_[row][column];
@@ -272,6 +276,7 @@ class QuadTexturing {
       // std::max(alongX, alongY): alongY only when alongX < alongY (NaN keeps alongX).
       hn::Store(hn::IfThenElse(hn::Lt(alongX, alongY), alongY, alongX), d, &rhoSquared_[row][k]);
     }
+    level_of_detail::levelsOfDetail(rhoSquared_[row], minLod_, maxLod_, lodBias_, lambda_[row]);
     rowKnown_[row] = true;
   }
 
@@ -283,10 +288,12 @@ class QuadTexturing {
   int height_, firstQuadRow_;
   double quadX0_;
   bool needsLambda_ = false;
+  float minLod_ = 0.0f, maxLod_ = 0.0f, lodBias_ = 0.0f;  // textureLevelOfDetail's
   int baseWidth_ = 0, baseHeight_ = 0;
   std::array<bool, 5> rowKnown_;
   std::array<std::array<bool, 4>, 5> known_;
   alignas(32) double rhoSquared_[5][4];
+  float lambda_[5][4];
   Sampler2D::LevelChoice choice_[5][4];
 };
 

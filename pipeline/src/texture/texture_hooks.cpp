@@ -156,11 +156,6 @@ const TextureObject* bumpHeightMap(const Context& ctx) {
 
 namespace {
 
-// The unit's bias and the texture's, their sum clamped (OpenGL 1.4, 3.8.8).
-float lodBias(float unitBias, const SamplerParameters& p) {
-  return std::clamp(unitBias + p.lodBias, -kMaxTextureLodBias, kMaxTextureLodBias);
-}
-
 // A cube map's filtered texel (section 3.8.6): the face the fragment's (s, t, r) points at. For
 // the level of detail, the directions at the quad's pixels are projected on that face, and their
 // differences times the face size stand in for the derivatives of u and v.
@@ -249,9 +244,13 @@ float quadLevelOfDetail(const Context& ctx, const TextureObject& texture, int sl
   return textureLevelOfDetail(texture, unitBias, rhoSquared);
 }
 
+float textureLodBias(const TextureObject& texture, float unitBias) {
+  return std::clamp(unitBias + texture.params.lodBias, -kMaxTextureLodBias, kMaxTextureLodBias);
+}
+
 float textureLevelOfDetail(const TextureObject& texture, float unitBias, double rhoSquared) {
   const SamplerParameters& p = texture.params;
-  return levelOfDetailFromSquaredScale(rhoSquared, p.minLod, p.maxLod, lodBias(unitBias, p));
+  return levelOfDetailFromSquaredScale(rhoSquared, p.minLod, p.maxLod, textureLodBias(texture, unitBias));
 }
 
 const TextureObject* singleTexture2D(const Context& ctx) {

@@ -54,6 +54,9 @@ float quadLevelOfDetail(const Context& ctx, const TextureObject& texture, int sl
 // texture_lod.h) itself: lambda from rho^2 with the texture's GL_TEXTURE_MIN_LOD and
 // GL_TEXTURE_MAX_LOD and the bias of the unit (unitBias) and the texture.
 float textureLevelOfDetail(const TextureObject& texture, float unitBias, double rhoSquared);
+// The bias textureLevelOfDetail adds: the unit's and the texture's, their sum clamped
+// (OpenGL 1.4, 3.8.8).
+float textureLodBias(const TextureObject& texture, float unitBias);
 // For the fragment stage's fast kernels (fragment/block_kernels.h): when texturing is exactly one
 // complete colour (not depth) 2D texture on unit 0 with a texture environment other than
 // GL_COMBINE and no bump mapping, that texture; then applyTexturing amounts to sampleTexture (texture_sampler.h) at

@@ -134,14 +134,24 @@ struct MipmapLevels {
   int level2 = 0;
   float weight2 = 0.0f;  // the share of level2
 };
-inline MipmapLevels selectMipmapLevels(float lambda, GLenum minFilter, int base, int q) {
+// floor(x) for 0 <= x < 2^31 and ceil(x) for 0 < x < 2^31, exact: the conversion to int
+// truncates, which is the floor of a non-negative number. (std::floor and std::ceil are calls
+// into the C library on baseline x86-64, which has no rounding instruction; selectMipmapLevels
+// runs once per pixel quad.)
+inline int floorOfNonNegative(float x) { return static_cast<int>(x); }
+inline int ceilOfPositive(float x) {
+  const int whole = static_cast<int>(x);
+  return static_cast<float>(whole) < x ? whole + 1 : whole;
+}
+
+[[gnu::always_inline]] inline MipmapLevels selectMipmapLevels(float lambda, GLenum minFilter, int base, int q) {
   MipmapLevels m;
   if (minFilter == GL_NEAREST_MIPMAP_NEAREST || minFilter == GL_LINEAR_MIPMAP_NEAREST) {
     int d;
     if (lambda <= 0.5f) {
       d = base;
     } else if (base + lambda <= q + 0.5f) {
-      d = base + static_cast<int>(std::ceil(lambda + 0.5f)) - 1;
+      d = base + ceilOfPositive(lambda + 0.5f) - 1;
     } else {
       d = q;
     }
@@ -155,7 +165,7 @@ inline MipmapLevels selectMipmapLevels(float lambda, GLenum minFilter, int base,
     return m;
   }
   // A negative lambda reads the base level alone (weight2 = 0); its floor is not converted.
-  const float whole = std::floor(std::max(lambda, 0.0f));
+  const float whole = static_cast<float>(floorOfNonNegative(std::max(lambda, 0.0f)));
   m.level1 = std::max(base, base + static_cast<int>(whole));
   m.level2 = m.level1 >= q ? m.level1 : m.level1 + 1;
   m.weight2 = lambda < 0.0f ? 0.0f : lambda - whole;

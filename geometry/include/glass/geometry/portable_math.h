@@ -38,6 +38,15 @@ double exp2(double x);
 double log2(double x);
 double pow(double x, double y);
 
+// How log2 works, for code that computes it on vector lanes with the same operations (the
+// texture level of detail, texture/level_of_detail-inl.h) and must give the same bits: x = m 2^e
+// with sqrt(1/2) <= m < sqrt(2) (m >= kLog2Sqrt2 is halved), s = (m - 1) / (m + 1), z = s^2,
+// sum = z (sum + 1/n) for n = kLog2SeriesLastOdd, ..., 5, 3 from sum = 0 (1/n divided in
+// double), ln m = 2 (s + s sum), and log2 x = e + ln m * kLog2E.
+inline constexpr double kLog2E = 1.44269504088896340736;  // 1 / ln 2
+inline constexpr double kLog2Sqrt2 = 1.41421356237309504880;
+inline constexpr int kLog2SeriesLastOdd = 23;
+
 // Float arguments and results: computed in double and rounded once.
 inline float sin(float x) { return static_cast<float>(sin(static_cast<double>(x))); }
 inline float cos(float x) { return static_cast<float>(cos(static_cast<double>(x))); }
