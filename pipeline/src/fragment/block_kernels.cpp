@@ -180,7 +180,6 @@ class QuadTexturing {
       baseHeight_ = texture_->baseImage().height;
     }
     rowKnown_.fill(false);
-    for (auto& row : known_) row.fill(false);
   }
 
   bool active() const { return texture_ != nullptr; }  // the unit is on (spec 3.8.15)
@@ -203,14 +202,10 @@ class QuadTexturing {
   int quadRow(int y) const { return (height_ - 1 - y) >> 1; }
 
   // The levels the pixels of the 2x2 quad of pixel (x, y) read, from the quad's lambda,
-  // computed when one of its pixels first needs them.
+  // computed with those of its quad row when a pixel of the row first needs them.
   const Sampler2D::LevelChoice& levelsAt(int x, int y) {
     const int row = quadRow(y) - firstQuadRow_, column = (x >> 1) & 3;
-    if (!known_[row][column]) {
-      if (!rowKnown_[row]) computeRowScales(row);
-      choice_[row][column] = sampler_->choose(lambda_[row][column]);
-      known_[row][column] = true;
-    }
+    if (!rowKnown_[row]) chooseRowLevels(row);
     return choice_[row][column];
   }
 
@@ -238,10 +233,12 @@ class QuadTexturing {
     }
   }
 
-  // rho^2 of the four quads of quad row `row`, as quadLevelOfDetail computes it for a 2D texture
-  // (quadTexCoordDifferences and textureScaleFactorSquared of texture_lod.h), the same operations
-  // in the same order, one quad per lane.
-  void computeRowScales(int row) {
+  // The levels of the four quads of quad row `row`: rho^2 as quadLevelOfDetail computes it for a
+  // 2D texture (quadTexCoordDifferences and textureScaleFactorSquared of texture_lod.h), the same
+  // operations in the same order, one quad per lane; then lambda (textureLevelOfDetail's, also
+  // in lanes) and the choice of levels. All four at once, well before applyRow copies them: a
+  // choice read right after its fields were written would wait for the stores.
+  void chooseRowLevels(int row) {
     const hn::CappedTag<double, 4> d;
     constexpr int s = varying::kTexCoord, t = varying::kTexCoord + 1, q = varying::kTexCoord + 3;
     const raster::AttributePlanes& p = planes_;
@@ -276,7 +273,9 @@ class QuadTexturing {
       // std::max(alongX, alongY): alongY only when alongX < alongY (NaN keeps alongX).
       hn::Store(hn::IfThenElse(hn::Lt(alongX, alongY), alongY, alongX), d, &rhoSquared_[row][k]);
     }
-    level_of_detail::levelsOfDetail(rhoSquared_[row], minLod_, maxLod_, lodBias_, lambda_[row]);
+    float lambda[level_of_detail::kQuads];
+    level_of_detail::levelsOfDetail(rhoSquared_[row], minLod_, maxLod_, lodBias_, lambda);
+    for (int k = 0; k < 4; ++k) choice_[row][k] = sampler_->choose(lambda[k]);
     rowKnown_[row] = true;
   }
 
@@ -291,9 +290,7 @@ class QuadTexturing {
   float minLod_ = 0.0f, maxLod_ = 0.0f, lodBias_ = 0.0f;  // textureLevelOfDetail's
   int baseWidth_ = 0, baseHeight_ = 0;
   std::array<bool, 5> rowKnown_;
-  std::array<std::array<bool, 4>, 5> known_;
   alignas(32) double rhoSquared_[5][4];
-  float lambda_[5][4];
   Sampler2D::LevelChoice choice_[5][4];
 };
 
