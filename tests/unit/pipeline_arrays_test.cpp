@@ -165,3 +165,73 @@ TEST_CASE("pipeline arrays: component types convert as the immediate commands do
   glDisableClientState(GL_VERTEX_ARRAY);
   glDisableClientState(GL_COLOR_ARRAY);
 }
+
+TEST_CASE("pipeline arrays: long triangle lists draw every triangle across the vertex batches, with edge flags") {
+  // More vertices than a batch of the vertex stage holds (kVertexBatch), and a count that is not
+  // a multiple of it or of 3, so that triangles straddle batches and the last one is incomplete.
+  ScopedContext context(kSize, kSize);
+  glass::test::pixelProjection(kSize, kSize);
+  std::vector<Vertex> v;
+  for (int i = 0; i < 3 * 97 + 2; ++i) {
+    const double a = i * 2.39996;  // the golden angle: vertices spread over the disc
+    const double r = 4.0 + (i * 37 % 19);
+    Vertex vertex{};
+    vertex.position[0] = static_cast<GLshort>(24 + std::lround(r * std::cos(a)));
+    vertex.position[1] = static_cast<GLshort>(24 + std::lround(r * std::sin(a)));
+    vertex.color[0] = static_cast<GLubyte>(i * 53 % 256);
+    vertex.color[1] = static_cast<GLubyte>(i * 101 % 256);
+    vertex.color[2] = static_cast<GLubyte>(i * 29 % 256);
+    vertex.color[3] = 255;
+    v.push_back(vertex);
+  }
+  std::vector<GLboolean> edgeFlags(v.size());
+  for (size_t i = 0; i < v.size(); ++i) edgeFlags[i] = (i * 7 % 3) != 0 ? GL_TRUE : GL_FALSE;
+  std::vector<GLuint> indices(v.size());
+  for (size_t i = 0; i < v.size(); ++i) indices[i] = static_cast<GLuint>(i * 5 % v.size());  // 5 is prime to the count
+  const int count = static_cast<int>(v.size());
+  glVertexPointer(2, GL_SHORT, sizeof(Vertex), &v[0].position);
+  glColorPointer(4, GL_UNSIGNED_BYTE, sizeof(Vertex), &v[0].color);
+  glEdgeFlagPointer(0, edgeFlags.data());
+  glEnableClientState(GL_VERTEX_ARRAY);
+  glEnableClientState(GL_COLOR_ARRAY);
+  glEnableClientState(GL_EDGE_FLAG_ARRAY);
+
+  for (const GLenum polygonMode : {GL_FILL, GL_LINE}) {
+    CAPTURE(polygonMode);
+    glPolygonMode(GL_FRONT_AND_BACK, polygonMode);
+    // Each triangle in a glBegin/glEnd of its own: vertex by vertex through the assembly.
+    auto oneByOne = [&](auto indexOf) {
+      glClear(GL_COLOR_BUFFER_BIT);
+      for (int t = 0; t + 3 <= count; t += 3) {
+        glBegin(GL_TRIANGLES);
+        for (int k = t; k < t + 3; ++k) {
+          const Vertex& x = v[indexOf(k)];
+          glEdgeFlag(edgeFlags[indexOf(k)]);
+          glColor4ub(x.color[0], x.color[1], x.color[2], x.color[3]);
+          glVertex2s(x.position[0], x.position[1]);
+        }
+        glEnd();
+      }
+      glEdgeFlag(GL_TRUE);
+      return readFramebuffer(kSize, kSize);
+    };
+    const std::vector<uint8_t> expected = oneByOne([](int k) { return k; });
+    const std::vector<uint8_t> expectedIndexed = oneByOne([&](int k) { return static_cast<int>(indices[k]); });
+
+    glClear(GL_COLOR_BUFFER_BIT);
+    glDrawArrays(GL_TRIANGLES, 0, count);
+    CHECK(readFramebuffer(kSize, kSize) == expected);
+
+    glClear(GL_COLOR_BUFFER_BIT);
+    glBegin(GL_TRIANGLES);
+    for (int i = 0; i < count; ++i) glArrayElement(i);
+    glEnd();
+    CHECK(readFramebuffer(kSize, kSize) == expected);
+
+    glClear(GL_COLOR_BUFFER_BIT);
+    glDrawElements(GL_TRIANGLES, count, GL_UNSIGNED_INT, indices.data());
+    CHECK(readFramebuffer(kSize, kSize) == expectedIndexed);
+  }
+  glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+  CHECK(glGetError() == GL_NO_ERROR);
+}

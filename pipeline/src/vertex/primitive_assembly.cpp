@@ -74,6 +74,36 @@ void beginPrimitive(Context& ctx, GLenum mode) {
 // triangle and quadrilateral, except GL_LINE_LOOP's closing segment (its first vertex) and
 // GL_POLYGON (its first vertex). Edge flags apply to independent triangles, quads and polygons
 // only; strips and fans draw every edge (spec 2.6.2).
+namespace {
+
+// assembleVertices over vertexAt(0 .. count).
+template <class VertexAt>
+void assembleInOrder(Context& ctx, int count, VertexAt vertexAt) {
+  PrimitiveAssembly& pa = ctx.assembly;
+  int i = 0;
+  if (pa.mode == GL_TRIANGLES) {
+    for (; i < count && pa.vertexCount % 3 != 0; ++i) assembleVertex(ctx, vertexAt(i));  // a triangle begun before
+    DrawPipeline& draw = *ctx.draw;
+    for (; i + 3 <= count; i += 3) {
+      const PipelineVertex &a = vertexAt(i), &b = vertexAt(i + 1), &c = vertexAt(i + 2);
+      pa.vertexCount += 3;
+      if (FrameStatistics* statistics = draw.statistics()) statistics->vertices += 3;
+      draw.drawTriangle(a, b, c, c, edgeBits(a.edgeFlag, b.edgeFlag, c.edgeFlag));
+    }
+  }
+  for (; i < count; ++i) assembleVertex(ctx, vertexAt(i));
+}
+
+}  // namespace
+
+void assembleVertices(Context& ctx, const PipelineVertex* vertices, int count) {
+  assembleInOrder(ctx, count, [vertices](int i) -> const PipelineVertex& { return vertices[i]; });
+}
+
+void assembleVertices(Context& ctx, const PipelineVertex* const* vertices, int count) {
+  assembleInOrder(ctx, count, [vertices](int i) -> const PipelineVertex& { return *vertices[i]; });
+}
+
 void assembleVertex(Context& ctx, const PipelineVertex& v) {
   PrimitiveAssembly& pa = ctx.assembly;
   DrawPipeline& draw = *ctx.draw;

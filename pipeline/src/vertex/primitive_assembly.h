@@ -39,6 +39,12 @@ bool isPrimitiveMode(GLenum mode);
 void beginPrimitive(Context& ctx, GLenum mode);
 // A vertex from the vertex stage.
 void assembleVertex(Context& ctx, const PipelineVertex& vertex);
+// assembleVertex for vertices[0 .. count) in order, where the vertex stage has a batch of them
+// at once: whole GL_TRIANGLES triangles are drawn straight from the array, without copying two
+// of their vertices into the assembly's window first.
+void assembleVertices(Context& ctx, const PipelineVertex* vertices, int count);
+// The same for *vertices[0 .. count) (the post-transform cache's vertices of an indexed draw).
+void assembleVertices(Context& ctx, const PipelineVertex* const* vertices, int count);
 // glEnd's work: closes line loops, draws polygons and quads, drops an incomplete last primitive.
 void endPrimitive(Context& ctx);
 

@@ -219,7 +219,7 @@ void drawSequential(Context& ctx, const ArrayElementLayout& layout, const Vertex
     const int n = std::min(K, count - start);
     fetchBatch(ctx, layout, s, nullptr, first + start, n, work.in);
     processBatch(ctx, layout.color, s, work.in, n, work);
-    for (int i = 0; i < n; ++i) assembleVertex(ctx, work.out[i]);
+    assembleVertices(ctx, work.out, n);
   }
 }
 
@@ -257,7 +257,7 @@ void drawIndexed(Context& ctx, const ArrayElementLayout& layout, const VertexSta
       fetchBatch(ctx, layout, s, missIndex, 0, misses, work.in);
       processBatch(ctx, layout.color, s, work.in, misses, work);
     }
-    for (int p = 0; p < n; ++p) assembleVertex(ctx, *positions[p]);
+    assembleVertices(ctx, positions, n);
     for (int m = 0; m < misses; ++m) {
       const int entry = missEntry[m];
       if (cache.pending[entry] != m) continue;  // a later miss of the batch took the entry
@@ -275,7 +275,7 @@ void processVertexRows(Context& ctx, const VertexRows& rows, int count) {
   BatchWork& work = batchWork();
   std::fill(work.out, work.out + count, PipelineVertex{});  // as processVertex's fresh vertex
   processBatch(ctx, true, s, rows, count, work);
-  for (int i = 0; i < count; ++i) assembleVertex(ctx, work.out[i]);
+  assembleVertices(ctx, work.out, count);
 }
 
 void drawArrayElementsBatched(Context& ctx, const ArrayElementLayout& layout, const int* indices,
