@@ -252,7 +252,8 @@ class QuadTexturing {
       return hn::Add(hn::Add(hn::Set(d, p.a0[v]), hn::Mul(hn::Set(d, p.dx[v]), x)),
                      hn::Set(d, p.dy[v] * y));
     };
-    for (int k = 0; k < 4; k += static_cast<int>(hn::Lanes(d))) {
+    alignas(32) double rhoSquared[level_of_detail::kQuads];
+    for (int k = 0; k < level_of_detail::kQuads; k += static_cast<int>(hn::Lanes(d))) {
       // The upper-left pixel centres of quads k, k + 1, ...: x = left + 0.5, left = bx + 2 k.
       alignas(32) double lefts[4];
       for (int i = 0; i < 4; ++i) lefts[i] = quadX0_ + 2 * (k + i);
@@ -271,11 +272,11 @@ class QuadTexturing {
       const auto alongX = hn::Add(hn::Mul(dudx, dudx), hn::Mul(dvdx, dvdx));
       const auto alongY = hn::Add(hn::Mul(dudy, dudy), hn::Mul(dvdy, dvdy));
       // std::max(alongX, alongY): alongY only when alongX < alongY (NaN keeps alongX).
-      hn::Store(hn::IfThenElse(hn::Lt(alongX, alongY), alongY, alongX), d, &rhoSquared_[row][k]);
+      hn::Store(hn::IfThenElse(hn::Lt(alongX, alongY), alongY, alongX), d, rhoSquared + k);
     }
     float lambda[level_of_detail::kQuads];
-    level_of_detail::levelsOfDetail(rhoSquared_[row], minLod_, maxLod_, lodBias_, lambda);
-    for (int k = 0; k < 4; ++k) choice_[row][k] = sampler_->choose(lambda[k]);
+    level_of_detail::levelsOfDetail(rhoSquared, minLod_, maxLod_, lodBias_, lambda);
+    for (int k = 0; k < level_of_detail::kQuads; ++k) choice_[row][k] = sampler_->choose(lambda[k]);
     rowKnown_[row] = true;
   }
 
@@ -290,7 +291,6 @@ class QuadTexturing {
   float minLod_ = 0.0f, maxLod_ = 0.0f, lodBias_ = 0.0f;  // textureLevelOfDetail's
   int baseWidth_ = 0, baseHeight_ = 0;
   std::array<bool, 5> rowKnown_;
-  alignas(32) double rhoSquared_[5][4];
   Sampler2D::LevelChoice choice_[5][4];
 };
 

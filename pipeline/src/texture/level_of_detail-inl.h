@@ -24,6 +24,7 @@
 
 #include <hwy/highway.h>
 
+#include <cstdint>
 #include <limits>
 
 #include "glass/geometry/portable_math.h"
@@ -81,10 +82,11 @@ inline void levelsOfDetail(const double* rhoSquared, float minLod, float maxLod,
     const auto belowMin = hn::Not(hn::Gt(value, hn::Set(f, minLod)));
     const auto clamped = hn::IfThenElse(hn::Gt(value, hn::Set(f, maxLod)), hn::Set(f, maxLod), value);
     hn::StoreU(hn::IfThenElse(belowMin, hn::Set(f, minLod), clamped), f, lambda + k);
-    alignas(64) double laneInSeries[kQuads];
-    hn::Store(hn::IfThenElseZero(inSeries, hn::Set(d, 1.0)), d, laneInSeries);
+    if (hn::AllTrue(d, inSeries)) continue;
+    uint8_t inSeriesBits[8] = {};
+    hn::StoreMaskBits(d, inSeries, inSeriesBits);
     for (int i = 0; i < lanes; ++i)
-      if (laneInSeries[i] == 0.0)
+      if (!(inSeriesBits[0] >> i & 1u))
         lambda[k + i] = levelOfDetailFromSquaredScale(rhoSquared[k + i], minLod, maxLod, bias);
   }
 }
