@@ -149,8 +149,8 @@ TEST_CASE("sampler_2d_matches_reference") {
 }
 
 // The row sampler of the fragment kernels (texture/row_sampler_2d-inl.h), compiled for every SIMD
-// target this processor runs, against Sampler2D pixel by pixel: rows of eight pixels whose 2x2
-// quads read different levels (lambdas across level boundaries, below the switch-over point,
+// target this processor runs, against Sampler2D pixel by pixel: rows of eight pixels whose four
+// 2x2 quads read different levels (lambdas across level boundaries, below the switch-over point,
 // NaN), with random coverage masks, coordinates in and far out of range, on textures that take
 // the vector route (power-of-two GL_REPEAT, LINEAR filters) and on ones that do not.
 TEST_CASE("row_sampler_2d_matches_sampler") {
@@ -187,7 +187,7 @@ TEST_CASE("row_sampler_2d_matches_sampler") {
       const Sampler2D sampler(*texture);
       for (int row = 0; row < 3000; ++row) {
         alignas(64) float s[kSampledRowPixels], tc[kSampledRowPixels];
-        Sampler2D::LevelChoice choice[kSampledRowPixels];
+        Sampler2D::LevelChoice quadChoice[kSampledRowPixels / 2];
         const float spread = row % 3 == 0 ? 2.0f : (row % 3 == 1 ? 40.0f : 3.0e6f);
         for (int i = 0; i < kSampledRowPixels; ++i) {
           s[i] = random.range(-spread, spread);
@@ -197,21 +197,24 @@ TEST_CASE("row_sampler_2d_matches_sampler") {
         for (int k = 0; k < kSampledRowPixels / 2; ++k) {
           const uint32_t pick = random.next() % 8;
           const float lambda = pick == 0 ? nan : (pick == 1 ? -1.0f : random.range(-0.5f, 9.0f));
-          choice[2 * k] = choice[2 * k + 1] = sampler.choose(lambda);
+          quadChoice[k] = sampler.choose(lambda);
         }
-        if (row % 5 == 0) choice[3] = sampler.chooseMagnified();  // a quad split, as never drawn
+        if (row % 5 == 0) quadChoice[1] = sampler.chooseMagnified();  // below the switch-over point
+        if (row % 7 == 0)  // one level pair for the whole row, as along most rows drawn
+          for (Sampler2D::LevelChoice& quad : quadChoice) quad = quadChoice[2];
         const unsigned mask = row % 4 == 0 ? 0xFFu : (random.next() & 0xFFu);
         alignas(64) float texel[4][kSampledRowPixels] = {};
-        glass::gl::sampleTextureRowWith(target, sampler, s, tc, choice, mask, texel);
+        glass::gl::sampleTextureRowWith(target, sampler, s, tc, quadChoice, mask, texel);
         for (int i = 0; i < kSampledRowPixels; ++i) {
           if ((mask >> i & 1u) == 0) continue;
           float expected[4];
-          sampler.sampleChosen(choice[i], s[i], tc[i], expected);
+          const Sampler2D::LevelChoice& choice = quadChoice[i / 2];
+          sampler.sampleChosen(choice, s[i], tc[i], expected);
           const float actual[4] = {texel[0][i], texel[1][i], texel[2][i], texel[3][i]};
           ++compared;
           if (!sameBits(expected, actual) && ++mismatches <= 10)
             MESSAGE("row sample differs: target ", t, " size ", c.width, "x", c.height, " s ", s[i],
-                    " t ", tc[i], " level ", choice[i].level1, ": ", expected[0], " vs ", actual[0]);
+                    " t ", tc[i], " level ", choice.level1, ": ", expected[0], " vs ", actual[0]);
         }
       }
     }

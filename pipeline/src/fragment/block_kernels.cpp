@@ -178,35 +178,33 @@ class QuadTexturing {
       lodBias_ = textureLodBias(*texture_, env_.lodBias);
       baseWidth_ = texture_->baseImage().width;
       baseHeight_ = texture_->baseImage().height;
+      for (Sampler2D::LevelChoice& quad : magnified_) quad = sampler_->chooseMagnified();
     }
     rowKnown_.fill(false);
   }
 
   bool active() const { return texture_ != nullptr; }  // the unit is on (spec 3.8.15)
 
-  // Replaces the colours of the pixels of `mask` in row y (pixel i at x0 + i) by their textured
-  // colours, with projected texture coordinates (s/q, t/q) = (sq[i], tq[i]).
-  void applyRow(int x0, int y, unsigned mask, const float* sq, const float* tq, float color[4][kSize]) {
-    Sampler2D::LevelChoice choice[kSize] = {};
-    // Pixels 2k and 2k + 1 share quad k (x0 is a multiple of 8, so quads do not straddle).
-    for (int k = 0; k < kSize / 2; ++k) {
-      if ((mask >> (2 * k) & 3u) == 0) continue;
-      choice[2 * k] = choice[2 * k + 1] = needsLambda_ ? levelsAt(x0 + 2 * k, y) : sampler_->chooseMagnified();
-    }
+  // Replaces the colours of the pixels of `mask` in the block's row y (pixel i in column i) by
+  // their textured colours, with projected texture coordinates (s/q, t/q) = (sq[i], tq[i]).
+  void applyRow(int y, unsigned mask, const float* sq, const float* tq, float color[4][kSize]) {
+    // Pixels 2k and 2k + 1 share quad k (blocks start at multiples of 8: quads do not straddle).
+    static_assert(row_sampler::kRowQuads == level_of_detail::kQuads);
+    const Sampler2D::LevelChoice* quadChoice = needsLambda_ ? rowLevels(y) : magnified_;
     alignas(64) float texel[4][kSize] = {};  // pixels outside mask stay 0
-    row_sampler::sampleRow(*sampler_, sq, tq, choice, mask, texel);
+    row_sampler::sampleRow(*sampler_, sq, tq, quadChoice, mask, texel);
     applyEnvironmentRow(texel, mask, color);
   }
 
  private:
   int quadRow(int y) const { return (height_ - 1 - y) >> 1; }
 
-  // The levels the pixels of the 2x2 quad of pixel (x, y) read, from the quad's lambda,
-  // computed with those of its quad row when a pixel of the row first needs them.
-  const Sampler2D::LevelChoice& levelsAt(int x, int y) {
-    const int row = quadRow(y) - firstQuadRow_, column = (x >> 1) & 3;
+  // The levels the four 2x2 quads of row y read, from their lambdas, computed for the whole
+  // quad row when a row of it first needs them.
+  const Sampler2D::LevelChoice* rowLevels(int y) {
+    const int row = quadRow(y) - firstQuadRow_;
     if (!rowKnown_[row]) chooseRowLevels(row);
-    return choice_[row][column];
+    return choice_[row];
   }
 
   // applyTextureEnvironment on the pixels of mask: REPLACE and MODULATE a row at a time (the
@@ -291,7 +289,9 @@ class QuadTexturing {
   float minLod_ = 0.0f, maxLod_ = 0.0f, lodBias_ = 0.0f;  // textureLevelOfDetail's
   int baseWidth_ = 0, baseHeight_ = 0;
   std::array<bool, 5> rowKnown_;
-  Sampler2D::LevelChoice choice_[5][4];
+  Sampler2D::LevelChoice choice_[5][level_of_detail::kQuads];
+  // Every quad's levels when no lambda is needed: the magnification filter's.
+  Sampler2D::LevelChoice magnified_[level_of_detail::kQuads] = {};
 };
 
 // Without texturing: nothing to do.
@@ -408,7 +408,7 @@ void shadeBlock(Context& ctx, const KernelPixelOps& ops, const raster::TriangleS
           alignas(64) float sq[kSize], tq[kSize];
           divideRow(varyings.row(4), varyings.row(6), sq);
           divideRow(varyings.row(5), varyings.row(6), tq);
-          texturing.applyRow(bx, by + j, mask, sq, tq, color);
+          texturing.applyRow(by + j, mask, sq, tq, color);
         }
       }
       if constexpr (kFog) {

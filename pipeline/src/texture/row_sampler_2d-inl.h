@@ -163,30 +163,37 @@ inline unsigned sampleLevelPair(const Sampler2D& sampler, const Sampler2D::Level
   return done;
 }
 
-// texel[c][i] = component c of sampler.sampleChosen(choice[i], s[i], t[i]) for each bit i of
-// mask. s, t and choice hold kRowPixels entries each (those of pixels outside mask are not used).
+// texel[c][i] = component c of sampler.sampleChosen(quadChoice[i / 2], s[i], t[i]) for each bit
+// i of mask: pixels 2k and 2k + 1 form the row's part of 2x2 quad k, which reads the levels
+// quadChoice[k] names (a lambda per quad). s and t hold kRowPixels entries each, quadChoice
+// kRowQuads (those of pixels outside mask are not used).
+constexpr int kRowQuads = kRowPixels / 2;
 inline void sampleRow(const Sampler2D& sampler, const float* s, const float* t,
-                      const Sampler2D::LevelChoice* choice, unsigned mask, float texel[4][kRowPixels]) {
-  // The pixels of one level pair at a time (a lambda per 2x2 quad: most rows read one pair).
+                      const Sampler2D::LevelChoice* quadChoice, unsigned mask, float texel[4][kRowPixels]) {
+  // The quads of one level pair at a time (most rows read one pair).
   alignas(64) float weight2[kRowPixels] = {};
   unsigned done = 0;
-  unsigned rest = mask;
-  while (rest != 0) {
-    const Sampler2D::LevelChoice& pair = choice[std::countr_zero(rest)];
-    unsigned lanes = 0, mixedLanes = 0;
-    for (unsigned r = rest; r != 0; r &= r - 1) {
-      const int i = std::countr_zero(r);
-      if (choice[i].level1 != pair.level1 || choice[i].level2 != pair.level2 || choice[i].linear != pair.linear)
-        continue;
-      lanes |= 1u << i;
-      if (choice[i].mixes) mixedLanes |= 1u << i;
-      weight2[i] = choice[i].weight2;
+  unsigned restQuads = 0;  // bit k: quad k has a pixel in mask not yet grouped
+  for (int k = 0; k < kRowQuads; ++k)
+    if ((mask >> (2 * k) & 3u) != 0) restQuads |= 1u << k;
+  while (restQuads != 0) {
+    const Sampler2D::LevelChoice& pair = quadChoice[std::countr_zero(restQuads)];
+    unsigned lanes = 0, mixedLanes = 0, pairQuads = 0;
+    for (unsigned r = restQuads; r != 0; r &= r - 1) {
+      const int k = std::countr_zero(r);
+      const Sampler2D::LevelChoice& quad = quadChoice[k];
+      if (quad.level1 != pair.level1 || quad.level2 != pair.level2 || quad.linear != pair.linear) continue;
+      pairQuads |= 1u << k;
+      const unsigned pixels = (3u << (2 * k)) & mask;
+      lanes |= pixels;
+      if (quad.mixes) mixedLanes |= pixels;
+      weight2[2 * k] = weight2[2 * k + 1] = quad.weight2;
     }
-    rest &= ~lanes;
+    restQuads &= ~pairQuads;
     const bool vectorRoute = pair.linear && sampler.level(pair.level1).repeatsByMask &&
                              sampler.level(pair.level2).repeatsByMask;
     if (!vectorRoute) continue;
-    if (done == 0 && rest == 0) {  // one pair for the whole row (the usual case)
+    if (done == 0 && restQuads == 0) {  // one pair for the whole row (the usual case)
       done = sampleLevelPair(sampler, pair, s, t, weight2, lanes, mixedLanes, texel);
       break;
     }
@@ -201,7 +208,7 @@ inline void sampleRow(const Sampler2D& sampler, const float* s, const float* t,
   for (unsigned r = mask & ~done; r != 0; r &= r - 1) {
     const int i = std::countr_zero(r);
     float one[4];
-    sampler.sampleChosen(choice[i], s[i], t[i], one);
+    sampler.sampleChosen(quadChoice[i / 2], s[i], t[i], one);
     for (int c = 0; c < 4; ++c) texel[c][i] = one[c];
   }
 }

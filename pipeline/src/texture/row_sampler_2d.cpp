@@ -13,10 +13,10 @@ namespace glass::gl {
 namespace HWY_NAMESPACE {
 
 void SampleTextureRow(const Sampler2D& sampler, const float* s, const float* t,
-                      const Sampler2D::LevelChoice* choice, unsigned mask,
+                      const Sampler2D::LevelChoice* quadChoice, unsigned mask,
                       float texel[4][kSampledRowPixels]) {
   static_assert(row_sampler::kRowPixels == kSampledRowPixels);
-  row_sampler::sampleRow(sampler, s, t, choice, mask, texel);
+  row_sampler::sampleRow(sampler, s, t, quadChoice, mask, texel);
 }
 
 }  // namespace HWY_NAMESPACE
@@ -30,9 +30,9 @@ constexpr SimdFunctions<decltype(&HWY_STATIC_DISPATCH(SampleTextureRow))> kSampl
     GLASS_SIMD_FUNCTIONS(SampleTextureRow);
 
 void sampleTextureRowWith(SimdTarget target, const Sampler2D& sampler, const float* s, const float* t,
-                          const Sampler2D::LevelChoice* choice, unsigned mask,
+                          const Sampler2D::LevelChoice* quadChoice, unsigned mask,
                           float texel[4][kSampledRowPixels]) {
-  kSampleTextureRow[static_cast<int>(target)](sampler, s, t, choice, mask, texel);
+  kSampleTextureRow[static_cast<int>(target)](sampler, s, t, quadChoice, mask, texel);
 }
 
 }  // namespace glass::gl

@@ -10,11 +10,11 @@ namespace glass::gl {
 
 constexpr int kSampledRowPixels = 8;
 
-// texel[c][i] = component c of sampler.sampleChosen(choice[i], s[i], t[i], ...) for each bit i
-// of mask, computed by the copy of the row sampler compiled for `target` (which must run here:
-// simdTargetRuns).
+// texel[c][i] = component c of sampler.sampleChosen(quadChoice[i / 2], s[i], t[i], ...) for each
+// bit i of mask (pixels 2k and 2k + 1 share quad k's levels), computed by the copy of the row
+// sampler compiled for `target` (which must run here: simdTargetRuns).
 void sampleTextureRowWith(SimdTarget target, const Sampler2D& sampler, const float* s, const float* t,
-                          const Sampler2D::LevelChoice* choice, unsigned mask,
+                          const Sampler2D::LevelChoice* quadChoice, unsigned mask,
                           float texel[4][kSampledRowPixels]);
 
 }  // namespace glass::gl
