@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "pipeline_test_support.h"
 
@@ -318,4 +319,49 @@ TEST_CASE("pipeline fragments: colour masks, and glClear inside the scissor box"
   glClearDepth(1.0);
   glClear(GL_DEPTH_BUFFER_BIT);
   CHECK(depthAt(1, 1) == doctest::Approx(0.25f));
+}
+
+// A textured draw prepares its texture's lookups once (fragment/kernel_texture.h); the next draw
+// must see the texture as it is then: a new image of another size (new texel storage), then new
+// texels in place, on the same texture object, with no glFinish between the draws.
+TEST_CASE("pipeline fragments: each textured draw samples the texture as it is at that draw") {
+  ScopedContext context(64, 64);
+  glass::test::pixelProjection(64, 64);
+  GLuint name = 0;
+  glGenTextures(1, &name);
+  glBindTexture(GL_TEXTURE_2D, name);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
+  glEnable(GL_TEXTURE_2D);
+  auto solidImage = [](int size, Rgba colour) {
+    const std::vector<Rgba> texels(static_cast<size_t>(size) * size, colour);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, size, size, 0, GL_RGBA, GL_UNSIGNED_BYTE, texels.data());
+  };
+  auto texturedRectangle = [](float x0, float x1) {
+    glBegin(GL_QUADS);
+    glTexCoord2f(0.0f, 0.0f);
+    glVertex2f(x0, 0.0f);
+    glTexCoord2f(1.0f, 0.0f);
+    glVertex2f(x1, 0.0f);
+    glTexCoord2f(1.0f, 1.0f);
+    glVertex2f(x1, 64.0f);
+    glTexCoord2f(0.0f, 1.0f);
+    glVertex2f(x0, 64.0f);
+    glEnd();
+  };
+  const Rgba red{200, 10, 20, 255}, green{15, 210, 30, 255}, blue{5, 25, 220, 255};
+  solidImage(2, red);
+  texturedRectangle(0.0f, 24.0f);
+  solidImage(16, green);
+  texturedRectangle(24.0f, 40.0f);
+  const std::vector<Rgba> blueTexels(16 * 16, blue);
+  glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 16, 16, GL_RGBA, GL_UNSIGNED_BYTE, blueTexels.data());
+  texturedRectangle(40.0f, 64.0f);
+  for (int y : {0, 31, 63}) {
+    CHECK(pixelAt(10, y) == red);
+    CHECK(pixelAt(30, y) == green);
+    CHECK(pixelAt(50, y) == blue);
+  }
+  glDeleteTextures(1, &name);
 }

@@ -229,6 +229,12 @@ void texturing(const FrameRecorder& frame, GLuint textures[2]) {
   const GLenum envModes[] = {GL_MODULATE, GL_DECAL, GL_REPLACE, GL_BLEND};
   for (int i = 0; i < 12; ++i) {
     glBindTexture(GL_TEXTURE_2D, textures[i % 3 == 2 ? 1 : 0]);
+    // Now and then the image is specified anew, at another size (new texel storage).
+    if (i % 4 == 3) {
+      const int size = i % 8 == 3 ? 16 : 8;
+      std::vector<uint8_t> grey(static_cast<size_t>(size) * size * 4, static_cast<uint8_t>(40 + 9 * i));
+      glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, size, size, 0, GL_RGBA, GL_UNSIGNED_BYTE, grey.data());
+    }
     fillTexture(i);  // changes the texture object in place
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, i % 2 ? GL_LINEAR : GL_NEAREST);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, i % 4 < 2 ? GL_REPEAT : GL_CLAMP);

@@ -154,45 +154,34 @@ void divideRow(const float* numerator, const float* denominator, float quotient[
     hn::Store(hn::Div(hn::Load(f, numerator + i), hn::Load(f, denominator + i)), f, quotient + i);
 }
 
-// The per-block constants of texturing by singleTexture2D (texture_hooks.h), and one lambda per
-// 2x2 quad. A block's rows span at most five quad rows (pixelQuadOf pairs rows from the top of
+// Texturing by singleTexture2D (texture_hooks.h) for one block, with what the draw prepared
+// (KernelTexture), and one lambda per 2x2 quad. A block's rows span at most five quad rows (pixelQuadOf pairs rows from the top of
 // the window, which an odd window height puts out of step with the blocks), each of four quads.
 // The first pixel of a quad row that needs a lambda computes rho^2 and lambda for the row's four
 // quads at once (textureLevelOfDetail's operations, one quad per lane); a quad's mipmap levels
 // follow from it when one of its pixels first needs them.
 class QuadTexturing {
  public:
-  QuadTexturing(const Context& ctx, const raster::TriangleSetup& setup, int bx, int by)
+  QuadTexturing(const Context& ctx, const KernelTexture& texture, const raster::TriangleSetup& setup,
+                int bx, int by)
       : planes_(setup.planes),
-        texture_(ctx.texture.units[0].activeTexture()),
-        env_(ctx.texture.units[0].env),
+        t_(texture),
         height_(ctx.framebuffer.height()),
         firstQuadRow_(quadRow(by + kSize - 1)),
         quadX0_(bx + 0.5) {
-    if (texture_ != nullptr) {
-      sampler_.emplace(*texture_);
-      base_ = texture_->baseImage().base;
-      needsLambda_ = needsLevelOfDetail(*texture_);
-      minLod_ = texture_->params.minLod;
-      maxLod_ = texture_->params.maxLod;
-      lodBias_ = textureLodBias(*texture_, env_.lodBias);
-      baseWidth_ = texture_->baseImage().width;
-      baseHeight_ = texture_->baseImage().height;
-      for (Sampler2D::LevelChoice& quad : magnified_) quad = sampler_->chooseMagnified();
-    }
     rowKnown_.fill(false);
   }
 
-  bool active() const { return texture_ != nullptr; }  // the unit is on (spec 3.8.15)
+  bool active() const { return t_.texture != nullptr; }  // the unit is on (spec 3.8.15)
 
   // Replaces the colours of the pixels of `mask` in the block's row y (pixel i in column i) by
   // their textured colours, with projected texture coordinates (s/q, t/q) = (sq[i], tq[i]).
   void applyRow(int y, unsigned mask, const float* sq, const float* tq, float color[4][kSize]) {
     // Pixels 2k and 2k + 1 share quad k (blocks start at multiples of 8: quads do not straddle).
     static_assert(row_sampler::kRowQuads == level_of_detail::kQuads);
-    const Sampler2D::LevelChoice* quadChoice = needsLambda_ ? rowLevels(y) : magnified_;
+    const Sampler2D::LevelChoice* quadChoice = t_.needsLambda ? rowLevels(y) : t_.magnified;
     alignas(64) float texel[4][kSize] = {};  // pixels outside mask stay 0
-    row_sampler::sampleRow(*sampler_, sq, tq, quadChoice, mask, texel);
+    row_sampler::sampleRow(*t_.sampler, sq, tq, quadChoice, mask, texel);
     applyEnvironmentRow(texel, mask, color);
   }
 
@@ -210,14 +199,15 @@ class QuadTexturing {
   // applyTextureEnvironment on the pixels of mask: REPLACE and MODULATE a row at a time (the
   // same single operation per component), the other modes pixel by pixel.
   void applyEnvironmentRow(const float texel[4][kSize], unsigned mask, float color[4][kSize]) const {
-    const bool hasColor = baseFormatHasColor(base_), hasAlpha = baseFormatHasAlpha(base_);
-    if (env_.mode == GL_REPLACE || env_.mode == GL_MODULATE) {
+    const bool hasColor = baseFormatHasColor(t_.base), hasAlpha = baseFormatHasAlpha(t_.base);
+    const TextureEnvironment& env = *t_.env;
+    if (env.mode == GL_REPLACE || env.mode == GL_MODULATE) {
       const RowFloats f;
       for (int c = 0; c < 4; ++c) {
         if (!(c < 3 ? hasColor : hasAlpha)) continue;
         for (int i = 0; i < kSize; i += static_cast<int>(hn::Lanes(f))) {
           const auto t = hn::Load(f, texel[c] + i);
-          hn::Store(env_.mode == GL_REPLACE ? t : hn::Mul(hn::Load(f, color[c] + i), t), f, color[c] + i);
+          hn::Store(env.mode == GL_REPLACE ? t : hn::Mul(hn::Load(f, color[c] + i), t), f, color[c] + i);
         }
       }
       return;
@@ -226,7 +216,7 @@ class QuadTexturing {
       const int i = std::countr_zero(rest);
       const float pixelTexel[4] = {texel[0][i], texel[1][i], texel[2][i], texel[3][i]};
       float pixel[4] = {color[0][i], color[1][i], color[2][i], color[3][i]};
-      applyTextureEnvironment(env_.mode, base_, pixelTexel, env_.color, pixel);
+      applyTextureEnvironment(env.mode, t_.base, pixelTexel, env.color, pixel);
       for (int c = 0; c < 4; ++c) color[c][i] = pixel[c];
     }
   }
@@ -244,8 +234,8 @@ class QuadTexturing {
     const double y = top + 0.5;
     const auto bx = hn::Set(d, p.dx[q]), by = hn::Set(d, p.dy[q]);
     const auto one = hn::Set(d, 1.0);
-    const auto width = hn::Set(d, static_cast<double>(baseWidth_));
-    const auto height = hn::Set(d, static_cast<double>(baseHeight_));
+    const auto width = hn::Set(d, static_cast<double>(t_.baseWidth));
+    const auto height = hn::Set(d, static_cast<double>(t_.baseHeight));
     auto plane = [&](int v, auto x) {  // a0 + dx x + dy y, left to right
       return hn::Add(hn::Add(hn::Set(d, p.a0[v]), hn::Mul(hn::Set(d, p.dx[v]), x)),
                      hn::Set(d, p.dy[v] * y));
@@ -273,30 +263,22 @@ class QuadTexturing {
       hn::Store(hn::IfThenElse(hn::Lt(alongX, alongY), alongY, alongX), d, rhoSquared + k);
     }
     float lambda[level_of_detail::kQuads];
-    level_of_detail::levelsOfDetail(rhoSquared, minLod_, maxLod_, lodBias_, lambda);
-    for (int k = 0; k < level_of_detail::kQuads; ++k) choice_[row][k] = sampler_->choose(lambda[k]);
+    level_of_detail::levelsOfDetail(rhoSquared, t_.minLod, t_.maxLod, t_.lodBias, lambda);
+    for (int k = 0; k < level_of_detail::kQuads; ++k) choice_[row][k] = t_.sampler->choose(lambda[k]);
     rowKnown_[row] = true;
   }
 
   const raster::AttributePlanes& planes_;
-  const TextureObject* texture_;
-  const TextureEnvironment& env_;
-  std::optional<Sampler2D> sampler_;  // texture_'s lookups, prepared once per block
-  BaseFormat base_ = BaseFormat::RGBA;
+  const KernelTexture& t_;  // the draw's texture
   int height_, firstQuadRow_;
   double quadX0_;
-  bool needsLambda_ = false;
-  float minLod_ = 0.0f, maxLod_ = 0.0f, lodBias_ = 0.0f;  // textureLevelOfDetail's
-  int baseWidth_ = 0, baseHeight_ = 0;
   std::array<bool, 5> rowKnown_;
   Sampler2D::LevelChoice choice_[5][level_of_detail::kQuads];
-  // Every quad's levels when no lambda is needed: the magnification filter's.
-  Sampler2D::LevelChoice magnified_[level_of_detail::kQuads] = {};
 };
 
 // Without texturing: nothing to do.
 struct NoTexturing {
-  NoTexturing(const Context&, const raster::TriangleSetup&, int, int) {}
+  NoTexturing(const Context&, const KernelTexture&, const raster::TriangleSetup&, int, int) {}
 };
 
 // The varyings a kernel interpolates and what it does for texturing.
@@ -373,8 +355,8 @@ void applyFogRow(const FogState& fog, const float* c, unsigned mask, float color
 }
 
 template <bool kWriteDepth, bool kWriteColor, KernelTexturing kTexturing, bool kFog>
-void shadeBlock(Context& ctx, const KernelPixelOps& ops, const raster::TriangleSetup& setup,
-                const raster::CoveredBlock& block) {
+void shadeBlock(Context& ctx, const KernelPixelOps& ops, const KernelTexture& texture,
+                const raster::TriangleSetup& setup, const raster::CoveredBlock& block) {
   raster::Framebuffer& fb = ctx.framebuffer;
   const int bx = block.bx, by = block.by;
   uint8_t rowMask[kSize];  // the pixels to shade
@@ -393,7 +375,7 @@ void shadeBlock(Context& ctx, const KernelPixelOps& ops, const raster::TriangleS
     for (const uint8_t mask : rowMask) any |= mask;
     if (any == 0) return;
     typename TexturingStage<kTexturing>::Varyings varyings(setup.planes, block);
-    [[maybe_unused]] typename TexturingStage<kTexturing>::Texturing texturing(ctx, setup, bx, by);
+    [[maybe_unused]] typename TexturingStage<kTexturing>::Texturing texturing(ctx, texture, setup, bx, by);
     using FogVaryings = BlockVaryings<varying::kFogCoordinate>;
     std::optional<FogVaryings> fogCoordinate;
     if constexpr (kFog) fogCoordinate.emplace(setup.planes, block);

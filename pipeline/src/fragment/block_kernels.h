@@ -16,6 +16,7 @@
 #include <cstdint>
 
 #include "fragment/blending.h"
+#include "fragment/kernel_texture.h"
 #include "fragment/stencil_depth_tests.h"
 #include "glass/raster/triangle_block.h"
 
@@ -57,9 +58,10 @@ struct KernelPixelOps {
   bool operator==(const KernelPixelOps&) const = default;
 };
 
-// Shades and writes the pixels of one covered block of a triangle.
-using BlockKernel = void (*)(Context& ctx, const KernelPixelOps& ops, const raster::TriangleSetup& setup,
-                             const raster::CoveredBlock& block);
+// Shades and writes the pixels of one covered block of a triangle (`texture` is read by the
+// kernels that texture).
+using BlockKernel = void (*)(Context& ctx, const KernelPixelOps& ops, const KernelTexture& texture,
+                             const raster::TriangleSetup& setup, const raster::CoveredBlock& block);
 
 // The kernel compiled for the key.
 BlockKernel blockKernelFor(const BlockKernelKey& key);

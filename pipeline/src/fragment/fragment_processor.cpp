@@ -96,6 +96,7 @@ void FragmentProcessor::prepare(Context& ctx, bool phong) {
   pixelOps_.tests = s_.tests;
   pixelOps_.blend = s_.blend;
   pixelOps_.blendSettings = s_.blendSettings;
+  if (kernel_ != nullptr && s_.texturing) kernelTexture_.prepare(ctx);
   // With the stencil test on, the kernel makes the depth test itself (block_kernels.h).
   kernelNeedsEarlyDepth_ = s_.tests.depthTest && s_.tests.depthFunc != GL_ALWAYS && !s_.tests.stencilTest;
 }
@@ -122,7 +123,7 @@ BlockKernel FragmentProcessor::chooseKernel() const {
 void FragmentProcessor::processTriangleBlock(const raster::TriangleSetup& setup,
                                              const raster::CoveredBlock& block) {
   if (kernel_ != nullptr && (!kernelNeedsEarlyDepth_ || setup.earlyDepth.buffer != nullptr)) {
-    kernel_(*ctx_, pixelOps_, setup, block);
+    kernel_(*ctx_, pixelOps_, kernelTexture_, setup, block);
   } else {
     raster::FragmentSink::processTriangleBlock(setup, block);
   }

@@ -98,6 +98,7 @@ class FragmentProcessor final : public raster::FragmentSink {
   Settings s_;
   BlockKernel kernel_ = nullptr;
   KernelPixelOps pixelOps_;  // what kernel_ does with the pixels it shades, from s_
+  KernelTexture kernelTexture_;  // the texture of a kernel that textures
   // The kernel relies on the triangle walk's early depth test (the depth test is on and not
   // GL_ALWAYS); a triangle set up without it goes the reference way.
   bool kernelNeedsEarlyDepth_ = false;
