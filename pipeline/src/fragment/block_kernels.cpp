@@ -155,21 +155,24 @@ void divideRow(const float* numerator, const float* denominator, float quotient[
 }
 
 // Texturing by singleTexture2D (texture_hooks.h) for one block, with what the draw prepared
-// (KernelTexture), and one lambda per 2x2 quad. A block's rows span at most five quad rows (pixelQuadOf pairs rows from the top of
-// the window, which an odd window height puts out of step with the blocks), each of four quads.
-// The first pixel of a quad row that needs a lambda computes rho^2 and lambda for the row's four
-// quads at once (textureLevelOfDetail's operations, one quad per lane); a quad's mipmap levels
-// follow from it when one of its pixels first needs them.
+// (KernelTexture), and one lambda per 2x2 quad. A block's rows span at most five quad rows
+// (pixelQuadOf pairs rows from the top of the window, which an odd window height puts out of step
+// with the blocks), each of four quads. When lambda is needed, the quads of every quad row with
+// pixels to shade get their rho^2, lambda and levels first, all rows together
+// (textureLevelOfDetail's operations, one quad per lane): each row's chain of dependent
+// operations (two divisions, the log2 series) then overlaps the others' instead of waiting
+// between the rows' texture lookups.
 class QuadTexturing {
  public:
+  // rowMask: the pixels of the block that will be shaded (applyRow reads no other row).
   QuadTexturing(const Context& ctx, const KernelTexture& texture, const raster::TriangleSetup& setup,
-                int bx, int by)
+                int bx, int by, const uint8_t rowMask[kSize])
       : planes_(setup.planes),
         t_(texture),
         height_(ctx.framebuffer.height()),
         firstQuadRow_(quadRow(by + kSize - 1)),
         quadX0_(bx + 0.5) {
-    rowKnown_.fill(false);
+    if (active() && t_.needsLambda) chooseLevels(by, rowMask);
   }
 
   bool active() const { return t_.texture != nullptr; }  // the unit is on (spec 3.8.15)
@@ -188,13 +191,8 @@ class QuadTexturing {
  private:
   int quadRow(int y) const { return (height_ - 1 - y) >> 1; }
 
-  // The levels the four 2x2 quads of row y read, from their lambdas, computed for the whole
-  // quad row when a row of it first needs them.
-  const Sampler2D::LevelChoice* rowLevels(int y) {
-    const int row = quadRow(y) - firstQuadRow_;
-    if (!rowKnown_[row]) chooseRowLevels(row);
-    return choice_[row];
-  }
+  // The levels the four 2x2 quads of row y read, from their lambdas.
+  const Sampler2D::LevelChoice* rowLevels(int y) const { return choice_[quadRow(y) - firstQuadRow_]; }
 
   // applyTextureEnvironment on the pixels of mask: REPLACE and MODULATE a row at a time (the
   // same single operation per component), the other modes pixel by pixel.
@@ -221,12 +219,30 @@ class QuadTexturing {
     }
   }
 
-  // The levels of the four quads of quad row `row`: rho^2 as quadLevelOfDetail computes it for a
-  // 2D texture (quadTexCoordDifferences and textureScaleFactorSquared of texture_lod.h), the same
-  // operations in the same order, one quad per lane; then lambda (textureLevelOfDetail's, also
-  // in lanes) and the choice of levels. All four at once, well before applyRow copies them: a
-  // choice read right after its fields were written would wait for the stores.
-  void chooseRowLevels(int row) {
+  // The levels of the four quads of each quad row that holds a row of rowMask: rho^2, then
+  // lambda (textureLevelOfDetail's, in lanes), then the choice of levels, each step for all those
+  // rows before the next, well before applyRow reads them (a choice read right after its fields
+  // were written would wait for the stores).
+  void chooseLevels(int by, const uint8_t rowMask[kSize]) {
+    constexpr int kQuadRows = 5;
+    bool needed[kQuadRows] = {};
+    for (int j = 0; j < kSize; ++j)
+      if (rowMask[j] != 0) needed[quadRow(by + j) - firstQuadRow_] = true;
+    alignas(32) double rhoSquared[kQuadRows][level_of_detail::kQuads];
+    for (int row = 0; row < kQuadRows; ++row)
+      if (needed[row]) scaleFactorsSquared(row, rhoSquared[row]);
+    float lambda[kQuadRows][level_of_detail::kQuads];
+    for (int row = 0; row < kQuadRows; ++row)
+      if (needed[row]) level_of_detail::levelsOfDetail(rhoSquared[row], t_.minLod, t_.maxLod, t_.lodBias, lambda[row]);
+    for (int row = 0; row < kQuadRows; ++row)
+      if (needed[row])
+        for (int k = 0; k < level_of_detail::kQuads; ++k) choice_[row][k] = t_.sampler->choose(lambda[row][k]);
+  }
+
+  // rho^2 of the four quads of quad row `row` as quadLevelOfDetail computes it for a 2D texture
+  // (quadTexCoordDifferences and textureScaleFactorSquared of texture_lod.h), the same
+  // operations in the same order, one quad per lane.
+  void scaleFactorsSquared(int row, double rhoSquared[level_of_detail::kQuads]) const {
     const hn::CappedTag<double, 4> d;
     constexpr int s = varying::kTexCoord, t = varying::kTexCoord + 1, q = varying::kTexCoord + 3;
     const raster::AttributePlanes& p = planes_;
@@ -240,7 +256,6 @@ class QuadTexturing {
       return hn::Add(hn::Add(hn::Set(d, p.a0[v]), hn::Mul(hn::Set(d, p.dx[v]), x)),
                      hn::Set(d, p.dy[v] * y));
     };
-    alignas(32) double rhoSquared[level_of_detail::kQuads];
     for (int k = 0; k < level_of_detail::kQuads; k += static_cast<int>(hn::Lanes(d))) {
       // The upper-left pixel centres of quads k, k + 1, ...: x = left + 0.5, left = bx + 2 k.
       alignas(32) double lefts[4];
@@ -262,23 +277,18 @@ class QuadTexturing {
       // std::max(alongX, alongY): alongY only when alongX < alongY (NaN keeps alongX).
       hn::Store(hn::IfThenElse(hn::Lt(alongX, alongY), alongY, alongX), d, rhoSquared + k);
     }
-    float lambda[level_of_detail::kQuads];
-    level_of_detail::levelsOfDetail(rhoSquared, t_.minLod, t_.maxLod, t_.lodBias, lambda);
-    for (int k = 0; k < level_of_detail::kQuads; ++k) choice_[row][k] = t_.sampler->choose(lambda[k]);
-    rowKnown_[row] = true;
   }
 
   const raster::AttributePlanes& planes_;
   const KernelTexture& t_;  // the draw's texture
   int height_, firstQuadRow_;
   double quadX0_;
-  std::array<bool, 5> rowKnown_;
   Sampler2D::LevelChoice choice_[5][level_of_detail::kQuads];
 };
 
 // Without texturing: nothing to do.
 struct NoTexturing {
-  NoTexturing(const Context&, const KernelTexture&, const raster::TriangleSetup&, int, int) {}
+  NoTexturing(const Context&, const KernelTexture&, const raster::TriangleSetup&, int, int, const uint8_t*) {}
 };
 
 // The varyings a kernel interpolates and what it does for texturing.
@@ -375,7 +385,7 @@ void shadeBlock(Context& ctx, const KernelPixelOps& ops, const KernelTexture& te
     for (const uint8_t mask : rowMask) any |= mask;
     if (any == 0) return;
     typename TexturingStage<kTexturing>::Varyings varyings(setup.planes, block);
-    [[maybe_unused]] typename TexturingStage<kTexturing>::Texturing texturing(ctx, texture, setup, bx, by);
+    [[maybe_unused]] typename TexturingStage<kTexturing>::Texturing texturing(ctx, texture, setup, bx, by, rowMask);
     using FogVaryings = BlockVaryings<varying::kFogCoordinate>;
     std::optional<FogVaryings> fogCoordinate;
     if constexpr (kFog) fogCoordinate.emplace(setup.planes, block);
