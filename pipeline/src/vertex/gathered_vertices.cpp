@@ -14,6 +14,7 @@ void startGathering(Context& ctx) {
   PrimitiveAssembly& pa = ctx.assembly;
   pa.gatheredCount = 0;
   pa.gathering = fastPathsEnabled() && s.trace == nullptr;
+  if (pa.gathering) pa.gatheredPrimitiveId = newGatheredPrimitiveId();
 }
 
 bool gatherVertex(Context& ctx, const float object[4]) {
@@ -47,7 +48,7 @@ void flushGatheredVertices(Context& ctx) {
   const int count = pa.gatheredCount;
   if (count == 0) return;
   pa.gatheredCount = 0;
-  processVertexRows(ctx, *pa.gathered, count);
+  processVertexRows(ctx, *pa.gathered, count, pa.gatheredPrimitiveId);
 }
 
 }  // namespace glass::gl

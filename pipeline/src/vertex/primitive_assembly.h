@@ -6,6 +6,7 @@
 
 #include <GL/gl.h>
 
+#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -28,6 +29,7 @@ struct PrimitiveAssembly {
   // first gathered vertex, kept from then on).
   bool gathering = false;
   int gatheredCount = 0;
+  uint64_t gatheredPrimitiveId = 0;  // newGatheredPrimitiveId of this glBegin (vertex_batch.h)
   std::shared_ptr<struct VertexRows> gathered;
 };
 

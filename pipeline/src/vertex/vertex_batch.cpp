@@ -1,6 +1,7 @@
 #include "vertex/vertex_batch.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <memory>
@@ -37,6 +38,10 @@ struct BatchWork {
   LightingInput lighting;  // V and n of each vertex
   LitColorRows front, back;
   PipelineVertex out[K];
+  // out[0 .. clearedCount) hold zero wherever processBatch does not write for the setup of the
+  // gathering primitive `clearedFor` (0: none): see processVertexRows.
+  uint64_t clearedFor = 0;
+  int clearedCount = 0;
   PostTransformCache cache;
 };
 
@@ -269,11 +274,29 @@ void drawIndexed(Context& ctx, const ArrayElementLayout& layout, const VertexSta
 
 }  // namespace
 
-void processVertexRows(Context& ctx, const VertexRows& rows, int count) {
+uint64_t newGatheredPrimitiveId() {
+  static std::atomic<uint64_t> lastId{0};
+  return lastId.fetch_add(1, std::memory_order_relaxed) + 1;
+}
+
+void processVertexRows(Context& ctx, const VertexRows& rows, int count, uint64_t primitiveId) {
   if (count <= 0) return;
   const VertexStageSetup& s = ctx.draw->vertexSetup();
   BatchWork& work = batchWork();
-  std::fill(work.out, work.out + count, PipelineVertex{});  // as processVertex's fresh vertex
+  // The slots processBatch does not write must read as zero, as in processVertex's fresh vertex.
+  // Which slots it writes depends only on the setup, which stays the same from glBegin to glEnd,
+  // so an output vertex cleared for an earlier batch of the same primitive is still zero there:
+  // only outputs this primitive has not used yet are cleared (a long glBegin/glEnd clears 64
+  // vertices once instead of once per batch). The id is unique across contexts and threads, so
+  // outputs another draw on this thread wrote in between are cleared again.
+  if (work.clearedFor != primitiveId) {
+    work.clearedFor = primitiveId;
+    work.clearedCount = 0;
+  }
+  if (work.clearedCount < count) {
+    std::fill(work.out + work.clearedCount, work.out + count, PipelineVertex{});
+    work.clearedCount = count;
+  }
   processBatch(ctx, true, s, rows, count, work);
   assembleVertices(ctx, work.out, count);
 }
@@ -285,6 +308,7 @@ void drawArrayElementsBatched(Context& ctx, const ArrayElementLayout& layout, co
   BatchWork& work = batchWork();
   // Slots a draw does not write read as zero, as in processVertex's fresh vertex.
   std::fill(std::begin(work.out), std::end(work.out), PipelineVertex{});
+  work.clearedFor = 0;  // this draw's setup may write slots a gathering primitive does not
   if (indices != nullptr) {
     drawIndexed(ctx, layout, s, indices, count, work);
   } else {

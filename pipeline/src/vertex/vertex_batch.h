@@ -12,6 +12,8 @@
 // and tests/image/fast_paths.cmake compares the two on every image test.
 #pragma once
 
+#include <cstdint>
+
 #include "lighting/batched_lighting.h"
 #include "texture/texture_units.h"
 #include "vertex/array_draw.h"
@@ -43,10 +45,15 @@ struct VertexRows {
 void drawArrayElementsBatched(Context& ctx, const ArrayElementLayout& layout, const int* indices,
                               int first, int count);
 
+// A new id for one gathering glBegin/glEnd (never 0, never repeated, whatever the context or
+// thread), for processVertexRows.
+uint64_t newGatheredPrimitiveId();
+
 // The vertex stage for vertices 0 .. count - 1 of `rows` (count <= kVertexBatch), between
 // beginCommand and endCommand, handing them to primitive assembly in order: immediate mode's
 // gathered vertices (gathered_vertices.h). Colour material takes each vertex's colour. The
-// current attributes are left as they were.
-void processVertexRows(Context& ctx, const VertexRows& rows, int count);
+// current attributes are left as they were. primitiveId (newGatheredPrimitiveId, taken at
+// glBegin) names the primitive the rows belong to: its batches share output vertices.
+void processVertexRows(Context& ctx, const VertexRows& rows, int count, uint64_t primitiveId);
 
 }  // namespace glass::gl
