@@ -12,6 +12,7 @@
 #include "lighting/color_material.h"
 #include "lighting/lighting_equation.h"
 #include "primitive/queued_drawing.h"
+#include "vertex/gathered_vertices.h"
 
 namespace glass::gl {
 
@@ -134,6 +135,7 @@ void lightFragment(const Context& ctx, const float eyePosition[3], const float e
 
 void onCurrentColorChanged(Context& ctx) {
   if (!ctx.lighting.colorMaterial.enabled) return;
+  if (deferColorMaterial(ctx)) return;  // a gathering glBegin/glEnd applies it at glEnd
   beforeColorMaterialChange(ctx);  // queued per-fragment lighting may be reading the material
   applyColorMaterial(ctx.lighting, ctx.current.color);
 }

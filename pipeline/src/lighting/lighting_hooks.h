@@ -41,7 +41,9 @@ void lightVertex(const Context& ctx, const float eyePosition[4], const float eye
 void lightFragment(const Context& ctx, const float eyePosition[3], const float eyeNormal[3],
                    bool frontFacing, float color[4], float secondary[4]);
 
-// Called by every glColor* after the current colour changed (glColorMaterial tracking).
+// Called by every glColor* after the current colour changed (glColorMaterial tracking). Inside a
+// gathering glBegin/glEnd the tracked parameters are updated once, at glEnd
+// (vertex/gathered_vertices.h, deferColorMaterial).
 void onCurrentColorChanged(Context& ctx);
 
 }  // namespace glass::gl

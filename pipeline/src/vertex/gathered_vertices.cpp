@@ -4,6 +4,7 @@
 
 #include "core/context.h"
 #include "core/fast_paths.h"
+#include "lighting/lighting_hooks.h"
 #include "primitive/draw_pipeline.h"
 #include "vertex/vertex_batch.h"
 
@@ -49,6 +50,23 @@ void flushGatheredVertices(Context& ctx) {
   if (count == 0) return;
   pa.gatheredCount = 0;
   processVertexRows(ctx, *pa.gathered, count, pa.gatheredPrimitiveId);
+}
+
+bool deferColorMaterial(Context& ctx) {
+  PrimitiveAssembly& pa = ctx.assembly;
+  if (!pa.active || !pa.gathering) return false;
+  pa.colorMaterialDeferred = true;
+  return true;
+}
+
+void finishGathering(Context& ctx) {
+  flushGatheredVertices(ctx);
+  PrimitiveAssembly& pa = ctx.assembly;
+  pa.gathering = false;
+  if (pa.colorMaterialDeferred) {
+    pa.colorMaterialDeferred = false;
+    onCurrentColorChanged(ctx);  // not gathering any more: applies the current colour now
+  }
 }
 
 }  // namespace glass::gl

@@ -11,8 +11,9 @@
 // (GLASS_FAST_PATHS=0), nor while the teaching vertex trace waits for a vertex
 // (GLASS_TRACE_VERTEX follows one vertex through processVertex). With colour material on, the
 // batched stage lights each vertex with its own colour in place of the tracked parameters, which
-// is what the stored material holds: the tracked parameters always equal the current colour
-// (glColor copies it in, glMaterial leaves them alone, glPopAttrib copies it in again).
+// is what the reference path's stored material holds: there the tracked parameters always equal
+// the current colour (glColor copies it in, glMaterial leaves them alone, glPopAttrib copies it
+// in again). A gathering glBegin/glEnd copies it in once, at glEnd (deferColorMaterial below).
 #pragma once
 
 namespace glass::gl {
@@ -28,5 +29,18 @@ bool gatherVertex(Context& ctx, const float object[4]);
 
 // Runs the gathered vertices through the vertex stage and primitive assembly, in order.
 void flushGatheredVertices(Context& ctx);
+
+// Colour material inside a gathering glBegin/glEnd. Copying each glColor into the tracked
+// material parameters costs more than the rest of the glColor, and nothing reads them before
+// glEnd: the gathered vertices are lit with their own colour, glMaterial leaves tracked parameters
+// alone, and every command that could read or replace them (glGetMaterial, glPushAttrib,
+// glColorMaterial, glEnable ...) is an error inside glBegin/glEnd. So a colour change there
+// only marks the tracked parameters stale (true: deferred; false: not gathering, apply now), and
+// glEnd applies the current colour once, which leaves the same material as applying every one.
+bool deferColorMaterial(Context& ctx);
+
+// glEnd's part: the last gathered vertices through the vertex stage, then the deferred colour
+// material applied.
+void finishGathering(Context& ctx);
 
 }  // namespace glass::gl

@@ -189,7 +189,7 @@ void assembleVertex(Context& ctx, const PipelineVertex& v) {
 }
 
 void endPrimitive(Context& ctx) {
-  flushGatheredVertices(ctx);
+  finishGathering(ctx);
   PrimitiveAssembly& pa = ctx.assembly;
   if (pa.mode == GL_LINE_LOOP && pa.vertexCount >= 2) {
     ctx.draw->drawLine(pa.window[0], pa.first, pa.first, false);

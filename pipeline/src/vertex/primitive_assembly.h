@@ -30,6 +30,9 @@ struct PrimitiveAssembly {
   bool gathering = false;
   int gatheredCount = 0;
   uint64_t gatheredPrimitiveId = 0;  // newGatheredPrimitiveId of this glBegin (vertex_batch.h)
+  // A glColor of this gathering glBegin left colour material's tracked parameters behind the
+  // current colour; glEnd brings them up to date (gathered_vertices.h).
+  bool colorMaterialDeferred = false;
   std::shared_ptr<struct VertexRows> gathered;
 };
 
