@@ -31,13 +31,23 @@ namespace glass::gl {
 // Appends a command to the list being compiled.
 void recordListCommand(Context& ctx, ListCommand command);
 
-// The same on a given context, for code that already holds one (glArrayElement compiles the
-// values it reads this way).
+// compileOrExecuteOn's work while a list is being compiled: appends the command and says whether
+// it must also run now (GL_COMPILE_AND_EXECUTE). Kept out of line so that the usual case, a
+// command run at once, stays a test and a call in every entry point: building the list's
+// std::function inline made each glVertex, glColor and glNormal save and restore registers it
+// only needs for that.
+template <class Command>
+[[gnu::noinline]] bool recordInList(Context& ctx, const Command& command) {
+  recordListCommand(ctx, ListCommand(command));
+  return ctx.lists.compileMode != GL_COMPILE;
+}
+
+// compileOrExecute on a given context, for code that already holds one (glArrayElement compiles
+// the values it reads this way).
 template <class Command>
 inline void compileOrExecuteOn(Context& ctx, Command&& command) {
-  if (ctx.lists.isCompiling()) {
-    recordListCommand(ctx, ListCommand(command));
-    if (ctx.lists.compileMode == GL_COMPILE) return;
+  if (ctx.lists.isCompiling()) [[unlikely]] {
+    if (!recordInList(ctx, command)) return;
   }
   command(ctx);
 }
