@@ -18,6 +18,20 @@ void startGathering(Context& ctx) {
   if (pa.gathering) pa.gatheredPrimitiveId = newGatheredPrimitiveId();
 }
 
+namespace {
+
+// value[0 .. N) into column i of rows. The values are all read before any is stored: as far as
+// the compiler knows the rows might overlap the current attributes, and storing each value as it
+// is read made it check that for every vertex.
+template <int N>
+void storeColumn(const float* value, int i, float (&rows)[N][kVertexBatch]) {
+  float copy[N];
+  for (int k = 0; k < N; ++k) copy[k] = value[k];
+  for (int k = 0; k < N; ++k) rows[k][i] = copy[k];
+}
+
+}  // namespace
+
 bool gatherVertex(Context& ctx, const float object[4]) {
   PrimitiveAssembly& pa = ctx.assembly;
   if (!pa.gathering) return false;
@@ -28,18 +42,13 @@ bool gatherVertex(Context& ctx, const float object[4]) {
   const CurrentState& c = ctx.current;
   VertexRows& rows = *pa.gathered;
   const int i = pa.gatheredCount++;
-  for (int k = 0; k < 4; ++k) {
-    rows.vertex[k][i] = object[k];
-    rows.color[k][i] = c.color[k];
-  }
+  storeColumn(object, i, rows.vertex);
+  storeColumn(c.color, i, rows.color);
   rows.edgeFlag[i] = c.edgeFlag;
-  if (s.needEyeNormal)
-    for (int k = 0; k < 3; ++k) rows.normal[k][i] = c.normal[k];
-  if (s.secondaryColor)
-    for (int k = 0; k < 3; ++k) rows.secondaryColor[k][i] = c.secondaryColor[k];
+  if (s.needEyeNormal) storeColumn(c.normal, i, rows.normal);
+  if (s.secondaryColor) storeColumn(c.secondaryColor, i, rows.secondaryColor);
   if (s.fog) rows.fogCoord[0][i] = c.fogCoord;
-  for (int u = 0; u < s.textureUnits; ++u)
-    for (int k = 0; k < 4; ++k) rows.texCoord[u][k][i] = c.texCoord[u][k];
+  for (int u = 0; u < s.textureUnits; ++u) storeColumn(c.texCoord[u], i, rows.texCoord[u]);
   if (pa.gatheredCount == kVertexBatch) flushGatheredVertices(ctx);
   return true;
 }
@@ -50,13 +59,6 @@ void flushGatheredVertices(Context& ctx) {
   if (count == 0) return;
   pa.gatheredCount = 0;
   processVertexRows(ctx, *pa.gathered, count, pa.gatheredPrimitiveId);
-}
-
-bool deferColorMaterial(Context& ctx) {
-  PrimitiveAssembly& pa = ctx.assembly;
-  if (!pa.active || !pa.gathering) return false;
-  pa.colorMaterialDeferred = true;
-  return true;
 }
 
 void finishGathering(Context& ctx) {

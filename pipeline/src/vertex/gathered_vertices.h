@@ -16,9 +16,9 @@
 // in again). A gathering glBegin/glEnd copies it in once, at glEnd (deferColorMaterial below).
 #pragma once
 
-namespace glass::gl {
+#include "core/context.h"
 
-struct Context;
+namespace glass::gl {
 
 // At glBegin, once the primitive has started: whether its vertices are gathered.
 void startGathering(Context& ctx);
@@ -37,7 +37,13 @@ void flushGatheredVertices(Context& ctx);
 // glColorMaterial, glEnable ...) is an error inside glBegin/glEnd. So a colour change there
 // only marks the tracked parameters stale (true: deferred; false: not gathering, apply now), and
 // glEnd applies the current colour once, which leaves the same material as applying every one.
-bool deferColorMaterial(Context& ctx);
+// Inline: every glColor asks.
+inline bool deferColorMaterial(Context& ctx) {
+  PrimitiveAssembly& pa = ctx.assembly;
+  if (!pa.active || !pa.gathering) return false;
+  pa.colorMaterialDeferred = true;
+  return true;
+}
 
 // glEnd's part: the last gathered vertices through the vertex stage, then the deferred colour
 // material applied.

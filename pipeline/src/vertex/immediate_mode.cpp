@@ -21,13 +21,23 @@ void endCommand(Context& ctx) {
   endPrimitive(ctx);
 }
 
+namespace {
+
+// A vertex through the vertex stage at once (the reference path). Out of line so that the usual
+// glVertex, which is gathered, does not pay for the stack frame and clearing of a PipelineVertex.
+[[gnu::noinline]] void processAndAssembleVertex(Context& ctx, const float object[4]) {
+  PipelineVertex vertex{};
+  processVertex(ctx, ctx.draw->vertexSetup(), object, vertex);
+  assembleVertex(ctx, vertex);
+}
+
+}  // namespace
+
 void vertexCommand(Context& ctx, float x, float y, float z, float w) {
   if (!ctx.assembly.active) return;
   const float object[4] = {x, y, z, w};
   if (gatherVertex(ctx, object)) return;
-  PipelineVertex vertex{};
-  processVertex(ctx, ctx.draw->vertexSetup(), object, vertex);
-  assembleVertex(ctx, vertex);
+  processAndAssembleVertex(ctx, object);
 }
 
 void colorCommand(Context& ctx, float r, float g, float b, float a) {
