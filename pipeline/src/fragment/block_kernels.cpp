@@ -232,11 +232,14 @@ class QuadTexturing {
     for (int row = 0; row < kQuadRows; ++row)
       if (needed[row]) scaleFactorsSquared(row, rhoSquared[row]);
     float lambda[kQuadRows][level_of_detail::kQuads];
-    for (int row = 0; row < kQuadRows; ++row)
-      if (needed[row]) level_of_detail::levelsOfDetail(rhoSquared[row], t_.minLod, t_.maxLod, t_.lodBias, lambda[row]);
-    for (int row = 0; row < kQuadRows; ++row)
+    for (int row = 0; row < kQuadRows; ++row) {
       if (needed[row])
-        for (int k = 0; k < level_of_detail::kQuads; ++k) choice_[row][k] = t_.sampler->choose(lambda[row][k]);
+        level_of_detail::levelsOfDetail(rhoSquared[row], t_.minLod, t_.maxLod, t_.lodBias, lambda[row]);
+    }
+    for (int row = 0; row < kQuadRows; ++row) {
+      if (!needed[row]) continue;
+      for (int k = 0; k < level_of_detail::kQuads; ++k) choice_[row][k] = t_.sampler->choose(lambda[row][k]);
+    }
   }
 
   // rho^2 of the four quads of quad row `row` as quadLevelOfDetail computes it for a 2D texture
@@ -385,7 +388,8 @@ void shadeBlock(Context& ctx, const KernelPixelOps& ops, const KernelTexture& te
     for (const uint8_t mask : rowMask) any |= mask;
     if (any == 0) return;
     typename TexturingStage<kTexturing>::Varyings varyings(setup.planes, block);
-    [[maybe_unused]] typename TexturingStage<kTexturing>::Texturing texturing(ctx, texture, setup, bx, by, rowMask);
+    using Texturing = typename TexturingStage<kTexturing>::Texturing;
+    [[maybe_unused]] Texturing texturing(ctx, texture, setup, bx, by, rowMask);
     using FogVaryings = BlockVaryings<varying::kFogCoordinate>;
     std::optional<FogVaryings> fogCoordinate;
     if constexpr (kFog) fogCoordinate.emplace(setup.planes, block);
