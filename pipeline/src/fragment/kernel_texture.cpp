@@ -6,7 +6,7 @@
 namespace glass::gl {
 
 void KernelTexture::prepare(const Context& ctx) {
-  texture = ctx.texture.units[0].activeTexture();
+  const TextureObject* texture = ctx.texture.units[0].activeTexture();
   env = &ctx.texture.units[0].env;
   sampler.reset();
   if (texture == nullptr) return;

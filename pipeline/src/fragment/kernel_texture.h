@@ -10,6 +10,7 @@
 
 #include <optional>
 
+#include "texture/level_of_detail.h"
 #include "texture/sampler_2d.h"
 #include "texture/texture_environment.h"
 #include "texture/texture_image.h"
@@ -19,19 +20,18 @@ namespace glass::gl {
 struct Context;
 
 struct KernelTexture {
-  // Reads unit 0's texture and environment from the context; `texture` stays null when the
+  // Reads unit 0's texture and environment from the context; `sampler` stays empty when the
   // unit samples nothing (an incomplete texture turns texturing off, spec 3.8.15).
   void prepare(const Context& ctx);
 
-  const TextureObject* texture = nullptr;
   const TextureEnvironment* env = nullptr;
-  std::optional<Sampler2D> sampler;  // the texture's lookups (when texture is not null)
+  std::optional<Sampler2D> sampler;  // the texture's lookups
   BaseFormat base = BaseFormat::RGBA;
   bool needsLambda = false;  // a lambda per 2x2 quad decides the levels (texture_hooks.h)
   float minLod = 0.0f, maxLod = 0.0f, lodBias = 0.0f;  // textureLevelOfDetail's
   int baseWidth = 0, baseHeight = 0;
   // Every quad's levels when no lambda is needed: the magnification filter's.
-  Sampler2D::LevelChoice magnified[4] = {};
+  Sampler2D::LevelChoice magnified[kLevelOfDetailQuads] = {};
 };
 
 }  // namespace glass::gl
