@@ -1,6 +1,11 @@
-// Triangle coverage: walks the setup's bounding box in 8x8 blocks aligned to multiples of 8 (so a
-// later step can hand whole tiles to threads), and hands each block's fragments to the sink in one
-// batch.
+// Triangle coverage: walks the setup's bounding box in 8x8 blocks, and hands each block's
+// fragments to the sink in one batch. The blocks start at the box's lower-left corner, its column
+// rounded down to an even one (the 2x2 quads of texture level of detail pair columns 2k and
+// 2k + 1, so no quad straddles two blocks). Every value of a pixel comes from its own position,
+// never from its block's (see "Attributes" below), so a pixel gets the same fragment whichever
+// block holds it: the whole window, a 64 x 64 tile of the tiled rasterizer or a scissor may start
+// the blocks anywhere. Starting at the box rather than on a fixed grid puts most small triangles
+// in one block, where a grid of multiples of 8 cuts most of them into two to four.
 //
 // Fill rule. A pixel is covered when its centre is strictly inside all three edges, or exactly on
 // an edge that owns its centres. Of two triangles sharing an edge exactly one owns it: the edge
@@ -196,7 +201,7 @@ void walkTriangle(const TriangleSetup& setup, FragmentSink& sink) {
   const bool largeTriangle = box.x1 - box.x0 >= 4 * kBlockSize && box.y1 - box.y0 >= 4 * kBlockSize;
 
   CoveredBlock block;
-  const int firstBlockX = box.x0 & ~(kBlockSize - 1), firstBlockY = box.y0 & ~(kBlockSize - 1);
+  const int firstBlockX = box.x0 & ~1, firstBlockY = box.y0;
   for (int by = firstBlockY; by < box.y1; by += kBlockSize) {
     const int y0 = std::max(by, box.y0), y1 = std::min(by + kBlockSize, box.y1);
     for (int bx = firstBlockX; bx < box.x1; bx += kBlockSize) {

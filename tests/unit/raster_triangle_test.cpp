@@ -3,7 +3,9 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <map>
 #include <numbers>
 #include <random>
 
@@ -252,7 +254,7 @@ TEST_CASE("triangle: both orientations cover the same pixels; degenerate triangl
   CHECK_FALSE(setupTriangle(windowVertex(NAN, 1), windowVertex(5, 5), windowVertex(9, 1), settings, setup));
 }
 
-TEST_CASE("triangle: one batch per 8x8 block, all inside the bounds") {
+TEST_CASE("triangle: one batch per 8x8 block from the box's corner, all inside the bounds") {
   RecordingSink sink;
   const TriangleSettings settings = settingsFor(rect(3, 4, 29, 27));
   TriangleSetup setup;
@@ -269,19 +271,60 @@ TEST_CASE("triangle: one batch per 8x8 block, all inside the bounds") {
     CHECK(pixel.second >= 4);
     CHECK(pixel.second < 27);
   }
-  // Each batch lies in one aligned 8x8 block and holds at most 64 fragments.
+  // Blocks start at the box's lower-left corner, moved left to an even column (x 2, 10, 18, 26;
+  // y 4, 12, 20): each batch lies in one of them and holds at most 64 fragments.
   size_t index = 0;
   for (int size : sink.batchSizes) {
     CHECK(size > 0);
     CHECK(size <= 64);
-    const int bx = sink.fragments[index].x / 8, by = sink.fragments[index].y / 8;
+    const int bx = (sink.fragments[index].x - 2) / 8, by = (sink.fragments[index].y - 4) / 8;
     for (int i = 0; i < size; ++i) {
-      CHECK(sink.fragments[index + i].x / 8 == bx);
-      CHECK(sink.fragments[index + i].y / 8 == by);
+      CHECK((sink.fragments[index + i].x - 2) / 8 == bx);
+      CHECK((sink.fragments[index + i].y - 4) / 8 == by);
     }
     index += size;
   }
-  CHECK(sink.batches == 16);  // blocks x 0-3, y 0-3
+  CHECK(sink.batches == 12);  // 4 block columns, 3 block rows
+}
+
+TEST_CASE("triangle: a pixel's fragment does not depend on the bounds, nor on where blocks start") {
+  // The walk starts its blocks at the corner of the triangle's box within the bounds, so a tile
+  // of the tiled rasterizer, or any scissor, walks other blocks than the whole window does. The
+  // fragments of the pixels both cover must be the same bits: coverage, depth and varyings are
+  // evaluated from the pixel's own position.
+  std::mt19937 rng(2024);
+  for (int trial = 0; trial < 40; ++trial) {
+    WindowVertex v[3];
+    for (WindowVertex& w : v) {
+      w = windowVertex(gridCoordinate(rng, -8, 72), gridCoordinate(rng, -8, 72),
+                       static_cast<float>(std::uniform_real_distribution<double>(0, 1)(rng)),
+                       static_cast<float>(std::uniform_real_distribution<double>(0.1, 2)(rng)));
+      for (int k = 0; k < 4; ++k)
+        w.varyings[k] = static_cast<float>(std::uniform_real_distribution<double>(-1, 1)(rng));
+    }
+    RecordingSink whole;
+    drawTriangle(v[0], v[1], v[2], settingsFor(rect(0, 0, 64, 64), 4), whole);
+    std::map<std::pair<int, int>, Fragment> byPixel;
+    for (const Fragment& f : whole.fragments) byPixel[{f.x, f.y}] = f;
+    std::uniform_int_distribution<int> corner(0, 40), side(1, 24);
+    for (int cut = 0; cut < 8; ++cut) {
+      const int x0 = corner(rng), y0 = corner(rng);
+      const PixelRect bounds = rect(x0, y0, x0 + side(rng), y0 + side(rng));
+      RecordingSink part;
+      drawTriangle(v[0], v[1], v[2], settingsFor(bounds, 4), part);
+      size_t inside = 0;
+      for (const auto& [pixel, count] : whole.writes)
+        inside += pixel.first >= bounds.x0 && pixel.first < bounds.x1 && pixel.second >= bounds.y0 &&
+                  pixel.second < bounds.y1;
+      CHECK(part.fragments.size() == inside);
+      for (const Fragment& f : part.fragments) {
+        const auto found = byPixel.find({f.x, f.y});
+        REQUIRE(found != byPixel.end());
+        CHECK(found->second.depth == f.depth);
+        for (int k = 0; k < 4; ++k) CHECK(std::bit_cast<uint32_t>(found->second.varyings[k]) == std::bit_cast<uint32_t>(f.varyings[k]));
+      }
+    }
+  }
 }
 
 TEST_CASE("triangle: depth is the plane through the vertices, biased, clamped and rounded") {

@@ -180,7 +180,7 @@ class QuadTexturing {
   // Replaces the colours of the pixels of `mask` in the block's row y (pixel i in column i) by
   // their textured colours, with projected texture coordinates (s/q, t/q) = (sq[i], tq[i]).
   void applyRow(int y, unsigned mask, const float* sq, const float* tq, float color[4][kSize]) {
-    // Pixels 2k and 2k + 1 share quad k (blocks start at multiples of 8: quads do not straddle).
+    // Pixels 2k and 2k + 1 share quad k (blocks start at even columns: quads do not straddle).
     static_assert(row_sampler::kRowQuads == kLevelOfDetailQuads);
     const Sampler2D::LevelChoice* quadChoice = t_.needsLambda ? rowLevels(y) : t_.magnified;
     alignas(64) float texel[4][kSize] = {};  // pixels outside mask stay 0

@@ -8,10 +8,11 @@
 // submission order, whatever the number of threads, and the framebuffer ends byte for byte as
 // if one thread had drawn everything in order. (The idea is Mesa llvmpipe's; the code is glass's.)
 //
-// Why clipping to a tile changes nothing: triangle coverage walks 8 x 8 blocks aligned to
-// multiples of 8 and evaluates every attribute directly from its plane at the pixel centre
-// (triangle_rasterize.cpp), and a tile's edges are multiples of 64, so a tile sees exactly the
-// blocks and fragments the whole triangle would give it. Lines and points are rasterized for each
+// Why clipping to a tile changes nothing: triangle coverage evaluates the edges and every
+// attribute directly from their planes at the pixel centre (triangle_rasterize.cpp), so a pixel
+// gets the same fragment whichever block of the walk holds it, and a tile's edges are multiples
+// of 64 (even), so the 2x2 quads of texture level of detail stay whole in it: a tile sees exactly
+// the fragments the whole triangle would give it. Lines and points are rasterized for each
 // tile they touch, with the tile as their bounds: their fragments are computed from the primitive
 // alone (the stipple counter runs outside the bounds too), and the bounds only select them; a
 // line walks only its runs inside the tile, each found by exact integer arithmetic from the

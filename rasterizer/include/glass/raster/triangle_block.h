@@ -16,7 +16,7 @@ class FragmentSink;
 
 struct CoveredBlock {
   static constexpr int kSize = 8;
-  int bx = 0, by = 0;  // the block's lower-left pixel: multiples of kSize
+  int bx = 0, by = 0;  // the block's lower-left pixel; bx is even (2x2 quads stay in one block)
   // Bit i of rowMask[j]: pixel (bx + i, by + j) is covered and passed the early depth test.
   uint8_t rowMask[kSize] = {};
   // The window depth (24-bit, bias included, clamped) of those pixels, [j][i].
