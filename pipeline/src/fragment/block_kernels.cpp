@@ -109,6 +109,9 @@ class BlockVaryings {
   }
 
   const float* row(int n) const { return values_[n]; }
+  // The values of the row as rows of kSize floats, for a stage that changes them in place (the
+  // colour's four rows when they come first: texturing and fog).
+  float (*rows())[kSize] { return values_; }
 
  private:
   const raster::AttributePlanes& planes_;
@@ -310,13 +313,35 @@ struct TexturingStage<KernelTexturing::Single2D> {
   using Texturing = QuadTexturing;
 };
 
+// Copies kWords words from `from` + offset to `to` + 4 offset: a fixed size, one instruction.
+template <int kWords>
+void copyWordsAt(uint8_t* to, const uint32_t* from, int offset) {
+  std::memcpy(to + 4 * offset, from + offset, 4 * kWords);
+}
+
+// Copies the run of n words (1 <= n <= 8) from `from` to `to` in at most two fixed-size copies,
+// the second overlapping the first where n is not a power of two (the overlap is written twice
+// with the same values). Every byte written belongs to the run: the pixels beside it may be
+// another thread's, in the next tile.
+void copyWordRun(uint8_t* to, const uint32_t* from, int n) {
+  if (n >= 4) {
+    copyWordsAt<4>(to, from, 0);
+    copyWordsAt<4>(to, from, n - 4);
+  } else if (n >= 2) {
+    copyWordsAt<2>(to, from, 0);
+    copyWordsAt<2>(to, from, n - 2);
+  } else {
+    copyWordsAt<1>(to, from, 0);
+  }
+}
+
 // Stores words[i] as the 4 bytes at row + 4 i for each bit i of mask (a depth value or an RGBA8
-// pixel): a covered run without gaps (most rows) is one copy.
+// pixel): a covered run without gaps (most rows) is one or two copies.
 void storeCoveredWords(void* row, const uint32_t* words, unsigned mask) {
   auto* bytes = static_cast<uint8_t*>(row);
   const int first = firstBit(mask), last = lastBit(mask);
   if (mask >> first == (2u << (last - first)) - 1u) {
-    std::memcpy(bytes + 4 * first, words + first, 4 * static_cast<size_t>(last - first + 1));
+    copyWordRun(bytes + 4 * first, words + first, last - first + 1);
     return;
   }
   for (unsigned rest = mask; rest != 0; rest &= rest - 1) {
@@ -397,8 +422,7 @@ void shadeBlock(Context& ctx, const KernelPixelOps& ops, const KernelTexture& te
       const unsigned mask = rowMask[j];
       if (mask == 0) continue;
       varyings.computeRow(j);
-      alignas(64) float color[4][kSize];
-      for (int c = 0; c < 4; ++c) std::memcpy(color[c], varyings.row(c), sizeof color[c]);
+      float(*color)[kSize] = varyings.rows();  // the primary colour, textured and fogged in place
       if constexpr (kTexturing != KernelTexturing::None) {
         if (texturing.active()) {
           alignas(64) float sq[kSize], tq[kSize];
