@@ -22,6 +22,7 @@
 #include <stdlib.h>
 #include <GL/glut.h>
 
+#include "rounded_upright.h"
 #include "wings_plan.h"
 
 #define PI 3.14159265358979323846
@@ -33,8 +34,6 @@
 static struct floor_plan plan;
 static float block_min[3], block_max[3];
 #define RADIUS_STEP 0.08f
-/* Steps along each quarter arc, on the strips and on the top's outline alike. */
-#define ARC_STEPS 8
 /* How close the walker may come to a wall or to the block. */
 #define WALKER_RADIUS 0.3f
 #define STEP 0.25f
@@ -217,42 +216,16 @@ static void control_point(float out[4], double x, double y, double z, double w)
   out[3] = (float)w;
 }
 
-/* A quarter cylinder of the current radius around the upright edge at `corner`, from the point
+/* A quarter cylinder of the current radius around the upright edge at corner k, from the point
  * `from` on one side to `to` on the next, walked counter-clockwise seen from above so that
- * GL_AUTO_NORMAL's dP/du x dP/dv points out of the solid. The middle control point is the corner
- * itself weighted by sqrt(2)/2, which makes the quadratic an exact circle arc: around an axis
- * inside the solid at a convex corner, outside it (a fillet filling the corner) at a concave one;
- * the control points are the same. The texture s runs from s0 to s0 + the arc's length, so the
- * checkerboard continues from the face. */
+ * GL_AUTO_NORMAL's dP/du x dP/dv points out of the solid, between the rims (R in from a rounded
+ * one). The texture s runs from s0 to s0 + the arc's length, so the checkerboard continues from
+ * the face. */
 static void rounded_edge(int k, const float from[2], const float corner[2], const float to[2], float s0)
 {
-  const float w = (float)(sqrt(2.0) / 2.0);
   const float y0 = block_min[1] + (corner_rounded(k, BOTTOM) ? radius : 0.0f);
   const float y1 = block_max[1] - (corner_rounded(k, TOP) ? radius : 0.0f);
-  float points[2][3][4]; /* [v][u][xyzw] */
-  for (int v = 0; v < 2; ++v) {
-    float y = v ? y1 : y0;
-    const float *corners[3] = {from, corner, to};
-    for (int u = 0; u < 3; ++u) {
-      float weight = u == 1 ? w : 1.0f;
-      points[v][u][0] = corners[u][0] * weight;
-      points[v][u][1] = y * weight;
-      points[v][u][2] = corners[u][1] * weight;
-      points[v][u][3] = weight;
-    }
-  }
-  float arc = (float)(PI / 2.0) * radius;
-  const float t0 = side_t(y0), t1 = side_t(y1);
-  float texture_points[2][3][2] = {{{s0, t0}, {s0 + arc / 2, t0}, {s0 + arc, t0}},
-                                   {{s0, t1}, {s0 + arc / 2, t1}, {s0 + arc, t1}}};
-  glMap2f(GL_MAP2_VERTEX_4, 0, 1, 4, 3, 0, 1, 12, 2, &points[0][0][0]);
-  glMap2f(GL_MAP2_TEXTURE_COORD_2, 0, 1, 2, 3, 0, 1, 6, 2, &texture_points[0][0][0]);
-  glEnable(GL_MAP2_VERTEX_4);
-  glEnable(GL_MAP2_TEXTURE_COORD_2);
-  glMapGrid2f(ARC_STEPS, 0, 1, 4, 0, 1);
-  glEvalMesh2(GL_FILL, 0, ARC_STEPS, 0, 4);
-  glDisable(GL_MAP2_VERTEX_4);
-  glDisable(GL_MAP2_TEXTURE_COORD_2);
+  quarter_cylinder(from, corner, to, y0, y1, s0, (float)(PI / 2.0) * radius, side_t(y0), side_t(y1));
 }
 
 /* Where the outline leaves and reaches corner i: R along its sides from the corner when the
@@ -268,18 +241,6 @@ static void corner_ends(int i, float from[2], float to[2])
     from[k] = (float)(here[k] + r * (before[k] - here[k]) / to_before);
     to[k] = (float)(here[k] + r * (after[k] - here[k]) / to_after);
   }
-}
-
-/* The point at parameter u of the arc from `from` to `to` around `corner`: the same rational
- * quadratic the evaluator draws, so that the top meets the strips' vertices. */
-static void arc_point(const float from[2], const float corner[2], const float to[2], double u, double out[3])
-{
-  const double w = sqrt(2.0) / 2.0;
-  const double b0 = (1 - u) * (1 - u), b1 = 2 * u * (1 - u) * w, b2 = u * u;
-  const double sum = b0 + b1 + b2;
-  out[0] = (b0 * from[0] + b1 * corner[0] + b2 * to[0]) / sum;
-  out[1] = block_max[1];
-  out[2] = (b0 * from[1] + b1 * corner[1] + b2 * to[1]) / sum;
 }
 
 /* The unit vector into the solid across side i (from corner i to corner i + 1): to the left of
@@ -494,13 +455,13 @@ static void block_end(enum rim_level level)
     corner_ends(i, from, to);
     const int before = side_rounded(i - 1, level), after = side_rounded(i, level);
     const int upright = plan.rounded[i] && radius > 0;
-    double arc[3];
+    double arc[2];
     if (!before && !after) {
       /* A sharp rim on both sides: the corner, or the upright's arc. */
       const int steps = upright ? ARC_STEPS : 0;
       for (int step = 0; step <= steps; ++step) {
-        arc_point(from, corner, to, (double)step / ARC_STEPS, arc);
-        outline_point(outline, &count, arc[0], y, arc[2]);
+        quarter_arc_point(from, corner, to, (double)step / ARC_STEPS, arc);
+        outline_point(outline, &count, arc[0], y, arc[1]);
       }
       continue;
     }
@@ -529,8 +490,8 @@ static void block_end(enum rim_level level)
         far_to[c] = (float)(at[c] + 2 * (to[c] - at[c]));
       }
       for (int step = 0; step <= ARC_STEPS; ++step) {
-        arc_point(far_from, far_corner, far_to, (double)step / ARC_STEPS, arc);
-        outline_point(outline, &count, arc[0], y, arc[2]);
+        quarter_arc_point(far_from, far_corner, far_to, (double)step / ARC_STEPS, arc);
+        outline_point(outline, &count, arc[0], y, arc[1]);
       }
     }
     if (!after) outline_point(outline, &count, to[0], y, to[1]);
@@ -925,7 +886,14 @@ static void load_object(int argc, char **argv)
 {
   const char *path = argc > 1 ? argv[1] : HOMEWORK45_MODEL;
   char error[300];
-  if (!wings_read_floor_plan(path, &plan, error, sizeof error)) {
+  struct wings_mesh mesh;
+  if (!wings_read_mesh(path, &mesh, error, sizeof error)) {
+    fprintf(stderr, "homework45: %s: %s\n", path, error);
+    exit(1);
+  }
+  const int ok = floor_plan_from_mesh(&mesh, &plan, error, sizeof error);
+  wings_mesh_free(&mesh);
+  if (!ok) {
     fprintf(stderr, "homework45: %s: %s\n", path, error);
     exit(1);
   }

@@ -1,154 +1,16 @@
-/* Reading the homework's object from a .wings file: Wings3D's layout (src/wings_ff_wings.erl):
- * "#!WINGS-1.0\r\n\032\04", a 32-bit size, then term_to_binary({wings, 2, {Shapes, Materials,
- * Props}}); each shape is {object, Name, {winged, Edges, Faces, Vertices, HardEdges}, Props}, the
- * winged-edge form: each edge a list holding {edge, Vs, Ve, Lf, Rf, Ltpr, Ltsu, Rtpr, Rtsu}, each
- * vertex a list starting with <<X/float, Y/float, Z/float>>, each hard edge an edge's number. A
- * face runs counter-clockwise seen from outside along its left edges from Vs to Ve and along its
- * right edges from Ve to Vs. */
+/* The homework's object of one layer of cubes, from a Wings3D mesh (wings_mesh.c): the outline of
+ * its top, its corners and which of its edges are hard. */
 #include "wings_plan.h"
 
-#include "erlang_term.h"
-
 #include <math.h>
-#include <stdarg.h>
-#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-
-#define HEADER "#!WINGS-1.0\r\n\032\04"
-#define HEADER_LENGTH 15
-
-struct winged_edge {
-  long vs, ve, lf, rf;
-};
-
-struct object {
-  long vertex_count, edge_count, face_count;
-  double (*position)[3];
-  struct winged_edge *edges;
-  const struct term *hard;
-};
-
-static int failed(char *error, size_t size, const char *format, ...)
-{
-  va_list args;
-  va_start(args, format);
-  vsnprintf(error, size, format, args);
-  va_end(args);
-  return 0;
-}
-
-static unsigned char *read_file(const char *path, size_t *size)
-{
-  FILE *file = fopen(path, "rb");
-  if (!file) return NULL;
-  unsigned char *data = NULL;
-  size_t used = 0, capacity = 0;
-  for (;;) {
-    if (used == capacity) {
-      capacity = capacity ? 2 * capacity : 65536;
-      unsigned char *grown = realloc(data, capacity);
-      if (!grown) break;
-      data = grown;
-    }
-    const size_t got = fread(data + used, 1, capacity - used, file);
-    used += got;
-    if (got == 0) break;
-  }
-  const int ok = !ferror(file) && data;
-  fclose(file);
-  if (!ok) {
-    free(data);
-    return NULL;
-  }
-  *size = used;
-  return data;
-}
-
-static const struct term *tagged(const struct term *t, const char *tag, size_t arity)
-{
-  return t->kind == TERM_TUPLE && t->length == arity && term_is_atom(&t->items[0], tag) ? t : NULL;
-}
-
-static int index_in(const struct term *t, long count, long *out)
-{
-  if (t->kind != TERM_INTEGER || t->integer < 0 || t->integer >= count) return 0;
-  *out = (long)t->integer;
-  return 1;
-}
-
-/* Whether the list of hard edges names edge e. */
-static int term_list_has_integer(const struct term *list, long e)
-{
-  for (size_t k = 0; k < list->length; ++k)
-    if (list->items[k].kind == TERM_INTEGER && list->items[k].integer == e) return 1;
-  return 0;
-}
-
-static double big_endian_double(const unsigned char *bytes)
-{
-  unsigned long long bits = 0;
-  for (int i = 0; i < 8; ++i) bits = bits << 8 | bytes[i];
-  double value;
-  memcpy(&value, &bits, sizeof value);
-  return value;
-}
-
-/* The first object's vertices and edges. */
-static int read_object(const struct term *root, struct object *object, char *error, size_t size)
-{
-  const struct term *file = tagged(root, "wings", 3);
-  if (!file || file->items[1].kind != TERM_INTEGER || file->items[1].integer != 2)
-    return failed(error, size, "not a version 2 {wings, 2, {Shapes, Materials, Props}} term");
-  const struct term *content = &file->items[2];
-  if (content->kind != TERM_TUPLE || content->length < 1 || content->items[0].kind != TERM_LIST)
-    return failed(error, size, "no list of shapes");
-  const struct term *shapes = &content->items[0];
-  if (shapes->length == 0) return failed(error, size, "the file has no object");
-  const struct term *shape = tagged(&shapes->items[0], "object", 4);
-  const struct term *winged = shape ? tagged(&shape->items[2], "winged", 5) : NULL;
-  if (!winged) return failed(error, size, "object 1 is not {object, Name, {winged, ...}, Props}");
-  const struct term *edges = &winged->items[1], *faces = &winged->items[2], *vertices = &winged->items[3];
-  object->hard = &winged->items[4];
-  if (edges->kind != TERM_LIST || faces->kind != TERM_LIST || vertices->kind != TERM_LIST ||
-      object->hard->kind != TERM_LIST)
-    return failed(error, size, "object 1: its edges, faces, vertices or hard edges are not lists");
-  object->vertex_count = (long)vertices->length;
-  object->edge_count = (long)edges->length;
-  object->face_count = (long)faces->length;
-  object->position = calloc(vertices->length + 1, sizeof *object->position);
-  object->edges = calloc(edges->length + 1, sizeof *object->edges);
-  if (!object->position || !object->edges) return failed(error, size, "out of memory");
-  for (size_t v = 0; v < vertices->length; ++v) {
-    const struct term *item = &vertices->items[v];
-    const struct term *at = item->kind == TERM_LIST && item->length > 0 ? &item->items[0] : NULL;
-    if (!at || at->kind != TERM_BINARY || at->length != 24)
-      return failed(error, size, "object 1, vertex %zu: no <<X, Y, Z>> position of three floats", v);
-    for (int k = 0; k < 3; ++k) object->position[v][k] = big_endian_double(at->bytes + 8 * k);
-    if (!isfinite(object->position[v][0]) || !isfinite(object->position[v][1]) || !isfinite(object->position[v][2]))
-      return failed(error, size, "object 1, vertex %zu: a coordinate is not finite", v);
-  }
-  for (size_t e = 0; e < edges->length; ++e) {
-    const struct term *item = &edges->items[e];
-    const struct term *record = NULL;
-    for (size_t k = 0; item->kind == TERM_LIST && k < item->length && !record; ++k)
-      record = tagged(&item->items[k], "edge", 9);
-    struct winged_edge *out = &object->edges[e];
-    if (!record) return failed(error, size, "object 1, edge %zu: no {edge, Vs, Ve, Lf, Rf, ...} record", e);
-    if (!index_in(&record->items[1], object->vertex_count, &out->vs) ||
-        !index_in(&record->items[2], object->vertex_count, &out->ve) ||
-        !index_in(&record->items[3], object->face_count, &out->lf) ||
-        !index_in(&record->items[4], object->face_count, &out->rf))
-      return failed(error, size, "object 1, edge %zu: a vertex or face number out of range", e);
-  }
-  return 1;
-}
 
 /* The outline of the top faces (those with every vertex at the top), walked along their edges
  * that border a face which is not on top, into plan->xz; *outline_next gets the vertex after
  * each one of it (-1 elsewhere) and *outline_side the side (corner k to corner k + 1) its edge to
  * that vertex lies on, both for the caller to free. */
-static int trace_outline(const struct object *o, struct floor_plan *plan, char *error, size_t size,
+static int trace_outline(const struct wings_mesh *o, struct floor_plan *plan, char *error, size_t size,
                          long **outline_next, long **outline_side)
 {
   const double extent = fmax(plan->top - plan->bottom, 1e-300);
@@ -158,7 +20,7 @@ static int trace_outline(const struct object *o, struct floor_plan *plan, char *
   if (!on_top || !next) {
     free(on_top);
     free(next);
-    return failed(error, size, "out of memory");
+    return wings_failed(error, size, "out of memory");
   }
   for (long f = 0; f < o->face_count; ++f) on_top[f] = 1;
   for (long v = 0; v < o->vertex_count; ++v) next[v] = -1;
@@ -174,23 +36,23 @@ static int trace_outline(const struct object *o, struct floor_plan *plan, char *
     const struct winged_edge *edge = &o->edges[e];
     if (on_top[edge->lf] == on_top[edge->rf]) continue;
     const long from = on_top[edge->lf] ? edge->vs : edge->ve, to = on_top[edge->lf] ? edge->ve : edge->vs;
-    if (next[from] >= 0) ok = failed(error, size, "object 1: the outline of its top passes vertex %ld twice", from);
+    if (next[from] >= 0) ok = wings_failed(error, size, "object 1: the outline of its top passes vertex %ld twice", from);
     next[from] = to;
     start = from;
     ++outline_edges;
   }
   free(on_top);
-  if (ok && start < 0) ok = failed(error, size, "object 1 has no top faces");
+  if (ok && start < 0) ok = wings_failed(error, size, "object 1 has no top faces");
   long loop = 0;
   for (long v = start; ok;) {
     ++loop;
     v = next[v];
-    if (v < 0) ok = failed(error, size, "object 1: the outline of its top does not close");
+    if (v < 0) ok = wings_failed(error, size, "object 1: the outline of its top does not close");
     else if (v == start) break;
-    else if (loop > outline_edges) ok = failed(error, size, "object 1: the outline of its top does not close");
+    else if (loop > outline_edges) ok = wings_failed(error, size, "object 1: the outline of its top does not close");
   }
   if (ok && loop != outline_edges)
-    ok = failed(error, size, "object 1: its top has %ld outline edges, %ld of them in one loop (holes or "
+    ok = wings_failed(error, size, "object 1: its top has %ld outline edges, %ld of them in one loop (holes or "
                 "separate pieces are not supported)", outline_edges, loop);
   if (!ok) {
     free(next);
@@ -209,7 +71,7 @@ static int trace_outline(const struct object *o, struct floor_plan *plan, char *
     free(next);
     free(corner_vertex);
     free(side);
-    return failed(error, size, "out of memory");
+    return wings_failed(error, size, "out of memory");
   }
   long v = start;
   for (long k = 0; k < loop; ++k) {
@@ -222,7 +84,7 @@ static int trace_outline(const struct object *o, struct floor_plan *plan, char *
     if (fabs(turn) <= 1e-9 * scale && along > 0) continue; /* straight on */
     if (fabs(along) > 1e-9 * scale)
       return free(next), free(corner_vertex), free(side),
-             failed(error, size, "object 1: its outline turns at vertex %ld by an angle other than 90 degrees", here);
+             wings_failed(error, size, "object 1: its outline turns at vertex %ld by an angle other than 90 degrees", here);
     corner_vertex[plan->corners] = here;
     plan->xz[plan->corners][0] = o->position[here][0];
     plan->xz[plan->corners][1] = o->position[here][2];
@@ -244,30 +106,11 @@ static int trace_outline(const struct object *o, struct floor_plan *plan, char *
   return 1;
 }
 
-int wings_read_floor_plan(const char *path, struct floor_plan *plan, char *error, size_t error_size)
+int floor_plan_from_mesh(const struct wings_mesh *mesh, struct floor_plan *plan, char *error, size_t error_size)
 {
   memset(plan, 0, sizeof *plan);
-  size_t size = 0;
-  unsigned char *data = read_file(path, &size);
-  if (!data) return failed(error, error_size, "cannot read the file");
-  if (size < HEADER_LENGTH + 4 || memcmp(data, HEADER, HEADER_LENGTH) != 0) {
-    free(data);
-    return failed(error, error_size, "not a Wings3D file (no #!WINGS-1.0 header)");
-  }
-  const size_t stated = (size_t)data[15] << 24 | (size_t)data[16] << 16 | (size_t)data[17] << 8 | data[18];
-  if (stated != size - HEADER_LENGTH - 4) {
-    free(data);
-    return failed(error, error_size, "the header states %zu bytes of data, the file has %zu", stated,
-                  size - HEADER_LENGTH - 4);
-  }
-  struct term *root = erlang_term_decode(data + HEADER_LENGTH + 4, stated, error, error_size);
-  if (!root) {
-    free(data);
-    return 0;
-  }
-  struct object object = {0};
-  int ok = read_object(root, &object, error, error_size);
-  if (ok && object.vertex_count == 0) ok = failed(error, error_size, "object 1 has no vertices");
+  const struct wings_mesh object = *mesh;
+  int ok = 1;
   if (ok) {
     plan->bottom = plan->top = object.position[0][1];
     plan->min_x = plan->max_x = object.position[0][0];
@@ -286,7 +129,7 @@ int wings_read_floor_plan(const char *path, struct floor_plan *plan, char *error
   for (long v = 0; ok && v < object.vertex_count; ++v) {
     const double *p = object.position[v];
     if (fabs(p[1] - plan->bottom) > tolerance && fabs(p[1] - plan->top) > tolerance) {
-      ok = failed(error, error_size, "object 1, vertex %ld: at height %g, between the bottom %g and the top %g "
+      ok = wings_failed(error, error_size, "object 1, vertex %ld: at height %g, between the bottom %g and the top %g "
                   "(a solid made of one layer of cubes is expected)", v, p[1], plan->bottom, plan->top);
       break;
     }
@@ -294,12 +137,12 @@ int wings_read_floor_plan(const char *path, struct floor_plan *plan, char *error
     for (long w = 0; w < object.vertex_count && !twin; ++w)
       twin = w != v && object.position[w][0] == p[0] && object.position[w][2] == p[2] &&
              fabs(object.position[w][1] - p[1]) > tolerance;
-    if (!twin) ok = failed(error, error_size, "object 1, vertex %ld: no vertex above or below it (the object "
+    if (!twin) ok = wings_failed(error, error_size, "object 1, vertex %ld: no vertex above or below it (the object "
                            "does not stand upright)", v);
   }
   long *outline_next = NULL, *outline_side = NULL;
   if (ok) ok = trace_outline(&object, plan, error, error_size, &outline_next, &outline_side);
-  if (ok && plan->corners < 4) ok = failed(error, error_size, "object 1: its outline has %d corners", plan->corners);
+  if (ok && plan->corners < 4) ok = wings_failed(error, error_size, "object 1: its outline has %d corners", plan->corners);
   if (ok) {
     /* Counter-clockwise seen from above: the signed area in (z, x) is positive. */
     double area = 0;
@@ -335,7 +178,7 @@ int wings_read_floor_plan(const char *path, struct floor_plan *plan, char *error
     /* The bottom's rim: edges along the bottom between a bottom face and a side face (one
      * layer of cubes: a side face has vertices at the top too). */
     int *on_bottom = calloc((size_t)object.face_count + 1, sizeof *on_bottom);
-    if (!on_bottom || !counts || !top_twin) ok = failed(error, error_size, "out of memory");
+    if (!on_bottom || !counts || !top_twin) ok = wings_failed(error, error_size, "out of memory");
     for (long f = 0; ok && f < object.face_count; ++f) on_bottom[f] = 1;
     for (long e = 0; ok && e < object.edge_count; ++e) {
       const struct winged_edge *edge = &object.edges[e];
@@ -360,7 +203,7 @@ int wings_read_floor_plan(const char *path, struct floor_plan *plan, char *error
       long at = -1;
       if ((rim || bottom_rim) && a >= 0 && b >= 0)
         at = outline_next[a] == b ? outline_side[a] : outline_next[b] == a ? outline_side[b] : -1;
-      const int hard = term_list_has_integer(object.hard, e);
+      const int hard = object.hard[e];
       if ((rim || bottom_rim) && at < 0) {
         /* (Not below an outline edge: no side to round it along.) */
         plan->sharp_hard_edges += hard;
@@ -371,12 +214,8 @@ int wings_read_floor_plan(const char *path, struct floor_plan *plan, char *error
         counts[4 * at + (bottom_rim ? 2 : 0) + 1] += hard;
       }
     }
-    for (size_t h = 0; ok && h < object.hard->length; ++h) {
-      long e;
-      if (!index_in(&object.hard->items[h], object.edge_count, &e)) {
-        ok = failed(error, error_size, "object 1, hard edge %zu: not an edge's number", h);
-        break;
-      }
+    for (long e = 0; ok && e < object.edge_count; ++e) {
+      if (!object.hard[e]) continue;
       const struct winged_edge *edge = &object.edges[e];
       const double *a = object.position[edge->vs], *b = object.position[edge->ve];
       const int upright = a[0] == b[0] && a[2] == b[2];
@@ -405,10 +244,6 @@ int wings_read_floor_plan(const char *path, struct floor_plan *plan, char *error
   }
   free(outline_next);
   free(outline_side);
-  free(object.position);
-  free(object.edges);
-  erlang_term_free(root);
-  free(data);
   if (!ok) floor_plan_free(plan);
   return ok;
 }

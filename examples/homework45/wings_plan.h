@@ -7,6 +7,8 @@
 
 #include <stddef.h>
 
+#include "wings_mesh.h"
+
 struct floor_plan {
   int corners;        /* corners of the outline, collinear vertices left out */
   double (*xz)[2];    /* x, z of each corner, in the order that makes the outline turn
@@ -24,9 +26,9 @@ struct floor_plan {
                            bottom of a side whose edges there are hard only in part */
 };
 
-/* Reads the first object of a .wings file. Returns 0 and writes the reason into `error` when the
- * file cannot be read or its object is not such a solid. */
-int wings_read_floor_plan(const char *path, struct floor_plan *plan, char *error, size_t error_size);
+/* The plan of a mesh's object. Returns 0 and writes the reason into `error` when the object is not
+ * such a solid. */
+int floor_plan_from_mesh(const struct wings_mesh *mesh, struct floor_plan *plan, char *error, size_t error_size);
 void floor_plan_free(struct floor_plan *plan);
 
 #endif
