@@ -22,6 +22,7 @@
 #include <stdlib.h>
 #include <GL/glut.h>
 
+#include "layered_block.h"
 #include "rounded_upright.h"
 #include "wings_plan.h"
 
@@ -30,8 +31,13 @@
 /* The room: floor y = 0 and walls x = -ROOM, z = -ROOM, up to WALL_HEIGHT. */
 #define ROOM 5.0f
 #define WALL_HEIGHT 4.0f
-/* The object: its floor plan from the Wings3D file, and its bounding box. */
+/* The object: its floor plan from the Wings3D file when it is one layer of cubes (drawn with the
+ * rims of its top and its bottom rounded), else its layers (drawn by layered_block.c, the
+ * uprights rounded layer by layer); its cells, which the walker may not enter, and its bounding
+ * box. */
 static struct floor_plan plan;
+static struct cube_layers layers;
+static int layered, has_cells;
 static float block_min[3], block_max[3];
 #define RADIUS_STEP 0.08f
 /* How close the walker may come to a wall or to the block. */
@@ -601,6 +607,11 @@ static void block(int textured)
     glEnable(GL_TEXTURE_2D);
     glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
   }
+  if (layered) {
+    draw_layered_block(&layers, radius);
+    if (textured) glDisable(GL_TEXTURE_2D);
+    return;
+  }
   for (int i = 0; i < plan.corners; ++i) {
     const int next = (i + 1) % plan.corners;
     float from[2], to[2], next_from[2], unused[2];
@@ -771,14 +782,24 @@ static void reshape(int width, int height)
 }
 
 /* Whether the walker at (x, z) keeps his distance from the walls, the floor's open edges and the
- * block. */
+ * object: from each column of its cells that it fills at any height (so that he can walk into an
+ * inner corner), or from its bounding box when it is not cut into cells. */
 static int walker_fits(float x, float z)
 {
   if (x < -ROOM + WALKER_RADIUS || z < -ROOM + WALKER_RADIUS) return 0;
   if (x > ROOM - WALKER_RADIUS || z > ROOM - WALKER_RADIUS) return 0;
-  if (x > block_min[0] - WALKER_RADIUS && x < block_max[0] + WALKER_RADIUS &&
-      z > block_min[2] - WALKER_RADIUS && z < block_max[2] + WALKER_RADIUS)
-    return 0;
+  if (!has_cells)
+    return !(x > block_min[0] - WALKER_RADIUS && x < block_max[0] + WALKER_RADIUS &&
+             z > block_min[2] - WALKER_RADIUS && z < block_max[2] + WALKER_RADIUS);
+  for (int j = 0; j + 1 < layers.z_count; ++j)
+    for (int i = 0; i + 1 < layers.x_count; ++i) {
+      int filled = 0;
+      for (int layer = 0; layer < layers.layer_count && !filled; ++layer)
+        filled = cube_layers_filled(&layers, layer, i, j);
+      if (filled && x > layers.x[i] - WALKER_RADIUS && x < layers.x[i + 1] + WALKER_RADIUS &&
+          z > layers.z[j] - WALKER_RADIUS && z < layers.z[j + 1] + WALKER_RADIUS)
+        return 0;
+    }
   return 1;
 }
 
@@ -796,7 +817,8 @@ static void change_radius(float change)
 {
   radius += change;
   if (radius < 0) radius = 0;
-  if (radius > (float)plan.max_radius) radius = (float)plan.max_radius;
+  const double largest = layered ? layers.max_radius : plan.max_radius;
+  if (radius > (float)largest) radius = (float)largest;
 }
 
 static void change_field_of_view(float change)
@@ -881,26 +903,39 @@ static void motion(int x, int y)
   glutPostRedisplay();
 }
 
-/* The object's file: the first argument GLUT leaves, or the L beside this program's source. */
+/* The object's file: the first argument GLUT leaves, or the L beside this program's source. An
+ * object of one layer of cubes is drawn from its floor plan, any other closed object of cubes by
+ * layers; both are cut into cells for the walker's collisions when they can be. */
 static void load_object(int argc, char **argv)
 {
   const char *path = argc > 1 ? argv[1] : HOMEWORK45_MODEL;
-  char error[300];
+  char error[300], plan_error[300];
   struct wings_mesh mesh;
   if (!wings_read_mesh(path, &mesh, error, sizeof error)) {
     fprintf(stderr, "homework45: %s: %s\n", path, error);
     exit(1);
   }
-  const int ok = floor_plan_from_mesh(&mesh, &plan, error, sizeof error);
+  has_cells = cube_layers_from_mesh(&mesh, &layers, error, sizeof error);
+  layered = !floor_plan_from_mesh(&mesh, &plan, plan_error, sizeof plan_error);
   wings_mesh_free(&mesh);
-  if (!ok) {
+  if (layered && !has_cells) {
     fprintf(stderr, "homework45: %s: %s\n", path, error);
     exit(1);
   }
-  if (plan.sharp_hard_edges > 0)
+  if (!layered && plan.sharp_hard_edges > 0)
     fprintf(stderr, "homework45: %s: %d hard edges stay sharp (this program rounds the upright edges, and "
             "the top's and the bottom's rims along each side whose edges there are all hard)\n", path,
             plan.sharp_hard_edges);
+  if (layered && layers.sharp_hard_edges > 0)
+    fprintf(stderr, "homework45: %s: %d hard edges stay sharp (of an object of more than one layer of cubes "
+            "this program rounds the upright edges, layer by layer, and leaves the edges along the layers' "
+            "tops and bottoms sharp)\n", path, layers.sharp_hard_edges);
+  if (layered) {
+    block_min[0] = (float)layers.x[0], block_max[0] = (float)layers.x[layers.x_count - 1];
+    block_min[1] = (float)layers.height[0], block_max[1] = (float)layers.height[layers.layer_count];
+    block_min[2] = (float)layers.z[0], block_max[2] = (float)layers.z[layers.z_count - 1];
+    return;
+  }
   block_min[0] = (float)plan.min_x, block_max[0] = (float)plan.max_x;
   block_min[1] = (float)plan.bottom, block_max[1] = (float)plan.top;
   block_min[2] = (float)plan.min_z, block_max[2] = (float)plan.max_z;

@@ -2,11 +2,13 @@
 # Homework 4-5's program headless (SDL_VIDEODRIVER=dummy, set by ctest), driven by
 # GLASS_GLUT_EVENTS; its snapshots compared with png_probe's same/differ.
 #   homework45_tests.sh PROGRAM PNG_PROBE WORK_DIR MODEL UPRIGHTS_MODEL ALL_HARD_MODEL PARTIAL_MODEL
-#                       PARTIAL_SHARP_UPRIGHTS_MODEL HALF_SIDE_MODEL
+#                       PARTIAL_SHARP_UPRIGHTS_MODEL HALF_SIDE_MODEL TWO_LAYERS_MODEL SLAB_CUBE_MODEL
+#                       NOT_CUBES_MODEL
 # (UPRIGHTS_MODEL: the same L with only its uprights hard, its top's rim sharp; ALL_HARD_MODEL:
 # with every edge hard, the bottom's rim too; PARTIAL_MODEL and PARTIAL_SHARP_UPRIGHTS_MODEL: the
 # rims of the top and the bottom hard along some sides only, with some uprights hard or none;
-# HALF_SIDE_MODEL: one side's top rim hard along half of it.)
+# HALF_SIDE_MODEL: one side's top rim hard along half of it; TWO_LAYERS_MODEL and SLAB_CUBE_MODEL:
+# objects of two layers of cubes, every edge hard; NOT_CUBES_MODEL: an object with slanted edges.)
 set -eu
 program=$1
 probe=$2
@@ -17,6 +19,9 @@ all_hard_model=$6
 partial_model=$7
 partial_sharp_model=$8
 half_side_model=$9
+two_layers_model=${10}
+slab_cube_model=${11}
+not_cubes_model=${12}
 . "$(dirname "$0")/../shell_test_support.sh"
 
 # repeat N LINE: the event line N times.
@@ -61,6 +66,16 @@ repeat() {
   echo "snapshot orthographic.png"
   echo "menu 6"
   echo "snapshot perspective.png"
+  # From viewpoint 2 turned 45 degrees to the left, the walker heads for the L's inner corner:
+  # the L's cells stop him there, not its bounding box (along which he would slide on).
+  echo "key 2"
+  repeat 9 "special left"
+  repeat 4 "special up"
+  echo "snapshot corner4.png"
+  repeat 8 "special up"
+  echo "snapshot corner12.png"
+  repeat 8 "special up"
+  echo "snapshot corner20.png"
 } >events.txt
 
 status=0
@@ -146,6 +161,64 @@ for a in 1 2 3 4 5; do
   done
 done
 "$probe" viewpoint5.png differ orthographic.png same perspective.png || fail "projection switch"
+"$probe" corner4.png differ corner12.png || fail "did not walk into the L's inner corner"
+"$probe" corner12.png same corner20.png || fail "walked on out of the L's inner corner"
+# Objects of two layers of cubes, every edge hard: a cube on the corner of an L of three, a cube
+# on a slab of 2 x 2. Each is drawn (unlike the L and unlike each other), its uprights are rounded
+# layer by layer (every press of R up to the largest radius, 0.5, changes the picture; r takes it
+# back), it says that the hard edges along its layers' tops and bottoms stay sharp, and walking
+# into it stops.
+for kind in two_layers slab_cube; do
+  eval "file=\$${kind}_model"
+  {
+    echo "snapshot ${kind}_sharp.png"
+    for press in 1 2 3 4 5 6 7; do
+      echo "key R"
+      echo "snapshot ${kind}_round$press.png"
+    done
+    echo "key R"
+    echo "snapshot ${kind}_largest_again.png"
+    repeat 8 "key r"
+    echo "snapshot ${kind}_sharp_again.png"
+    # From viewpoint 3 he turns to walk along z = 3.5 to x = 1, then turns to head for the
+    # object (x 0 to 2, z 0 to 2) along -z: after a few steps he stands at it.
+    echo "key 3"
+    repeat 9 "special right"
+    repeat 18 "special up"
+    repeat 18 "special left"
+    echo "snapshot ${kind}_facing.png"
+    echo "special up"
+    echo "snapshot ${kind}_step1.png"
+    repeat 10 "special up"
+    echo "snapshot ${kind}_step11.png"
+    repeat 10 "special up"
+    echo "snapshot ${kind}_step21.png"
+  } >${kind}_events.txt
+  status=0
+  GLASS_GLUT_SNAPSHOT=last_$kind.png GLASS_GLUT_EVENTS=${kind}_events.txt "$program" "$file" \
+    >out.txt 2>err.txt || status=$?
+  [ "$status" -eq 0 ] || fail "the program exited with $status on $file: $(cat err.txt)"
+  grep -q "^homework45: .*$kind.wings: 20 hard edges stay sharp (of an object of more than one layer" err.txt ||
+    fail "no message about the edges $file leaves sharp: $(cat err.txt)"
+  "$probe" ${kind}_sharp.png size 400 300 differ sharp.png || fail "$file looks like the L"
+  previous=${kind}_sharp.png
+  for press in 1 2 3 4 5 6 7; do
+    "$probe" "$previous" differ ${kind}_round$press.png || fail "$file: R pressed $press times did not change the picture"
+    previous=${kind}_round$press.png
+  done
+  "$probe" ${kind}_round7.png same ${kind}_largest_again.png || fail "$file: R beyond the largest radius"
+  "$probe" ${kind}_sharp.png same ${kind}_sharp_again.png || fail "$file: r did not bring the sharp picture back"
+  "$probe" ${kind}_facing.png differ ${kind}_step1.png || fail "$file: walking did not move"
+  "$probe" ${kind}_step11.png same ${kind}_step21.png || fail "$file: walked through the object"
+done
+"$probe" two_layers_sharp.png differ slab_cube_sharp.png || fail "the two objects of two layers look the same"
+"$probe" two_layers_round6.png differ slab_cube_round6.png || fail "the two rounded objects look the same"
+# An object that is not made of cubes is named with what is wrong, and nothing runs.
+status=0
+"$program" "$not_cubes_model" >out.txt 2>err.txt || status=$?
+[ "$status" -ne 0 ] || fail "an object of slanted edges was accepted"
+grep -q "^homework45: .*: object 1, edge [0-9]*: not along the x, y or z axis (an object made of cubes is expected)$" err.txt ||
+  fail "no message about the slanted edge: $(cat err.txt)"
 # The object comes from a Wings3D file: a broken one is named with what is wrong, and nothing runs.
 head -c 60 "$model" >truncated.wings
 status=0

@@ -1,0 +1,258 @@
+/* Cutting the homework's object into layers of cells (cube_layers.h). A cell is in the solid when
+ * a ray from its centre straight up crosses the object's horizontal faces an odd number of times;
+ * a face holds the column's centre when a ray from it along +x crosses the face's edges an odd
+ * number of times, which needs no order of the edges round the face. The centres lie off every
+ * grid line, so no ray grazes an edge. */
+#include "cube_layers.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+static int ascending(const void *a, const void *b)
+{
+  const double x = *(const double *)a, y = *(const double *)b;
+  return (x > y) - (x < y);
+}
+
+/* The distinct values of the vertices' coordinate `axis` (values closer than `tolerance` taken as
+ * one, the smallest of them) into *values, ascending, and each vertex's place among them into
+ * place[3 v + axis]. Returns their count, or -1 when out of memory. */
+static int grid_lines(const struct wings_mesh *mesh, int axis, double tolerance, double **values, int *place)
+{
+  double *sorted = malloc((size_t)mesh->vertex_count * sizeof *sorted + 1);
+  if (!sorted) return -1;
+  for (long v = 0; v < mesh->vertex_count; ++v) sorted[v] = mesh->position[v][axis];
+  qsort(sorted, (size_t)mesh->vertex_count, sizeof *sorted, ascending);
+  int count = 0;
+  for (long k = 0; k < mesh->vertex_count; ++k)
+    if (count == 0 || sorted[k] - sorted[count - 1] > tolerance) sorted[count++] = sorted[k];
+  for (long v = 0; v < mesh->vertex_count; ++v) {
+    /* The first line at or above the coordinate less the tolerance is its own. */
+    const double p = mesh->position[v][axis] - tolerance;
+    int low = 0, high = count - 1;
+    while (low < high) {
+      const int middle = (low + high) / 2;
+      if (sorted[middle] >= p) high = middle;
+      else low = middle + 1;
+    }
+    place[3 * v + axis] = low;
+  }
+  *values = sorted;
+  return count;
+}
+
+int cube_layers_filled(const struct cube_layers *layers, int layer, int i, int j)
+{
+  const int cells_x = layers->x_count - 1, cells_z = layers->z_count - 1;
+  if (layer < 0 || layer >= layers->layer_count || i < 0 || i >= cells_x || j < 0 || j >= cells_z) return 0;
+  return layers->filled[((size_t)layer * (size_t)cells_z + (size_t)j) * (size_t)cells_x + (size_t)i];
+}
+
+int cube_layers_rounded(const struct cube_layers *layers, int layer, int i, int j)
+{
+  if (layer < 0 || layer >= layers->layer_count || i < 0 || i >= layers->x_count || j < 0 || j >= layers->z_count)
+    return 0;
+  return layers->rounded[((size_t)layer * (size_t)layers->z_count + (size_t)j) * (size_t)layers->x_count + (size_t)i];
+}
+
+/* How many of the four cells around grid point (i, j) of `layer` are in the solid; whether they
+ * are two diagonal ones goes into *diagonal. */
+static int cells_around(const struct cube_layers *layers, int layer, int i, int j, int *diagonal)
+{
+  const int a = cube_layers_filled(layers, layer, i - 1, j - 1), b = cube_layers_filled(layers, layer, i, j - 1);
+  const int c = cube_layers_filled(layers, layer, i - 1, j), d = cube_layers_filled(layers, layer, i, j);
+  *diagonal = a == d && b == c && a != b;
+  return a + b + c + d;
+}
+
+/* Which cells of each layer the solid fills (the rays of the comment at the top). */
+static int fill_cells(const struct wings_mesh *mesh, struct cube_layers *layers, const int *place,
+                      const int *face_axis, const int *face_level, char *error, size_t size)
+{
+  const int cells_x = layers->x_count - 1, cells_z = layers->z_count - 1;
+  unsigned char *holds = malloc((size_t)mesh->face_count + 1);
+  int *faces_at = malloc((size_t)(layers->layer_count + 1) * sizeof *faces_at);
+  int ok = holds && faces_at ? 1 : wings_failed(error, size, "out of memory");
+  for (int j = 0; ok && j < cells_z; ++j)
+    for (int i = 0; ok && i < cells_x; ++i) {
+      const double cx = (layers->x[i] + layers->x[i + 1]) / 2, cz = (layers->z[j] + layers->z[j + 1]) / 2;
+      memset(holds, 0, (size_t)mesh->face_count + 1);
+      for (long e = 0; e < mesh->edge_count; ++e) {
+        const struct winged_edge *edge = &mesh->edges[e];
+        const double z0 = layers->z[place[3 * edge->vs + 2]], z1 = layers->z[place[3 * edge->ve + 2]];
+        /* Crossing the line z = cz, the edge runs along z, at one x. */
+        if ((z0 > cz) != (z1 > cz) && layers->x[place[3 * edge->vs]] > cx) {
+          holds[edge->lf] ^= 1;
+          holds[edge->rf] ^= 1;
+        }
+      }
+      for (int k = 0; k <= layers->layer_count; ++k) faces_at[k] = 0;
+      for (long f = 0; f < mesh->face_count; ++f)
+        if (face_axis[f] == 1 && holds[f]) ++faces_at[face_level[f]];
+      int inside = 0;
+      for (int k = layers->layer_count; ok && k >= 0; --k) {
+        if (faces_at[k] > 1)
+          ok = wings_failed(error, size, "object 1: %d faces overlap at height %g above x %g, z %g (a closed "
+                            "object made of cubes is expected)", faces_at[k], layers->height[k], cx, cz);
+        inside ^= faces_at[k];
+        if (k > 0) layers->filled[((size_t)(k - 1) * (size_t)cells_z + (size_t)j) * (size_t)cells_x + (size_t)i] =
+                       (unsigned char)inside;
+      }
+      if (ok && inside)
+        ok = wings_failed(error, size, "object 1 is not closed: above x %g, z %g its faces do not pair up into "
+                          "bottoms and tops", cx, cz);
+    }
+  free(holds);
+  free(faces_at);
+  return ok;
+}
+
+/* Which uprights are rounded in each layer, and how many hard edges stay sharp. */
+static int mark_hard_edges(const struct wings_mesh *mesh, struct cube_layers *layers, const int *place,
+                           const int *face_axis, const int *face_level, char *error, size_t size)
+{
+  const size_t points = (size_t)layers->x_count * (size_t)layers->z_count;
+  const size_t all = (size_t)layers->layer_count * points;
+  unsigned char *covered = calloc(all + 1, 1), *soft = calloc(all + 1, 1);
+  if (!covered || !soft) {
+    free(covered);
+    free(soft);
+    return wings_failed(error, size, "out of memory");
+  }
+  /* An upright line of a layer is rounded when every edge along it is hard. */
+  for (long e = 0; e < mesh->edge_count; ++e) {
+    const struct winged_edge *edge = &mesh->edges[e];
+    const int *a = &place[3 * edge->vs], *b = &place[3 * edge->ve];
+    if (a[0] != b[0] || a[2] != b[2]) continue;
+    const size_t point = (size_t)a[2] * (size_t)layers->x_count + (size_t)a[0];
+    for (int k = a[1] < b[1] ? a[1] : b[1]; k < (a[1] < b[1] ? b[1] : a[1]); ++k) {
+      covered[(size_t)k * points + point] = 1;
+      soft[(size_t)k * points + point] |= (unsigned char)!mesh->hard[e];
+    }
+  }
+  for (int k = 0; k < layers->layer_count; ++k)
+    for (int j = 0; j < layers->z_count; ++j)
+      for (int i = 0; i < layers->x_count; ++i) {
+        int diagonal;
+        const int around = cells_around(layers, k, i, j, &diagonal);
+        const size_t at = (size_t)k * points + (size_t)j * (size_t)layers->x_count + (size_t)i;
+        layers->rounded[at] = (around == 1 || around == 3) && covered[at] && !soft[at];
+      }
+  free(covered);
+  free(soft);
+  /* A hard edge between faces in different planes is a crease: rounded when it is upright and
+   * rounded in every layer it runs through, else left sharp. */
+  for (long e = 0; e < mesh->edge_count; ++e) {
+    const struct winged_edge *edge = &mesh->edges[e];
+    if (!mesh->hard[e]) continue;
+    if (face_axis[edge->lf] == face_axis[edge->rf] && face_level[edge->lf] == face_level[edge->rf]) continue;
+    const int *a = &place[3 * edge->vs], *b = &place[3 * edge->ve];
+    int rounded = a[0] == b[0] && a[2] == b[2];
+    for (int k = a[1] < b[1] ? a[1] : b[1]; rounded && k < (a[1] < b[1] ? b[1] : a[1]); ++k)
+      rounded = cube_layers_rounded(layers, k, a[0], a[2]);
+    layers->sharp_hard_edges += !rounded;
+  }
+  return 1;
+}
+
+int cube_layers_from_mesh(const struct wings_mesh *mesh, struct cube_layers *layers, char *error, size_t size)
+{
+  memset(layers, 0, sizeof *layers);
+  double extent = 0;
+  for (long v = 0; v < mesh->vertex_count; ++v)
+    for (int axis = 0; axis < 3; ++axis) extent = fmax(extent, fabs(mesh->position[v][axis]));
+  const double tolerance = 1e-9 * fmax(extent, 1e-300);
+  int *place = malloc(3 * (size_t)mesh->vertex_count * sizeof *place + 1);
+  /* Each face's plane: the axis along which all its vertices lie on one grid line, and that line. */
+  int *face_axis = malloc((size_t)mesh->face_count * sizeof *face_axis + 1);
+  int *face_level = malloc((size_t)mesh->face_count * sizeof *face_level + 1);
+  int *low = malloc(3 * (size_t)mesh->face_count * sizeof *low + 1);
+  int *high = malloc(3 * (size_t)mesh->face_count * sizeof *high + 1);
+  int ok = place && face_axis && face_level && low && high ? 1 : wings_failed(error, size, "out of memory");
+  int counts[3] = {0, 0, 0};
+  double *lines[3] = {NULL, NULL, NULL};
+  for (int axis = 0; ok && axis < 3; ++axis) {
+    counts[axis] = grid_lines(mesh, axis, tolerance, &lines[axis], place);
+    if (counts[axis] < 0) ok = wings_failed(error, size, "out of memory");
+  }
+  layers->x = lines[0], layers->height = lines[1], layers->z = lines[2];
+  layers->x_count = counts[0], layers->z_count = counts[2], layers->layer_count = counts[1] - 1;
+  if (ok && (counts[0] < 2 || counts[1] < 2 || counts[2] < 2)) ok = wings_failed(error, size, "object 1 is flat");
+  for (long f = 0; ok && f < mesh->face_count; ++f)
+    for (int axis = 0; axis < 3; ++axis) low[3 * f + axis] = counts[axis], high[3 * f + axis] = -1;
+  for (long e = 0; ok && e < mesh->edge_count; ++e) {
+    const struct winged_edge *edge = &mesh->edges[e];
+    int along = 0;
+    for (int axis = 0; axis < 3; ++axis) {
+      const int a = place[3 * edge->vs + axis], b = place[3 * edge->ve + axis];
+      along += a != b;
+      for (int side = 0; side < 2; ++side) {
+        const long f = side ? edge->rf : edge->lf;
+        if (a < low[3 * f + axis]) low[3 * f + axis] = a;
+        if (b < low[3 * f + axis]) low[3 * f + axis] = b;
+        if (a > high[3 * f + axis]) high[3 * f + axis] = a;
+        if (b > high[3 * f + axis]) high[3 * f + axis] = b;
+      }
+    }
+    if (along != 1)
+      ok = wings_failed(error, size, "object 1, edge %ld: not along the x, y or z axis (an object made of cubes "
+                        "is expected)", e);
+    else if (edge->lf == edge->rf)
+      ok = wings_failed(error, size, "object 1, edge %ld: face %ld on both of its sides (a closed object is "
+                        "expected)", e, edge->lf);
+  }
+  for (long f = 0; ok && f < mesh->face_count; ++f) {
+    face_axis[f] = -1;
+    face_level[f] = 0;
+    for (int axis = 2; axis >= 0; --axis)
+      if (low[3 * f + axis] == high[3 * f + axis]) face_axis[f] = axis, face_level[f] = low[3 * f + axis];
+    if (face_axis[f] < 0 && high[3 * f] >= 0)
+      ok = wings_failed(error, size, "object 1, face %ld: not in a plane x, y or z = constant (an object made of "
+                        "cubes is expected)", f);
+  }
+  const size_t cells = (size_t)(counts[0] - 1) * (size_t)(counts[2] - 1) * (size_t)(counts[1] - 1);
+  const size_t points = (size_t)counts[0] * (size_t)counts[2] * (size_t)(counts[1] - 1);
+  if (ok) {
+    layers->filled = calloc(cells + 1, 1);
+    layers->rounded = calloc(points + 1, 1);
+    if (!layers->filled || !layers->rounded) ok = wings_failed(error, size, "out of memory");
+  }
+  if (ok) ok = fill_cells(mesh, layers, place, face_axis, face_level, error, size);
+  int any = 0;
+  for (size_t c = 0; ok && c < cells; ++c) any |= layers->filled[c];
+  if (ok && !any) ok = wings_failed(error, size, "object 1 encloses no cube");
+  for (int k = 0; ok && k < layers->layer_count; ++k)
+    for (int j = 1; ok && j + 1 < layers->z_count; ++j)
+      for (int i = 1; ok && i + 1 < layers->x_count; ++i) {
+        int diagonal;
+        cells_around(layers, k, i, j, &diagonal);
+        if (diagonal)
+          ok = wings_failed(error, size, "object 1: between heights %g and %g its cubes meet only along the "
+                            "upright line at x %g, z %g", layers->height[k], layers->height[k + 1], layers->x[i],
+                            layers->z[j]);
+      }
+  if (ok) ok = mark_hard_edges(mesh, layers, place, face_axis, face_level, error, size);
+  if (ok) {
+    layers->max_radius = INFINITY;
+    for (int i = 0; i + 1 < layers->x_count; ++i) layers->max_radius = fmin(layers->max_radius, (layers->x[i + 1] - layers->x[i]) / 2);
+    for (int j = 0; j + 1 < layers->z_count; ++j) layers->max_radius = fmin(layers->max_radius, (layers->z[j + 1] - layers->z[j]) / 2);
+  }
+  free(place);
+  free(face_axis);
+  free(face_level);
+  free(low);
+  free(high);
+  if (!ok) cube_layers_free(layers);
+  return ok;
+}
+
+void cube_layers_free(struct cube_layers *layers)
+{
+  free(layers->x);
+  free(layers->z);
+  free(layers->height);
+  free(layers->filled);
+  free(layers->rounded);
+  memset(layers, 0, sizeof *layers);
+}

@@ -1,0 +1,39 @@
+/* The homework's object when it is more than one layer of cubes: any closed solid whose faces lie
+ * in planes x, y or z = constant, cut by the planes through its vertices into a grid of cells,
+ * each in the solid or out of it. Between two consecutive heights of its vertices lies a layer:
+ * a prism over the cells it fills, its footprint. Its upright edges at the footprint's corners
+ * are rounded one layer at a time when they are marked hard in Wings3D; the edges along the
+ * layers' tops and bottoms stay sharp. */
+#ifndef HOMEWORK45_CUBE_LAYERS_H
+#define HOMEWORK45_CUBE_LAYERS_H
+
+#include <stddef.h>
+
+#include "wings_mesh.h"
+
+struct cube_layers {
+  int x_count, z_count; /* grid lines: the distinct x and z of the vertices */
+  int layer_count;      /* the distinct heights less one */
+  double *x, *z;        /* ascending */
+  double *height;       /* ascending, layer_count + 1 of them */
+  unsigned char *filled;  /* [layer][j][i]: whether the cell from x[i] to x[i + 1] and z[j] to
+                             z[j + 1] is in the solid in that layer */
+  unsigned char *rounded; /* [layer][j][i]: whether the upright through grid point (x[i], z[j])
+                             is a corner of the layer's footprint and marked hard there */
+  double max_radius;      /* half the closest spacing of the grid lines: the corners' quarter
+                             circles keep apart */
+  int sharp_hard_edges;   /* hard edges left sharp: every crease along the layers' tops and
+                             bottoms */
+};
+
+/* The cells of a mesh's object. Returns 0 and writes the reason into `error` when the object is
+ * not a closed solid of faces in planes x, y or z = constant. */
+int cube_layers_from_mesh(const struct wings_mesh *mesh, struct cube_layers *layers, char *error, size_t error_size);
+void cube_layers_free(struct cube_layers *layers);
+
+/* Whether cell (i, j) of `layer` is in the solid (0 outside the grid). */
+int cube_layers_filled(const struct cube_layers *layers, int layer, int i, int j);
+/* Whether the upright at grid point (i, j) is rounded in `layer` (0 outside the grid). */
+int cube_layers_rounded(const struct cube_layers *layers, int layer, int i, int j);
+
+#endif

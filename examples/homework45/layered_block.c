@@ -1,0 +1,227 @@
+/* The object of several layers of cubes, drawn as the solid each layer makes with its rounded
+ * uprights: over its footprint with every rounded corner's quarter square cut by the quarter arc
+ * (the arc's convex side in at a convex corner; a fillet, the arc's concave side, filling the
+ * empty quarter at a concave one), straight up from one height to the next. Stacked, the layers
+ * make a closed solid: its walls are the layers' walls and quarter cylinders, and at each height
+ * the flat face is what the layer below covers and the layer above does not (facing up), or the
+ * other way round (facing down).
+ *
+ * Every flat face is cut along the grid lines and R in from them into rectangles, and a corner's
+ * R x R square is either whole, the quarter disk inside its arc, the piece between the arc and
+ * the corner, or nothing: on every line every piece, wall and cylinder has its vertices at the
+ * same points (the grid lines, R in from them, the arcs' ARC_STEPS points, four rows per layer up
+ * the walls and the cylinders), so the surface has no T-junctions and no cracks. The arcs' squares
+ * keep apart, as R is at most half the closest spacing of the grid lines. */
+#include "layered_block.h"
+
+#include "rounded_upright.h"
+
+#include <math.h>
+#include <GL/glut.h>
+
+#define PI 3.14159265358979323846
+/* Rows up each layer's walls and cylinders, as on the one-layer object. */
+#define ROWS 4
+/* The length of s in which homework45.c's checkerboard repeats: two squares of 8 of its 64
+ * texels. */
+#define CHECKER_PERIOD 0.25
+
+/* The parts of a corner's R x R square a layer covers: the piece between the arc and the corner,
+ * the quarter disk inside the arc, both (the whole square) or neither. */
+enum { CORNER_PIECE = 1, QUARTER_DISK = 2, WHOLE_SQUARE = 3 };
+
+/* The texture's t on the walls: the height above the bottom, in the same units as s (the
+ * one-layer object's sides run t from 0 to 1 over their height, the same for a layer one unit
+ * high), so the checkerboard stays square however many layers there are. */
+static float texture_t(const struct cube_layers *layers, double y) { return (float)(y - layers->height[0]); }
+
+/* The texture's s on a wall facing (normal_x, normal_z): the length along it in the direction of
+ * a walk that keeps the solid on the left, as on the one-layer object's sides. */
+static float wall_s(double x, double z, int normal_x, int normal_z) { return (float)(x * normal_z - z * normal_x); }
+
+/* Whether the upright at grid point (i, j) of `layer` is rounded at this radius. */
+static int upright_rounded(const struct cube_layers *layers, int layer, int i, int j, float radius)
+{
+  return radius > 0 && cube_layers_rounded(layers, layer, i, j);
+}
+
+/* The wall of `layer` along grid line `fixed` (x = fixed for along_x 0, else z = fixed), from
+ * grid value a to b > a, facing (normal_x, normal_z): R shorter at an end where the upright is
+ * rounded, with columns at a, a + R, b - R and b. */
+static void wall(const struct cube_layers *layers, int layer, int along_x, float fixed, float a, float b,
+                 int rounded_a, int rounded_b, int normal_x, int normal_z, float radius)
+{
+  float columns[4];
+  int count = 0;
+  const float candidates[4] = {a, a + radius, b - radius, b};
+  const int wanted[4] = {!rounded_a, radius > 0, radius > 0, !rounded_b};
+  for (int c = 0; c < 4; ++c)
+    if (wanted[c] && (count == 0 || candidates[c] > columns[count - 1])) columns[count++] = candidates[c];
+  const double y0 = layers->height[layer], y1 = layers->height[layer + 1];
+  glNormal3f((float)normal_x, 0, (float)normal_z);
+  for (int row = 0; row < ROWS; ++row) {
+    glBegin(GL_QUAD_STRIP);
+    for (int c = 0; c < count; ++c)
+      for (int k = 1; k >= 0; --k) {
+        const float y = (float)(y0 + (y1 - y0) * (row + k) / ROWS);
+        const float x = along_x ? columns[c] : fixed, z = along_x ? fixed : columns[c];
+        glTexCoord2f(wall_s(x, z, normal_x, normal_z), texture_t(layers, y));
+        glVertex3f(x, y, z);
+      }
+    glEnd();
+  }
+}
+
+/* The walls of `layer`: along every grid segment with the solid on one side only. */
+static void walls(const struct cube_layers *layers, int layer, float radius)
+{
+  for (int i = 0; i < layers->x_count; ++i)
+    for (int j = 0; j + 1 < layers->z_count; ++j) {
+      const int before = cube_layers_filled(layers, layer, i - 1, j), after = cube_layers_filled(layers, layer, i, j);
+      if (before != after)
+        wall(layers, layer, 0, (float)layers->x[i], (float)layers->z[j], (float)layers->z[j + 1],
+             upright_rounded(layers, layer, i, j, radius), upright_rounded(layers, layer, i, j + 1, radius),
+             before ? 1 : -1, 0, radius);
+    }
+  for (int j = 0; j < layers->z_count; ++j)
+    for (int i = 0; i + 1 < layers->x_count; ++i) {
+      const int before = cube_layers_filled(layers, layer, i, j - 1), after = cube_layers_filled(layers, layer, i, j);
+      if (before != after)
+        wall(layers, layer, 1, (float)layers->z[j], (float)layers->x[i], (float)layers->x[i + 1],
+             upright_rounded(layers, layer, i, j, radius), upright_rounded(layers, layer, i + 1, j, radius), 0,
+             before ? 1 : -1, radius);
+    }
+}
+
+/* The quarter cylinder of the rounded upright at grid point (i, j) of `layer`. Of the four cells
+ * around it one differs from the others (the only one in the solid at a convex corner, the only
+ * one out of it at a concave one), in direction (qx, qz) from the point; the walls run from the
+ * point along x and along z on its sides. The arc goes from R along the wall the walk arrives by
+ * to R along the wall it leaves by, the solid on the walk's left. */
+static void upright_cylinder(const struct cube_layers *layers, int layer, int i, int j, float radius)
+{
+  int filled = 0, qx = 0, qz = 0;
+  for (int di = -1; di <= 0; ++di)
+    for (int dj = -1; dj <= 0; ++dj) filled += cube_layers_filled(layers, layer, i + di, j + dj);
+  const int convex = filled == 1;
+  for (int di = -1; di <= 0; ++di)
+    for (int dj = -1; dj <= 0; ++dj)
+      if (cube_layers_filled(layers, layer, i + di, j + dj) == convex) qx = di ? -1 : 1, qz = dj ? -1 : 1;
+  const int sign = convex ? 1 : -1;
+  /* The wall along x faces (0, -qz sign) and the walk runs along it by (-qz sign, 0): away from
+   * the point, it leaves by that wall, when that is (qx, 0). The wall along z faces (-qx sign, 0). */
+  const int leaves_along_x = -qz * sign == qx;
+  const float corner[2] = {(float)layers->x[i], (float)layers->z[j]};
+  const float along_x[2] = {corner[0] + (float)qx * radius, corner[1]};
+  const float along_z[2] = {corner[0], corner[1] + (float)qz * radius};
+  const float *from = leaves_along_x ? along_z : along_x, *to = leaves_along_x ? along_x : along_z;
+  /* The texture's s runs on from the wall the walk arrives by and, stretched by less than a
+   * quarter of the texture, reaches the next wall's s but for whole quarters: the checkerboard
+   * (squares of 8 of its 64 texels) repeats every quarter, so it runs on across both seams. */
+  const float s0 = leaves_along_x ? wall_s(from[0], from[1], -qx * sign, 0) : wall_s(from[0], from[1], 0, -qz * sign);
+  const float s1 = leaves_along_x ? wall_s(to[0], to[1], 0, -qz * sign) : wall_s(to[0], to[1], -qx * sign, 0);
+  const float arc = (float)(PI / 2.0) * radius;
+  const double short_of = (double)s1 - s0 - arc;
+  const float stretch = (float)(short_of - CHECKER_PERIOD * floor(short_of / CHECKER_PERIOD));
+  const float y0 = (float)layers->height[layer], y1 = (float)layers->height[layer + 1];
+  quarter_cylinder(from, corner, to, y0, y1, s0, arc + stretch, texture_t(layers, y0), texture_t(layers, y1));
+}
+
+/* What `layer` covers of the R x R square of cell (i, j) at its grid point (gi, gj). */
+static int square_cover(const struct cube_layers *layers, int layer, int i, int j, int gi, int gj, float radius)
+{
+  const int filled = cube_layers_filled(layers, layer, i, j);
+  if (!upright_rounded(layers, layer, gi, gj, radius)) return filled ? WHOLE_SQUARE : 0;
+  int around = 0;
+  for (int di = -1; di <= 0; ++di)
+    for (int dj = -1; dj <= 0; ++dj) around += cube_layers_filled(layers, layer, gi + di, gj + dj);
+  /* The cell that differs from the other three holds the arc. */
+  const int odd = (around == 1) == filled;
+  if (!odd) return filled ? WHOLE_SQUARE : 0;
+  return filled ? QUARTER_DISK : CORNER_PIECE;
+}
+
+static void flat_vertex(float x, float y, float z)
+{
+  glTexCoord2f(x, z);
+  glVertex3f(x, y, z);
+}
+
+static void flat_rectangle(float x0, float x1, float z0, float z1, float y)
+{
+  if (x1 <= x0 || z1 <= z0) return;
+  glBegin(GL_QUADS);
+  flat_vertex(x0, y, z0);
+  flat_vertex(x1, y, z0);
+  flat_vertex(x1, y, z1);
+  flat_vertex(x0, y, z1);
+  glEnd();
+}
+
+/* The part `cover` of the R x R square at grid point `corner` reaching in by (dx, dz) R, at
+ * height y. Its arc runs from the point R along x to the point R along z, the same points on every
+ * piece sharing it. */
+static void flat_square(const float corner[2], int dx, int dz, int cover, float y, float radius)
+{
+  const float along_x[2] = {corner[0] + (float)dx * radius, corner[1]};
+  const float along_z[2] = {corner[0], corner[1] + (float)dz * radius};
+  if (cover == WHOLE_SQUARE) {
+    flat_rectangle(dx > 0 ? corner[0] : along_x[0], dx > 0 ? along_x[0] : corner[0], dz > 0 ? corner[1] : along_z[1],
+                   dz > 0 ? along_z[1] : corner[1], y);
+    return;
+  }
+  if (!cover) return;
+  glBegin(GL_TRIANGLE_FAN);
+  if (cover == QUARTER_DISK) flat_vertex(along_x[0], y, along_z[1]);
+  else flat_vertex(corner[0], y, corner[1]);
+  for (int step = 0; step <= ARC_STEPS; ++step) {
+    double p[2];
+    quarter_arc_point(along_x, corner, along_z, (double)step / ARC_STEPS, p);
+    glTexCoord2d(p[0], p[1]);
+    glVertex3d(p[0], y, p[1]);
+  }
+  glEnd();
+}
+
+/* The flat face at height `level`: what the layer below covers and the layer above does not
+ * (facing up, up = 1) or the other way round (facing down, up = 0), cell by cell: its middle and
+ * its bands along the sides as the cells are, its corners' squares by square_cover. */
+static void flat_face(const struct cube_layers *layers, int level, int up, float radius)
+{
+  const int inner = up ? level - 1 : level, outer = up ? level : level - 1;
+  const float y = (float)layers->height[level];
+  glNormal3f(0, up ? 1.0f : -1.0f, 0);
+  for (int j = 0; j + 1 < layers->z_count; ++j)
+    for (int i = 0; i + 1 < layers->x_count; ++i) {
+      const int shown = cube_layers_filled(layers, inner, i, j) && !cube_layers_filled(layers, outer, i, j);
+      const float x0 = (float)layers->x[i], x1 = (float)layers->x[i + 1];
+      const float z0 = (float)layers->z[j], z1 = (float)layers->z[j + 1];
+      const float xs[4] = {x0, x0 + radius, x1 - radius, x1}, zs[4] = {z0, z0 + radius, z1 - radius, z1};
+      for (int b = 0; b < 3; ++b)
+        for (int a = 0; a < 3; ++a) {
+          if (a != 1 && b != 1) {
+            const int gi = a ? i + 1 : i, gj = b ? j + 1 : j;
+            const int cover = square_cover(layers, inner, i, j, gi, gj, radius) &
+                              ~square_cover(layers, outer, i, j, gi, gj, radius);
+            const float corner[2] = {(float)layers->x[gi], (float)layers->z[gj]};
+            flat_square(corner, a ? -1 : 1, b ? -1 : 1, cover, y, radius);
+          } else if (shown) {
+            flat_rectangle(xs[a], xs[a + 1], zs[b], zs[b + 1], y);
+          }
+        }
+    }
+}
+
+void draw_layered_block(const struct cube_layers *layers, float radius)
+{
+  for (int layer = 0; layer < layers->layer_count; ++layer) {
+    walls(layers, layer, radius);
+    for (int j = 0; j < layers->z_count; ++j)
+      for (int i = 0; i < layers->x_count; ++i)
+        if (upright_rounded(layers, layer, i, j, radius)) upright_cylinder(layers, layer, i, j, radius);
+  }
+  for (int level = 0; level <= layers->layer_count; ++level) {
+    flat_face(layers, level, 1, radius);
+    flat_face(layers, level, 0, radius);
+  }
+}
