@@ -56,6 +56,14 @@ int cube_layers_rounded(const struct cube_layers *layers, int layer, int i, int 
   return layers->rounded[((size_t)layer * (size_t)layers->z_count + (size_t)j) * (size_t)layers->x_count + (size_t)i];
 }
 
+int cube_layers_alike(const struct cube_layers *layers)
+{
+  const size_t cells = (size_t)(layers->x_count - 1) * (size_t)(layers->z_count - 1);
+  for (int k = 1; k < layers->layer_count; ++k)
+    if (memcmp(layers->filled, layers->filled + (size_t)k * cells, cells) != 0) return 0;
+  return 1;
+}
+
 /* How many of the four cells around grid point (i, j) of `layer` are in the solid; whether they
  * are two diagonal ones goes into *diagonal. */
 static int cells_around(const struct cube_layers *layers, int layer, int i, int j, int *diagonal)

@@ -33,6 +33,9 @@ void cube_layers_free(struct cube_layers *layers);
 
 /* Whether cell (i, j) of `layer` is in the solid (0 outside the grid). */
 int cube_layers_filled(const struct cube_layers *layers, int layer, int i, int j);
+/* Whether every layer has the same footprint: the object is one floor plan raised from its
+ * bottom to its top. */
+int cube_layers_alike(const struct cube_layers *layers);
 /* Whether the upright at grid point (i, j) is rounded in `layer` (0 outside the grid). */
 int cube_layers_rounded(const struct cube_layers *layers, int layer, int i, int j);
 

@@ -31,14 +31,16 @@
 /* The room: floor y = 0 and walls x = -ROOM, z = -ROOM, up to WALL_HEIGHT. */
 #define ROOM 5.0f
 #define WALL_HEIGHT 4.0f
-/* The object: its floor plan from the Wings3D file when it is one layer of cubes (drawn with the
- * rims of its top and its bottom rounded), else its layers (drawn by layered_block.c, the
+/* The object: its floor plan from the Wings3D file when it is one layer of cubes or layers alike
+ * (drawn with the rims of its top and its bottom rounded), else its layers (drawn by layered_block.c, the
  * uprights rounded layer by layer); its cells, which the walker may not enter, and its bounding
  * box. */
 static struct floor_plan plan;
 static struct cube_layers layers;
 static int layered, has_cells;
 static float block_min[3], block_max[3];
+/* The height the texture's t runs from 0 to 1 over on the sides: the object's lowest layer's. */
+static float texture_height;
 #define RADIUS_STEP 0.08f
 /* How close the walker may come to a wall or to the block. */
 #define WALKER_RADIUS 0.3f
@@ -146,7 +148,7 @@ static int corner_rounded(int k, enum rim_level level)
 
 /* The texture's t on the sides at height y: 0 at the bottom, 1 at the top, the rims' arcs
  * running on beyond the walls by their length. */
-static float side_t(double y) { return (float)((y - block_min[1]) / (block_max[1] - block_min[1])); }
+static float side_t(double y) { return (float)((y - block_min[1]) / texture_height); }
 
 /* The point of the rational patch net[v][u] (3 x 3 or 2 rows of 3, homogeneous) at (u, v). */
 static void patch_point(const float net[][3][4], int rows, double u, double v, double out[3])
@@ -337,7 +339,7 @@ static void rim_strip(int i, enum rim_level level, float s0, float s1)
 {
   const int n = plan.corners;
   const double r = side_radius(i, level), w = sqrt(2.0) / 2.0;
-  const double top = rim_height(level), out = rim_outward(level), height = block_max[1] - block_min[1];
+  const double top = rim_height(level), out = rim_outward(level), height = texture_height;
   float net[2][3][4], tex[2][3][2];
   double centre[2][3][3];
   /* The strip's axis: R in from side i and R below the top. */
@@ -390,7 +392,7 @@ static void rim_strip(int i, enum rim_level level, float s0, float s1)
 static void rim_corner(int i, enum rim_level level, float s0)
 {
   const double r = radius, w = sqrt(2.0) / 2.0;
-  const double top = rim_height(level), out = rim_outward(level), height = block_max[1] - block_min[1];
+  const double top = rim_height(level), out = rim_outward(level), height = texture_height;
   float from[2], to[2];
   corner_ends(i, from, to);
   double axis[2];
@@ -904,8 +906,9 @@ static void motion(int x, int y)
 }
 
 /* The object's file: the first argument GLUT leaves, or the L beside this program's source. An
- * object of one layer of cubes is drawn from its floor plan, any other closed object of cubes by
- * layers; both are cut into cells for the walker's collisions when they can be. */
+ * object of one layer of cubes (or of layers alike) is drawn from its floor plan, any other closed
+ * object of cubes by layers; both are cut into cells for the walker's collisions when they can
+ * be. */
 static void load_object(int argc, char **argv)
 {
   const char *path = argc > 1 ? argv[1] : HOMEWORK45_MODEL;
@@ -916,7 +919,8 @@ static void load_object(int argc, char **argv)
     exit(1);
   }
   has_cells = cube_layers_from_mesh(&mesh, &layers, error, sizeof error);
-  layered = !floor_plan_from_mesh(&mesh, &plan, plan_error, sizeof plan_error);
+  layered = !floor_plan_from_mesh(&mesh, has_cells && cube_layers_alike(&layers), &plan, plan_error,
+                                  sizeof plan_error);
   wings_mesh_free(&mesh);
   if (layered && !has_cells) {
     fprintf(stderr, "homework45: %s: %s\n", path, error);
@@ -939,6 +943,8 @@ static void load_object(int argc, char **argv)
   block_min[0] = (float)plan.min_x, block_max[0] = (float)plan.max_x;
   block_min[1] = (float)plan.bottom, block_max[1] = (float)plan.top;
   block_min[2] = (float)plan.min_z, block_max[2] = (float)plan.max_z;
+  texture_height = has_cells && layers.layer_count > 1 ? (float)(layers.height[1] - layers.height[0])
+                                                        : block_max[1] - block_min[1];
 }
 
 int main(int argc, char **argv)

@@ -106,7 +106,8 @@ static int trace_outline(const struct wings_mesh *o, struct floor_plan *plan, ch
   return 1;
 }
 
-int floor_plan_from_mesh(const struct wings_mesh *mesh, struct floor_plan *plan, char *error, size_t error_size)
+int floor_plan_from_mesh(const struct wings_mesh *mesh, int layers_alike, struct floor_plan *plan, char *error,
+                         size_t error_size)
 {
   memset(plan, 0, sizeof *plan);
   const struct wings_mesh object = *mesh;
@@ -124,11 +125,12 @@ int floor_plan_from_mesh(const struct wings_mesh *mesh, struct floor_plan *plan,
       plan->max_z = fmax(plan->max_z, object.position[v][2]);
     }
   }
-  /* A solid standing upright: every vertex at the bottom or the top, above or below another. */
+  /* A solid standing upright: every vertex at the bottom or the top (or, with layers alike, in
+   * between), above or below another. */
   const double tolerance = 1e-9 * fmax(plan->top - plan->bottom, 1e-300);
   for (long v = 0; ok && v < object.vertex_count; ++v) {
     const double *p = object.position[v];
-    if (fabs(p[1] - plan->bottom) > tolerance && fabs(p[1] - plan->top) > tolerance) {
+    if (!layers_alike && fabs(p[1] - plan->bottom) > tolerance && fabs(p[1] - plan->top) > tolerance) {
       ok = wings_failed(error, error_size, "object 1, vertex %ld: at height %g, between the bottom %g and the top %g "
                   "(a solid made of one layer of cubes is expected)", v, p[1], plan->bottom, plan->top);
       break;
@@ -214,16 +216,28 @@ int floor_plan_from_mesh(const struct wings_mesh *mesh, struct floor_plan *plan,
         counts[4 * at + (bottom_rim ? 2 : 0) + 1] += hard;
       }
     }
+    /* An upright at a corner is rounded when every edge along it is hard (one edge in an object
+     * of one layer, one per layer in an object of layers alike); one hard only in part stays
+     * sharp. */
+    int *uprights = calloc(2 * (size_t)n + 1, sizeof *uprights);
+    if (!uprights) ok = wings_failed(error, error_size, "out of memory");
     for (long e = 0; ok && e < object.edge_count; ++e) {
-      if (!object.hard[e]) continue;
       const struct winged_edge *edge = &object.edges[e];
       const double *a = object.position[edge->vs], *b = object.position[edge->ve];
       const int upright = a[0] == b[0] && a[2] == b[2];
       for (int i = 0; i < plan->corners && upright; ++i)
-        if (plan->xz[i][0] == a[0] && plan->xz[i][1] == a[2]) plan->rounded[i] = 1;
+        if (plan->xz[i][0] == a[0] && plan->xz[i][1] == a[2]) {
+          uprights[2 * i] += 1;
+          uprights[2 * i + 1] += object.hard[e];
+        }
       /* (A hard upright in the middle of a straight side, or a hard edge between two top or two
-       * bottom faces, has nothing to round.) */
+       * bottom faces, or between two sides' faces one above the other, has nothing to round.) */
     }
+    for (int i = 0; ok && i < plan->corners; ++i) {
+      plan->rounded[i] = uprights[2 * i + 1] > 0 && uprights[2 * i + 1] == uprights[2 * i];
+      if (!plan->rounded[i]) plan->sharp_hard_edges += uprights[2 * i + 1];
+    }
+    free(uprights);
     int any_rim = 0;
     for (int side = 0; ok && side < n; ++side) {
       /* Reversing the corners' order turns side k (corner k to k + 1) into side n - 2 - k. */

@@ -1,7 +1,8 @@
 /* The object of a Wings3D file (.wings) as the homework draws it: a solid made of cubes standing
  * on the floor, that is a floor plan (a polygon with right-angled corners) raised from a bottom
- * to a top height, with the edges marked hard in Wings3D (its "hard edges") to be rounded: the
- * upright edges at the plan's corners, and the edges around the top. */
+ * to a top height (one layer of cubes, or layers alike), with the edges marked hard in Wings3D
+ * (its "hard edges") to be rounded: the upright edges at the plan's corners, and the edges
+ * around the top. */
 #ifndef HOMEWORK45_WINGS_PLAN_H
 #define HOMEWORK45_WINGS_PLAN_H
 
@@ -13,7 +14,7 @@ struct floor_plan {
   int corners;        /* corners of the outline, collinear vertices left out */
   double (*xz)[2];    /* x, z of each corner, in the order that makes the outline turn
                          counter-clockwise seen from above (+y) */
-  int *rounded;       /* whether the upright edge at each corner is hard */
+  int *rounded;       /* whether the upright edges at each corner are hard */
   int *convex;        /* whether the solid's angle at the corner is 90 (else 270) degrees */
   double bottom, top; /* heights */
   double min_x, max_x, min_z, max_z;
@@ -26,9 +27,12 @@ struct floor_plan {
                            bottom of a side whose edges there are hard only in part */
 };
 
-/* The plan of a mesh's object. Returns 0 and writes the reason into `error` when the object is not
- * such a solid. */
-int floor_plan_from_mesh(const struct wings_mesh *mesh, struct floor_plan *plan, char *error, size_t error_size);
+/* The plan of a mesh's object. Its vertices must lie at its bottom or its top unless
+ * `layers_alike` says that the object, cut at the heights of its vertices, has the same footprint
+ * in every layer (cube_layers.h): then it is the same solid, its sides split by edges that round
+ * nothing. Returns 0 and writes the reason into `error` when the object is not such a solid. */
+int floor_plan_from_mesh(const struct wings_mesh *mesh, int layers_alike, struct floor_plan *plan, char *error,
+                         size_t error_size);
 void floor_plan_free(struct floor_plan *plan);
 
 #endif

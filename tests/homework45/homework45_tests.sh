@@ -3,12 +3,14 @@
 # GLASS_GLUT_EVENTS; its snapshots compared with png_probe's same/differ.
 #   homework45_tests.sh PROGRAM PNG_PROBE WORK_DIR MODEL UPRIGHTS_MODEL ALL_HARD_MODEL PARTIAL_MODEL
 #                       PARTIAL_SHARP_UPRIGHTS_MODEL HALF_SIDE_MODEL TWO_LAYERS_MODEL SLAB_CUBE_MODEL
-#                       NOT_CUBES_MODEL
+#                       NOT_CUBES_MODEL TALL_L_MODEL BLOCK_MODEL
 # (UPRIGHTS_MODEL: the same L with only its uprights hard, its top's rim sharp; ALL_HARD_MODEL:
 # with every edge hard, the bottom's rim too; PARTIAL_MODEL and PARTIAL_SHARP_UPRIGHTS_MODEL: the
 # rims of the top and the bottom hard along some sides only, with some uprights hard or none;
 # HALF_SIDE_MODEL: one side's top rim hard along half of it; TWO_LAYERS_MODEL and SLAB_CUBE_MODEL:
-# objects of two layers of cubes, every edge hard; NOT_CUBES_MODEL: an object with slanted edges.)
+# objects of two layers of cubes, every edge hard; NOT_CUBES_MODEL: an object with slanted edges;
+# TALL_L_MODEL and BLOCK_MODEL: objects of two layers alike, an L with its uprights hard and a
+# block of 2 x 2 x 2 cubes with its top's rim and one upright hard.)
 set -eu
 program=$1
 probe=$2
@@ -22,6 +24,8 @@ half_side_model=$9
 two_layers_model=${10}
 slab_cube_model=${11}
 not_cubes_model=${12}
+tall_l_model=${13}
+block_model=${14}
 . "$(dirname "$0")/../shell_test_support.sh"
 
 # repeat N LINE: the event line N times.
@@ -213,6 +217,28 @@ for kind in two_layers slab_cube; do
 done
 "$probe" two_layers_sharp.png differ slab_cube_sharp.png || fail "the two objects of two layers look the same"
 "$probe" two_layers_round6.png differ slab_cube_round6.png || fail "the two rounded objects look the same"
+# Objects of two layers alike are one floor plan raised by two layers: rounded as an object of one
+# layer (uprights, the top's rim), nothing reported as left sharp, every press of R a new picture.
+for kind in tall_l block; do
+  eval "file=\$${kind}_model"
+  {
+    echo "snapshot ${kind}_sharp.png"
+    for press in 1 2 3 4 5; do
+      echo "key R"
+      echo "snapshot ${kind}_round$press.png"
+    done
+  } >${kind}_events.txt
+  status=0
+  GLASS_GLUT_SNAPSHOT=last_$kind.png GLASS_GLUT_EVENTS=${kind}_events.txt "$program" "$file" \
+    >out.txt 2>err.txt || status=$?
+  [ "$status" -eq 0 ] || fail "the program exited with $status on $file: $(cat err.txt)"
+  [ ! -s err.txt ] || fail "$file reports: $(cat err.txt)"
+  previous=${kind}_sharp.png
+  for press in 1 2 3 4 5; do
+    "$probe" "$previous" differ ${kind}_round$press.png || fail "$file: R pressed $press times did not change the picture"
+    previous=${kind}_round$press.png
+  done
+done
 # An object that is not made of cubes is named with what is wrong, and nothing runs.
 status=0
 "$program" "$not_cubes_model" >out.txt 2>err.txt || status=$?
