@@ -9,7 +9,9 @@
  * mitre at a sharp corner. The sphere and torus pieces are surfaces of revolution: the rim's quarter circle
  * turned around the upright's axis by the upright's quarter circle, a rational bi-quadratic
  * patch whose weights are products of the two arcs' weights, exact as both arcs are (study
- * guide, section 2.4). A texture runs on across the rounded strips, planar shadows
+ * guide, section 2.4). An object of several layers of cubes that is not one outline raised (a
+ * cube on a slab) is drawn by layers (layered_block.c): its hard uprights rounded layer by layer,
+ * its rims left sharp. A texture runs on across the rounded strips, planar shadows
  * of the object fall on the floor and both walls (shadow matrices, kept on their surface by the
  * stencil buffer); walk mode with collisions, examine mode, three kinds of light, five
  * viewpoints, orthographic or perspective projection.

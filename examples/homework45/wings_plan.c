@@ -1,5 +1,5 @@
-/* The homework's object of one layer of cubes, from a Wings3D mesh (wings_mesh.c): the outline of
- * its top, its corners and which of its edges are hard. */
+/* The homework's object of one layer of cubes (or of layers alike), from a Wings3D mesh
+ * (wings_mesh.c): the outline of its top, its corners and which of its edges are hard. */
 #include "wings_plan.h"
 
 #include <math.h>
