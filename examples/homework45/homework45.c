@@ -41,7 +41,8 @@ static struct floor_plan plan;
 static struct cube_layers layers;
 static int layered, has_cells;
 static float block_min[3], block_max[3];
-/* The height the texture's t runs from 0 to 1 over on the sides: the object's lowest layer's. */
+/* The height the texture's t runs from 0 to 1 over on the sides: the object's for one layer of
+ * cubes, one unit for several (as s runs one unit along a side), as layered_block.c does. */
 static float texture_height;
 #define RADIUS_STEP 0.08f
 /* How close the walker may come to a wall or to the block. */
@@ -945,8 +946,7 @@ static void load_object(int argc, char **argv)
   block_min[0] = (float)plan.min_x, block_max[0] = (float)plan.max_x;
   block_min[1] = (float)plan.bottom, block_max[1] = (float)plan.top;
   block_min[2] = (float)plan.min_z, block_max[2] = (float)plan.max_z;
-  texture_height = has_cells && layers.layer_count > 1 ? (float)(layers.height[1] - layers.height[0])
-                                                        : block_max[1] - block_min[1];
+  texture_height = has_cells && layers.layer_count > 1 ? 1.0f : block_max[1] - block_min[1];
 }
 
 int main(int argc, char **argv)

@@ -30,13 +30,10 @@
  * the quarter disk inside the arc, both (the whole square) or neither. */
 enum { CORNER_PIECE = 1, QUARTER_DISK = 2, WHOLE_SQUARE = 3 };
 
-/* The texture's t on the walls: from 0 at the bottom to 1 at the top of the lowest layer and on
- * (the one-layer object's sides run from 0 to 1 over their height), so the checkerboard keeps
- * its scale however many layers there are, square on cubes one unit wide. */
-static float texture_t(const struct cube_layers *layers, double y)
-{
-  return (float)((y - layers->height[0]) / (layers->height[1] - layers->height[0]));
-}
+/* The texture's t on the walls: the height above the object's bottom, in the units of s (a
+ * one-layer object's sides run t from 0 to 1 over their height: the same for cubes of unit
+ * size), so the checkerboard stays square however the object is cut into layers. */
+static float texture_t(const struct cube_layers *layers, double y) { return (float)(y - layers->height[0]); }
 
 /* The texture's s on a wall facing (normal_x, normal_z): the length along it in the direction of
  * a walk that keeps the solid on the left, as on the one-layer object's sides. */

@@ -7,8 +7,7 @@
 
 /* Draws the object with its rounded uprights at `radius` (0: sharp; at most layers->max_radius):
  * walls, quarter cylinders and the flat pieces of every height, with normals and texture
- * coordinates (s along a wall, t up from the bottom, 1 a layer's height; (x, z) on the flat
- * pieces). */
+ * coordinates (s along a wall, t the height above the bottom, (x, z) on the flat pieces). */
 void draw_layered_block(const struct cube_layers *layers, float radius);
 
 #endif
