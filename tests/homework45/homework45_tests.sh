@@ -37,6 +37,27 @@ repeat() {
   done
 }
 
+# five_presses KIND FILE: FILE's snapshots KIND_sharp.png and KIND_round1..5.png, one after each
+# press of R; the program must end well, report nothing, and change the picture at every press.
+five_presses() {
+  {
+    echo "snapshot $1_sharp.png"
+    for press in 1 2 3 4 5; do
+      echo "key R"
+      echo "snapshot $1_round$press.png"
+    done
+  } >$1_events.txt
+  status=0
+  GLASS_GLUT_SNAPSHOT=last_$1.png GLASS_GLUT_EVENTS=$1_events.txt "$program" "$2" >out.txt 2>err.txt || status=$?
+  [ "$status" -eq 0 ] || fail "the program exited with $status on $2: $(cat err.txt)"
+  [ ! -s err.txt ] || fail "$2 reports: $(cat err.txt)"
+  previous=$1_sharp.png
+  for press in 1 2 3 4 5; do
+    "$probe" "$previous" differ $1_round$press.png || fail "$2: R pressed $press times did not change the picture"
+    previous=$1_round$press.png
+  done
+}
+
 {
   echo "snapshot sharp.png"
   for press in 1 2 3 4 5; do
@@ -122,26 +143,10 @@ GLASS_GLUT_SNAPSHOT=last_all_hard.png GLASS_GLUT_EVENTS=all_hard_events.txt "$pr
 # its own rounded, changing with every press.
 for kind in partial partial_sharp; do
   eval "file=\$${kind}_model"
-  {
-    echo "snapshot ${kind}_sharp.png"
-    for press in 1 2 3 4 5; do
-      echo "key R"
-      echo "snapshot ${kind}_round$press.png"
-    done
-  } >${kind}_events.txt
-  status=0
-  GLASS_GLUT_SNAPSHOT=last_$kind.png GLASS_GLUT_EVENTS=${kind}_events.txt "$program" "$file" \
-    >out.txt 2>err.txt || status=$?
-  [ "$status" -eq 0 ] || fail "the program exited with $status on $file: $(cat err.txt)"
-  [ ! -s err.txt ] || fail "$file reports: $(cat err.txt)"
+  five_presses $kind "$file"
   "$probe" ${kind}_sharp.png same sharp.png || fail "$file differs from the L before rounding"
   for other in round5.png all_hard_round5.png uprights_round5.png; do
     "$probe" ${kind}_round5.png differ $other || fail "$file rounded looks like $other"
-  done
-  previous=${kind}_sharp.png
-  for press in 1 2 3 4 5; do
-    "$probe" "$previous" differ ${kind}_round$press.png || fail "$file: R pressed $press times did not change the picture"
-    previous=${kind}_round$press.png
   done
 done
 "$probe" partial_round5.png differ partial_sharp_round5.png || fail "the partly marked Ls look the same"
@@ -219,26 +224,8 @@ done
 "$probe" two_layers_round6.png differ slab_cube_round6.png || fail "the two rounded objects look the same"
 # Objects of two layers alike are one floor plan raised by two layers: rounded as an object of one
 # layer (uprights, the top's rim), nothing reported as left sharp, every press of R a new picture.
-for kind in tall_l block; do
-  eval "file=\$${kind}_model"
-  {
-    echo "snapshot ${kind}_sharp.png"
-    for press in 1 2 3 4 5; do
-      echo "key R"
-      echo "snapshot ${kind}_round$press.png"
-    done
-  } >${kind}_events.txt
-  status=0
-  GLASS_GLUT_SNAPSHOT=last_$kind.png GLASS_GLUT_EVENTS=${kind}_events.txt "$program" "$file" \
-    >out.txt 2>err.txt || status=$?
-  [ "$status" -eq 0 ] || fail "the program exited with $status on $file: $(cat err.txt)"
-  [ ! -s err.txt ] || fail "$file reports: $(cat err.txt)"
-  previous=${kind}_sharp.png
-  for press in 1 2 3 4 5; do
-    "$probe" "$previous" differ ${kind}_round$press.png || fail "$file: R pressed $press times did not change the picture"
-    previous=${kind}_round$press.png
-  done
-done
+five_presses tall_l "$tall_l_model"
+five_presses block "$block_model"
 # An object that is not made of cubes is named with what is wrong, and nothing runs.
 status=0
 "$program" "$not_cubes_model" >out.txt 2>err.txt || status=$?
