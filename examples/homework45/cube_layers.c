@@ -243,8 +243,10 @@ int cube_layers_from_mesh(const struct wings_mesh *mesh, struct cube_layers *lay
   if (ok) ok = mark_hard_edges(mesh, layers, place, face_axis, face_level, error, size);
   if (ok) {
     layers->max_radius = INFINITY;
-    for (int i = 0; i + 1 < layers->x_count; ++i) layers->max_radius = fmin(layers->max_radius, (layers->x[i + 1] - layers->x[i]) / 2);
-    for (int j = 0; j + 1 < layers->z_count; ++j) layers->max_radius = fmin(layers->max_radius, (layers->z[j + 1] - layers->z[j]) / 2);
+    for (int i = 0; i + 1 < layers->x_count; ++i)
+      layers->max_radius = fmin(layers->max_radius, (layers->x[i + 1] - layers->x[i]) / 2);
+    for (int j = 0; j + 1 < layers->z_count; ++j)
+      layers->max_radius = fmin(layers->max_radius, (layers->z[j + 1] - layers->z[j]) / 2);
   }
   free(place);
   free(face_axis);

@@ -34,9 +34,9 @@
 #define ROOM 5.0f
 #define WALL_HEIGHT 4.0f
 /* The object: its floor plan from the Wings3D file when it is one layer of cubes or layers alike
- * (drawn with the rims of its top and its bottom rounded), else its layers (drawn by layered_block.c, the
- * uprights rounded layer by layer); its cells, which the walker may not enter, and its bounding
- * box. */
+ * (drawn with the rims of its top and its bottom rounded), else its layers (drawn by
+ * layered_block.c, the uprights rounded layer by layer); its cells, which the walker may not
+ * enter, and its bounding box. */
 static struct floor_plan plan;
 static struct cube_layers layers;
 static int layered, has_cells;
@@ -149,8 +149,8 @@ static int corner_rounded(int k, enum rim_level level)
   return side_rounded(k - 1, level) || side_rounded(k, level);
 }
 
-/* The texture's t on the sides at height y: 0 at the bottom, 1 at the top, the rims' arcs
- * running on beyond the walls by their length. */
+/* The texture's t on the sides at height y: 0 at the bottom, 1 at texture_height above it (the
+ * top, for one layer), the rims' arcs running on beyond the walls by their length. */
 static float side_t(double y) { return (float)((y - block_min[1]) / texture_height); }
 
 /* The point of the rational patch net[v][u] (3 x 3 or 2 rows of 3, homogeneous) at (u, v). */

@@ -36,7 +36,8 @@ static int trace_outline(const struct wings_mesh *o, struct floor_plan *plan, ch
     const struct winged_edge *edge = &o->edges[e];
     if (on_top[edge->lf] == on_top[edge->rf]) continue;
     const long from = on_top[edge->lf] ? edge->vs : edge->ve, to = on_top[edge->lf] ? edge->ve : edge->vs;
-    if (next[from] >= 0) ok = wings_failed(error, size, "object 1: the outline of its top passes vertex %ld twice", from);
+    if (next[from] >= 0)
+      ok = wings_failed(error, size, "object 1: the outline of its top passes vertex %ld twice", from);
     next[from] = to;
     start = from;
     ++outline_edges;
@@ -53,7 +54,7 @@ static int trace_outline(const struct wings_mesh *o, struct floor_plan *plan, ch
   }
   if (ok && loop != outline_edges)
     ok = wings_failed(error, size, "object 1: its top has %ld outline edges, %ld of them in one loop (holes or "
-                "separate pieces are not supported)", outline_edges, loop);
+                      "separate pieces are not supported)", outline_edges, loop);
   if (!ok) {
     free(next);
     return 0;
@@ -84,7 +85,8 @@ static int trace_outline(const struct wings_mesh *o, struct floor_plan *plan, ch
     if (fabs(turn) <= 1e-9 * scale && along > 0) continue; /* straight on */
     if (fabs(along) > 1e-9 * scale)
       return free(next), free(corner_vertex), free(side),
-             wings_failed(error, size, "object 1: its outline turns at vertex %ld by an angle other than 90 degrees", here);
+             wings_failed(error, size, "object 1: its outline turns at vertex %ld by an angle other than 90 degrees",
+                          here);
     corner_vertex[plan->corners] = here;
     plan->xz[plan->corners][0] = o->position[here][0];
     plan->xz[plan->corners][1] = o->position[here][2];
@@ -132,7 +134,7 @@ int floor_plan_from_mesh(const struct wings_mesh *mesh, int layers_alike, struct
     const double *p = object.position[v];
     if (!layers_alike && fabs(p[1] - plan->bottom) > tolerance && fabs(p[1] - plan->top) > tolerance) {
       ok = wings_failed(error, error_size, "object 1, vertex %ld: at height %g, between the bottom %g and the top %g "
-                  "(a solid made of one layer of cubes is expected)", v, p[1], plan->bottom, plan->top);
+                        "(a solid made of one layer of cubes is expected)", v, p[1], plan->bottom, plan->top);
       break;
     }
     int twin = 0;
@@ -140,11 +142,12 @@ int floor_plan_from_mesh(const struct wings_mesh *mesh, int layers_alike, struct
       twin = w != v && object.position[w][0] == p[0] && object.position[w][2] == p[2] &&
              fabs(object.position[w][1] - p[1]) > tolerance;
     if (!twin) ok = wings_failed(error, error_size, "object 1, vertex %ld: no vertex above or below it (the object "
-                           "does not stand upright)", v);
+                                 "does not stand upright)", v);
   }
   long *outline_next = NULL, *outline_side = NULL;
   if (ok) ok = trace_outline(&object, plan, error, error_size, &outline_next, &outline_side);
-  if (ok && plan->corners < 4) ok = wings_failed(error, error_size, "object 1: its outline has %d corners", plan->corners);
+  if (ok && plan->corners < 4)
+    ok = wings_failed(error, error_size, "object 1: its outline has %d corners", plan->corners);
   if (ok) {
     /* Counter-clockwise seen from above: the signed area in (z, x) is positive. */
     double area = 0;
