@@ -91,8 +91,18 @@ int64_t walkLineQuad(const LineQuad& quad, bool increasing, const LineQuadClip& 
   const int64_t* P = quad.xMajor ? A : B;
   const int64_t* Q = quad.xMajor ? B : A;
   const int64_t* majorCoord = quad.xMajor ? X : Y;
-  const int64_t lowMajor = ceilDiv(*std::min_element(majorCoord, majorCoord + 4), 256);
-  const int64_t highMajor = floorDiv(*std::max_element(majorCoord, majorCoord + 4), 256);
+  int64_t lowMajor = ceilDiv(*std::min_element(majorCoord, majorCoord + 4), 256);
+  int64_t highMajor = floorDiv(*std::max_element(majorCoord, majorCoord + 4), 256);
+  // An edge with Q == 0 (an end of the quad, across the major axis) holds for whole runs: at run
+  // k, P 256 k + C >= 0 means k >= ceil(-C / (256 P)) when P > 0, k <= floor(C / (-256 P)) when
+  // P < 0, every k or none when P == 0. A run it fails is empty, neither visited nor counted, so
+  // such edges narrow the range of runs, and the walk tests only the other edges run by run.
+  for (int i = 0; i < 4; ++i) {
+    if (Q[i] != 0) continue;
+    if (P[i] > 0) lowMajor = std::max(lowMajor, ceilDiv(-C[i], 256 * P[i]));
+    else if (P[i] < 0) highMajor = std::min(highMajor, floorDiv(C[i], -256 * P[i]));
+    else if (C[i] < 0) return 0;
+  }
   if (lowMajor > highMajor) return 0;
   // The runs to walk, as positions n = 0 .. runs - 1 in order of travel: the clipped ones, from
   // the segment's start when runs before them are counted, to its end when all are counted.
@@ -116,11 +126,9 @@ int64_t walkLineQuad(const LineQuad& quad, bool increasing, const LineQuadClip& 
 
   // Edge i at run k: need Q * 256 m + P * 256 k + C >= 0. With Q > 0 that is a lower bound
   // m >= ceil(-(P 256 k + C) / (256 Q)), with Q < 0 an upper bound m <= floor((P 256 k + C) /
-  // (-256 Q)); with Q == 0 the run is all in or all out. Bounds are stepped from run to run.
+  // (-256 Q)) (Q == 0 was settled above). Bounds are stepped from run to run.
   SteppedFloorDivision lower[4], upper[4];
   int lowerCount = 0, upperCount = 0;
-  int64_t constantEdges[4][2];  // (value at firstK, step) for edges with Q == 0
-  int constantCount = 0;
   for (int i = 0; i < 4; ++i) {
     const int64_t rest = P[i] * 256 * firstK + C[i], restStep = P[i] * 256 * dk;
     if (Q[i] > 0) {  // ceil(-rest / D) = floor((-rest + D - 1) / D)
@@ -128,10 +136,6 @@ int64_t walkLineQuad(const LineQuad& quad, bool increasing, const LineQuadClip& 
       lower[lowerCount++].start(-rest + d - 1, d, -restStep);
     } else if (Q[i] < 0) {
       upper[upperCount++].start(rest, -256 * Q[i], restStep);
-    } else {
-      constantEdges[constantCount][0] = rest;
-      constantEdges[constantCount][1] = restStep;
-      ++constantCount;
     }
   }
   int64_t counted = 0;
@@ -144,10 +148,6 @@ int64_t walkLineQuad(const LineQuad& quad, bool increasing, const LineQuadClip& 
     for (int i = 0; i < upperCount; ++i) {
       hi = std::min(hi, upper[i].quotient);
       upper[i].advance();
-    }
-    for (int i = 0; i < constantCount; ++i) {
-      if (constantEdges[i][0] < 0) hi = INT64_MIN;
-      constantEdges[i][0] += constantEdges[i][1];
     }
     if (lo > hi) continue;
     const int64_t run = counted;
