@@ -21,11 +21,11 @@
 // or row of a wide one); the fragment is kept when bit floor(s / factor) mod 16 of the pattern is
 // set. The counter runs over fragments outside the bounds too: the scissor does not move it.
 #include <algorithm>
-#include <climits>
 #include <cmath>
 
 #include "glass/raster/depth_value.h"
 #include "glass/raster/line.h"
+#include "glass/raster/line_run.h"
 #include "line_quad.h"
 #include "line_section.h"
 #include "line_quad_walk.h"
@@ -34,15 +34,13 @@
 namespace glass::raster {
 namespace {
 
-constexpr int kBatchSize = 64;
-
-// Fragments in batches, with their attributes. Every fragment of a run (one column of an x-major
-// line, one row of a y-major one) has the same t and so the same depth and varyings: they are
-// computed once per run.
-class LineFragmentWriter {
+// Runs (line_run.h) in batches, with their attributes. Every fragment of a run (one column of an
+// x-major line, one row of a y-major one) has the same t and so the same depth and varyings: they
+// are computed once per run.
+class LineRunWriter {
  public:
-  LineFragmentWriter(const WindowVertex& a, const WindowVertex& b, const LineSettings& settings,
-                     bool xMajor, FragmentSink& sink)
+  LineRunWriter(const WindowVertex& a, const WindowVertex& b, const LineSettings& settings,
+                bool xMajor, FragmentSink& sink)
       : a_(a), b_(b), settings_(settings), sink_(sink), xMajor_(xMajor) {
     varyingCount_ = std::clamp(settings.varyingCount, 0, kMaxVaryings);
     start_ = xMajor ? a.x : a.y;
@@ -50,33 +48,33 @@ class LineFragmentWriter {
     qa_ = settings.perspectiveCorrect ? double(a.invW) : 1.0;
     qb_ = settings.perspectiveCorrect ? double(b.invW) : 1.0;
   }
-  ~LineFragmentWriter() { flush(); }
+  ~LineRunWriter() { flush(); }
 
-  // (x, y) must lie within settings.bounds (the walk is clipped to them).
-  void emit(int x, int y) {
-    const int major = xMajor_ ? x : y;
-    if (major != runMajor_) startRun(major);
-    Fragment& f = fragments_[count_++];
-    f.x = x;
-    f.y = y;
-    f.depth = run_.depth;
-    std::copy(run_.varyings, run_.varyings + varyingCount_, f.varyings);
-    if (count_ == kBatchSize) flush();
+  // The run at major coordinate `major`, minor coordinates minorFirst to minorLast; it must lie
+  // within settings.bounds (the walk is clipped to them).
+  void emit(int major, int minorFirst, int minorLast) {
+    LineRun& run = runs_[count_++];
+    run.first.x = xMajor_ ? major : minorFirst;
+    run.first.y = xMajor_ ? minorFirst : major;
+    run.length = minorLast - minorFirst + 1;
+    interpolate(major, run.first);
+    if (count_ == LineRunBatch::kMaxRuns) flush();
   }
 
   void flush() {
     if (count_ == 0) return;
-    FragmentBatch batch;
-    batch.fragments = fragments_;
+    LineRunBatch batch;
+    batch.runs = runs_;
     batch.count = count_;
     batch.varyingCount = varyingCount_;
-    sink_.processFragments(batch);
+    batch.alongX = !xMajor_;
+    sink_.processLineRuns(batch);
     count_ = 0;
   }
 
  private:
-  void startRun(int major) {
-    runMajor_ = major;
+  // The depth and varyings at the centre of the runs at major coordinate `major`.
+  void interpolate(int major, Fragment& f) const {
     const double centre = major + 0.5;
     double t = (centre - start_) / length_;
     // The weights of the two ends, (1 - t) q_a / q and t q_b / q, sum to one.
@@ -85,14 +83,14 @@ class LineFragmentWriter {
       t = std::clamp(t, 0.0, 1.0);
       wa = (1.0 - t) * qa_, wb = t * qb_, q = wa + wb;
     }
-    run_.depth = depthValue((1.0 - t) * a_.z + t * b_.z + settings_.depthBias);
+    f.depth = depthValue((1.0 - t) * a_.z + t * b_.z + settings_.depthBias);
     // Without perspective (q_a = q_b = 1) q is (1 - t) + t, which is exactly 1 for almost every
     // t; w / 1 is w exactly (IEEE 754 division is correctly rounded), so the divisions are skipped
     // only where they cannot change a bit.
     const bool unit = q == 1.0;
     const double weightA = unit ? wa : wa / q, weightB = unit ? wb : wb / q;
     for (int k = 0; k < varyingCount_; ++k)
-      run_.varyings[k] = static_cast<float>(weightA * a_.varyings[k] + weightB * b_.varyings[k]);
+      f.varyings[k] = static_cast<float>(weightA * a_.varyings[k] + weightB * b_.varyings[k]);
   }
 
   const WindowVertex& a_;
@@ -102,9 +100,7 @@ class LineFragmentWriter {
   bool xMajor_;
   int varyingCount_;
   double start_, length_, qa_, qb_;
-  int runMajor_ = INT_MIN;
-  Fragment run_{};  // depth and varyings of the current run
-  Fragment fragments_[kBatchSize];
+  LineRun runs_[LineRunBatch::kMaxRuns];
   int count_ = 0;
 };
 
@@ -117,7 +113,7 @@ void drawLine(const WindowVertex& a, const WindowVertex& b, const LineSettings& 
     return;
   LineQuad quad;
   if (!makeLineQuad(a.x, a.y, b.x, b.y, settings.width, settings.framebufferHeight, quad)) return;
-  LineFragmentWriter writer(a, b, settings, quad.xMajor, sink);
+  LineRunWriter writer(a, b, settings, quad.xMajor, sink);
 
   const PixelRect& r = settings.bounds;
   LineQuadClip clip;
@@ -128,7 +124,7 @@ void drawLine(const WindowVertex& a, const WindowVertex& b, const LineSettings& 
   const bool increasing = quad.xMajor ? b.x > a.x : b.y > a.y;
   if (settings.stippleFactor <= 0) {
     walkLineQuad(quad, increasing, clip, RunCount::None,
-                 [&](int x, int y, int64_t) { writer.emit(x, y); });
+                 [&](int major, int first, int last, int64_t) { writer.emit(major, first, last); });
     return;
   }
   // The counter steps once per run, inside the bounds or not, so the runs before the bounds are
@@ -137,9 +133,9 @@ void drawLine(const WindowVertex& a, const WindowVertex& b, const LineSettings& 
   const unsigned pattern = settings.stipplePattern;
   const int64_t runs = walkLineQuad(
       quad, increasing, clip, stippleEnd ? RunCount::All : RunCount::ThroughClip,
-      [&](int x, int y, int64_t run) {
+      [&](int major, int first, int last, int64_t run) {
         const int64_t counter = stippleStart + run;
-        if ((pattern >> ((counter / factor) % 16)) & 1u) writer.emit(x, y);
+        if ((pattern >> ((counter / factor) % 16)) & 1u) writer.emit(major, first, last);
       });
   if (stippleEnd) *stippleEnd = static_cast<int>(stippleStart + runs);
 }

@@ -48,13 +48,14 @@ struct LineQuadClip {
 // inside the clip or not): not at all, up to the clip's last run, or to the end of the segment.
 enum class RunCount { None, ThroughClip, All };
 
-// Calls visit(x, y, run) for each pixel inside the clip whose centre the quad covers, with the
-// same edge functions and ownership rule as triangles (left and bottom edges own their centres).
-// Pixels are visited in runs across the major axis (one run per column of an x-major line, per
-// row of a y-major one); runs go in increasing major coordinate when `increasing` is true,
-// decreasing otherwise, and each run goes in increasing minor coordinate. `run` is the number of
-// non-empty runs before this pixel's run in order of travel, counted from the segment's start
-// when `count` is not RunCount::None (0 otherwise). Returns the number of non-empty runs counted.
+// Calls visit(major, minorFirst, minorLast, run) for each run of pixels inside the clip whose
+// centres the quad covers, with the same edge functions and ownership rule as triangles (left and
+// bottom edges own their centres). A run lies across the major axis (a column of an x-major line,
+// a row of a y-major one): the pixels at major coordinate `major` (x for an x-major line) and
+// minor coordinates minorFirst to minorLast, at least one. Runs go in increasing major coordinate
+// when `increasing` is true, decreasing otherwise. `run` is the number of non-empty runs before
+// this one in order of travel, counted from the segment's start when `count` is not
+// RunCount::None (0 otherwise). Returns the number of non-empty runs counted.
 //
 // Each run's extent comes from the four edges by exact integer division, and the walk starts at
 // the first run the clip and the count need, so the work is proportional to those runs: with
@@ -153,10 +154,9 @@ int64_t walkLineQuad(const LineQuad& quad, bool increasing, const LineQuadClip& 
     const int64_t run = counted;
     if (count != RunCount::None) ++counted;
     if (k < clip.majorLow || k > clip.majorHigh) continue;
-    const int64_t mEnd = std::min(hi, clip.minorHigh);
-    for (int64_t m = std::max(lo, clip.minorLow); m <= mEnd; ++m)
-      quad.xMajor ? visit(static_cast<int>(k), static_cast<int>(m), run)
-                  : visit(static_cast<int>(m), static_cast<int>(k), run);
+    const int64_t first = std::max(lo, clip.minorLow), last = std::min(hi, clip.minorHigh);
+    if (first <= last)
+      visit(static_cast<int>(k), static_cast<int>(first), static_cast<int>(last), run);
   }
   return counted;
 }

@@ -1,7 +1,7 @@
 // Fragments, and the sink that receives them from the rasterizer.
 //
-// The rasterizer hands fragments over in batches (one batch per 8x8 block of a triangle, per span
-// of a line, per point), so the per-fragment work behind the sink is reached through one indirect
+// The rasterizer hands fragments over in batches (one batch per 8x8 block of a triangle, per batch
+// of a line's runs, per point), so the per-fragment work behind the sink is reached through one indirect
 // call per batch, never one per pixel.
 #pragma once
 
@@ -12,6 +12,7 @@
 namespace glass::raster {
 
 struct CoveredBlock;
+struct LineRunBatch;
 struct TriangleSetup;
 
 // The depth buffer holds 24-bit unsigned integers: window z in [0, 1] maps to [0, 2^24 - 1].
@@ -52,6 +53,9 @@ class FragmentSink {
   // default the reference path, emitBlockFragments; a sink may override it with a kernel made
   // for its state that writes the same bytes.
   virtual void processTriangleBlock(const TriangleSetup& setup, const CoveredBlock& block);
+  // Runs of a line segment (line_run.h). By default the reference path, emitLineRunFragments; a
+  // sink may override it with a kernel made for its state that writes the same bytes.
+  virtual void processLineRuns(const LineRunBatch& batch);
 };
 
 }  // namespace glass::raster
