@@ -7,6 +7,7 @@
 #include <cpuid.h>
 #endif
 
+#include <atomic>
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
@@ -72,9 +73,14 @@ bool available(SimdTarget t) {
   return (HWY_TARGETS & target) != 0 && processorRuns(t);
 }
 
+// ScopedFastPaths's choice: 0 or 1, or -1 when the environment decides.
+std::atomic<int> forcedFastPaths{-1};
+
 }  // namespace
 
 bool fastPathsEnabled() {
+  const int forced = forcedFastPaths.load(std::memory_order_relaxed);
+  if (forced >= 0) return forced != 0;
   // Read once: the choice holds for the life of the process, so that a draw never mixes paths.
   static const bool enabled = [] {
     const char* text = std::getenv("GLASS_FAST_PATHS");
@@ -82,6 +88,11 @@ bool fastPathsEnabled() {
   }();
   return enabled;
 }
+
+ScopedFastPaths::ScopedFastPaths(bool enabled)
+    : previous_(forcedFastPaths.exchange(enabled ? 1 : 0, std::memory_order_relaxed)) {}
+
+ScopedFastPaths::~ScopedFastPaths() { forcedFastPaths.store(previous_, std::memory_order_relaxed); }
 
 SimdTarget chosenSimdTarget() {
   // Once: every draw of the process runs with the same target.

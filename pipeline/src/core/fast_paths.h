@@ -12,6 +12,20 @@ namespace glass::gl {
 // False when the environment variable GLASS_FAST_PATHS is "0" at the first call; true otherwise.
 bool fastPathsEnabled();
 
+// For tests that compare the two paths within one process: while an object of this class lives,
+// fastPathsEnabled() returns `enabled` whatever the environment says. Draws choose their path
+// when they start, so the caller switches only between finished draws (glFinish).
+class ScopedFastPaths {
+ public:
+  explicit ScopedFastPaths(bool enabled);
+  ~ScopedFastPaths();
+  ScopedFastPaths(const ScopedFastPaths&) = delete;
+  ScopedFastPaths& operator=(const ScopedFastPaths&) = delete;
+
+ private:
+  int previous_;
+};
+
 // The SIMD kernels are compiled for several instruction sets (Highway targets) and run with the
 // best one the processor has, unless GLASS_SIMD_TARGET names another: "scalar" (portable code on
 // emulated 128-bit vectors, the baseline x86-64 binary's own), "ssse3", "sse4", "avx2" or "avx3"
