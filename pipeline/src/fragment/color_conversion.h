@@ -10,6 +10,7 @@
 
 #include <bit>
 #include <cstdint>
+#include <cstring>
 
 namespace glass::gl {
 
@@ -34,6 +35,29 @@ inline uint32_t packColorBytes(uint8_t r, uint8_t g, uint8_t b, uint8_t a) {
   } else {
     return uint32_t{r} << 24 | uint32_t{g} << 16 | uint32_t{b} << 8 | uint32_t{a};
   }
+}
+
+// The word of packColorBytes for the colour c[0..3], each component converted by
+// floatToColorByte: the four as the lanes of one vector (GCC and Clang vector extensions), each
+// lane doing exactly the scalar function's operations, so the bytes are the same on any target.
+// For a colour that many pixels share, such as a line run's (fragment/line_kernels.cpp).
+inline uint32_t packColorFloats(const float c[4]) {
+  using FloatLanes = float __attribute__((vector_size(16)));
+  using IntLanes = int32_t __attribute__((vector_size(16)));
+  using ByteLanes = uint8_t __attribute__((vector_size(4)));
+  FloatLanes color;
+  std::memcpy(&color, c, sizeof color);
+  const FloatLanes sum = color * (255.0f / 256.0f) + 32768.0f;
+  IntLanes inRange;
+  std::memcpy(&inRange, &sum, sizeof inRange);
+  inRange &= 0xFF;
+  const IntLanes belowOne = color >= 1.0f ? IntLanes{255, 255, 255, 255} : inRange;
+  const IntLanes bytes = color > 0.0f ? belowOne : IntLanes{0, 0, 0, 0};  // 0 also for NaN
+  // The colour buffer's order, r, g, b, a in memory, as packColorBytes's word holds it.
+  const ByteLanes packed = __builtin_convertvector(bytes, ByteLanes);
+  uint32_t word;
+  std::memcpy(&word, &packed, sizeof word);
+  return word;
 }
 
 }  // namespace glass::gl
