@@ -93,6 +93,7 @@ void FragmentProcessor::prepare(Context& ctx, bool phong) {
     s_.scissorY1 = static_cast<int>(std::min<long long>(INT_MAX, static_cast<long long>(box.y) + box.height));
   }
   kernel_ = chooseKernel();
+  lineKernel_ = chooseLineKernel();
   pixelOps_.tests = s_.tests;
   pixelOps_.blend = s_.blend;
   pixelOps_.blendSettings = s_.blendSettings;
@@ -101,10 +102,13 @@ void FragmentProcessor::prepare(Context& ctx, bool phong) {
   kernelNeedsEarlyDepth_ = s_.tests.depthTest && s_.tests.depthFunc != GL_ALWAYS && !s_.tests.stencilTest;
 }
 
+bool FragmentProcessor::kernelsAllowed() const {
+  return fastPathsEnabled() && s_.fragmentCounts == nullptr && s_.fragmentColors == nullptr &&
+         s_.statistics == nullptr;
+}
+
 BlockKernel FragmentProcessor::chooseKernel() const {
-  if (!fastPathsEnabled()) return nullptr;
-  // The overdraw, normals and mipmap views and GLASS_STATS see fragments in the general path (teaching/teaching_hooks.h).
-  if (s_.fragmentCounts != nullptr || s_.fragmentColors != nullptr || s_.statistics != nullptr) return nullptr;
+  if (!kernelsAllowed()) return nullptr;
   // What no kernel does (block_kernels.h).
   if (s_.phong || s_.colorSum || s_.alphaTest || s_.logicOp || (s_.writesColor && !s_.allChannels))
     return nullptr;
@@ -120,12 +124,32 @@ BlockKernel FragmentProcessor::chooseKernel() const {
   return blockKernelFor(key);
 }
 
+LineKernel FragmentProcessor::chooseLineKernel() const {
+  if (!kernelsAllowed()) return nullptr;
+  // The line kernels write the interpolated primary colour as it is (line_kernels.h).
+  if (s_.phong || s_.texturing || s_.colorSum || s_.fog || s_.alphaTest || s_.tests.stencilTest ||
+      s_.blend || s_.logicOp || (s_.writesColor && !s_.allChannels))
+    return nullptr;
+  LineKernelKey key;
+  key.depthTest = s_.tests.depthTest;
+  key.writeColor = s_.writesColor;
+  return lineKernelFor(key);
+}
+
 void FragmentProcessor::processTriangleBlock(const raster::TriangleSetup& setup,
                                              const raster::CoveredBlock& block) {
   if (kernel_ != nullptr && (!kernelNeedsEarlyDepth_ || setup.earlyDepth.buffer != nullptr)) {
     kernel_(*ctx_, pixelOps_, kernelTexture_, setup, block);
   } else {
     raster::FragmentSink::processTriangleBlock(setup, block);
+  }
+}
+
+void FragmentProcessor::processLineRuns(const raster::LineRunBatch& batch) {
+  if (lineKernel_ != nullptr) {
+    lineKernel_(ctx_->framebuffer, s_.tests, batch);
+  } else {
+    raster::FragmentSink::processLineRuns(batch);
   }
 }
 

@@ -15,6 +15,7 @@
 
 #include "fragment/blending.h"
 #include "fragment/block_kernels.h"
+#include "fragment/line_kernels.h"
 #include "fragment/stencil_depth_tests.h"
 #include "glass/raster/fragment.h"
 #include "teaching/frame_statistics.h"
@@ -39,6 +40,9 @@ class FragmentProcessor final : public raster::FragmentSink {
   // (block_kernels.h), or the reference path when there is none.
   void processTriangleBlock(const raster::TriangleSetup& setup,
                             const raster::CoveredBlock& block) override;
+  // Runs of a line segment: the line kernel prepare() chose for the draw's state
+  // (line_kernels.h), or the reference path when there is none.
+  void processLineRuns(const raster::LineRunBatch& batch) override;
 
   // Texturing, fog and per-fragment lighting read their GL state from the context for each
   // fragment, not from a copy made by prepare(): while fragments of such a draw are queued,
@@ -48,7 +52,8 @@ class FragmentProcessor final : public raster::FragmentSink {
   bool readsLighting() const { return s_.phong; }
   // Whether two processors treat every fragment the same way.
   bool sameSettings(const FragmentProcessor& other) const {
-    return ctx_ == other.ctx_ && s_ == other.s_ && kernel_ == other.kernel_;
+    return ctx_ == other.ctx_ && s_ == other.s_ && kernel_ == other.kernel_ &&
+           lineKernel_ == other.lineKernel_;
   }
 
  private:
@@ -91,12 +96,18 @@ class FragmentProcessor final : public raster::FragmentSink {
     bool operator==(const Settings&) const = default;
   };
 
+  // Whether any kernel may draw: fast paths are on and no teaching view or statistics watch
+  // the fragments (they see them in the reference path, teaching/teaching_hooks.h).
+  bool kernelsAllowed() const;
   // The fast path's kernel for the settings, or null (block_kernels.h).
   BlockKernel chooseKernel() const;
+  // The fast path's kernel for line runs with the settings, or null (line_kernels.h).
+  LineKernel chooseLineKernel() const;
 
   Context* ctx_ = nullptr;
   Settings s_;
   BlockKernel kernel_ = nullptr;
+  LineKernel lineKernel_ = nullptr;
   KernelPixelOps pixelOps_;  // what kernel_ does with the pixels it shades, from s_
   KernelTexture kernelTexture_;  // the texture of a kernel that textures
   // The kernel relies on the triangle walk's early depth test (the depth test is on and not
