@@ -127,29 +127,24 @@ int64_t walkLineQuad(const LineQuad& quad, bool increasing, const LineQuadClip& 
 
   // Edge i at run k: need Q * 256 m + P * 256 k + C >= 0. With Q > 0 that is a lower bound
   // m >= ceil(-(P 256 k + C) / (256 Q)), with Q < 0 an upper bound m <= floor((P 256 k + C) /
-  // (-256 Q)) (Q == 0 was settled above). Bounds are stepped from run to run.
-  SteppedFloorDivision lower[4], upper[4];
-  int lowerCount = 0, upperCount = 0;
+  // (-256 Q)) (Q == 0 was settled above). The quad is a parallelogram whose ends lie across the
+  // major axis (line_quad.h), so with a positive area its two long sides are the only edges with
+  // Q != 0, of opposite signs: one lower bound and one upper bound, stepped from run to run.
+  SteppedFloorDivision lower, upper;
   for (int i = 0; i < 4; ++i) {
     const int64_t rest = P[i] * 256 * firstK + C[i], restStep = P[i] * 256 * dk;
     if (Q[i] > 0) {  // ceil(-rest / D) = floor((-rest + D - 1) / D)
       const int64_t d = 256 * Q[i];
-      lower[lowerCount++].start(-rest + d - 1, d, -restStep);
+      lower.start(-rest + d - 1, d, -restStep);
     } else if (Q[i] < 0) {
-      upper[upperCount++].start(rest, -256 * Q[i], restStep);
+      upper.start(rest, -256 * Q[i], restStep);
     }
   }
   int64_t counted = 0;
   for (int64_t n = firstN, k = firstK; n <= lastN; ++n, k += dk) {
-    int64_t lo = INT64_MIN, hi = INT64_MAX;
-    for (int i = 0; i < lowerCount; ++i) {
-      lo = std::max(lo, lower[i].quotient);
-      lower[i].advance();
-    }
-    for (int i = 0; i < upperCount; ++i) {
-      hi = std::min(hi, upper[i].quotient);
-      upper[i].advance();
-    }
+    const int64_t lo = lower.quotient, hi = upper.quotient;
+    lower.advance();
+    upper.advance();
     if (lo > hi) continue;
     const int64_t run = counted;
     if (count != RunCount::None) ++counted;
