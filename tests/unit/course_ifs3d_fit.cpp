@@ -102,6 +102,34 @@ TEST_CASE("course homework 3: fitting uneven scalings, an oblique rotation and a
            0.0, kMapTolerance);
 }
 
+TEST_CASE("course homework 3: small clouds are fitted and measured against their own spacing") {
+  // A course file may hold a thousand or two points. The spacing the fit compares its collage
+  // distance with must be the cloud's own (no point taken as its own neighbour, which made it 0
+  // for 2,000 points or fewer, and too small up to several thousand): then the right maps are
+  // called converged at any size.
+  const auto parsed = g::parseIfs3("map scale 0.5 0.45 0.5\n"
+                                   "map translate 0.58 0.05 0.1 rotate 30 1 2 3 scale 0.42\n"
+                                   "map translate 0.1 0.6 0.05 rotate -50 0 1 1 scale 0.35 0.5 0.4\n"
+                                   "map translate 0.3 0.5 0.95 rotate 90 1 0 0 scale 0.45 -0.45 0.45\n");
+  REQUIRE(parsed.ok());
+  for (const std::size_t size : {std::size_t{1000}, std::size_t{2000}, std::size_t{3000}}) {
+    const std::vector<glm::dvec3> cloud = cloudOf(parsed.ifs, size, 0.0, 5);
+    double meanNearest = 0.0;  // by brute force over every point
+    for (const glm::dvec3& p : cloud) {
+      double nearest = INFINITY;
+      for (const glm::dvec3& q : cloud)
+        if (&q != &p) nearest = std::min(nearest, glm::distance(p, q));
+      meanNearest += nearest / static_cast<double>(cloud.size());
+    }
+    const c::Ifs3Fit fit = c::fitIfs3(cloud);
+    INFO(size << " points: spacing " << fit.pointSpacing << ", by brute force " << meanNearest);
+    CHECK(fit.pointSpacing > 0.75 * meanNearest);
+    CHECK(fit.pointSpacing < 1.25 * meanNearest);
+    CHECK(mapError(parsed.ifs, fit.maps) < kNoisyMapTolerance);
+    CHECK(fit.converged());
+  }
+}
+
 TEST_CASE("course homework 3: fitting parts that overlap") {
   // Parts 1 and 2 share a slab of the cube, and so do 3 and 4.
   checkFit("map scale 0.6 0.5 0.5\n"

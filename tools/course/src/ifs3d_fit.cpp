@@ -407,10 +407,10 @@ InclusionPool inclusionPool(std::span<const glm::dvec3> cloud, const g::KdTree3&
     for (const glm::dvec3& p : inclusionSource) forward.push_back(std::sqrt(cloudTree.nearest(map.apply(p)).distanceSquared));
     pool.maps.push_back({map, trimmedMean(forward, trim).mean, coveredIndices(map)});
   }
-  // The maps whose image lies in the cloud: within a few point spacings of it; at least 4k of
-  // the best when fewer do.
+  // The maps whose image lies in the cloud: within a few point spacings of it (2.4: see
+  // Ifs3Fit::converged); at least 4k of the best when fewer do.
   for (std::size_t i = 0; i < pool.maps.size(); ++i)
-    if (pool.maps[i].inclusion < 3.0 * spacing) pool.eligible.push_back(i);
+    if (pool.maps[i].inclusion < 2.4 * spacing) pool.eligible.push_back(i);
   if (pool.eligible.size() < static_cast<std::size_t>(k)) {
     pool.eligible.resize(pool.maps.size());
     std::iota(pool.eligible.begin(), pool.eligible.end(), std::size_t{0});
@@ -515,7 +515,7 @@ constexpr int kInclusionStarts = 4;
 // within this many grid cells; the largest clusters searched while they hold at least this share
 // of the points; candidates from each, each tried in place of this many of the least needed maps,
 // refined this many steps before the best of all is refined in full.
-constexpr double kUncoveredSpacings = 3.0;
+constexpr double kUncoveredSpacings = 2.4;  // tuned as 3 times 0.8 of the spacing (Ifs3Fit::converged)
 constexpr std::size_t kResidualMostPoints = 3000;
 constexpr double kResidualLink = 1.5;
 constexpr std::size_t kResidualClusters = 2;
@@ -858,6 +858,27 @@ std::vector<glm::dvec3> withoutIsolatedPoints(std::span<const glm::dvec3> cloud,
   return kept;
 }
 
+// The cloud's own spacing: the mean distance from a point to its nearest other point. Measured
+// on a probe of at most 2000 points, from as many other points of the cloud (none of them in the
+// probe: a point of the probe would find itself), and scaled from the probe's density to the
+// cloud's as for a solid (cube root).
+double estimatedPointSpacing(std::span<const glm::dvec3> cloud, std::uint64_t seed) {
+  const std::size_t probeSize = std::min<std::size_t>(2000, cloud.size() / 2);
+  const std::size_t querySize = std::min<std::size_t>(2000, cloud.size() - probeSize);
+  const std::vector<glm::dvec3> shuffled = sample(cloud, probeSize + querySize, seed);
+  const std::span<const glm::dvec3> probe(shuffled.data(), probeSize);
+  const g::KdTree3 probeTree(probe);
+  double sum = 0.0;
+  std::size_t counted = 0;
+  for (std::size_t i = probeSize; i < shuffled.size(); ++i) {
+    const double d = std::sqrt(probeTree.nearest(shuffled[i]).distanceSquared);
+    if (d > 0.0) sum += d, ++counted;  // a repeated point is not its own neighbour
+  }
+  if (counted == 0) return 0.0;
+  return sum / static_cast<double>(counted) *
+         std::cbrt(static_cast<double>(probeSize) / static_cast<double>(cloud.size()));
+}
+
 }  // namespace
 
 Ifs3Fit fitIfs3(std::span<const glm::dvec3> fullCloud, const Ifs3FitOptions& options) {
@@ -869,17 +890,9 @@ Ifs3Fit fitIfs3(std::span<const glm::dvec3> fullCloud, const Ifs3FitOptions& opt
   const std::span<const glm::dvec3> cloud =
       kept.size() >= static_cast<std::size_t>(20 * std::max(1, options.maps)) ? std::span<const glm::dvec3>(kept) : fullCloud;
   const g::KdTree3 cloudTree(cloud);
-  // The cloud's own spacing: the mean distance from a point to its nearest other point (on a
-  // sample). A fit whose collage distance is well below it has found the maps; otherwise another
-  // attempt from other seeds may do better, and the best is kept.
-  const std::vector<glm::dvec3> probe = sample(cloud, 2000, options.seed + 5);
-  const g::KdTree3 probeTree(probe);
-  double spacing = 0.0;
-  for (const glm::dvec3& p : sample(cloud, 2000, options.seed + 6)) {
-    const double d = std::sqrt(probeTree.nearest(p).distanceSquared);
-    spacing += d > 0.0 ? d : 0.0;
-  }
-  spacing = spacing / 2000.0 * std::cbrt(std::min<double>(2000.0, static_cast<double>(cloud.size())) / static_cast<double>(cloud.size()));
+  // A fit whose collage distance is well below the cloud's own spacing has found the maps;
+  // otherwise another attempt from other seeds may do better, and the best is kept.
+  const double spacing = estimatedPointSpacing(cloud, options.seed + 5);
   int attempts = 0;
   WorkMeter work{0, options.workBudget};
   for (int attempt = 0; attempt < std::max(1, options.attempts) && !(attempt > 0 && work.spent()); ++attempt) {
