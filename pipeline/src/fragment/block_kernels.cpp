@@ -159,8 +159,8 @@ void divideRow(const float* numerator, const float* denominator, float quotient[
 
 // Texturing by singleTexture2D (texture_hooks.h) for one block, with what the draw prepared
 // (KernelTexture), and one lambda per 2x2 quad. A block's rows span at most five quad rows
-// (pixelQuadOf pairs rows from the top of the window, which an odd window height puts out of step
-// with the blocks), each of four quads. When lambda is needed, the quads of every quad row with
+// (pixelQuadOf pairs rows from the top of the window, and a block starts at its triangle's first
+// row, so the pairs need not line up with the block), each of four quads. When lambda is needed, the quads of every quad row with
 // pixels to shade get their rho^2, lambda and levels first, all rows together
 // (textureLevelOfDetail's operations, one quad per lane): each row's chain of dependent
 // operations (two divisions, the log2 series) then overlaps the others' instead of waiting
