@@ -1,5 +1,5 @@
 /* Cutting the homework's object into layers of cells (cube_layers.h). A cell is in the solid when
- * a ray from its centre straight up crosses the object's horizontal faces an odd number of times;
+ * a ray from its centre straight up crosses one more top face than bottom faces (fill_cells);
  * a face holds the column's centre when a ray from it along +x crosses the face's edges an odd
  * number of times, which needs no order of the edges round the face. The centres lie off every
  * grid line, so no ray grazes an edge. */
@@ -74,14 +74,29 @@ static int cells_around(const struct cube_layers *layers, int layer, int i, int 
   return a + b + c + d;
 }
 
-/* Which cells of each layer the solid fills (the rays of the comment at the top). */
+/* Which cells of each layer the solid fills (the rays of the comment at the top). Going down a
+ * column, a top face (outward normal +y) enters the solid and a bottom face leaves it, so the
+ * count of tops less bottoms passed is how many times the column is inside: 0 or 1 in a solid,
+ * 2 where parts of the object overlap, -1 where faces turn their inside out. A face's normal is
+ * Newell's: half the sum of Vs x Ve over its edges walked counter-clockwise (left edges from Vs
+ * to Ve, right edges from Ve to Vs), which needs no order of the edges round the face. */
 static int fill_cells(const struct wings_mesh *mesh, struct cube_layers *layers, const int *place,
                       const int *face_axis, const int *face_level, char *error, size_t size)
 {
   const int cells_x = layers->x_count - 1, cells_z = layers->z_count - 1;
   unsigned char *holds = malloc((size_t)mesh->face_count + 1);
   int *faces_at = malloc((size_t)(layers->layer_count + 1) * sizeof *faces_at);
-  int ok = holds && faces_at ? 1 : wings_failed(error, size, "out of memory");
+  int *turn_at = malloc((size_t)(layers->layer_count + 1) * sizeof *turn_at);
+  long *face_at = malloc((size_t)(layers->layer_count + 1) * sizeof *face_at);
+  double *normal_y = calloc((size_t)mesh->face_count + 1, sizeof *normal_y);
+  int ok = holds && faces_at && turn_at && face_at && normal_y ? 1 : wings_failed(error, size, "out of memory");
+  for (long e = 0; ok && e < mesh->edge_count; ++e) {
+    const struct winged_edge *edge = &mesh->edges[e];
+    const double *a = mesh->position[edge->vs], *b = mesh->position[edge->ve];
+    const double cross_y = a[2] * b[0] - a[0] * b[2];
+    normal_y[edge->lf] += cross_y;
+    normal_y[edge->rf] -= cross_y;
+  }
   for (int j = 0; ok && j < cells_z; ++j)
     for (int i = 0; ok && i < cells_x; ++i) {
       const double cx = (layers->x[i] + layers->x[i + 1]) / 2, cz = (layers->z[j] + layers->z[j + 1]) / 2;
@@ -95,17 +110,34 @@ static int fill_cells(const struct wings_mesh *mesh, struct cube_layers *layers,
           holds[edge->rf] ^= 1;
         }
       }
-      for (int k = 0; k <= layers->layer_count; ++k) faces_at[k] = 0;
+      for (int k = 0; k <= layers->layer_count; ++k) faces_at[k] = turn_at[k] = 0, face_at[k] = -1;
       for (long f = 0; f < mesh->face_count; ++f)
-        if (face_axis[f] == 1 && holds[f]) ++faces_at[face_level[f]];
+        if (face_axis[f] == 1 && holds[f]) {
+          const int k = face_level[f];
+          if (faces_at[k]++ > 0) {
+            ok = wings_failed(error, size, "object 1, faces %ld and %ld: both at height %g above x %g, z %g (faces "
+                              "overlap; a closed object made of cubes is expected)", face_at[k], f,
+                              layers->height[k], cx, cz);
+            break;
+          }
+          face_at[k] = f;
+          turn_at[k] = normal_y[f] > 0 ? 1 : -1;
+        }
       int inside = 0;
       for (int k = layers->layer_count; ok && k >= 0; --k) {
-        if (faces_at[k] > 1)
-          ok = wings_failed(error, size, "object 1: %d faces overlap at height %g above x %g, z %g (a closed "
-                            "object made of cubes is expected)", faces_at[k], layers->height[k], cx, cz);
-        inside ^= faces_at[k];
-        if (k > 0) layers->filled[((size_t)(k - 1) * (size_t)cells_z + (size_t)j) * (size_t)cells_x + (size_t)i] =
-                       (unsigned char)inside;
+        inside += turn_at[k];
+        if (inside > 1)
+          ok = wings_failed(error, size, "object 1, face %ld: below it, above x %g, z %g, the object is inside "
+                            "itself twice from height %g to %g (parts of it overlap; a closed object made of cubes "
+                            "is expected)", face_at[k], cx, cz, k > 0 ? layers->height[k - 1] : layers->height[k],
+                            layers->height[k]);
+        else if (inside < 0)
+          ok = wings_failed(error, size, "object 1, face %ld: at height %g above x %g, z %g it faces into the object "
+                            "(its vertices run clockwise seen from outside; a closed object made of cubes is "
+                            "expected)", face_at[k], layers->height[k], cx, cz);
+        else if (k > 0)
+          layers->filled[((size_t)(k - 1) * (size_t)cells_z + (size_t)j) * (size_t)cells_x + (size_t)i] =
+              (unsigned char)inside;
       }
       if (ok && inside)
         ok = wings_failed(error, size, "object 1 is not closed: above x %g, z %g its faces do not pair up into "
@@ -113,6 +145,9 @@ static int fill_cells(const struct wings_mesh *mesh, struct cube_layers *layers,
     }
   free(holds);
   free(faces_at);
+  free(turn_at);
+  free(face_at);
+  free(normal_y);
   return ok;
 }
 
@@ -186,7 +221,10 @@ int cube_layers_from_mesh(const struct wings_mesh *mesh, struct cube_layers *lay
   }
   layers->x = lines[0], layers->height = lines[1], layers->z = lines[2];
   layers->x_count = counts[0], layers->z_count = counts[2], layers->layer_count = counts[1] - 1;
-  if (ok && (counts[0] < 2 || counts[1] < 2 || counts[2] < 2)) ok = wings_failed(error, size, "object 1 is flat");
+  for (int axis = 0; ok && axis < 3; ++axis)
+    if (counts[axis] < 2)
+      ok = wings_failed(error, size, "object 1 is flat: all its vertices have %c %g (an object made of cubes is "
+                        "expected)", "xyz"[axis], lines[axis][0]);
   for (long f = 0; ok && f < mesh->face_count; ++f)
     for (int axis = 0; axis < 3; ++axis) low[3 * f + axis] = counts[axis], high[3 * f + axis] = -1;
   for (long e = 0; ok && e < mesh->edge_count; ++e) {

@@ -4,7 +4,7 @@
  * winged-edge form: each edge a list holding {edge, Vs, Ve, Lf, Rf, Ltpr, Ltsu, Rtpr, Rtsu}, each
  * vertex a list starting with <<X/float, Y/float, Z/float>>, each hard edge an edge's number. A
  * face runs counter-clockwise seen from outside along its left edges from Vs to Ve and along its
- * right edges from Ve to Vs. */
+ * right edges from Ve to Vs. The object's Props may list faces that are holes: {holes, Faces}. */
 #include "wings_mesh.h"
 
 #include "erlang_term.h"
@@ -129,7 +129,78 @@ static int read_object(const struct term *root, struct wings_mesh *object, char 
       return wings_failed(error, size, "object 1, hard edge %zu: not an edge's number", h);
     object->hard[e] = 1;
   }
+  /* Wings3D keeps a hole as a face listed in the object's {holes, Faces} property: around it the
+   * object is open, and an open object bounds no cubes. */
+  const struct term *props = &shape->items[3];
+  for (size_t p = 0; props->kind == TERM_LIST && p < props->length; ++p) {
+    const struct term *holes = tagged(&props->items[p], "holes", 2);
+    if (!holes || holes->items[1].kind != TERM_LIST || holes->items[1].length == 0) continue;
+    long f;
+    if (!index_in(&holes->items[1].items[0], object->face_count, &f))
+      return wings_failed(error, size, "object 1, holes: not a face's number");
+    return wings_failed(error, size, "object 1, face %ld: a hole (listed in the object's holes property), so the "
+                        "object is not closed (a closed object made of cubes is expected)", f);
+  }
   return 1;
+}
+
+static int by_face_then_vertex(const void *a, const void *b)
+{
+  const long *p = a, *q = b;
+  return p[0] != q[0] ? (p[0] > q[0]) - (p[0] < q[0]) : (p[1] > q[1]) - (p[1] < q[1]);
+}
+
+/* Whether the object is a closed surface facing out: no edge has one face on both sides; each
+ * face's edges close into loops (every vertex of a face meets an even number of its edges); and
+ * the volume the faces enclose, a third of the sum over faces of the area vector (Newell's, half
+ * the sum of Vs x Ve over the face's edges walked counter-clockwise) dotted with a point of the
+ * face, is positive, else the faces run clockwise seen from outside. */
+static int check_closed(const struct wings_mesh *object, char *error, size_t size)
+{
+  long *ends = malloc(8 * (size_t)object->edge_count * sizeof *ends + 1);
+  double (*area)[3] = calloc((size_t)object->face_count + 1, sizeof *area);
+  double (*point)[3] = calloc((size_t)object->face_count + 1, sizeof *point);
+  int ok = ends && area && point ? 1 : wings_failed(error, size, "out of memory");
+  for (long e = 0; ok && e < object->edge_count; ++e) {
+    const struct winged_edge *edge = &object->edges[e];
+    if (edge->lf == edge->rf) {
+      ok = wings_failed(error, size, "object 1, edge %ld: face %ld on both of its sides (a closed object is expected)",
+                        e, edge->lf);
+      break;
+    }
+    const long pairs[8] = {edge->lf, edge->vs, edge->lf, edge->ve, edge->rf, edge->vs, edge->rf, edge->ve};
+    memcpy(&ends[8 * e], pairs, sizeof pairs);
+    const double *a = object->position[edge->vs], *b = object->position[edge->ve];
+    const double cross[3] = {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+    for (int k = 0; k < 3; ++k) {
+      area[edge->lf][k] += cross[k] / 2;
+      area[edge->rf][k] -= cross[k] / 2;
+      point[edge->lf][k] = point[edge->rf][k] = a[k];
+    }
+  }
+  if (ok) {
+    qsort(ends, 4 * (size_t)object->edge_count, 2 * sizeof *ends, by_face_then_vertex);
+    for (size_t k = 0; ok && k < 4 * (size_t)object->edge_count;) {
+      size_t same = k;
+      while (same < 4 * (size_t)object->edge_count && ends[2 * same] == ends[2 * k] &&
+             ends[2 * same + 1] == ends[2 * k + 1])
+        ++same;
+      if ((same - k) % 2)
+        ok = wings_failed(error, size, "object 1, face %ld: its edges do not close into a loop at vertex %ld (a "
+                          "closed object is expected)", ends[2 * k], ends[2 * k + 1]);
+      k = same;
+    }
+  }
+  double volume = 0;
+  for (long f = 0; ok && f < object->face_count; ++f)
+    volume += (area[f][0] * point[f][0] + area[f][1] * point[f][1] + area[f][2] * point[f][2]) / 3;
+  if (ok && volume < 0)
+    ok = wings_failed(error, size, "object 1 is inside out: its faces run clockwise seen from outside (the volume "
+                      "they enclose is %g)", volume);
+  free(ends);
+  free(area);
+  free(point);
+  return ok;
 }
 
 int wings_read_mesh(const char *path, struct wings_mesh *mesh, char *error, size_t error_size)
@@ -155,6 +226,7 @@ int wings_read_mesh(const char *path, struct wings_mesh *mesh, char *error, size
   }
   int ok = read_object(root, mesh, error, error_size);
   if (ok && mesh->vertex_count == 0) ok = wings_failed(error, error_size, "object 1 has no vertices");
+  if (ok) ok = check_closed(mesh, error, error_size);
   erlang_term_free(root);
   free(data);
   if (!ok) wings_mesh_free(mesh);

@@ -8,8 +8,8 @@
 %% Usage: escript scenes/models/make_wings_models.escript REPOSITORY_ROOT
 %% Writes scenes/models/*.wings, examples/homework45/l_block.wings,
 %% tests/homework45/l_block_uprights.wings, tests/homework45/l_block_all_hard.wings,
-%% tests/homework45/l_block_partial*.wings and
-%% tests/unit/data/wings/*.wings and *.term.
+%% tests/homework45/l_block_partial*.wings, tests/homework45/refused_*.wings (objects the
+%% homework program refuses) and tests/unit/data/wings/*.wings and *.term.
 
 main([Root]) ->
     Models = filename:join(Root, "scenes/models"),
@@ -178,6 +178,59 @@ main([Root]) ->
                {wings, 2, {[{object, N, {winged, [[{color_lt, <<0:96>>}] | tl(Es)], Fs, Vs, He}, P}], Materials, []}}),
     write_term(filename:join(Tests, "bad_shininess.wings"),
                {wings, 2, {[Cube], [material(shiny, {1.0, 1.0, 1.0, 1.0}, 7.0)], []}}),
+    %% Objects the homework program refuses, each naming what is wrong (tests/homework45).
+    Refused = filename:join(Root, "tests/homework45"),
+    {TopVs, TopFs} = cubes([{0, 0, 0}], 1.0, {0.0, 1.0, 0.0}),
+    %% Two cubes stacked, each with its own vertices: the lower one's top and the upper one's
+    %% bottom are two faces in one place.
+    write(filename:join(Refused, "refused_overlapping_faces.wings"),
+          [object("Stack", CubeVs ++ TopVs, CubeFs ++ offset_faces(TopFs, length(CubeVs)), None, none, false)],
+          Materials, []),
+    %% Two cubes pushed half into each other: their faces cross, and the space they share is
+    %% inside twice.
+    {HalfVs, HalfFs} = cubes([{0, 0, 0}], 1.0, {0.5, 0.5, 0.5}),
+    write(filename:join(Refused, "refused_crossing_cubes.wings"),
+          [object("Crossing", CubeVs ++ HalfVs, CubeFs ++ offset_faces(HalfFs, length(CubeVs)), None, none, false)],
+          Materials, []),
+    %% A cube turned inside out: every face counter-clockwise seen from inside.
+    write(filename:join(Refused, "refused_inside_out.wings"),
+          [object("Inverted", CubeVs, [{Normal, lists:reverse(Is)} || {Normal, Is} <- CubeFs], None, none, false)],
+          Materials, []),
+    %% A cube whose top face Wings3D would show as a hole (the object's holes property): open.
+    {object, OpenN, OpenW, OpenP} = object("Open", CubeVs, CubeFs, All, none, false),
+    TopFace = length(lists:takewhile(fun({Normal, _}) -> Normal =/= {0, 1, 0} end, CubeFs)),
+    write(filename:join(Refused, "refused_open_cube.wings"),
+          [{object, OpenN, OpenW, OpenP ++ [{holes, [TopFace]}]}], Materials, []),
+    %% Two cubes that touch along one upright edge only, each with its own vertices.
+    {DiagonalVs, DiagonalFs} = cubes([{1, 0, 1}], 1.0, {0.0, 0.0, 0.0}),
+    write(filename:join(Refused, "refused_cubes_on_an_edge.wings"),
+          [object("Diagonal", CubeVs ++ DiagonalVs, CubeFs ++ offset_faces(DiagonalFs, length(CubeVs)), None, none,
+                  false)], Materials, []),
+    %% A square seen from both sides: two faces, no volume.
+    Square = [{0.0, 0.0, 0.0}, {0.0, 0.0, 1.0}, {1.0, 0.0, 0.0}, {1.0, 0.0, 1.0}],
+    write(filename:join(Refused, "refused_flat.wings"),
+          [object("Flat", Square, [{{0, 1, 0}, [0, 1, 3, 2]}, {{0, -1, 0}, [0, 2, 3, 1]}], None, none, false)],
+          Materials, []),
+    %% Edge 0 of the cube with one face on both of its sides, and with a face it does not border
+    %% on its left (that face then has edges in two planes).
+    {object, _, {winged, [[First | Attributes] | OtherEdges], CubeFaces, CubeVertices, CubeHard}, _} =
+        object("Cube", CubeVs, CubeFs, None, none, false),
+    Broken = fun(Name, Record) ->
+                     write(filename:join(Refused, Name),
+                           [{object, "Cube", {winged, [[Record | Attributes] | OtherEdges], CubeFaces, CubeVertices,
+                                              CubeHard}, []}], Materials, [])
+             end,
+    Broken("refused_face_on_both_sides.wings", setelement(5, First, element(4, First))),
+    [Stranger | _] = [F || F <- lists:seq(0, 5), F =/= element(4, First), F =/= element(5, First)],
+    Broken("refused_face_not_in_a_plane.wings", setelement(4, First, Stranger)),
+    %% A vertex at infinity; an object without vertices; a file without objects.
+    write(filename:join(Refused, "refused_infinite_vertex.wings"),
+          [{object, "Cube", {winged, [[First | Attributes] | OtherEdges], CubeFaces,
+                             [[<<16#7FF0000000000000:64, 0.0/float, 0.0/float>>] | tl(CubeVertices)], CubeHard}, []}],
+          Materials, []),
+    write(filename:join(Refused, "refused_no_vertices.wings"),
+          [{object, "Empty", {winged, [], [], [], []}, []}], Materials, []),
+    write(filename:join(Refused, "refused_no_objects.wings"), [], Materials, []),
     %% Every term shape the decoder reads, with each encoding Erlang offers for it.
     Shapes = {0, 255, 256, -1, 2147483647, -2147483648, 1 bsl 40, -(1 bsl 40), 1.5, -0.25,
               atom, 'ünï', "text", [1000, 2000], [], <<1, 2, 3>>, {}, #{key => value},
@@ -207,6 +260,9 @@ cubes(Cells, Size, {OX, OY, OZ}) ->
     Points = lists:usort(lists:append([Ps || {_, Ps} <- Quads])),
     Index = maps:from_list(lists:zip(Points, lists:seq(0, length(Points) - 1))),
     {Points, [{N, [maps:get(P, Index) || P <- Ps]} || {N, Ps} <- Quads]}.
+
+%% The faces of a second set of cubes whose vertices follow Count others in one vertex list.
+offset_faces(Faces, Count) -> [{N, [I + Count || I <- Is]} || {N, Is} <- Faces].
 
 shifted(Points, {DX, DY, DZ}) -> [{X + DX, Y + DY, Z + DZ} || {X, Y, Z} <- Points].
 
