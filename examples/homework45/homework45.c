@@ -47,6 +47,9 @@ static float texture_height;
 #define RADIUS_STEP 0.08f
 /* How close the walker may come to a wall or to the block. */
 #define WALKER_RADIUS 0.3f
+/* The top of the walker's head, a little above his eyes: he walks under any part of the object
+ * whose bottom is higher. */
+#define HEAD_HEIGHT 1.8f
 #define STEP 0.25f
 #define TURN_DEGREES 5.0f
 #define EYE_HEIGHT 1.6f
@@ -787,8 +790,9 @@ static void reshape(int width, int height)
 }
 
 /* Whether the walker at (x, z) keeps his distance from the walls, the floor's open edges and the
- * object: from each column of its cells that it fills at any height (so that he can walk into an
- * inner corner), or from its bounding box when it is not cut into cells. */
+ * object: from each column of its cells that it fills anywhere between the floor and the top of
+ * his head (so that he can walk into an inner corner, and under an overhang whose bottom is above
+ * his head), or from its bounding box when it is not cut into cells. */
 static int walker_fits(float x, float z)
 {
   if (x < -ROOM + WALKER_RADIUS || z < -ROOM + WALKER_RADIUS) return 0;
@@ -800,7 +804,8 @@ static int walker_fits(float x, float z)
     for (int i = 0; i + 1 < layers.x_count; ++i) {
       int filled = 0;
       for (int layer = 0; layer < layers.layer_count && !filled; ++layer)
-        filled = cube_layers_filled(&layers, layer, i, j);
+        filled = cube_layers_filled(&layers, layer, i, j) && layers.height[layer] < HEAD_HEIGHT &&
+                 layers.height[layer + 1] > 0;
       if (filled && x > layers.x[i] - WALKER_RADIUS && x < layers.x[i + 1] + WALKER_RADIUS &&
           z > layers.z[j] - WALKER_RADIUS && z < layers.z[j + 1] + WALKER_RADIUS)
         return 0;

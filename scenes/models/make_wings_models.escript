@@ -8,8 +8,8 @@
 %% Usage: escript scenes/models/make_wings_models.escript REPOSITORY_ROOT
 %% Writes scenes/models/*.wings, examples/homework45/l_block.wings,
 %% tests/homework45/l_block_uprights.wings, tests/homework45/l_block_all_hard.wings,
-%% tests/homework45/l_block_partial*.wings, tests/homework45/refused_*.wings (objects the
-%% homework program refuses) and tests/unit/data/wings/*.wings and *.term.
+%% tests/homework45/l_block_partial*.wings, tests/homework45/overhang_*.wings,
+%% tests/homework45/refused_*.wings (objects the homework program refuses) and tests/unit/data/wings/*.wings and *.term.
 
 main([Root]) ->
     Models = filename:join(Root, "scenes/models"),
@@ -178,6 +178,15 @@ main([Root]) ->
                {wings, 2, {[{object, N, {winged, [[{color_lt, <<0:96>>}] | tl(Es)], Fs, Vs, He}, P}], Materials, []}}),
     write_term(filename:join(Tests, "bad_shininess.wings"),
                {wings, 2, {[Cube], [material(shiny, {1.0, 1.0, 1.0, 1.0}, 7.0)], []}}),
+    %% Overhangs for the homework program's walker: a column of three cubes with an arm of two
+    %% cubes on its top (its bottom at height 2, above the walker's head, 1.8), and the same two
+    %% cubes tall (the arm's bottom at height 1). Centred on x = 1, the arm along +z.
+    {HighVs, HighFs} = cubes([{0, 0, -1}, {0, 1, -1}, {0, 2, -1}, {0, 2, 0}, {0, 2, 1}], 1.0, {0.5, 0.0, 0.0}),
+    write(filename:join(Root, "tests/homework45/overhang_high.wings"),
+          [object("Gallows", HighVs, HighFs, Upright, top_paint, true)], Materials, []),
+    {LowVs, LowFs} = cubes([{0, 0, -1}, {0, 1, -1}, {0, 1, 0}, {0, 1, 1}], 1.0, {0.5, 0.0, 0.0}),
+    write(filename:join(Root, "tests/homework45/overhang_low.wings"),
+          [object("Gallows", LowVs, LowFs, Upright, top_paint, true)], Materials, []),
     %% Objects the homework program refuses, each naming what is wrong (tests/homework45).
     Refused = filename:join(Root, "tests/homework45"),
     {TopVs, TopFs} = cubes([{0, 0, 0}], 1.0, {0.0, 1.0, 0.0}),

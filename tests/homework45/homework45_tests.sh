@@ -3,14 +3,16 @@
 # GLASS_GLUT_EVENTS; its snapshots compared with png_probe's same/differ.
 #   homework45_tests.sh PROGRAM PNG_PROBE WORK_DIR MODEL UPRIGHTS_MODEL ALL_HARD_MODEL PARTIAL_MODEL
 #                       PARTIAL_SHARP_UPRIGHTS_MODEL HALF_SIDE_MODEL TWO_LAYERS_MODEL SLAB_CUBE_MODEL
-#                       NOT_CUBES_MODEL TALL_L_MODEL BLOCK_MODEL
+#                       NOT_CUBES_MODEL TALL_L_MODEL BLOCK_MODEL OVERHANG_HIGH_MODEL OVERHANG_LOW_MODEL
 # (UPRIGHTS_MODEL: the same L with only its uprights hard, its top's rim sharp; ALL_HARD_MODEL:
 # with every edge hard, the bottom's rim too; PARTIAL_MODEL and PARTIAL_SHARP_UPRIGHTS_MODEL: the
 # rims of the top and the bottom hard along some sides only, with some uprights hard or none;
 # HALF_SIDE_MODEL: one side's top rim hard along half of it; TWO_LAYERS_MODEL and SLAB_CUBE_MODEL:
 # objects of two layers of cubes, every edge hard; NOT_CUBES_MODEL: an object with slanted edges;
 # TALL_L_MODEL and BLOCK_MODEL: objects of two layers alike, an L with its uprights hard and a
-# block of 2 x 2 x 2 cubes with its top's rim and one upright hard.)
+# block of 2 x 2 x 2 cubes with its top's rim and one upright hard; OVERHANG_HIGH_MODEL and
+# OVERHANG_LOW_MODEL: a column with an arm along +z at x = 1, its bottom above the walker's head
+# and below it.)
 set -eu
 program=$1
 probe=$2
@@ -26,6 +28,8 @@ slab_cube_model=${11}
 not_cubes_model=${12}
 tall_l_model=${13}
 block_model=${14}
+overhang_high_model=${15}
+overhang_low_model=${16}
 . "$(dirname "$0")/../shell_test_support.sh"
 
 # repeat N LINE: the event line N times.
@@ -226,6 +230,33 @@ done
 # layer (uprights, the top's rim), nothing reported as left sharp, every press of R a new picture.
 five_presses tall_l "$tall_l_model"
 five_presses block "$block_model"
+# Under an overhang: the walker heads along x = 1 for the column behind the arm (z -1 to 0). The
+# arm's bottom above his head (2 > 1.8), he walks on under it (every five steps a new picture)
+# to the column, where he stops; the arm's bottom below his head (1), the arm stops him.
+for kind in high low; do
+  eval "file=\$overhang_${kind}_model"
+  {
+    echo "key 3"
+    repeat 9 "special right"
+    repeat 18 "special up"
+    repeat 18 "special left"
+    for part in 1 2 3 4; do
+      repeat 5 "special up"
+      echo "snapshot ${kind}_under$part.png"
+    done
+    repeat 10 "special up"
+    echo "snapshot ${kind}_under_end.png"
+  } >overhang_${kind}_events.txt
+  status=0
+  GLASS_GLUT_SNAPSHOT=last_overhang_$kind.png GLASS_GLUT_EVENTS=overhang_${kind}_events.txt "$program" "$file" \
+    >out.txt 2>err.txt || status=$?
+  [ "$status" -eq 0 ] || fail "the program exited with $status on $file: $(cat err.txt)"
+done
+"$probe" high_under1.png differ high_under2.png || fail "stopped before the overhang"
+"$probe" high_under2.png differ high_under3.png || fail "did not walk on under the overhang"
+"$probe" high_under3.png same high_under4.png same high_under_end.png || fail "walked through the column"
+"$probe" low_under1.png same low_under2.png same low_under_end.png || fail "walked into the low overhang"
+"$probe" high_under2.png differ low_under2.png || fail "the two overhangs look the same"
 # An object that is not made of cubes is named with what is wrong, and nothing runs.
 status=0
 "$program" "$not_cubes_model" >out.txt 2>err.txt || status=$?
