@@ -56,6 +56,15 @@ int cube_layers_rounded(const struct cube_layers *layers, int layer, int i, int 
   return layers->rounded[((size_t)layer * (size_t)layers->z_count + (size_t)j) * (size_t)layers->x_count + (size_t)i];
 }
 
+int cube_layers_capped(const struct cube_layers *layers, int layer, int i, int j)
+{
+  const int cells_x = layers->x_count - 1, cells_z = layers->z_count - 1;
+  if (!layers->capped || layer < 0 || layer >= layers->layer_count || i < 0 || i >= cells_x || j < 0 ||
+      j >= cells_z)
+    return 0;
+  return layers->capped[((size_t)layer * (size_t)cells_z + (size_t)j) * (size_t)cells_x + (size_t)i];
+}
+
 int cube_layers_alike(const struct cube_layers *layers)
 {
   const size_t cells = (size_t)(layers->x_count - 1) * (size_t)(layers->z_count - 1);
@@ -151,6 +160,77 @@ static int fill_cells(const struct wings_mesh *mesh, struct cube_layers *layers,
   return ok;
 }
 
+/* Which cells have their top rim rounded (cube_layers.h): each piece of a layer's footprint (its
+ * cells joined side to side) that is a rectangle, with nothing above it, its four corners'
+ * uprights rounded and every edge along its top rim hard. */
+static int cap_rectangles(const struct wings_mesh *mesh, struct cube_layers *layers, const int *place)
+{
+  const int cells_x = layers->x_count - 1, cells_z = layers->z_count - 1;
+  const size_t cells = (size_t)cells_x * (size_t)cells_z;
+  /* Whether every edge along the grid segment from (i, j) to (i + 1, j) (rim_x) or to (i, j + 1)
+   * (rim_z) at height `level` is hard, and whether there is one: [level][j][i] over the grid points. */
+  const size_t points = (size_t)layers->x_count * (size_t)layers->z_count;
+  const size_t levels = (size_t)layers->layer_count + 1;
+  unsigned char *covered = calloc(2 * levels * points + 1, 1), *soft = calloc(2 * levels * points + 1, 1);
+  int *piece = malloc(cells * sizeof *piece + 1), *stack = malloc(cells * sizeof *stack + 1);
+  layers->capped = calloc((size_t)layers->layer_count * cells + 1, 1);
+  int ok = covered && soft && piece && stack && layers->capped;
+  for (long e = 0; ok && e < mesh->edge_count; ++e) {
+    const int *a = &place[3 * mesh->edges[e].vs], *b = &place[3 * mesh->edges[e].ve];
+    if (a[1] != b[1] || (a[0] == b[0]) == (a[2] == b[2])) continue;
+    const int along_x = a[2] == b[2];
+    const int from = along_x ? (a[0] < b[0] ? a[0] : b[0]) : (a[2] < b[2] ? a[2] : b[2]);
+    const int to = along_x ? (a[0] < b[0] ? b[0] : a[0]) : (a[2] < b[2] ? b[2] : a[2]);
+    for (int c = from; c < to; ++c) {
+      const size_t at = ((size_t)along_x * levels + (size_t)a[1]) * points +
+                        (size_t)(along_x ? a[2] : c) * (size_t)layers->x_count + (size_t)(along_x ? c : a[0]);
+      covered[at] = 1;
+      soft[at] |= (unsigned char)!mesh->hard[e];
+    }
+  }
+#define RIM_HARD(along_x, level, i, j)                                                                             \
+  (covered[(((size_t)(along_x) * levels + (size_t)(level)) * points + (size_t)(j) * (size_t)layers->x_count +       \
+            (size_t)(i))] &&                                                                                        \
+   !soft[(((size_t)(along_x) * levels + (size_t)(level)) * points + (size_t)(j) * (size_t)layers->x_count + (size_t)(i))])
+  for (int k = 0; ok && k < layers->layer_count; ++k) {
+    for (size_t c = 0; c < cells; ++c) piece[c] = -1;
+    for (int start = 0; start < (int)cells; ++start) {
+      if (piece[start] >= 0 || !cube_layers_filled(layers, k, start % cells_x, start / cells_x)) continue;
+      /* The piece of the footprint through cell `start`, its bounds and whether anything stands on it. */
+      int count = 0, top = 0, i0 = cells_x, i1 = -1, j0 = cells_z, j1 = -1, covered_above = 0;
+      stack[top++] = start;
+      piece[start] = start;
+      while (top > 0) {
+        const int c = stack[--top], i = c % cells_x, j = c / cells_x;
+        ++count;
+        i0 = i < i0 ? i : i0, i1 = i > i1 ? i : i1, j0 = j < j0 ? j : j0, j1 = j > j1 ? j : j1;
+        covered_above |= cube_layers_filled(layers, k + 1, i, j);
+        const int next[4][2] = {{i - 1, j}, {i + 1, j}, {i, j - 1}, {i, j + 1}};
+        for (int n = 0; n < 4; ++n) {
+          const int ni = next[n][0], nj = next[n][1];
+          if (!cube_layers_filled(layers, k, ni, nj) || piece[nj * cells_x + ni] >= 0) continue;
+          piece[nj * cells_x + ni] = start;
+          stack[top++] = nj * cells_x + ni;
+        }
+      }
+      int capped = !covered_above && count == (i1 - i0 + 1) * (j1 - j0 + 1) && cube_layers_rounded(layers, k, i0, j0) &&
+                   cube_layers_rounded(layers, k, i1 + 1, j0) && cube_layers_rounded(layers, k, i0, j1 + 1) &&
+                   cube_layers_rounded(layers, k, i1 + 1, j1 + 1);
+      for (int i = i0; capped && i <= i1; ++i) capped = RIM_HARD(1, k + 1, i, j0) && RIM_HARD(1, k + 1, i, j1 + 1);
+      for (int j = j0; capped && j <= j1; ++j) capped = RIM_HARD(0, k + 1, i0, j) && RIM_HARD(0, k + 1, i1 + 1, j);
+      for (int j = j0; capped && j <= j1; ++j)
+        for (int i = i0; i <= i1; ++i)
+          layers->capped[((size_t)k * (size_t)cells_z + (size_t)j) * (size_t)cells_x + (size_t)i] = 1;
+    }
+  }
+#undef RIM_HARD
+  free(covered);
+  free(soft);
+  free(piece);
+  free(stack);
+  return ok;
+}
+
 /* Which uprights are rounded in each layer, and how many hard edges stay sharp. */
 static int mark_hard_edges(const struct wings_mesh *mesh, struct cube_layers *layers, const int *place,
                            const int *face_axis, const int *face_level, char *error, size_t size)
@@ -184,8 +264,10 @@ static int mark_hard_edges(const struct wings_mesh *mesh, struct cube_layers *la
       }
   free(covered);
   free(soft);
+  if (!cap_rectangles(mesh, layers, place)) return wings_failed(error, size, "out of memory");
   /* A hard edge between faces in different planes is a crease: rounded when it is upright and
-   * rounded in every layer it runs through, else left sharp. */
+   * rounded in every layer it runs through, or along a capped rectangle's top rim, else left
+   * sharp. */
   for (long e = 0; e < mesh->edge_count; ++e) {
     const struct winged_edge *edge = &mesh->edges[e];
     if (!mesh->hard[e]) continue;
@@ -194,6 +276,17 @@ static int mark_hard_edges(const struct wings_mesh *mesh, struct cube_layers *la
     int rounded = a[0] == b[0] && a[2] == b[2];
     for (int k = a[1] < b[1] ? a[1] : b[1]; rounded && k < (a[1] < b[1] ? b[1] : a[1]); ++k)
       rounded = cube_layers_rounded(layers, k, a[0], a[2]);
+    if (a[1] == b[1] && a[1] > 0 && (a[0] == b[0]) != (a[2] == b[2])) {
+      /* Along x or z at a height: on a capped rim when every cell it runs beside is capped on one
+       * side of it. */
+      const int k = a[1] - 1, along_x = a[2] == b[2];
+      const int from = along_x ? (a[0] < b[0] ? a[0] : b[0]) : (a[2] < b[2] ? a[2] : b[2]);
+      const int to = along_x ? (a[0] < b[0] ? b[0] : a[0]) : (a[2] < b[2] ? b[2] : a[2]);
+      rounded = 1;
+      for (int c = from; rounded && c < to; ++c)
+        rounded = along_x ? cube_layers_capped(layers, k, c, a[2]) != cube_layers_capped(layers, k, c, a[2] - 1)
+                          : cube_layers_capped(layers, k, a[0], c) != cube_layers_capped(layers, k, a[0] - 1, c);
+    }
     layers->sharp_hard_edges += !rounded;
   }
   return 1;
@@ -302,5 +395,6 @@ void cube_layers_free(struct cube_layers *layers)
   free(layers->height);
   free(layers->filled);
   free(layers->rounded);
+  free(layers->capped);
   memset(layers, 0, sizeof *layers);
 }

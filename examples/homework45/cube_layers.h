@@ -3,7 +3,8 @@
  * each in the solid or out of it. Between two consecutive heights of its vertices lies a layer:
  * a prism over the cells it fills, its footprint. Its upright edges at the footprint's corners
  * are rounded one layer at a time when they are marked hard in Wings3D; the edges along the
- * layers' tops and bottoms stay sharp. */
+ * layers' tops and bottoms stay sharp, but for the top rim of a rectangle of a layer with nothing
+ * beside or above it (a cube standing on a slab). */
 #ifndef HOMEWORK45_CUBE_LAYERS_H
 #define HOMEWORK45_CUBE_LAYERS_H
 
@@ -20,10 +21,14 @@ struct cube_layers {
                              z[j + 1] is in the solid in that layer */
   unsigned char *rounded; /* [layer][j][i]: whether the upright through grid point (x[i], z[j])
                              is a corner of the layer's footprint and marked hard there */
+  unsigned char *capped;  /* [layer][j][i]: whether cell (i, j) lies in a rectangle of the layer's
+                             footprint (a whole piece of it) with nothing above, its corners'
+                             uprights rounded and the edges round its top all hard: that rim is
+                             rounded too, meeting the uprights in eighths of a sphere */
   double max_radius;      /* half the closest spacing of the grid lines: the corners' quarter
                              circles keep apart */
-  int sharp_hard_edges;   /* hard edges left sharp: every crease along the layers' tops and
-                             bottoms */
+  int sharp_hard_edges;   /* hard edges left sharp: the creases along the layers' tops and
+                             bottoms but the capped rectangles' top rims */
 };
 
 /* The cells of a mesh's object. Returns 0 and writes the reason into `error` when the object is
@@ -38,5 +43,7 @@ int cube_layers_filled(const struct cube_layers *layers, int layer, int i, int j
 int cube_layers_alike(const struct cube_layers *layers);
 /* Whether the upright at grid point (i, j) is rounded in `layer` (0 outside the grid). */
 int cube_layers_rounded(const struct cube_layers *layers, int layer, int i, int j);
+/* Whether cell (i, j) of `layer` has its top rim rounded (0 outside the grid). */
+int cube_layers_capped(const struct cube_layers *layers, int layer, int i, int j);
 
 #endif

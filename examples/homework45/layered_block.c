@@ -11,7 +11,12 @@
  * the corner, or nothing: on every line every piece, wall and cylinder has its vertices at the
  * same points (the grid lines, R in from them, the arcs' ARC_STEPS points, four rows per layer up
  * the walls and the cylinders), so the surface has no T-junctions and no cracks. The arcs' squares
- * keep apart, as R is at most half the closest spacing of the grid lines. */
+ * keep apart, as R is at most half the closest spacing of the grid lines.
+ *
+ * The top rim of a capped rectangle (cube_layers.h) is rounded: its walls and uprights stop R
+ * below the top, a rim strip runs along each wall cut at the wall's columns, an eighth of a sphere
+ * joins two strips and the upright at each corner, and the top loses its bands along the rim;
+ * so the pieces still share their vertices. */
 #include "layered_block.h"
 
 #include "rounded_upright.h"
@@ -45,11 +50,19 @@ static int upright_rounded(const struct cube_layers *layers, int layer, int i, i
   return radius > 0 && cube_layers_rounded(layers, layer, i, j);
 }
 
+/* Whether cell (i, j) of `layer` has its top rim rounded at this radius: a capped rectangle's
+ * (cube_layers.h), when the radius leaves some of the layer's height to its walls. */
+static int rim_rounded(const struct cube_layers *layers, int layer, int i, int j, float radius)
+{
+  return radius > 0 && radius < layers->height[layer + 1] - layers->height[layer] &&
+         cube_layers_capped(layers, layer, i, j);
+}
+
 /* The wall of `layer` along grid line `fixed` (x = fixed for along_x 0, else z = fixed), from
  * grid value a to b > a, facing (normal_x, normal_z): R shorter at an end where the upright is
  * rounded, with columns at a, a + R, b - R and b. */
 static void wall(const struct cube_layers *layers, int layer, int along_x, float fixed, float a, float b,
-                 int rounded_a, int rounded_b, int normal_x, int normal_z, float radius)
+                 int rounded_a, int rounded_b, int normal_x, int normal_z, float radius, float drop)
 {
   float columns[4];
   int count = 0;
@@ -57,7 +70,8 @@ static void wall(const struct cube_layers *layers, int layer, int along_x, float
   const int wanted[4] = {!rounded_a, radius > 0, radius > 0, !rounded_b};
   for (int c = 0; c < 4; ++c)
     if (wanted[c] && (count == 0 || candidates[c] > columns[count - 1])) columns[count++] = candidates[c];
-  const double y0 = layers->height[layer], y1 = layers->height[layer + 1];
+  const double y0 = layers->height[layer];
+  const double y1 = drop > 0 ? (double)((float)layers->height[layer + 1] - drop) : layers->height[layer + 1];
   glNormal3f((float)normal_x, 0, (float)normal_z);
   for (int row = 0; row < ROWS; ++row) {
     glBegin(GL_QUAD_STRIP);
@@ -81,7 +95,7 @@ static void walls(const struct cube_layers *layers, int layer, float radius)
       if (before != after)
         wall(layers, layer, 0, (float)layers->x[i], (float)layers->z[j], (float)layers->z[j + 1],
              upright_rounded(layers, layer, i, j, radius), upright_rounded(layers, layer, i, j + 1, radius),
-             before ? 1 : -1, 0, radius);
+             before ? 1 : -1, 0, radius, rim_rounded(layers, layer, before ? i - 1 : i, j, radius) ? radius : 0);
     }
   for (int j = 0; j < layers->z_count; ++j)
     for (int i = 0; i + 1 < layers->x_count; ++i) {
@@ -89,16 +103,18 @@ static void walls(const struct cube_layers *layers, int layer, float radius)
       if (before != after)
         wall(layers, layer, 1, (float)layers->z[j], (float)layers->x[i], (float)layers->x[i + 1],
              upright_rounded(layers, layer, i, j, radius), upright_rounded(layers, layer, i + 1, j, radius), 0,
-             before ? 1 : -1, radius);
+             before ? 1 : -1, radius, rim_rounded(layers, layer, i, before ? j - 1 : j, radius) ? radius : 0);
     }
 }
 
-/* The quarter cylinder of the rounded upright at grid point (i, j) of `layer`. Of the four cells
- * around it one differs from the others (the only one in the solid at a convex corner, the only
- * one out of it at a concave one), in direction (qx, qz) from the point; the walls run from the
- * point along x and along z on its sides. The arc goes from R along the wall the walk arrives by
- * to R along the wall it leaves by, the solid on the walk's left. */
-static void upright_cylinder(const struct cube_layers *layers, int layer, int i, int j, float radius)
+/* The arc of the rounded upright at grid point (i, j) of `layer`. Of the four cells around it one
+ * differs from the others (the only one in the solid at a convex corner, the only one out of it
+ * at a concave one), in direction (qx, qz) from the point: that cell goes into *odd_i, *odd_j;
+ * the walls run from the point along x and along z on its sides. The arc goes from R along the
+ * wall the walk arrives by to R along the wall it leaves by, the solid on the walk's left. Its
+ * texture's s runs from *s0 over *s_length. Returns whether the corner is convex. */
+static int upright_arc(const struct cube_layers *layers, int layer, int i, int j, float radius, float from[2],
+                       float corner[2], float to[2], float *s0, float *s_length, int *odd_i, int *odd_j)
 {
   int filled = 0, qx = 0, qz = 0;
   for (int di = -1; di <= 0; ++di)
@@ -106,25 +122,170 @@ static void upright_cylinder(const struct cube_layers *layers, int layer, int i,
   const int convex = filled == 1;
   for (int di = -1; di <= 0; ++di)
     for (int dj = -1; dj <= 0; ++dj)
-      if (cube_layers_filled(layers, layer, i + di, j + dj) == convex) qx = di ? -1 : 1, qz = dj ? -1 : 1;
+      if (cube_layers_filled(layers, layer, i + di, j + dj) == convex)
+        qx = di ? -1 : 1, qz = dj ? -1 : 1, *odd_i = i + di, *odd_j = j + dj;
   const int sign = convex ? 1 : -1;
   /* The wall along x faces (0, -qz sign) and the walk runs along it by (-qz sign, 0): away from
    * the point, it leaves by that wall, when that is (qx, 0). The wall along z faces (-qx sign, 0). */
   const int leaves_along_x = -qz * sign == qx;
-  const float corner[2] = {(float)layers->x[i], (float)layers->z[j]};
+  corner[0] = (float)layers->x[i];
+  corner[1] = (float)layers->z[j];
   const float along_x[2] = {corner[0] + (float)qx * radius, corner[1]};
   const float along_z[2] = {corner[0], corner[1] + (float)qz * radius};
-  const float *from = leaves_along_x ? along_z : along_x, *to = leaves_along_x ? along_x : along_z;
+  for (int k = 0; k < 2; ++k) {
+    from[k] = leaves_along_x ? along_z[k] : along_x[k];
+    to[k] = leaves_along_x ? along_x[k] : along_z[k];
+  }
   /* The texture's s runs on from the wall the walk arrives by and, stretched by less than a
    * quarter of the texture, reaches the next wall's s but for whole quarters: the checkerboard
    * (squares of 8 of its 64 texels) repeats every quarter, so it runs on across both seams. */
-  const float s0 = leaves_along_x ? wall_s(from[0], from[1], -qx * sign, 0) : wall_s(from[0], from[1], 0, -qz * sign);
+  *s0 = leaves_along_x ? wall_s(from[0], from[1], -qx * sign, 0) : wall_s(from[0], from[1], 0, -qz * sign);
   const float s1 = leaves_along_x ? wall_s(to[0], to[1], 0, -qz * sign) : wall_s(to[0], to[1], -qx * sign, 0);
   const float arc = (float)(PI / 2.0) * radius;
-  const double short_of = (double)s1 - s0 - arc;
-  const float stretch = (float)(short_of - CHECKER_PERIOD * floor(short_of / CHECKER_PERIOD));
-  const float y0 = (float)layers->height[layer], y1 = (float)layers->height[layer + 1];
-  quarter_cylinder(from, corner, to, y0, y1, s0, arc + stretch, texture_t(layers, y0), texture_t(layers, y1));
+  const double short_of = (double)s1 - *s0 - arc;
+  *s_length = arc + (float)(short_of - CHECKER_PERIOD * floor(short_of / CHECKER_PERIOD));
+  return convex;
+}
+
+/* The quarter cylinder of the rounded upright at grid point (i, j) of `layer`, up to R below the
+ * layer's top where that is a rounded rim. */
+static void upright_cylinder(const struct cube_layers *layers, int layer, int i, int j, float radius)
+{
+  float from[2], corner[2], to[2], s0, s_length;
+  int odd_i, odd_j;
+  const int convex = upright_arc(layers, layer, i, j, radius, from, corner, to, &s0, &s_length, &odd_i, &odd_j);
+  const float drop = convex && rim_rounded(layers, layer, odd_i, odd_j, radius) ? radius : 0;
+  const float y0 = (float)layers->height[layer], y1 = (float)layers->height[layer + 1] - drop;
+  quarter_cylinder(from, corner, to, y0, y1, s0, s_length, texture_t(layers, y0), texture_t(layers, y1));
+}
+
+/* Draws the rational patch net[v][u] (rows = 2 or 3 rows of 3 homogeneous points) with texture
+ * coordinates tex[v][u], ARC_STEPS steps along u and v_steps along v. Its normals come from a map
+ * of their own, not from GL_AUTO_NORMAL, whose dP/du x dP/dv vanishes where a sphere's net closes
+ * in a pole: the rim lies at distance R from the centres centre[v][u] (each control point's
+ * nearest on the rim's axis, or the sphere's centre), so w(u, v) (P(u, v) - centre) is a
+ * polynomial patch with control points w_ij (P_ij - centre_ij) and, with GL_NORMALIZE, gives the
+ * exact unit normal (as homework45.c draws the one-layer object's rims). */
+static void rim_patch(const float net[][3][4], const float tex[][3][2], const float centre[][3][3], int rows,
+                      int v_steps)
+{
+  float normals[3][3][3];
+  for (int v = 0; v < rows; ++v)
+    for (int u = 0; u < 3; ++u)
+      for (int k = 0; k < 3; ++k) normals[v][u][k] = net[v][u][k] - net[v][u][3] * centre[v][u][k];
+  glMap2f(GL_MAP2_VERTEX_4, 0, 1, 4, 3, 0, 1, 12, rows, &net[0][0][0]);
+  glMap2f(GL_MAP2_TEXTURE_COORD_2, 0, 1, 2, 3, 0, 1, 6, rows, &tex[0][0][0]);
+  glMap2f(GL_MAP2_NORMAL, 0, 1, 3, 3, 0, 1, 9, rows, &normals[0][0][0]);
+  glEnable(GL_MAP2_VERTEX_4);
+  glEnable(GL_MAP2_TEXTURE_COORD_2);
+  glEnable(GL_MAP2_NORMAL);
+  glDisable(GL_AUTO_NORMAL);
+  glMapGrid2f(ARC_STEPS, 0, 1, v_steps, 0, 1);
+  glEvalMesh2(GL_FILL, 0, ARC_STEPS, 0, v_steps);
+  glEnable(GL_AUTO_NORMAL);
+  glDisable(GL_MAP2_NORMAL);
+  glDisable(GL_MAP2_VERTEX_4);
+  glDisable(GL_MAP2_TEXTURE_COORD_2);
+}
+
+static void control_point(float out[4], double x, double y, double z, double w)
+{
+  out[0] = (float)(x * w);
+  out[1] = (float)(y * w);
+  out[2] = (float)(z * w);
+  out[3] = (float)w;
+}
+
+/* The rounded top rim of `layer` along its wall on grid line `fixed` (x = fixed for along_x 0,
+ * else z = fixed) from a to b, facing (normal_x, normal_z): a quarter cylinder along the wall, its
+ * axis R in from the wall and R below the top, cut at the wall's columns (a, a + R, b - R, b, the
+ * ends at a rounded upright left out, where the sphere's eighth takes over), so that it meets the
+ * wall's top row and the top's bands at their vertices. The texture's s is the wall's; t runs on
+ * from the wall's top by the arc's length. */
+static void rim_strip(const struct cube_layers *layers, int layer, int along_x, float fixed, float a, float b,
+                      int rounded_a, int rounded_b, int normal_x, int normal_z, float radius)
+{
+  const double w = sqrt(2.0) / 2.0;
+  float columns[4];
+  int count = 0;
+  const float candidates[4] = {a, a + radius, b - radius, b};
+  const int wanted[4] = {!rounded_a, 1, 1, !rounded_b};
+  for (int c = 0; c < 4; ++c)
+    if (wanted[c] && (count == 0 || candidates[c] > columns[count - 1])) columns[count++] = candidates[c];
+  const float top = (float)layers->height[layer + 1], below = top - radius;
+  const float t0 = texture_t(layers, below), t2 = t0 + (float)(PI / 2.0) * radius;
+  const int in_x = -normal_x, in_z = -normal_z;
+  for (int c = 0; c + 1 < count; ++c) {
+    float net[2][3][4], tex[2][3][2], centre[2][3][3];
+    for (int v = 0; v < 2; ++v) {
+      const float x = along_x ? columns[c + v] : fixed, z = along_x ? fixed : columns[c + v];
+      control_point(net[v][0], x, below, z, 1.0);
+      control_point(net[v][1], x, top, z, w);
+      control_point(net[v][2], x + (float)in_x * radius, top, z + (float)in_z * radius, 1.0);
+      const float s = wall_s(x, z, normal_x, normal_z), ts[3] = {t0, (t0 + t2) / 2, t2};
+      for (int u = 0; u < 3; ++u) {
+        tex[v][u][0] = s;
+        tex[v][u][1] = ts[u];
+        centre[v][u][0] = x + (float)in_x * radius;
+        centre[v][u][1] = below;
+        centre[v][u][2] = z + (float)in_z * radius;
+      }
+    }
+    rim_patch((const float (*)[3][4])net, (const float (*)[3][2])tex, (const float (*)[3][3])centre, 2, 1);
+  }
+}
+
+/* The rounded top rims of `layer`: along every wall of a cell whose rim is rounded. */
+static void rim_strips(const struct cube_layers *layers, int layer, float radius)
+{
+  for (int i = 0; i < layers->x_count; ++i)
+    for (int j = 0; j + 1 < layers->z_count; ++j) {
+      const int before = cube_layers_filled(layers, layer, i - 1, j), after = cube_layers_filled(layers, layer, i, j);
+      if (before != after && rim_rounded(layers, layer, before ? i - 1 : i, j, radius))
+        rim_strip(layers, layer, 0, (float)layers->x[i], (float)layers->z[j], (float)layers->z[j + 1],
+                  upright_rounded(layers, layer, i, j, radius), upright_rounded(layers, layer, i, j + 1, radius),
+                  before ? 1 : -1, 0, radius);
+    }
+  for (int j = 0; j < layers->z_count; ++j)
+    for (int i = 0; i + 1 < layers->x_count; ++i) {
+      const int before = cube_layers_filled(layers, layer, i, j - 1), after = cube_layers_filled(layers, layer, i, j);
+      if (before != after && rim_rounded(layers, layer, i, before ? j - 1 : j, radius))
+        rim_strip(layers, layer, 1, (float)layers->z[j], (float)layers->x[i], (float)layers->x[i + 1],
+                  upright_rounded(layers, layer, i, j, radius), upright_rounded(layers, layer, i + 1, j, radius), 0,
+                  before ? 1 : -1, radius);
+    }
+}
+
+/* Above the rounded upright at grid point (i, j) of `layer` where the rims of its two walls are
+ * rounded: an eighth of a sphere, the upright's quarter circle turned by the rim's. Its rows are
+ * the upright's arc control points scaled from the arc's centre by the rim's profile, 1 R below
+ * the top and at the top's edge, 0 on the top (the net closes in a pole over the centre). */
+static void rim_corner(const struct cube_layers *layers, int layer, int i, int j, float radius)
+{
+  float from[2], corner[2], to[2], s0, s_length;
+  int odd_i, odd_j;
+  if (!upright_arc(layers, layer, i, j, radius, from, corner, to, &s0, &s_length, &odd_i, &odd_j) ||
+      !rim_rounded(layers, layer, odd_i, odd_j, radius))
+    return;
+  const double w = sqrt(2.0) / 2.0;
+  const float axis[2] = {from[0] + to[0] - corner[0], from[1] + to[1] - corner[1]};
+  const float *arc[3] = {from, corner, to};
+  const double arc_weight[3] = {1.0, w, 1.0};
+  const float top = (float)layers->height[layer + 1], below = top - radius;
+  const float scale[3] = {1, 1, 0}, y[3] = {below, top, top};
+  const float t0 = texture_t(layers, below), t2 = t0 + (float)(PI / 2.0) * radius;
+  float net[3][3][4], tex[3][3][2], centre[3][3][3];
+  for (int v = 0; v < 3; ++v)
+    for (int u = 0; u < 3; ++u) {
+      control_point(net[v][u], axis[0] + scale[v] * (arc[u][0] - axis[0]), y[v],
+                    axis[1] + scale[v] * (arc[u][1] - axis[1]), arc_weight[u] * arc_weight[v]);
+      tex[v][u][0] = s0 + s_length * (float)u / 2;
+      tex[v][u][1] = t0 + (t2 - t0) * (float)v / 2;
+      centre[v][u][0] = axis[0];
+      centre[v][u][1] = below;
+      centre[v][u][2] = axis[1];
+    }
+  rim_patch((const float (*)[3][4])net, (const float (*)[3][2])tex, (const float (*)[3][3])centre, 3, ARC_STEPS);
 }
 
 /* What `layer` covers of the R x R square of cell (i, j) at its grid point (gi, gj). */
@@ -197,8 +358,16 @@ static void flat_face(const struct cube_layers *layers, int level, int up, float
       const float x0 = (float)layers->x[i], x1 = (float)layers->x[i + 1];
       const float z0 = (float)layers->z[j], z1 = (float)layers->z[j + 1];
       const float xs[4] = {x0, x0 + radius, x1 - radius, x1}, zs[4] = {z0, z0 + radius, z1 - radius, z1};
+      /* Along a rounded rim the band R wide is the rim's strip, and its corners' squares are the
+       * strips' and the spheres' eighths. */
+      const int capped = up && rim_rounded(layers, inner, i, j, radius);
+      const int rim[4] = {capped && !cube_layers_capped(layers, inner, i - 1, j),
+                          capped && !cube_layers_capped(layers, inner, i + 1, j),
+                          capped && !cube_layers_capped(layers, inner, i, j - 1),
+                          capped && !cube_layers_capped(layers, inner, i, j + 1)};
       for (int b = 0; b < 3; ++b)
         for (int a = 0; a < 3; ++a) {
+          if ((a == 0 && rim[0]) || (a == 2 && rim[1]) || (b == 0 && rim[2]) || (b == 2 && rim[3])) continue;
           if (a != 1 && b != 1) {
             const int gi = a ? i + 1 : i, gj = b ? j + 1 : j;
             const int cover = square_cover(layers, inner, i, j, gi, gj, radius) &
@@ -218,7 +387,11 @@ void draw_layered_block(const struct cube_layers *layers, float radius)
     walls(layers, layer, radius);
     for (int j = 0; j < layers->z_count; ++j)
       for (int i = 0; i < layers->x_count; ++i)
-        if (upright_rounded(layers, layer, i, j, radius)) upright_cylinder(layers, layer, i, j, radius);
+        if (upright_rounded(layers, layer, i, j, radius)) {
+          upright_cylinder(layers, layer, i, j, radius);
+          rim_corner(layers, layer, i, j, radius);
+        }
+    rim_strips(layers, layer, radius);
   }
   for (int level = 0; level <= layers->layer_count; ++level) {
     flat_face(layers, level, 1, radius);

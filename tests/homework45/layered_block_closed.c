@@ -24,7 +24,8 @@ static size_t triangle_count, triangle_capacity;
 static double primitive[4096][3];
 static int primitive_count;
 static GLenum primitive_mode;
-static GLfloat cylinder_net[2][3][4];
+static GLfloat cylinder_net[3][3][4];
+static int net_rows;
 static int grid_steps_u, grid_steps_v;
 
 static void add_triangle(const double *a, const double *b, const double *c)
@@ -88,8 +89,9 @@ void glMap2f(GLenum target, GLfloat u1, GLfloat u2, GLint ustride, GLint uorder,
 {
   (void)u1, (void)u2, (void)v1, (void)v2;
   if (target != GL_MAP2_VERTEX_4) return;
-  if (ustride != 4 || uorder != 3 || vstride != 12 || vorder != 2) exit(2);
-  memcpy(cylinder_net, points, sizeof cylinder_net);
+  if (ustride != 4 || uorder != 3 || vstride != 12 || (vorder != 2 && vorder != 3)) exit(2);
+  net_rows = vorder;
+  memcpy(cylinder_net, points, (size_t)vorder * sizeof cylinder_net[0]);
 }
 
 void glMapGrid2f(GLint un, GLfloat u1, GLfloat u2, GLint vn, GLfloat v1, GLfloat v2)
@@ -99,12 +101,13 @@ void glMapGrid2f(GLint un, GLfloat u1, GLfloat u2, GLint vn, GLfloat v1, GLfloat
   grid_steps_v = vn;
 }
 
-/* The rational patch (quadratic in u, linear in v) at (u, v). */
+/* The rational patch (quadratic in u; linear in v for 2 rows, quadratic for 3) at (u, v). */
 static void cylinder_point(double u, double v, double out[3])
 {
   double h[4] = {0, 0, 0, 0};
-  const double bu[3] = {(1 - u) * (1 - u), 2 * u * (1 - u), u * u}, bv[2] = {1 - v, v};
-  for (int j = 0; j < 2; ++j)
+  const double bu[3] = {(1 - u) * (1 - u), 2 * u * (1 - u), u * u};
+  const double bv[3] = {net_rows == 2 ? 1 - v : (1 - v) * (1 - v), net_rows == 2 ? v : 2 * v * (1 - v), v * v};
+  for (int j = 0; j < net_rows; ++j)
     for (int i = 0; i < 3; ++i)
       for (int k = 0; k < 4; ++k) h[k] += bv[j] * bu[i] * cylinder_net[j][i][k];
   for (int k = 0; k < 3; ++k) out[k] = h[k] / h[3];
