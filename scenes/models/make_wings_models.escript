@@ -9,6 +9,7 @@
 %% Writes scenes/models/*.wings, examples/homework45/l_block.wings,
 %% tests/homework45/l_block_uprights.wings, tests/homework45/l_block_all_hard.wings,
 %% tests/homework45/l_block_partial*.wings, tests/homework45/overhang_*.wings,
+%% tests/homework45/two_layers_uprights.wings,
 %% tests/homework45/refused_*.wings (objects the homework program refuses) and tests/unit/data/wings/*.wings and *.term.
 
 main([Root]) ->
@@ -126,6 +127,10 @@ main([Root]) ->
     {TwoVs, TwoFs} = cubes([{0, 0, 0}, {1, 0, 0}, {0, 0, 1}, {0, 1, 0}], 1.0, {0.0, 0.0, 0.0}),
     write(filename:join(Tests, "two_layers.wings"),
           [object("Steps", TwoVs, TwoFs, All, none, false)], Materials, []),
+    %% The same with only its uprights hard (for the homework program, whose test compares the
+    %% two: the standing cube's top rim is rounded only in the first).
+    write(filename:join(Root, "tests/homework45/two_layers_uprights.wings"),
+          [object("Steps", TwoVs, TwoFs, Upright, none, false)], Materials, []),
     %% A cube standing on a slab of 2 x 2 cubes at one corner, every edge marked: at the foot of
     %% its inner upright the upright meets the two fillets along its foot (a standing torus
     %% piece); at the two feet beside the slab's sides a fillet ends between two rounded convex

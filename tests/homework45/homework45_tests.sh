@@ -4,6 +4,7 @@
 #   homework45_tests.sh PROGRAM PNG_PROBE WORK_DIR MODEL UPRIGHTS_MODEL ALL_HARD_MODEL PARTIAL_MODEL
 #                       PARTIAL_SHARP_UPRIGHTS_MODEL HALF_SIDE_MODEL TWO_LAYERS_MODEL SLAB_CUBE_MODEL
 #                       NOT_CUBES_MODEL TALL_L_MODEL BLOCK_MODEL OVERHANG_HIGH_MODEL OVERHANG_LOW_MODEL
+#                       TWO_LAYERS_UPRIGHTS_MODEL
 # (UPRIGHTS_MODEL: the same L with only its uprights hard, its top's rim sharp; ALL_HARD_MODEL:
 # with every edge hard, the bottom's rim too; PARTIAL_MODEL and PARTIAL_SHARP_UPRIGHTS_MODEL: the
 # rims of the top and the bottom hard along some sides only, with some uprights hard or none;
@@ -12,7 +13,7 @@
 # TALL_L_MODEL and BLOCK_MODEL: objects of two layers alike, an L with its uprights hard and a
 # block of 2 x 2 x 2 cubes with its top's rim and one upright hard; OVERHANG_HIGH_MODEL and
 # OVERHANG_LOW_MODEL: a column with an arm along +z at x = 1, its bottom above the walker's head
-# and below it.)
+# and below it; TWO_LAYERS_UPRIGHTS_MODEL: the cube on an L with only its uprights hard.)
 set -eu
 program=$1
 probe=$2
@@ -30,6 +31,7 @@ tall_l_model=${13}
 block_model=${14}
 overhang_high_model=${15}
 overhang_low_model=${16}
+two_layers_uprights_model=${17}
 . "$(dirname "$0")/../shell_test_support.sh"
 
 # repeat N LINE: the event line N times.
@@ -227,6 +229,20 @@ for kind in two_layers slab_cube; do
 done
 "$probe" two_layers_sharp.png differ slab_cube_sharp.png || fail "the two objects of two layers look the same"
 "$probe" two_layers_round6.png differ slab_cube_round6.png || fail "the two rounded objects look the same"
+# The standing cube's top rim is rounded: the cube on an L with only its uprights hard looks the
+# same sharp and different rounded, and reports nothing left sharp.
+{
+  echo "snapshot two_layers_uprights_sharp.png"
+  repeat 6 "key R"
+  echo "snapshot two_layers_uprights_round6.png"
+} >two_layers_uprights_events.txt
+status=0
+GLASS_GLUT_SNAPSHOT=last_two_layers_uprights.png GLASS_GLUT_EVENTS=two_layers_uprights_events.txt "$program" \
+  "$two_layers_uprights_model" >out.txt 2>err.txt || status=$?
+[ "$status" -eq 0 ] || fail "the program exited with $status on $two_layers_uprights_model: $(cat err.txt)"
+[ ! -s err.txt ] || fail "$two_layers_uprights_model reports: $(cat err.txt)"
+"$probe" two_layers_uprights_sharp.png same two_layers_sharp.png || fail "the cube on an L differs before rounding"
+"$probe" two_layers_uprights_round6.png differ two_layers_round6.png || fail "the standing cube's rounded rim does not show"
 # Objects of two layers alike are one floor plan raised by two layers: rounded as an object of one
 # layer (uprights, the top's rim), nothing reported as left sharp, every press of R a new picture.
 five_presses tall_l "$tall_l_model"
