@@ -160,9 +160,9 @@ static int fill_cells(const struct wings_mesh *mesh, struct cube_layers *layers,
   return ok;
 }
 
-/* Which cells have their top rim rounded (cube_layers.h): each piece of a layer's footprint (its
- * cells joined side to side) that is a rectangle, with nothing above it, its four corners'
- * uprights rounded and every edge along its top rim hard. */
+/* Which cells have their top or bottom rim rounded (cube_layers.h): each piece of a layer's
+ * footprint (its cells joined side to side) that is a rectangle, with its four corners' uprights
+ * rounded, nothing above it (below it) and every edge along its top (bottom) rim hard. */
 static int cap_rectangles(const struct wings_mesh *mesh, struct cube_layers *layers, const int *place)
 {
   const int cells_x = layers->x_count - 1, cells_z = layers->z_count - 1;
@@ -197,7 +197,7 @@ static int cap_rectangles(const struct wings_mesh *mesh, struct cube_layers *lay
     for (int start = 0; start < (int)cells; ++start) {
       if (piece[start] >= 0 || !cube_layers_filled(layers, k, start % cells_x, start / cells_x)) continue;
       /* The piece of the footprint through cell `start`, its bounds and whether anything stands on it. */
-      int count = 0, top = 0, i0 = cells_x, i1 = -1, j0 = cells_z, j1 = -1, covered_above = 0;
+      int count = 0, top = 0, i0 = cells_x, i1 = -1, j0 = cells_z, j1 = -1, covered_above = 0, covered_below = 0;
       stack[top++] = start;
       piece[start] = start;
       while (top > 0) {
@@ -205,6 +205,7 @@ static int cap_rectangles(const struct wings_mesh *mesh, struct cube_layers *lay
         ++count;
         i0 = i < i0 ? i : i0, i1 = i > i1 ? i : i1, j0 = j < j0 ? j : j0, j1 = j > j1 ? j : j1;
         covered_above |= cube_layers_filled(layers, k + 1, i, j);
+        covered_below |= cube_layers_filled(layers, k - 1, i, j);
         const int next[4][2] = {{i - 1, j}, {i + 1, j}, {i, j - 1}, {i, j + 1}};
         for (int n = 0; n < 4; ++n) {
           const int ni = next[n][0], nj = next[n][1];
@@ -213,14 +214,21 @@ static int cap_rectangles(const struct wings_mesh *mesh, struct cube_layers *lay
           stack[top++] = nj * cells_x + ni;
         }
       }
-      int capped = !covered_above && count == (i1 - i0 + 1) * (j1 - j0 + 1) && cube_layers_rounded(layers, k, i0, j0) &&
-                   cube_layers_rounded(layers, k, i1 + 1, j0) && cube_layers_rounded(layers, k, i0, j1 + 1) &&
-                   cube_layers_rounded(layers, k, i1 + 1, j1 + 1);
-      for (int i = i0; capped && i <= i1; ++i) capped = RIM_HARD(1, k + 1, i, j0) && RIM_HARD(1, k + 1, i, j1 + 1);
-      for (int j = j0; capped && j <= j1; ++j) capped = RIM_HARD(0, k + 1, i0, j) && RIM_HARD(0, k + 1, i1 + 1, j);
-      for (int j = j0; capped && j <= j1; ++j)
+      const int rectangle = count == (i1 - i0 + 1) * (j1 - j0 + 1) && cube_layers_rounded(layers, k, i0, j0) &&
+                            cube_layers_rounded(layers, k, i1 + 1, j0) && cube_layers_rounded(layers, k, i0, j1 + 1) &&
+                            cube_layers_rounded(layers, k, i1 + 1, j1 + 1);
+      unsigned char rims = 0;
+      for (int side = 0; side < 2; ++side) {
+        /* side 0: the top rim, at level k + 1, with nothing above; side 1: the bottom's. */
+        const int level = side ? k : k + 1;
+        int capped = rectangle && !(side ? covered_below : covered_above);
+        for (int i = i0; capped && i <= i1; ++i) capped = RIM_HARD(1, level, i, j0) && RIM_HARD(1, level, i, j1 + 1);
+        for (int j = j0; capped && j <= j1; ++j) capped = RIM_HARD(0, level, i0, j) && RIM_HARD(0, level, i1 + 1, j);
+        if (capped) rims |= side ? CAPPED_BOTTOM : CAPPED_TOP;
+      }
+      for (int j = j0; rims && j <= j1; ++j)
         for (int i = i0; i <= i1; ++i)
-          layers->capped[((size_t)k * (size_t)cells_z + (size_t)j) * (size_t)cells_x + (size_t)i] = 1;
+          layers->capped[((size_t)k * (size_t)cells_z + (size_t)j) * (size_t)cells_x + (size_t)i] = rims;
     }
   }
 #undef RIM_HARD
@@ -276,16 +284,19 @@ static int mark_hard_edges(const struct wings_mesh *mesh, struct cube_layers *la
     int rounded = a[0] == b[0] && a[2] == b[2];
     for (int k = a[1] < b[1] ? a[1] : b[1]; rounded && k < (a[1] < b[1] ? b[1] : a[1]); ++k)
       rounded = cube_layers_rounded(layers, k, a[0], a[2]);
-    if (a[1] == b[1] && a[1] > 0 && (a[0] == b[0]) != (a[2] == b[2])) {
+    if (a[1] == b[1] && (a[0] == b[0]) != (a[2] == b[2])) {
       /* Along x or z at a height: on a capped rim when every cell it runs beside is capped on one
-       * side of it. */
-      const int k = a[1] - 1, along_x = a[2] == b[2];
+       * side of it, as the top of the layer below or the bottom of the layer above. */
+      const int along_x = a[2] == b[2];
       const int from = along_x ? (a[0] < b[0] ? a[0] : b[0]) : (a[2] < b[2] ? a[2] : b[2]);
       const int to = along_x ? (a[0] < b[0] ? b[0] : a[0]) : (a[2] < b[2] ? b[2] : a[2]);
-      rounded = 1;
-      for (int c = from; rounded && c < to; ++c)
-        rounded = along_x ? cube_layers_capped(layers, k, c, a[2]) != cube_layers_capped(layers, k, c, a[2] - 1)
-                          : cube_layers_capped(layers, k, a[0], c) != cube_layers_capped(layers, k, a[0] - 1, c);
+      for (int side = 0; side < 2 && !rounded; ++side) {
+        const int k = side ? a[1] : a[1] - 1, bit = side ? CAPPED_BOTTOM : CAPPED_TOP;
+        rounded = 1;
+        for (int c = from; rounded && c < to; ++c)
+          rounded = along_x ? (cube_layers_capped(layers, k, c, a[2]) & bit) != (cube_layers_capped(layers, k, c, a[2] - 1) & bit)
+                            : (cube_layers_capped(layers, k, a[0], c) & bit) != (cube_layers_capped(layers, k, a[0] - 1, c) & bit);
+      }
     }
     layers->sharp_hard_edges += !rounded;
   }

@@ -4,13 +4,16 @@
  * a prism over the cells it fills, its footprint. Its upright edges at the footprint's corners
  * are rounded one layer at a time when they are marked hard in Wings3D; the edges along the
  * layers' tops and bottoms stay sharp, but for the top rim of a rectangle of a layer with nothing
- * beside or above it (a cube standing on a slab). */
+ * beside or above it (a cube standing on a slab) and the bottom rim of one with nothing beside or
+ * below it (the slab). */
 #ifndef HOMEWORK45_CUBE_LAYERS_H
 #define HOMEWORK45_CUBE_LAYERS_H
 
 #include <stddef.h>
 
 #include "wings_mesh.h"
+
+enum { CAPPED_TOP = 1, CAPPED_BOTTOM = 2 };
 
 struct cube_layers {
   int x_count, z_count; /* grid lines: the distinct x and z of the vertices */
@@ -21,14 +24,15 @@ struct cube_layers {
                              z[j + 1] is in the solid in that layer */
   unsigned char *rounded; /* [layer][j][i]: whether the upright through grid point (x[i], z[j])
                              is a corner of the layer's footprint and marked hard there */
-  unsigned char *capped;  /* [layer][j][i]: whether cell (i, j) lies in a rectangle of the layer's
-                             footprint (a whole piece of it) with nothing above, its corners'
-                             uprights rounded and the edges round its top all hard: that rim is
-                             rounded too, meeting the uprights in eighths of a sphere */
+  unsigned char *capped;  /* [layer][j][i]: CAPPED_TOP when cell (i, j) lies in a rectangle of the
+                             layer's footprint (a whole piece of it) with nothing above, its
+                             corners' uprights rounded and the edges round its top all hard: that
+                             rim is rounded too, meeting the uprights in eighths of a sphere;
+                             CAPPED_BOTTOM the same below (nothing under it, its bottom rim hard) */
   double max_radius;      /* half the closest spacing of the grid lines: the corners' quarter
                              circles keep apart */
   int sharp_hard_edges;   /* hard edges left sharp: the creases along the layers' tops and
-                             bottoms but the capped rectangles' top rims */
+                             bottoms but the capped rectangles' rims */
 };
 
 /* The cells of a mesh's object. Returns 0 and writes the reason into `error` when the object is
@@ -43,7 +47,8 @@ int cube_layers_filled(const struct cube_layers *layers, int layer, int i, int j
 int cube_layers_alike(const struct cube_layers *layers);
 /* Whether the upright at grid point (i, j) is rounded in `layer` (0 outside the grid). */
 int cube_layers_rounded(const struct cube_layers *layers, int layer, int i, int j);
-/* Whether cell (i, j) of `layer` has its top rim rounded (0 outside the grid). */
+/* Which of the top (CAPPED_TOP) and bottom (CAPPED_BOTTOM) rims of cell (i, j) of `layer` are
+ * rounded (0 outside the grid). */
 int cube_layers_capped(const struct cube_layers *layers, int layer, int i, int j);
 
 #endif

@@ -940,9 +940,9 @@ static void load_object(int argc, char **argv)
             plan.sharp_hard_edges);
   if (layered && layers.sharp_hard_edges > 0)
     fprintf(stderr, "homework45: %s: %d hard edges stay sharp (of an object of more than one layer of cubes "
-            "this program rounds the upright edges, layer by layer, and the top rim of a rectangle of cubes "
-            "with nothing beside or above it; it leaves the other edges along the layers' tops and bottoms "
-            "sharp)\n", path, layers.sharp_hard_edges);
+            "this program rounds the upright edges, layer by layer, and the top (bottom) rim of a rectangle of "
+            "cubes with nothing beside it and nothing above (below) it; it leaves the other edges along the "
+            "layers' tops and bottoms sharp)\n", path, layers.sharp_hard_edges);
   if (layered) {
     block_min[0] = (float)layers.x[0], block_max[0] = (float)layers.x[layers.x_count - 1];
     block_min[1] = (float)layers.height[0], block_max[1] = (float)layers.height[layers.layer_count];

@@ -13,10 +13,10 @@
  * the walls and the cylinders), so the surface has no T-junctions and no cracks. The arcs' squares
  * keep apart, as R is at most half the closest spacing of the grid lines.
  *
- * The top rim of a capped rectangle (cube_layers.h) is rounded: its walls and uprights stop R
- * below the top, a rim strip runs along each wall cut at the wall's columns, an eighth of a sphere
- * joins two strips and the upright at each corner, and the top loses its bands along the rim;
- * so the pieces still share their vertices. */
+ * The top (bottom) rim of a capped rectangle (cube_layers.h) is rounded: its walls and uprights
+ * stop R below the top (above the bottom), a rim strip runs along each wall cut at the wall's
+ * columns, an eighth of a sphere joins two strips and the upright at each corner, and the flat
+ * face loses its bands along the rim; so the pieces still share their vertices. */
 #include "layered_block.h"
 
 #include "rounded_upright.h"
@@ -50,19 +50,21 @@ static int upright_rounded(const struct cube_layers *layers, int layer, int i, i
   return radius > 0 && cube_layers_rounded(layers, layer, i, j);
 }
 
-/* Whether cell (i, j) of `layer` has its top rim rounded at this radius: a capped rectangle's
- * (cube_layers.h), when the radius leaves some of the layer's height to its walls. */
-static int rim_rounded(const struct cube_layers *layers, int layer, int i, int j, float radius)
+/* Whether cell (i, j) of `layer` has its top (rim CAPPED_TOP) or bottom rim (CAPPED_BOTTOM)
+ * rounded at this radius: a capped rectangle's (cube_layers.h), when the radius leaves some of the
+ * layer's height to its walls (R for each rounded rim less than the height). */
+static int rim_rounded(const struct cube_layers *layers, int layer, int i, int j, float radius, int rim)
 {
-  return radius > 0 && radius < layers->height[layer + 1] - layers->height[layer] &&
-         cube_layers_capped(layers, layer, i, j);
+  const int capped = cube_layers_capped(layers, layer, i, j);
+  const int rims = !!(capped & CAPPED_TOP) + !!(capped & CAPPED_BOTTOM);
+  return radius > 0 && radius * rims < layers->height[layer + 1] - layers->height[layer] && (capped & rim);
 }
 
 /* The wall of `layer` along grid line `fixed` (x = fixed for along_x 0, else z = fixed), from
  * grid value a to b > a, facing (normal_x, normal_z): R shorter at an end where the upright is
  * rounded, with columns at a, a + R, b - R and b. */
 static void wall(const struct cube_layers *layers, int layer, int along_x, float fixed, float a, float b,
-                 int rounded_a, int rounded_b, int normal_x, int normal_z, float radius, float drop)
+                 int rounded_a, int rounded_b, int normal_x, int normal_z, float radius, float drop, float rise)
 {
   float columns[4];
   int count = 0;
@@ -70,7 +72,7 @@ static void wall(const struct cube_layers *layers, int layer, int along_x, float
   const int wanted[4] = {!rounded_a, radius > 0, radius > 0, !rounded_b};
   for (int c = 0; c < 4; ++c)
     if (wanted[c] && (count == 0 || candidates[c] > columns[count - 1])) columns[count++] = candidates[c];
-  const double y0 = layers->height[layer];
+  const double y0 = rise > 0 ? (double)((float)layers->height[layer] + rise) : layers->height[layer];
   const double y1 = drop > 0 ? (double)((float)layers->height[layer + 1] - drop) : layers->height[layer + 1];
   glNormal3f((float)normal_x, 0, (float)normal_z);
   for (int row = 0; row < ROWS; ++row) {
@@ -95,7 +97,8 @@ static void walls(const struct cube_layers *layers, int layer, float radius)
       if (before != after)
         wall(layers, layer, 0, (float)layers->x[i], (float)layers->z[j], (float)layers->z[j + 1],
              upright_rounded(layers, layer, i, j, radius), upright_rounded(layers, layer, i, j + 1, radius),
-             before ? 1 : -1, 0, radius, rim_rounded(layers, layer, before ? i - 1 : i, j, radius) ? radius : 0);
+             before ? 1 : -1, 0, radius, rim_rounded(layers, layer, before ? i - 1 : i, j, radius, CAPPED_TOP) ? radius : 0,
+             rim_rounded(layers, layer, before ? i - 1 : i, j, radius, CAPPED_BOTTOM) ? radius : 0);
     }
   for (int j = 0; j < layers->z_count; ++j)
     for (int i = 0; i + 1 < layers->x_count; ++i) {
@@ -103,7 +106,8 @@ static void walls(const struct cube_layers *layers, int layer, float radius)
       if (before != after)
         wall(layers, layer, 1, (float)layers->z[j], (float)layers->x[i], (float)layers->x[i + 1],
              upright_rounded(layers, layer, i, j, radius), upright_rounded(layers, layer, i + 1, j, radius), 0,
-             before ? 1 : -1, radius, rim_rounded(layers, layer, i, before ? j - 1 : j, radius) ? radius : 0);
+             before ? 1 : -1, radius, rim_rounded(layers, layer, i, before ? j - 1 : j, radius, CAPPED_TOP) ? radius : 0,
+             rim_rounded(layers, layer, i, before ? j - 1 : j, radius, CAPPED_BOTTOM) ? radius : 0);
     }
 }
 
@@ -147,15 +151,16 @@ static int upright_arc(const struct cube_layers *layers, int layer, int i, int j
   return convex;
 }
 
-/* The quarter cylinder of the rounded upright at grid point (i, j) of `layer`, up to R below the
- * layer's top where that is a rounded rim. */
+/* The quarter cylinder of the rounded upright at grid point (i, j) of `layer`, R short of the
+ * layer's top and bottom where they are rounded rims. */
 static void upright_cylinder(const struct cube_layers *layers, int layer, int i, int j, float radius)
 {
   float from[2], corner[2], to[2], s0, s_length;
   int odd_i, odd_j;
   const int convex = upright_arc(layers, layer, i, j, radius, from, corner, to, &s0, &s_length, &odd_i, &odd_j);
-  const float drop = convex && rim_rounded(layers, layer, odd_i, odd_j, radius) ? radius : 0;
-  const float y0 = (float)layers->height[layer], y1 = (float)layers->height[layer + 1] - drop;
+  const float drop = convex && rim_rounded(layers, layer, odd_i, odd_j, radius, CAPPED_TOP) ? radius : 0;
+  const float rise = convex && rim_rounded(layers, layer, odd_i, odd_j, radius, CAPPED_BOTTOM) ? radius : 0;
+  const float y0 = (float)layers->height[layer] + rise, y1 = (float)layers->height[layer + 1] - drop;
   quarter_cylinder(from, corner, to, y0, y1, s0, s_length, texture_t(layers, y0), texture_t(layers, y1));
 }
 
@@ -196,14 +201,15 @@ static void control_point(float out[4], double x, double y, double z, double w)
   out[3] = (float)w;
 }
 
-/* The rounded top rim of `layer` along its wall on grid line `fixed` (x = fixed for along_x 0,
- * else z = fixed) from a to b, facing (normal_x, normal_z): a quarter cylinder along the wall, its
- * axis R in from the wall and R below the top, cut at the wall's columns (a, a + R, b - R, b, the
+/* The rounded top (rim CAPPED_TOP) or bottom rim of `layer` along its wall on grid line `fixed`
+ * (x = fixed for along_x 0, else z = fixed) from a to b, facing (normal_x, normal_z): a quarter
+ * cylinder along the wall, its axis R in from the wall and R below the top (above the bottom),
+ * cut at the wall's columns (a, a + R, b - R, b, the
  * ends at a rounded upright left out, where the sphere's eighth takes over), so that it meets the
- * wall's top row and the top's bands at their vertices. The texture's s is the wall's; t runs on
- * from the wall's top by the arc's length. */
+ * wall's top (bottom) row and the flat face's bands at their vertices. The texture's s is the
+ * wall's; t runs on from the wall's top (bottom) by the arc's length. */
 static void rim_strip(const struct cube_layers *layers, int layer, int along_x, float fixed, float a, float b,
-                      int rounded_a, int rounded_b, int normal_x, int normal_z, float radius)
+                      int rounded_a, int rounded_b, int normal_x, int normal_z, float radius, int rim)
 {
   const double w = sqrt(2.0) / 2.0;
   float columns[4];
@@ -212,8 +218,9 @@ static void rim_strip(const struct cube_layers *layers, int layer, int along_x, 
   const int wanted[4] = {!rounded_a, 1, 1, !rounded_b};
   for (int c = 0; c < 4; ++c)
     if (wanted[c] && (count == 0 || candidates[c] > columns[count - 1])) columns[count++] = candidates[c];
-  const float top = (float)layers->height[layer + 1], below = top - radius;
-  const float t0 = texture_t(layers, below), t2 = t0 + (float)(PI / 2.0) * radius;
+  const float out = rim == CAPPED_TOP ? 1.0f : -1.0f;
+  const float top = (float)layers->height[rim == CAPPED_TOP ? layer + 1 : layer], below = top - out * radius;
+  const float t0 = texture_t(layers, below), t2 = t0 + out * (float)(PI / 2.0) * radius;
   const int in_x = -normal_x, in_z = -normal_z;
   for (int c = 0; c + 1 < count; ++c) {
     float net[2][3][4], tex[2][3][2], centre[2][3][3];
@@ -235,45 +242,48 @@ static void rim_strip(const struct cube_layers *layers, int layer, int along_x, 
   }
 }
 
-/* The rounded top rims of `layer`: along every wall of a cell whose rim is rounded. */
-static void rim_strips(const struct cube_layers *layers, int layer, float radius)
+/* The rounded top (rim CAPPED_TOP) or bottom rims of `layer`: along every wall of a cell whose
+ * rim is rounded. */
+static void rim_strips(const struct cube_layers *layers, int layer, float radius, int rim)
 {
   for (int i = 0; i < layers->x_count; ++i)
     for (int j = 0; j + 1 < layers->z_count; ++j) {
       const int before = cube_layers_filled(layers, layer, i - 1, j), after = cube_layers_filled(layers, layer, i, j);
-      if (before != after && rim_rounded(layers, layer, before ? i - 1 : i, j, radius))
+      if (before != after && rim_rounded(layers, layer, before ? i - 1 : i, j, radius, rim))
         rim_strip(layers, layer, 0, (float)layers->x[i], (float)layers->z[j], (float)layers->z[j + 1],
                   upright_rounded(layers, layer, i, j, radius), upright_rounded(layers, layer, i, j + 1, radius),
-                  before ? 1 : -1, 0, radius);
+                  before ? 1 : -1, 0, radius, rim);
     }
   for (int j = 0; j < layers->z_count; ++j)
     for (int i = 0; i + 1 < layers->x_count; ++i) {
       const int before = cube_layers_filled(layers, layer, i, j - 1), after = cube_layers_filled(layers, layer, i, j);
-      if (before != after && rim_rounded(layers, layer, i, before ? j - 1 : j, radius))
+      if (before != after && rim_rounded(layers, layer, i, before ? j - 1 : j, radius, rim))
         rim_strip(layers, layer, 1, (float)layers->z[j], (float)layers->x[i], (float)layers->x[i + 1],
                   upright_rounded(layers, layer, i, j, radius), upright_rounded(layers, layer, i + 1, j, radius), 0,
-                  before ? 1 : -1, radius);
+                  before ? 1 : -1, radius, rim);
     }
 }
 
-/* Above the rounded upright at grid point (i, j) of `layer` where the rims of its two walls are
- * rounded: an eighth of a sphere, the upright's quarter circle turned by the rim's. Its rows are
- * the upright's arc control points scaled from the arc's centre by the rim's profile, 1 R below
- * the top and at the top's edge, 0 on the top (the net closes in a pole over the centre). */
-static void rim_corner(const struct cube_layers *layers, int layer, int i, int j, float radius)
+/* Above (below, for rim CAPPED_BOTTOM) the rounded upright at grid point (i, j) of `layer` where
+ * the rims of its two walls are rounded: an eighth of a sphere, the upright's quarter circle
+ * turned by the rim's. Its rows are the upright's arc control points scaled from the arc's centre
+ * by the rim's profile, 1 R below the top and at the top's edge, 0 on the top (the net closes in
+ * a pole over the centre). */
+static void rim_corner(const struct cube_layers *layers, int layer, int i, int j, float radius, int rim)
 {
   float from[2], corner[2], to[2], s0, s_length;
   int odd_i, odd_j;
   if (!upright_arc(layers, layer, i, j, radius, from, corner, to, &s0, &s_length, &odd_i, &odd_j) ||
-      !rim_rounded(layers, layer, odd_i, odd_j, radius))
+      !rim_rounded(layers, layer, odd_i, odd_j, radius, rim))
     return;
   const double w = sqrt(2.0) / 2.0;
   const float axis[2] = {from[0] + to[0] - corner[0], from[1] + to[1] - corner[1]};
   const float *arc[3] = {from, corner, to};
   const double arc_weight[3] = {1.0, w, 1.0};
-  const float top = (float)layers->height[layer + 1], below = top - radius;
+  const float out = rim == CAPPED_TOP ? 1.0f : -1.0f;
+  const float top = (float)layers->height[rim == CAPPED_TOP ? layer + 1 : layer], below = top - out * radius;
   const float scale[3] = {1, 1, 0}, y[3] = {below, top, top};
-  const float t0 = texture_t(layers, below), t2 = t0 + (float)(PI / 2.0) * radius;
+  const float t0 = texture_t(layers, below), t2 = t0 + out * (float)(PI / 2.0) * radius;
   float net[3][3][4], tex[3][3][2], centre[3][3][3];
   for (int v = 0; v < 3; ++v)
     for (int u = 0; u < 3; ++u) {
@@ -360,11 +370,12 @@ static void flat_face(const struct cube_layers *layers, int level, int up, float
       const float xs[4] = {x0, x0 + radius, x1 - radius, x1}, zs[4] = {z0, z0 + radius, z1 - radius, z1};
       /* Along a rounded rim the band R wide is the rim's strip, and its corners' squares are the
        * strips' and the spheres' eighths. */
-      const int capped = up && rim_rounded(layers, inner, i, j, radius);
-      const int rim[4] = {capped && !cube_layers_capped(layers, inner, i - 1, j),
-                          capped && !cube_layers_capped(layers, inner, i + 1, j),
-                          capped && !cube_layers_capped(layers, inner, i, j - 1),
-                          capped && !cube_layers_capped(layers, inner, i, j + 1)};
+      const int rim_bit = up ? CAPPED_TOP : CAPPED_BOTTOM;
+      const int capped = rim_rounded(layers, inner, i, j, radius, rim_bit);
+      const int rim[4] = {capped && !(cube_layers_capped(layers, inner, i - 1, j) & rim_bit),
+                          capped && !(cube_layers_capped(layers, inner, i + 1, j) & rim_bit),
+                          capped && !(cube_layers_capped(layers, inner, i, j - 1) & rim_bit),
+                          capped && !(cube_layers_capped(layers, inner, i, j + 1) & rim_bit)};
       for (int b = 0; b < 3; ++b)
         for (int a = 0; a < 3; ++a) {
           if ((a == 0 && rim[0]) || (a == 2 && rim[1]) || (b == 0 && rim[2]) || (b == 2 && rim[3])) continue;
@@ -389,9 +400,11 @@ void draw_layered_block(const struct cube_layers *layers, float radius)
       for (int i = 0; i < layers->x_count; ++i)
         if (upright_rounded(layers, layer, i, j, radius)) {
           upright_cylinder(layers, layer, i, j, radius);
-          rim_corner(layers, layer, i, j, radius);
+          rim_corner(layers, layer, i, j, radius, CAPPED_TOP);
+          rim_corner(layers, layer, i, j, radius, CAPPED_BOTTOM);
         }
-    rim_strips(layers, layer, radius);
+    rim_strips(layers, layer, radius, CAPPED_TOP);
+    rim_strips(layers, layer, radius, CAPPED_BOTTOM);
   }
   for (int level = 0; level <= layers->layer_count; ++level) {
     flat_face(layers, level, 1, radius);
