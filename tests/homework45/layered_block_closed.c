@@ -3,8 +3,14 @@
  * cut into triangles, and every triangle edge must have a twin, an edge of another triangle with
  * the same end points (to 1e-5): a crack, a hole or a T-junction leaves an edge without one. Each
  * object named on the command line is checked at nine radii from 0 to its largest.
+ * The vertices' normals (glNormal, the evaluator's normal map or GL_AUTO_NORMAL's dP/du x dP/dv)
+ * and texture coordinates are recorded too: where two vertices at one point have normals less
+ * than 30 degrees apart (a seam, not a sharp crease), they must agree to 1e-3 radians, and their
+ * texture coordinates must agree but for whole repeats of the checkerboard (0.25 in s, 1 in t),
+ * except on the flat tops and bottoms (normal straight up or down), whose texture is (x, z).
  *   homework45_layered_closed OBJECT.wings...
- * Prints a line per object and radius, and exits 1 when an edge has no twin. */
+ * Prints a line per object and radius, and exits 1 when an edge has no twin or a seam is not
+ * smooth. */
 #include <GL/glut.h>
 #include <math.h>
 #include <stdio.h>
@@ -24,8 +30,29 @@ static size_t triangle_count, triangle_capacity;
 static double primitive[4096][3];
 static int primitive_count;
 static GLenum primitive_mode;
-static GLfloat cylinder_net[3][3][4];
-static int net_rows;
+static GLfloat cylinder_net[3][3][4], normal_net[3][3][3], texture_net[3][3][2];
+static int net_rows, normal_map_on, auto_normal_on = 1;
+static double current_normal[3], current_texture[2];
+
+/* Every vertex drawn: its point, normal and texture coordinates. */
+struct drawn_vertex {
+  double point[3], normal[3], texture[2];
+};
+static struct drawn_vertex *drawn;
+static size_t drawn_count, drawn_capacity;
+
+static void add_drawn(const double point[3], const double normal[3], const double texture[2])
+{
+  if (drawn_count == drawn_capacity) {
+    drawn_capacity = drawn_capacity ? 2 * drawn_capacity : 4096;
+    drawn = realloc(drawn, drawn_capacity * sizeof *drawn);
+    if (!drawn) exit(2);
+  }
+  memcpy(drawn[drawn_count].point, point, sizeof(double[3]));
+  memcpy(drawn[drawn_count].normal, normal, sizeof(double[3]));
+  memcpy(drawn[drawn_count].texture, texture, sizeof(double[2]));
+  ++drawn_count;
+}
 static int grid_steps_u, grid_steps_v;
 
 static void add_triangle(const double *a, const double *b, const double *c)
@@ -74,20 +101,50 @@ void glVertex3d(GLdouble x, GLdouble y, GLdouble z)
   primitive[primitive_count][0] = x;
   primitive[primitive_count][1] = y;
   primitive[primitive_count][2] = z;
+  add_drawn(primitive[primitive_count], current_normal, current_texture);
   ++primitive_count;
 }
 
 void glVertex3f(GLfloat x, GLfloat y, GLfloat z) { glVertex3d(x, y, z); }
-void glTexCoord2f(GLfloat s, GLfloat t) { (void)s, (void)t; }
-void glTexCoord2d(GLdouble s, GLdouble t) { (void)s, (void)t; }
-void glNormal3f(GLfloat x, GLfloat y, GLfloat z) { (void)x, (void)y, (void)z; }
-void glEnable(GLenum capability) { (void)capability; }
-void glDisable(GLenum capability) { (void)capability; }
+void glTexCoord2d(GLdouble s, GLdouble t)
+{
+  current_texture[0] = s;
+  current_texture[1] = t;
+}
+void glTexCoord2f(GLfloat s, GLfloat t) { glTexCoord2d(s, t); }
+void glNormal3f(GLfloat x, GLfloat y, GLfloat z)
+{
+  current_normal[0] = x;
+  current_normal[1] = y;
+  current_normal[2] = z;
+}
+void glEnable(GLenum capability)
+{
+  if (capability == GL_MAP2_NORMAL) normal_map_on = 1;
+  if (capability == GL_AUTO_NORMAL) auto_normal_on = 1;
+}
+void glDisable(GLenum capability)
+{
+  if (capability == GL_MAP2_NORMAL) normal_map_on = 0;
+  if (capability == GL_AUTO_NORMAL) auto_normal_on = 0;
+}
 
 void glMap2f(GLenum target, GLfloat u1, GLfloat u2, GLint ustride, GLint uorder, GLfloat v1, GLfloat v2,
              GLint vstride, GLint vorder, const GLfloat *points)
 {
   (void)u1, (void)u2, (void)v1, (void)v2;
+  if (target == GL_MAP2_NORMAL || target == GL_MAP2_TEXTURE_COORD_2) {
+    const int size = target == GL_MAP2_NORMAL ? 3 : 2;
+    if (ustride != size || uorder != 3 || vstride != 3 * size || vorder > 3) exit(2);
+    for (int v = 0; v < vorder; ++v)
+      for (int u = 0; u < 3; ++u)
+        for (int k = 0; k < size; ++k) {
+          const float value = points[v * vstride + u * ustride + k];
+          if (size == 3) normal_net[v][u][k] = value;
+          else texture_net[v][u][k] = value;
+        }
+    return;
+  }
   if (target != GL_MAP2_VERTEX_4) return;
   if (ustride != 4 || uorder != 3 || vstride != 12 || (vorder != 2 && vorder != 3)) exit(2);
   net_rows = vorder;
@@ -113,9 +170,47 @@ static void cylinder_point(double u, double v, double out[3])
   for (int k = 0; k < 3; ++k) out[k] = h[k] / h[3];
 }
 
+/* A polynomial map's value at (u, v): the normal map's (size 3) or the texture map's (size 2). */
+static void polynomial_point(int size, double u, double v, double *out)
+{
+  const double bu[3] = {(1 - u) * (1 - u), 2 * u * (1 - u), u * u};
+  const double bv[3] = {net_rows == 2 ? 1 - v : (1 - v) * (1 - v), net_rows == 2 ? v : 2 * v * (1 - v), v * v};
+  for (int k = 0; k < size; ++k) out[k] = 0;
+  for (int j = 0; j < net_rows; ++j)
+    for (int i = 0; i < 3; ++i)
+      for (int k = 0; k < size; ++k)
+        out[k] += bv[j] * bu[i] * (size == 3 ? normal_net[j][i][k] : texture_net[j][i][k]);
+}
+
+/* The vertex the evaluator draws at (u, v), with its normal and texture coordinates. */
+static void record_grid_vertex(double u, double v)
+{
+  double point[3], normal[3], texture[2];
+  cylinder_point(u, v, point);
+  if (normal_map_on) {
+    polynomial_point(3, u, v, normal);
+  } else {
+    /* dP/du x dP/dv, by central differences inside the patch. */
+    const double h = 1e-6, uc = fmin(fmax(u, h), 1 - h), vc = fmin(fmax(v, h), 1 - h);
+    double a[3], b[3], c[3], d[3];
+    cylinder_point(uc - h, v, a);
+    cylinder_point(uc + h, v, b);
+    cylinder_point(u, vc - h, c);
+    cylinder_point(u, vc + h, d);
+    const double du[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, dv[3] = {d[0] - c[0], d[1] - c[1], d[2] - c[2]};
+    normal[0] = du[1] * dv[2] - du[2] * dv[1];
+    normal[1] = du[2] * dv[0] - du[0] * dv[2];
+    normal[2] = du[0] * dv[1] - du[1] * dv[0];
+  }
+  polynomial_point(2, u, v, texture);
+  add_drawn(point, normal, texture);
+}
+
 void glEvalMesh2(GLenum mode, GLint i1, GLint i2, GLint j1, GLint j2)
 {
   (void)mode;
+  for (int j = j1; j <= j2; ++j)
+    for (int i = i1; i <= i2; ++i) record_grid_vertex((double)i / grid_steps_u, (double)j / grid_steps_v);
   for (int j = j1; j < j2; ++j)
     for (int i = i1; i < i2; ++i) {
       double a[3], b[3], c[3], d[3];
@@ -176,6 +271,57 @@ static size_t edges_without_twin(void)
   return lonely;
 }
 
+static int by_point(const void *a, const void *b)
+{
+  const struct drawn_vertex *p = a, *q = b;
+  for (int k = 0; k < 3; ++k) {
+    const long long x = llround(p->point[k] * 1e5), y = llround(q->point[k] * 1e5);
+    if (x != y) return (x > y) - (x < y);
+  }
+  return 0;
+}
+
+/* How far x is from a whole multiple of `period`. */
+static double off_period(double x, double period) { return fabs(x - period * floor(x / period + 0.5)); }
+
+/* How many pairs of vertices at one point meet in a seam that is not smooth: normals less than
+ * 30 degrees apart but more than 1e-3 radians, or (off the flat tops and bottoms) texture
+ * coordinates that differ by more than 1e-4 beyond whole repeats. The pole of a sphere's net,
+ * where the evaluator's normal map is exact but the point is shared by the whole row, counts
+ * like any other point. */
+static size_t rough_seams(void)
+{
+  qsort(drawn, drawn_count, sizeof *drawn, by_point);
+  size_t rough = 0;
+  for (size_t i = 0; i < drawn_count;) {
+    size_t j = i;
+    while (j < drawn_count && by_point(&drawn[i], &drawn[j]) == 0) ++j;
+    for (size_t a = i; a < j; ++a)
+      for (size_t b = a + 1; b < j; ++b) {
+        double na[3], nb[3];
+        const double la = sqrt(drawn[a].normal[0] * drawn[a].normal[0] + drawn[a].normal[1] * drawn[a].normal[1] +
+                               drawn[a].normal[2] * drawn[a].normal[2]);
+        const double lb = sqrt(drawn[b].normal[0] * drawn[b].normal[0] + drawn[b].normal[1] * drawn[b].normal[1] +
+                               drawn[b].normal[2] * drawn[b].normal[2]);
+        if (la < 1e-12 || lb < 1e-12) continue;
+        for (int k = 0; k < 3; ++k) na[k] = drawn[a].normal[k] / la, nb[k] = drawn[b].normal[k] / lb;
+        const double angle = acos(fmin(1.0, fmax(-1.0, na[0] * nb[0] + na[1] * nb[1] + na[2] * nb[2])));
+        if (angle > 30 * 3.14159265358979323846 / 180) continue;
+        int bad = angle > 1e-3;
+        if (fabs(na[1]) < 0.999 && fabs(nb[1]) < 0.999)
+          bad |= off_period(drawn[a].texture[0] - drawn[b].texture[0], 0.25) > 1e-4 ||
+                 off_period(drawn[a].texture[1] - drawn[b].texture[1], 1.0) > 1e-4;
+        if (bad && rough < 3)
+          fprintf(stderr, "seam at (%g, %g, %g): normals (%g, %g, %g) and (%g, %g, %g), texture (%g, %g) and (%g, %g)\n",
+                  drawn[a].point[0], drawn[a].point[1], drawn[a].point[2], na[0], na[1], na[2], nb[0], nb[1], nb[2],
+                  drawn[a].texture[0], drawn[a].texture[1], drawn[b].texture[0], drawn[b].texture[1]);
+        rough += bad;
+      }
+    i = j;
+  }
+  return rough;
+}
+
 int main(int argc, char **argv)
 {
   int failed = 0;
@@ -192,13 +338,16 @@ int main(int argc, char **argv)
     for (int step = 0; step <= 8; ++step) {
       const float radius = (float)(layers.max_radius * step / 8);
       triangle_count = 0;
+      drawn_count = 0;
       draw_layered_block(&layers, radius);
-      const size_t lonely = edges_without_twin();
-      printf("%s at radius %g: %zu triangles, %zu edges without a twin\n", argv[a], radius, triangle_count, lonely);
-      failed |= lonely > 0;
+      const size_t lonely = edges_without_twin(), rough = rough_seams();
+      printf("%s at radius %g: %zu triangles, %zu edges without a twin, %zu rough seams\n", argv[a], radius,
+             triangle_count, lonely, rough);
+      failed |= lonely > 0 || rough > 0;
     }
     cube_layers_free(&layers);
   }
   free(triangles);
+  free(drawn);
   return failed;
 }
