@@ -144,6 +144,39 @@ TEST_CASE("course homework 3: the k-d tree finds the same nearest point as a sea
   CHECK(tree.nearest(points[17]).index == 17);
 }
 
+TEST_CASE("course homework 3: the k-d tree prunes by its points' boxes and stays exact in hollows and on ties") {
+  // The search skips a subtree when the bounding box of its points is farther than the best point
+  // so far. A hollow cloud (the lattice points on the faces of a cube) queried from inside, where
+  // the boxes and the split cells differ most, and lattice queries with many points at exactly the
+  // same distance (the centre is equidistant from the six face centres): the nearest point of
+  // least index, as a search of all points finds it.
+  std::vector<glm::dvec3> points;
+  for (int z = 0; z <= 8; ++z)
+    for (int y = 0; y <= 8; ++y)
+      for (int x = 0; x <= 8; ++x)
+        if (x == 0 || x == 8 || y == 0 || y == 8 || z == 0 || z == 8) points.push_back(glm::dvec3(x, y, z) / 8.0);
+  g::SplitMix64 random(11);
+  std::vector<glm::dvec3> queries{{0.5, 0.5, 0.5}};
+  for (int q = 0; q < 400; ++q) queries.push_back(glm::dvec3(random.below(33), random.below(33), random.below(33)) / 16.0 - 0.5);
+  for (int q = 0; q < 400; ++q) queries.push_back({0.2 + 0.6 * random.uniform(), 0.2 + 0.6 * random.uniform(), 0.2 + 0.6 * random.uniform()});
+  const g::KdTree3 tree(points);
+  for (const glm::dvec3& p : queries) {
+    std::uint32_t best = 0;
+    double bestD = INFINITY;
+    for (std::uint32_t i = 0; i < points.size(); ++i) {
+      const glm::dvec3 d = points[i] - p;
+      const double d2 = d.x * d.x + d.y * d.y + d.z * d.z;
+      if (d2 < bestD) {
+        bestD = d2;
+        best = i;
+      }
+    }
+    const auto found = tree.nearest(p);
+    CHECK(found.index == best);
+    CHECK(found.distanceSquared == bestD);
+  }
+}
+
 TEST_CASE("course homework 3: the polyhedral rebuild: counts, outward normals, the limit") {
   auto loaded = g::loadIfs3File(exampleFile("homework3.ifs3"));
   REQUIRE(loaded.ok());

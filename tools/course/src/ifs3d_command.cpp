@@ -30,11 +30,13 @@ The study guide's homework 3: a 3D affine fractal given as a cloud of points.
   glass ifs3d points FILE.ifs3 -n N -o CLOUD.txt [--seed S]
       N points of the attractor by the chaos game (seeded: the same seed gives the same file),
       one "x y z" a line: homework clouds, and inputs with known answers.
-  glass ifs3d fit CLOUD.txt [-o FOUND.ifs3] [--maps K] [--seed S] [--work M]
+  glass ifs3d fit CLOUD.txt [-o FOUND.ifs3] [--maps K] [--seed S] [--attempts N] [--work M]
       the K (default 4) affine maps whose attractor the cloud samples, by the collage theorem:
       prints each 3 x 4 matrix and its decomposition T R S, the collage distance, the Chamfer
       distance between the cloud and a cloud regenerated from the maps, and the dimension.
-      The search stops after M million nearest-neighbour queries (0: no limit) and says so.
+      It makes N whole attempts at most (default 4) while the maps have not converged, and stops
+      after M million nearest-neighbour queries (0: no limit); a fit that did not converge says
+      so, with the attempts and work spent and how far its best maps are from converging.
   glass ifs3d show FILE.ifs3
       the maps, their decompositions T R S and the fractal dimension (Moran's equation when every
       map is a similarity, else box counting of a million chaos-game points).
@@ -255,6 +257,8 @@ int runFit(ArgumentList& list, std::ostream& out, std::ostream& err) {
       options.maps = static_cast<int>(parseInteger(list.value(arg), arg, 1, 16));
     } else if (arg == "--seed") {
       options.seed = static_cast<std::uint64_t>(parseInteger(list.value(arg), arg, 0, 1LL << 62));
+    } else if (arg == "--attempts") {
+      options.attempts = static_cast<int>(parseInteger(list.value(arg), arg, 1, 64));
     } else if (arg == "--work") {
       options.workBudget = static_cast<std::uint64_t>(parseInteger(list.value(arg), arg, 0, 1000000)) * 1000000u;
     } else if (!arg.empty() && arg[0] == '-') {
@@ -290,6 +294,16 @@ int runFit(ArgumentList& list, std::ostream& out, std::ostream& err) {
   if (!fit.converged()) {
     out << "Warning: the collage distance is not well below the cloud's point spacing (" << format("%.6f", fit.pointSpacing)
         << "): the search may have stopped in a local minimum, and some maps may be wrong. Try other seeds (--seed).\n";
+    // What the search spent and how far its best maps are from converging, in the cloud's own
+    // spacing: the user can tell a near miss (another seed may do) from a cloud no system of
+    // this many maps makes, and bound the next run with --attempts or --work.
+    const double spacing = fit.pointSpacing > 0.0 ? fit.pointSpacing : 1.0;
+    out << "Not converged after " << fit.attempts << (fit.attempts == 1 ? " attempt" : " attempts") << " ("
+        << format("%.1f", static_cast<double>(fit.work) / 1e6) << " million nearest-neighbour queries): best collage distance "
+        << format("%.6f", fit.trimmedCollageDistance) << " (" << format("%.2f", fit.trimmedCollageDistance / spacing)
+        << " point spacings, converged below " << format("%.2f", Ifs3Fit::kCollageBound) << "), its attractor "
+        << format("%.6f", fit.regeneratedDistance) << " from the cloud (" << format("%.2f", fit.regeneratedDistance / spacing)
+        << " spacings, below " << format("%.2f", Ifs3Fit::kRegeneratedBound) << "). --attempts N or --work M bound the search.\n";
     if (fit.stoppedByBudget) {
       out << "The search stopped at its work budget (" << format("%.1f", static_cast<double>(fit.work) / 1e6)
           << " million nearest-neighbour queries, " << fit.attempts << " attempts); --work M lets it search longer.\n";

@@ -822,6 +822,40 @@ Ifs3Fit fitOnce(std::span<const glm::dvec3> cloud, const g::KdTree3& cloudTree, 
         if (auto fit = convergedWinner()) return std::move(*fit);
       }
     }
+
+    // Each map searched afresh for its own part. Where parts overlap much, a wrong map can hide
+    // inside the others: flattened onto a sheet, or turned the wrong way, its image still lies in
+    // the cloud and the others cover what it misses, so it leaves no residual for the steps above
+    // and refinement keeps it. Its part (the points whose nearest image is its own) must still
+    // lie in the true map's image, so the votes of the residual search (f(P) in P, the part in
+    // f(P)) find candidates for it, which replace it when the attractor comes closer.
+    if (auto fit = convergedWinner()) return std::move(*fit);
+    for (std::size_t part = 0; part < winner.size() && !work.spent(); ++part) {
+      std::vector<glm::dvec3> images;
+      for (const g::Affine3& map : winner)
+        for (const glm::dvec3& p : source) images.push_back(map.apply(p));
+      const g::KdTree3 imageTree(images);
+      work.add(clusterSample.size());
+      std::vector<glm::dvec3> own;
+      for (const glm::dvec3& p : clusterSample)
+        if (imageTree.nearest(p).index / source.size() == part) own.push_back(p);
+      Trial best;
+      for (const g::Affine3& candidate : residualCandidates(search, own, kResidualCandidates)) {
+        std::vector<g::Affine3> maps = winner;
+        maps[part] = candidate;
+        const double collage = refine(maps, source, cloud, cloudTree, targetSample, kResidualTrialSteps, options.trim, work);
+        const double score = attractorDistance(maps, collage);
+        if (score < best.score) best = {std::move(maps), score};
+      }
+      if (best.maps.empty()) continue;
+      const double collage = refine(best.maps, source, cloud, cloudTree, targetSample, options.refineSteps, options.trim, work);
+      const double score = attractorDistance(best.maps, collage);
+      if (score < winnerScore) {
+        winnerScore = score;
+        winner = std::move(best.maps);
+        if (auto fit = convergedWinner()) return std::move(*fit);
+      }
+    }
   }
 
   return finishedFit(std::move(winner), cloud, cloudTree, options, spacing, work);

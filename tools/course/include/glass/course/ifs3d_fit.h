@@ -38,6 +38,10 @@
 //     from its two largest clusters in place of the two least needed maps) are then kept while
 //     they lower the collage distance; the winner becomes the path's maps whenever their
 //     attractor is closer than its own.
+//  7. Each map searched afresh for its own part: where parts overlap much, a wrong map (flattened
+//     onto a sheet, or turned a little wrong) hides inside the others and leaves no residual.
+//     Its part, the points nearest its image, lies in the true map's image, so the residual
+//     search's votes find candidates for it, kept when the attractor comes closer.
 // Everything is seeded and counted, never timed: the same cloud gives the same maps.
 #pragma once
 
@@ -56,7 +60,7 @@ struct Ifs3FitOptions {
   int sample = 2000;        // points the correspondences are computed on, per step
   int starts = 2;           // k-means seeds tried per attempt
   int attempts = 4;         // whole attempts from other seeds, while the collage distance is not
-                            // well below the cloud's point spacing
+                            // well below the cloud's point spacing (`glass ifs3d fit --attempts N`)
   int refineSteps = 40;     // joint refinement steps, at most
   double trim = 0.10;       // share of correspondences left out each way in the refinement
   // Share left out each way when candidates are ranked by their attractor and in the measures of
