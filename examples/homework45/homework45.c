@@ -25,6 +25,7 @@
 #include <GL/glut.h>
 
 #include "layered_block.h"
+#include "rational_patch.h"
 #include "rounded_upright.h"
 #include "wings_plan.h"
 
@@ -206,28 +207,8 @@ static void draw_rim_patch(float net[][3][4], float tex[][3][2], const double ce
     reverse_rows(&tex[0][0][0], rows, 3 * 2);
     reverse_rows(&normals[0][0][0], rows, 3 * 3);
   }
-  glMap2f(GL_MAP2_VERTEX_4, 0, 1, 4, 3, 0, 1, 12, rows, &net[0][0][0]);
-  glMap2f(GL_MAP2_TEXTURE_COORD_2, 0, 1, 2, 3, 0, 1, 6, rows, &tex[0][0][0]);
-  glMap2f(GL_MAP2_NORMAL, 0, 1, 3, 3, 0, 1, 9, rows, &normals[0][0][0]);
-  glEnable(GL_MAP2_VERTEX_4);
-  glEnable(GL_MAP2_TEXTURE_COORD_2);
-  glEnable(GL_MAP2_NORMAL);
-  glDisable(GL_AUTO_NORMAL);
-  glMapGrid2f(ARC_STEPS, 0, 1, rows == 3 ? ARC_STEPS : 4, 0, 1);
-  glEvalMesh2(GL_FILL, 0, ARC_STEPS, 0, rows == 3 ? ARC_STEPS : 4);
-  glEnable(GL_AUTO_NORMAL);
-  glDisable(GL_MAP2_NORMAL);
-  glDisable(GL_MAP2_VERTEX_4);
-  glDisable(GL_MAP2_TEXTURE_COORD_2);
-}
-
-/* One homogeneous control point: (x, y, z) weighted by w. */
-static void control_point(float out[4], double x, double y, double z, double w)
-{
-  out[0] = (float)(x * w);
-  out[1] = (float)(y * w);
-  out[2] = (float)(z * w);
-  out[3] = (float)w;
+  draw_rational_patch((const float (*)[3][4])net, (const float (*)[3][2])tex, (const float (*)[3][3])normals, rows,
+                      rows == 3 ? ARC_STEPS : 4);
 }
 
 /* A quarter cylinder of the current radius around the upright edge at corner k, from the point
