@@ -119,6 +119,28 @@ TEST_CASE("course homework 3: clouds of points read with counts, commas, comment
   CHECK_FALSE(c::parsePointCloud("1 2 inf\n").ok());
 }
 
+namespace {
+
+// The k-d tree's nearest point to p against a search of every point: the same index (the least
+// on ties) and the same squared distance.
+void checkNearestAgainstEveryPoint(const g::KdTree3& tree, const std::vector<glm::dvec3>& points, const glm::dvec3& p) {
+  std::uint32_t best = 0;
+  double bestD = INFINITY;
+  for (std::uint32_t i = 0; i < points.size(); ++i) {
+    const glm::dvec3 d = points[i] - p;
+    const double d2 = d.x * d.x + d.y * d.y + d.z * d.z;
+    if (d2 < bestD) {
+      bestD = d2;
+      best = i;
+    }
+  }
+  const auto found = tree.nearest(p);
+  CHECK(found.index == best);
+  CHECK(found.distanceSquared == bestD);
+}
+
+}  // namespace
+
 TEST_CASE("course homework 3: the k-d tree finds the same nearest point as a search of all") {
   g::SplitMix64 random(3);
   std::vector<glm::dvec3> points;
@@ -127,19 +149,7 @@ TEST_CASE("course homework 3: the k-d tree finds the same nearest point as a sea
   const g::KdTree3 tree(points);
   for (int q = 0; q < 500; ++q) {
     const glm::dvec3 p{random.uniform() * 3 - 1, random.uniform() * 3 - 1, random.uniform() * 3 - 1};
-    std::uint32_t best = 0;
-    double bestD = INFINITY;
-    for (std::uint32_t i = 0; i < points.size(); ++i) {
-      const glm::dvec3 d = points[i] - p;
-      const double d2 = d.x * d.x + d.y * d.y + d.z * d.z;
-      if (d2 < bestD) {
-        bestD = d2;
-        best = i;
-      }
-    }
-    const auto found = tree.nearest(p);
-    CHECK(found.index == best);
-    CHECK(found.distanceSquared == bestD);
+    checkNearestAgainstEveryPoint(tree, points, p);
   }
   CHECK(tree.nearest(points[17]).index == 17);
 }
@@ -161,19 +171,7 @@ TEST_CASE("course homework 3: the k-d tree prunes by its points' boxes and stays
   for (int q = 0; q < 400; ++q) queries.push_back({0.2 + 0.6 * random.uniform(), 0.2 + 0.6 * random.uniform(), 0.2 + 0.6 * random.uniform()});
   const g::KdTree3 tree(points);
   for (const glm::dvec3& p : queries) {
-    std::uint32_t best = 0;
-    double bestD = INFINITY;
-    for (std::uint32_t i = 0; i < points.size(); ++i) {
-      const glm::dvec3 d = points[i] - p;
-      const double d2 = d.x * d.x + d.y * d.y + d.z * d.z;
-      if (d2 < bestD) {
-        bestD = d2;
-        best = i;
-      }
-    }
-    const auto found = tree.nearest(p);
-    CHECK(found.index == best);
-    CHECK(found.distanceSquared == bestD);
+    checkNearestAgainstEveryPoint(tree, points, p);
   }
 }
 
