@@ -150,6 +150,26 @@ double refine(std::vector<g::Affine3>& maps, std::span<const glm::dvec3> source,
   return bestScore;
 }
 
+// Every point of `points` under every map, map by map: image i * points.size() + s is maps[i]
+// applied to points[s], so a nearest image's index divided by points.size() names its map.
+std::vector<glm::dvec3> mapImages(std::span<const g::Affine3> maps, std::span<const glm::dvec3> points) {
+  std::vector<glm::dvec3> images;
+  images.reserve(maps.size() * points.size());
+  for (const g::Affine3& map : maps)
+    for (const glm::dvec3& p : points) images.push_back(map.apply(p));
+  return images;
+}
+
+// The points of `sample` whose nearest image is map `part`'s (imageTree holds mapImages of the
+// maps over `sourceSize` points): the part of the cloud that map accounts for.
+std::vector<glm::dvec3> ownPart(const g::KdTree3& imageTree, std::size_t sourceSize, std::span<const glm::dvec3> sample,
+                                std::size_t part) {
+  std::vector<glm::dvec3> own;
+  for (const glm::dvec3& p : sample)
+    if (imageTree.nearest(p).index / sourceSize == part) own.push_back(p);
+  return own;
+}
+
 // How far the attractor of `maps` is from the cloud: the trimmed symmetric Chamfer distance
 // between `target` (a sample of the cloud) and as many chaos-game points of the maps (weights
 // |det L_i|). The collage distance judges a map set by one step of the Hutchinson operator; this
@@ -284,10 +304,7 @@ struct InclusionPool {
   std::vector<char> coveredBy(std::span<const g::Affine3> maps, WorkMeter& work) const {
     std::vector<char> covered(coverSample.size(), 0);
     if (maps.empty()) return covered;
-    std::vector<glm::dvec3> images;
-    for (const g::Affine3& map : maps)
-      for (const glm::dvec3& p : source) images.push_back(map.apply(p));
-    const g::KdTree3 imageTree(images);
+    const g::KdTree3 imageTree(mapImages(maps, source));
     work.add(coverSample.size());
     for (std::size_t i = 0; i < coverSample.size(); ++i) covered[i] = imageTree.nearest(coverSample[i]).distanceSquared < reach * reach;
     return covered;
@@ -540,10 +557,7 @@ Ifs3Fit measuredFit(std::vector<g::Affine3> winner, std::span<const glm::dvec3> 
   // The collage distance on the whole cloud, plain and with the worst few per cent each way left
   // out (rankTrim) as the search ranks candidates (the cloud has no isolated noise points left,
   // withoutIsolatedPoints), and the shares: which map's image is nearest to each cloud point.
-  std::vector<glm::dvec3> images;
-  images.reserve(cloud.size() * winner.size());
-  for (const g::Affine3& map : winner)
-    for (const glm::dvec3& p : cloud) images.push_back(map.apply(p));
+  const std::vector<glm::dvec3> images = mapImages(winner, cloud);
   const g::KdTree3 imageTree(images);
   work.add(images.size() + cloud.size());
   std::vector<double> forward, backward;
@@ -681,9 +695,7 @@ Ifs3Fit fitOnce(std::span<const glm::dvec3> cloud, const g::KdTree3& cloudTree, 
         if (std::sqrt(otherTree.nearest(p).distanceSquared) > 3.0 * typical) points.push_back(p);
       }
     } else {
-      for (const glm::dvec3& p : clusterSample) {
-        if (imageTree.nearest(p).index / source.size() == static_cast<std::size_t>(part)) points.push_back(p);
-      }
+      points = ownPart(imageTree, source.size(), clusterSample, static_cast<std::size_t>(part));
     }
     if (points.size() < 10) continue;
     std::vector<g::Affine3> maps = winner;
@@ -830,15 +842,11 @@ Ifs3Fit fitOnce(std::span<const glm::dvec3> cloud, const g::KdTree3& cloudTree, 
     // lie in the true map's image, so the votes of the residual search (f(P) in P, the part in
     // f(P)) find candidates for it, which replace it when the attractor comes closer.
     if (auto fit = convergedWinner()) return std::move(*fit);
+    // The images change only when a map is replaced; the tree is rebuilt then.
+    g::KdTree3 imageTree(mapImages(winner, source));
     for (std::size_t part = 0; part < winner.size() && !work.spent(); ++part) {
-      std::vector<glm::dvec3> images;
-      for (const g::Affine3& map : winner)
-        for (const glm::dvec3& p : source) images.push_back(map.apply(p));
-      const g::KdTree3 imageTree(images);
       work.add(clusterSample.size());
-      std::vector<glm::dvec3> own;
-      for (const glm::dvec3& p : clusterSample)
-        if (imageTree.nearest(p).index / source.size() == part) own.push_back(p);
+      const std::vector<glm::dvec3> own = ownPart(imageTree, source.size(), clusterSample, part);
       Trial best;
       for (const g::Affine3& candidate : residualCandidates(search, own, kResidualCandidates)) {
         std::vector<g::Affine3> maps = winner;
@@ -854,6 +862,7 @@ Ifs3Fit fitOnce(std::span<const glm::dvec3> cloud, const g::KdTree3& cloudTree, 
         winnerScore = score;
         winner = std::move(best.maps);
         if (auto fit = convergedWinner()) return std::move(*fit);
+        imageTree = g::KdTree3(mapImages(winner, source));
       }
     }
   }
@@ -948,11 +957,7 @@ Ifs3Fit fitIfs3(std::span<const glm::dvec3> fullCloud, const Ifs3FitOptions& opt
   best.stoppedByBudget = work.spent() && !best.converged();
   // The plain collage distance on the whole cloud as given, noise included.
   if (!best.maps.empty() && cloud.size() != fullCloud.size()) {
-    std::vector<glm::dvec3> images;
-    images.reserve(fullCloud.size() * best.maps.size());
-    for (const g::Affine3& map : best.maps)
-      for (const glm::dvec3& p : fullCloud) images.push_back(map.apply(p));
-    best.collageDistance = chamferDistance(fullCloud, images);
+    best.collageDistance = chamferDistance(fullCloud, mapImages(best.maps, fullCloud));
   }
   return best;
 }
