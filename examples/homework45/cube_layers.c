@@ -160,6 +160,35 @@ static int fill_cells(const struct wings_mesh *mesh, struct cube_layers *layers,
   return ok;
 }
 
+/* Whether the edge between grid points a and b (x, y, z grid indices) runs along x or z at one
+ * height; if so, *along_x says which, and the grid lines it spans along that axis are [*from, *to). */
+static int horizontal_segment(const int *a, const int *b, int *along_x, int *from, int *to)
+{
+  if (a[1] != b[1] || (a[0] == b[0]) == (a[2] == b[2])) return 0;
+  *along_x = a[2] == b[2];
+  const int axis = *along_x ? 0 : 2;
+  *from = a[axis] < b[axis] ? a[axis] : b[axis];
+  *to = a[axis] < b[axis] ? b[axis] : a[axis];
+  return 1;
+}
+
+/* The slot of the grid segment from grid point (i, j) one step along x (along_x) or z, at height
+ * `level`, in cap_rectangles' arrays: [along_x][level][j][i]. */
+static size_t rim_slot(const struct cube_layers *layers, int along_x, int level, int i, int j)
+{
+  const size_t points = (size_t)layers->x_count * (size_t)layers->z_count;
+  const size_t levels = (size_t)layers->layer_count + 1;
+  return ((size_t)along_x * levels + (size_t)level) * points + (size_t)j * (size_t)layers->x_count + (size_t)i;
+}
+
+/* Whether there are edges along that grid segment, all of them hard. */
+static int rim_hard(const unsigned char *covered, const unsigned char *soft, const struct cube_layers *layers,
+                    int along_x, int level, int i, int j)
+{
+  const size_t slot = rim_slot(layers, along_x, level, i, j);
+  return covered[slot] && !soft[slot];
+}
+
 /* Which cells have their top or bottom rim rounded (cube_layers.h): each piece of a layer's
  * footprint (its cells joined side to side) that is a rectangle, with its four corners' uprights
  * rounded, nothing above it (below it) and every edge along its top (bottom) rim hard. */
@@ -168,7 +197,7 @@ static int cap_rectangles(const struct wings_mesh *mesh, struct cube_layers *lay
   const int cells_x = layers->x_count - 1, cells_z = layers->z_count - 1;
   const size_t cells = (size_t)cells_x * (size_t)cells_z;
   /* Whether every edge along the grid segment from (i, j) to (i + 1, j) (rim_x) or to (i, j + 1)
-   * (rim_z) at height `level` is hard, and whether there is one: [level][j][i] over the grid points. */
+   * (rim_z) at height `level` is hard, and whether there is one, in the slots rim_slot gives. */
   const size_t points = (size_t)layers->x_count * (size_t)layers->z_count;
   const size_t levels = (size_t)layers->layer_count + 1;
   unsigned char *covered = calloc(2 * levels * points + 1, 1), *soft = calloc(2 * levels * points + 1, 1);
@@ -177,21 +206,14 @@ static int cap_rectangles(const struct wings_mesh *mesh, struct cube_layers *lay
   int ok = covered && soft && piece && stack && layers->capped;
   for (long e = 0; ok && e < mesh->edge_count; ++e) {
     const int *a = &place[3 * mesh->edges[e].vs], *b = &place[3 * mesh->edges[e].ve];
-    if (a[1] != b[1] || (a[0] == b[0]) == (a[2] == b[2])) continue;
-    const int along_x = a[2] == b[2];
-    const int from = along_x ? (a[0] < b[0] ? a[0] : b[0]) : (a[2] < b[2] ? a[2] : b[2]);
-    const int to = along_x ? (a[0] < b[0] ? b[0] : a[0]) : (a[2] < b[2] ? b[2] : a[2]);
+    int along_x, from, to;
+    if (!horizontal_segment(a, b, &along_x, &from, &to)) continue;
     for (int c = from; c < to; ++c) {
-      const size_t at = ((size_t)along_x * levels + (size_t)a[1]) * points +
-                        (size_t)(along_x ? a[2] : c) * (size_t)layers->x_count + (size_t)(along_x ? c : a[0]);
+      const size_t at = rim_slot(layers, along_x, a[1], along_x ? c : a[0], along_x ? a[2] : c);
       covered[at] = 1;
       soft[at] |= (unsigned char)!mesh->hard[e];
     }
   }
-#define RIM_HARD(along_x, level, i, j)                                                                             \
-  (covered[(((size_t)(along_x) * levels + (size_t)(level)) * points + (size_t)(j) * (size_t)layers->x_count +       \
-            (size_t)(i))] &&                                                                                        \
-   !soft[(((size_t)(along_x) * levels + (size_t)(level)) * points + (size_t)(j) * (size_t)layers->x_count + (size_t)(i))])
   for (int k = 0; ok && k < layers->layer_count; ++k) {
     for (size_t c = 0; c < cells; ++c) piece[c] = -1;
     for (int start = 0; start < (int)cells; ++start) {
@@ -222,8 +244,10 @@ static int cap_rectangles(const struct wings_mesh *mesh, struct cube_layers *lay
         /* side 0: the top rim, at level k + 1, with nothing above; side 1: the bottom's. */
         const int level = side ? k : k + 1;
         int capped = rectangle && !(side ? covered_below : covered_above);
-        for (int i = i0; capped && i <= i1; ++i) capped = RIM_HARD(1, level, i, j0) && RIM_HARD(1, level, i, j1 + 1);
-        for (int j = j0; capped && j <= j1; ++j) capped = RIM_HARD(0, level, i0, j) && RIM_HARD(0, level, i1 + 1, j);
+        for (int i = i0; capped && i <= i1; ++i)
+          capped = rim_hard(covered, soft, layers, 1, level, i, j0) && rim_hard(covered, soft, layers, 1, level, i, j1 + 1);
+        for (int j = j0; capped && j <= j1; ++j)
+          capped = rim_hard(covered, soft, layers, 0, level, i0, j) && rim_hard(covered, soft, layers, 0, level, i1 + 1, j);
         if (capped) rims |= side ? CAPPED_BOTTOM : CAPPED_TOP;
       }
       for (int j = j0; rims && j <= j1; ++j)
@@ -231,7 +255,6 @@ static int cap_rectangles(const struct wings_mesh *mesh, struct cube_layers *lay
           layers->capped[((size_t)k * (size_t)cells_z + (size_t)j) * (size_t)cells_x + (size_t)i] = rims;
     }
   }
-#undef RIM_HARD
   free(covered);
   free(soft);
   free(piece);
@@ -284,12 +307,10 @@ static int mark_hard_edges(const struct wings_mesh *mesh, struct cube_layers *la
     int rounded = a[0] == b[0] && a[2] == b[2];
     for (int k = a[1] < b[1] ? a[1] : b[1]; rounded && k < (a[1] < b[1] ? b[1] : a[1]); ++k)
       rounded = cube_layers_rounded(layers, k, a[0], a[2]);
-    if (a[1] == b[1] && (a[0] == b[0]) != (a[2] == b[2])) {
+    int along_x, from, to;
+    if (horizontal_segment(a, b, &along_x, &from, &to)) {
       /* Along x or z at a height: on a capped rim when every cell it runs beside is capped on one
        * side of it, as the top of the layer below or the bottom of the layer above. */
-      const int along_x = a[2] == b[2];
-      const int from = along_x ? (a[0] < b[0] ? a[0] : b[0]) : (a[2] < b[2] ? a[2] : b[2]);
-      const int to = along_x ? (a[0] < b[0] ? b[0] : a[0]) : (a[2] < b[2] ? b[2] : a[2]);
       for (int side = 0; side < 2 && !rounded; ++side) {
         const int k = side ? a[1] : a[1] - 1, bit = side ? CAPPED_BOTTOM : CAPPED_TOP;
         rounded = 1;
