@@ -9,7 +9,8 @@
 %% Writes scenes/models/*.wings, examples/homework45/l_block.wings,
 %% tests/homework45/l_block_uprights.wings, tests/homework45/l_block_all_hard.wings,
 %% tests/homework45/l_block_partial*.wings, tests/homework45/overhang_*.wings,
-%% tests/homework45/two_layers_uprights.wings,
+%% tests/homework45/two_layers_uprights.wings, tests/homework45/l_on_slab.wings,
+%% tests/homework45/slab_on_l.wings,
 %% tests/homework45/refused_*.wings (objects the homework program refuses) and tests/unit/data/wings/*.wings and *.term.
 
 main([Root]) ->
@@ -131,6 +132,17 @@ main([Root]) ->
     %% two: the standing cube's top rim is rounded only in the first).
     write(filename:join(Root, "tests/homework45/two_layers_uprights.wings"),
           [object("Steps", TwoVs, TwoFs, Upright, none, false)], Materials, []),
+    %% Layers of other footprints, every edge marked (for the homework program, which rounds the
+    %% rims of a layer's L with nothing above or below it as it rounds a one-layer L's): an L of
+    %% three cubes on a slab of 2 x 2, and the slab on the L.
+    {LOnSlabVs, LOnSlabFs} = cubes([{X, 0, Z} || X <- [0, 1], Z <- [0, 1]] ++ [{0, 1, 0}, {1, 1, 0}, {0, 1, 1}], 1.0,
+                                   {0.0, 0.0, 0.0}),
+    write(filename:join(Root, "tests/homework45/l_on_slab.wings"),
+          [object("Steps", LOnSlabVs, LOnSlabFs, All, top_paint, true)], Materials, []),
+    {SlabOnLVs, SlabOnLFs} = cubes([{0, 0, 0}, {1, 0, 0}, {0, 0, 1}] ++ [{X, 1, Z} || X <- [0, 1], Z <- [0, 1]], 1.0,
+                                   {0.0, 0.0, 0.0}),
+    write(filename:join(Root, "tests/homework45/slab_on_l.wings"),
+          [object("Steps", SlabOnLVs, SlabOnLFs, All, top_paint, true)], Materials, []),
     %% A cube standing on a slab of 2 x 2 cubes at one corner, every edge marked: at the foot of
     %% its inner upright the upright meets the two fillets along its foot (a standing torus
     %% piece); at the two feet beside the slab's sides a fillet ends between two rounded convex
