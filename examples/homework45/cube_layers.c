@@ -173,7 +173,7 @@ static int horizontal_segment(const int *a, const int *b, int *along_x, int *fro
 }
 
 /* The slot of the grid segment from grid point (i, j) one step along x (along_x) or z, at height
- * `level`, in cap_rectangles' arrays: [along_x][level][j][i]. */
+ * `level`, in cap_pieces' arrays: [along_x][level][j][i]. */
 static size_t rim_slot(const struct cube_layers *layers, int along_x, int level, int i, int j)
 {
   const size_t points = (size_t)layers->x_count * (size_t)layers->z_count;
@@ -189,10 +189,38 @@ static int rim_hard(const unsigned char *covered, const unsigned char *soft, con
   return covered[slot] && !soft[slot];
 }
 
+/* Whether cell (i, j) is one of the piece numbered `start` in `piece` (-1 off the grid). */
+static int in_piece(const struct cube_layers *layers, const int *piece, int start, int i, int j)
+{
+  const int cells_x = layers->x_count - 1, cells_z = layers->z_count - 1;
+  return i >= 0 && i < cells_x && j >= 0 && j < cells_z && piece[j * cells_x + i] == start;
+}
+
+/* Whether the piece numbered `start` of `layer`'s footprint, whose cells lie from (i0, j0) to
+ * (i1, j1), is outlined by one loop with a rounded upright at every corner. A loop of right
+ * angles turns once, so its convex corners outnumber its concave ones by four; a hole's loop
+ * turns the other way and takes four more concave ones. */
+static int one_rounded_loop(const struct cube_layers *layers, const int *piece, int start, int layer, int i0,
+                            int i1, int j0, int j1)
+{
+  int convex = 0, concave = 0;
+  for (int gj = j0; gj <= j1 + 1; ++gj)
+    for (int gi = i0; gi <= i1 + 1; ++gi) {
+      const int around = in_piece(layers, piece, start, gi - 1, gj - 1) + in_piece(layers, piece, start, gi, gj - 1) +
+                         in_piece(layers, piece, start, gi - 1, gj) + in_piece(layers, piece, start, gi, gj);
+      if (around != 1 && around != 3) continue;
+      if (!cube_layers_rounded(layers, layer, gi, gj)) return 0;
+      convex += around == 1;
+      concave += around == 3;
+    }
+  return convex - concave == 4;
+}
+
 /* Which cells have their top or bottom rim rounded (cube_layers.h): each piece of a layer's
- * footprint (its cells joined side to side) that is a rectangle, with its four corners' uprights
- * rounded, nothing above it (below it) and every edge along its top (bottom) rim hard. */
-static int cap_rectangles(const struct wings_mesh *mesh, struct cube_layers *layers, const int *place)
+ * footprint (its cells joined side to side) outlined by one loop (a rectangle, an L, ...) with
+ * every corner's upright rounded, nothing above it (below it) and every edge along its top
+ * (bottom) rim hard. */
+static int cap_pieces(const struct wings_mesh *mesh, struct cube_layers *layers, const int *place)
 {
   const int cells_x = layers->x_count - 1, cells_z = layers->z_count - 1;
   const size_t cells = (size_t)cells_x * (size_t)cells_z;
@@ -202,8 +230,9 @@ static int cap_rectangles(const struct wings_mesh *mesh, struct cube_layers *lay
   const size_t levels = (size_t)layers->layer_count + 1;
   unsigned char *covered = calloc(2 * levels * points + 1, 1), *soft = calloc(2 * levels * points + 1, 1);
   int *piece = malloc(cells * sizeof *piece + 1), *stack = malloc(cells * sizeof *stack + 1);
+  int *members = malloc(cells * sizeof *members + 1);
   layers->capped = calloc((size_t)layers->layer_count * cells + 1, 1);
-  int ok = covered && soft && piece && stack && layers->capped;
+  int ok = covered && soft && piece && stack && members && layers->capped;
   for (long e = 0; ok && e < mesh->edge_count; ++e) {
     const int *a = &place[3 * mesh->edges[e].vs], *b = &place[3 * mesh->edges[e].ve];
     int along_x, from, to;
@@ -224,7 +253,7 @@ static int cap_rectangles(const struct wings_mesh *mesh, struct cube_layers *lay
       piece[start] = start;
       while (top > 0) {
         const int c = stack[--top], i = c % cells_x, j = c / cells_x;
-        ++count;
+        members[count++] = c;
         i0 = i < i0 ? i : i0, i1 = i > i1 ? i : i1, j0 = j < j0 ? j : j0, j1 = j > j1 ? j : j1;
         covered_above |= cube_layers_filled(layers, k + 1, i, j);
         covered_below |= cube_layers_filled(layers, k - 1, i, j);
@@ -236,29 +265,31 @@ static int cap_rectangles(const struct wings_mesh *mesh, struct cube_layers *lay
           stack[top++] = nj * cells_x + ni;
         }
       }
-      const int rectangle = count == (i1 - i0 + 1) * (j1 - j0 + 1) && cube_layers_rounded(layers, k, i0, j0) &&
-                            cube_layers_rounded(layers, k, i1 + 1, j0) && cube_layers_rounded(layers, k, i0, j1 + 1) &&
-                            cube_layers_rounded(layers, k, i1 + 1, j1 + 1);
+      const int loop = one_rounded_loop(layers, piece, start, k, i0, i1, j0, j1);
       unsigned char rims = 0;
       for (int side = 0; side < 2; ++side) {
-        /* side 0: the top rim, at level k + 1, with nothing above; side 1: the bottom's. */
+        /* side 0: the top rim, at level k + 1, with nothing above; side 1: the bottom's. Every
+         * side of a cell with no cell of the layer beside it is on the rim. */
         const int level = side ? k : k + 1;
-        int capped = rectangle && !(side ? covered_below : covered_above);
-        for (int i = i0; capped && i <= i1; ++i)
-          capped = rim_hard(covered, soft, layers, 1, level, i, j0) && rim_hard(covered, soft, layers, 1, level, i, j1 + 1);
-        for (int j = j0; capped && j <= j1; ++j)
-          capped = rim_hard(covered, soft, layers, 0, level, i0, j) && rim_hard(covered, soft, layers, 0, level, i1 + 1, j);
+        int capped = loop && !(side ? covered_below : covered_above);
+        for (int m = 0; capped && m < count; ++m) {
+          const int i = members[m] % cells_x, j = members[m] / cells_x;
+          capped = (cube_layers_filled(layers, k, i - 1, j) || rim_hard(covered, soft, layers, 0, level, i, j)) &&
+                   (cube_layers_filled(layers, k, i + 1, j) || rim_hard(covered, soft, layers, 0, level, i + 1, j)) &&
+                   (cube_layers_filled(layers, k, i, j - 1) || rim_hard(covered, soft, layers, 1, level, i, j)) &&
+                   (cube_layers_filled(layers, k, i, j + 1) || rim_hard(covered, soft, layers, 1, level, i, j + 1));
+        }
         if (capped) rims |= side ? CAPPED_BOTTOM : CAPPED_TOP;
       }
-      for (int j = j0; rims && j <= j1; ++j)
-        for (int i = i0; i <= i1; ++i)
-          layers->capped[((size_t)k * (size_t)cells_z + (size_t)j) * (size_t)cells_x + (size_t)i] = rims;
+      for (int m = 0; rims && m < count; ++m)
+        layers->capped[(size_t)k * cells + (size_t)members[m]] = rims;
     }
   }
   free(covered);
   free(soft);
   free(piece);
   free(stack);
+  free(members);
   return ok;
 }
 
@@ -295,9 +326,9 @@ static int mark_hard_edges(const struct wings_mesh *mesh, struct cube_layers *la
       }
   free(covered);
   free(soft);
-  if (!cap_rectangles(mesh, layers, place)) return wings_failed(error, size, "out of memory");
+  if (!cap_pieces(mesh, layers, place)) return wings_failed(error, size, "out of memory");
   /* A hard edge between faces in different planes is a crease: rounded when it is upright and
-   * rounded in every layer it runs through, or along a capped rectangle's top rim, else left
+   * rounded in every layer it runs through, or along a capped piece's top or bottom rim, else left
    * sharp. */
   for (long e = 0; e < mesh->edge_count; ++e) {
     const struct winged_edge *edge = &mesh->edges[e];

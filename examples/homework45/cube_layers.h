@@ -3,9 +3,9 @@
  * each in the solid or out of it. Between two consecutive heights of its vertices lies a layer:
  * a prism over the cells it fills, its footprint. Its upright edges at the footprint's corners
  * are rounded one layer at a time when they are marked hard in Wings3D; the edges along the
- * layers' tops and bottoms stay sharp, but for the top rim of a rectangle of a layer with nothing
- * beside or above it (a cube standing on a slab) and the bottom rim of one with nothing beside or
- * below it (the slab). */
+ * layers' tops and bottoms stay sharp, but for the top rim of a piece of a layer's footprint
+ * outlined by one loop (a rectangle, an L) with nothing above it (a cube standing on a slab, an L
+ * on a slab) and the bottom rim of one with nothing below it (the slab on the floor). */
 #ifndef HOMEWORK45_CUBE_LAYERS_H
 #define HOMEWORK45_CUBE_LAYERS_H
 
@@ -24,15 +24,17 @@ struct cube_layers {
                              z[j + 1] is in the solid in that layer */
   unsigned char *rounded; /* [layer][j][i]: whether the upright through grid point (x[i], z[j])
                              is a corner of the layer's footprint and marked hard there */
-  unsigned char *capped;  /* [layer][j][i]: CAPPED_TOP when cell (i, j) lies in a rectangle of the
-                             layer's footprint (a whole piece of it) with nothing above, its
-                             corners' uprights rounded and the edges round its top all hard: that
-                             rim is rounded too, meeting the uprights in eighths of a sphere;
-                             CAPPED_BOTTOM the same below (nothing under it, its bottom rim hard) */
+  unsigned char *capped;  /* [layer][j][i]: CAPPED_TOP when cell (i, j) lies in a piece of the
+                             layer's footprint (its cells joined side to side) outlined by one
+                             loop, with nothing above, its corners' uprights rounded and the edges
+                             round its top all hard: that rim is rounded too, meeting the uprights
+                             in eighths of a sphere (convex corners) and quarters of a torus
+                             (concave ones); CAPPED_BOTTOM the same below (nothing under it, its
+                             bottom rim hard) */
   double max_radius;      /* half the closest spacing of the grid lines: the corners' quarter
                              circles keep apart */
   int sharp_hard_edges;   /* hard edges left sharp: the creases along the layers' tops and
-                             bottoms but the capped rectangles' rims */
+                             bottoms but the capped pieces' rims */
 };
 
 /* The cells of a mesh's object. Returns 0 and writes the reason into `error` when the object is

@@ -11,7 +11,8 @@
  * patch whose weights are products of the two arcs' weights, exact as both arcs are (study
  * guide, section 2.4). An object of several layers of cubes that is not one outline raised (a
  * cube on a slab) is drawn by layers (layered_block.c): its hard uprights rounded layer by layer,
- * its rims left sharp. A texture runs on across the rounded strips, planar shadows
+ * the rims of a layer's piece (a rectangle, an L) with nothing above (below) it rounded as above,
+ * its other rims left sharp. A texture runs on across the rounded strips, planar shadows
  * of the object fall on the floor and both walls (shadow matrices, kept on their surface by the
  * stencil buffer); walk mode with collisions, examine mode, three kinds of light, five
  * viewpoints, orthographic or perspective projection.
@@ -22,6 +23,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 #include <GL/glut.h>
 
 #include "layered_block.h"
@@ -169,33 +171,27 @@ static void patch_point(const float net[][3][4], int rows, double u, double v, d
   for (int k = 0; k < 3; ++k) out[k] = h[k] / h[3];
 }
 
-/* Turns the order of `rows` rows of `length` floats each round. */
-static void reverse_rows(float *data, int rows, int length)
+/* Turns the order of `rows` rows of `row_size` bytes each round. */
+static void reverse_rows(void *data, int rows, size_t row_size)
 {
+  unsigned char *bytes = data;
   for (int j = 0; j < rows / 2; ++j)
-    for (int k = 0; k < length; ++k) {
-      float swap = data[j * length + k];
-      data[j * length + k] = data[(rows - 1 - j) * length + k];
-      data[(rows - 1 - j) * length + k] = swap;
+    for (size_t k = 0; k < row_size; ++k) {
+      const unsigned char swap = bytes[(size_t)j * row_size + k];
+      bytes[(size_t)j * row_size + k] = bytes[(size_t)(rows - 1 - j) * row_size + k];
+      bytes[(size_t)(rows - 1 - j) * row_size + k] = swap;
     }
 }
 
-/* Draws the rational patch net[v][u] (rows = 2 or 3 rows of 3 homogeneous points) with texture
- * coordinates tex[v][u], by glMap2f and glEvalMesh2, its rows turned round when dP/du x dP/dv
- * points into the solid at its middle (so every patch of the top's rim faces up and out, of the
- * bottom's down and out, for its winding).
- * Its normals come from a map of their own, not from GL_AUTO_NORMAL, whose dP/du x dP/dv vanishes
- * where a sphere's net closes in a pole (GL 1.x section 5.1): the rim is at distance R from its
- * centres (centre[v][u] is the centre nearest each control point, or the control point's on the
- * centre circle for the corners), so w(u, v) (P(u, v) - centre) is a polynomial patch with
- * control points w_ij (P_ij - centre_ij) and, with GL_NORMALIZE, gives the exact unit normal. */
+/* Draws the rim's patch net[v][u] (rows = 2 or 3 rows of 3 homogeneous points) with texture
+ * coordinates tex[v][u] and its normals from the centres centre[v][u] (draw_rim_net), its rows
+ * turned round when dP/du x dP/dv points into the solid at its middle (so every patch of the
+ * top's rim faces up and out, of the bottom's down and out, for its winding). */
 static void draw_rim_patch(float net[][3][4], float tex[][3][2], const double centre[][3][3], int rows,
                            enum rim_level level)
 {
-  float normals[3][3][3];
-  for (int j = 0; j < rows; ++j)
-    for (int i = 0; i < 3; ++i)
-      for (int k = 0; k < 3; ++k) normals[j][i][k] = net[j][i][k] - net[j][i][3] * (float)centre[j][i][k];
+  double centres[3][3][3];
+  memcpy(centres, centre, (size_t)rows * sizeof centres[0]);
   double a[3], b[3], c[3], d[3];
   patch_point((const float (*)[3][4])net, rows, 0.4, 0.5, a);
   patch_point((const float (*)[3][4])net, rows, 0.6, 0.5, b);
@@ -203,12 +199,12 @@ static void draw_rim_patch(float net[][3][4], float tex[][3][2], const double ce
   patch_point((const float (*)[3][4])net, rows, 0.5, 0.6, d);
   const double du[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, dv[3] = {d[0] - c[0], d[1] - c[1], d[2] - c[2]};
   if ((du[2] * dv[0] - du[0] * dv[2]) * rim_outward(level) < 0) {
-    reverse_rows(&net[0][0][0], rows, 3 * 4);
-    reverse_rows(&tex[0][0][0], rows, 3 * 2);
-    reverse_rows(&normals[0][0][0], rows, 3 * 3);
+    reverse_rows(net, rows, sizeof net[0]);
+    reverse_rows(tex, rows, sizeof tex[0]);
+    reverse_rows(centres, rows, sizeof centres[0]);
   }
-  draw_rational_patch((const float (*)[3][4])net, (const float (*)[3][2])tex, (const float (*)[3][3])normals, rows,
-                      rows == 3 ? ARC_STEPS : 4);
+  draw_rim_net((const float (*)[3][4])net, (const float (*)[3][2])tex, (const double (*)[3][3])centres, rows,
+               rows == 3 ? ARC_STEPS : 4);
 }
 
 /* A quarter cylinder of the current radius around the upright edge at corner k, from the point
@@ -371,37 +367,22 @@ static void rim_strip(int i, enum rim_level level, float s0, float s1)
 }
 
 /* Above the rounded upright at corner i, where the rim's strips of its two sides end: the rim's
- * quarter circle turned around the upright's axis by the upright's quarter circle. Its rows are
- * the upright's arc control points scaled from the axis by the rim's profile: 1 at the side (R
- * below the top and at the top edge) and, at the top, 0 at a convex corner (the net closes in a
- * pole: an eighth of a sphere) or 2 at a concave one (a quarter of the inner half of a torus of
- * radii 2 R and R around the fillet's axis). */
+ * quarter circle turned around the upright's axis by the upright's quarter circle, an eighth of a
+ * sphere at a convex corner and a quarter of a torus above a fillet (rim_corner_net). */
 static void rim_corner(int i, enum rim_level level, float s0)
 {
-  const double r = radius, w = sqrt(2.0) / 2.0;
+  const double r = radius;
   const double top = rim_height(level), out = rim_outward(level), height = texture_height;
   float from[2], to[2];
   corner_ends(i, from, to);
   double axis[2];
   upright_axis(i, axis);
   const double arc[3][2] = {{from[0], from[1]}, {plan.xz[i][0], plan.xz[i][1]}, {to[0], to[1]}};
-  const double arc_weight[3] = {1.0, w, 1.0};
-  const double scale[3] = {1.0, 1.0, plan.convex[i] ? 0.0 : 2.0}, y[3] = {top - out * r, top, top};
   float net[3][3][4], tex[3][3][2];
   double centre[3][3][3];
   const float length = (float)(PI / 2) * radius;
   const float t0 = side_t(top - out * r), t2 = (float)(t0 + out * PI / 2 * r / height);
-  for (int j = 0; j < 3; ++j)
-    for (int u = 0; u < 3; ++u) {
-      control_point(net[j][u], axis[0] + scale[j] * (arc[u][0] - axis[0]), y[j],
-                    axis[1] + scale[j] * (arc[u][1] - axis[1]), arc_weight[u] * arc_weight[j]);
-      tex[j][u][0] = s0 + length * (float)u / 2;
-      tex[j][u][1] = t0 + (t2 - t0) * (float)j / 2;
-      /* The tube's centre circle: the top row's arc, R below the top. */
-      centre[j][u][0] = axis[0] + scale[2] * (arc[u][0] - axis[0]);
-      centre[j][u][1] = top - out * r;
-      centre[j][u][2] = axis[1] + scale[2] * (arc[u][1] - axis[1]);
-    }
+  rim_corner_net(arc, axis, plan.convex[i], top - out * r, top, s0, length, t0, t2, net, tex, centre);
   draw_rim_patch(net, tex, (const double (*)[3][3])centre, 3, level);
 }
 
@@ -921,9 +902,10 @@ static void load_object(int argc, char **argv)
             plan.sharp_hard_edges);
   if (layered && layers.sharp_hard_edges > 0)
     fprintf(stderr, "homework45: %s: %d hard edges stay sharp (of an object of more than one layer of cubes "
-            "this program rounds the upright edges, layer by layer, and the top (bottom) rim of a rectangle of "
-            "cubes with nothing beside it and nothing above (below) it; it leaves the other edges along the "
-            "layers' tops and bottoms sharp)\n", path, layers.sharp_hard_edges);
+            "this program rounds the upright edges, layer by layer, and the top (bottom) rim of a piece of a "
+            "layer (cubes joined side to side, outlined by one loop, such as a rectangle or an L, its uprights "
+            "rounded) with nothing above (below) it; it leaves the other edges along the layers' tops and "
+            "bottoms sharp)\n", path, layers.sharp_hard_edges);
   if (layered) {
     block_min[0] = (float)layers.x[0], block_max[0] = (float)layers.x[layers.x_count - 1];
     block_min[1] = (float)layers.height[0], block_max[1] = (float)layers.height[layers.layer_count];

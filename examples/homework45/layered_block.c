@@ -114,12 +114,12 @@ static void walls(const struct cube_layers *layers, int layer, float radius)
 
 /* The arc of the rounded upright at grid point (i, j) of `layer`. Of the four cells around it one
  * differs from the others (the only one in the solid at a convex corner, the only one out of it
- * at a concave one), in direction (qx, qz) from the point: that cell goes into *odd_i, *odd_j;
- * the walls run from the point along x and along z on its sides. The arc goes from R along the
+ * at a concave one), in direction (qx, qz) from the point; the walls run from the point along x
+ * and along z on its sides. The arc goes from R along the
  * wall the walk arrives by to R along the wall it leaves by, the solid on the walk's left. Its
  * texture's s runs from *s0 over *s_length. Returns whether the corner is convex. */
 static int upright_arc(const struct cube_layers *layers, int layer, int i, int j, float radius, float from[2],
-                       float corner[2], float to[2], float *s0, float *s_length, int *odd_i, int *odd_j)
+                       float corner[2], float to[2], float *s0, float *s_length)
 {
   int filled = 0, qx = 0, qz = 0;
   for (int di = -1; di <= 0; ++di)
@@ -128,7 +128,7 @@ static int upright_arc(const struct cube_layers *layers, int layer, int i, int j
   for (int di = -1; di <= 0; ++di)
     for (int dj = -1; dj <= 0; ++dj)
       if (cube_layers_filled(layers, layer, i + di, j + dj) == convex)
-        qx = di ? -1 : 1, qz = dj ? -1 : 1, *odd_i = i + di, *odd_j = j + dj;
+        qx = di ? -1 : 1, qz = dj ? -1 : 1;
   const int sign = convex ? 1 : -1;
   /* The wall along x faces (0, -qz sign) and the walk runs along it by (-qz sign, 0): away from
    * the point, it leaves by that wall, when that is (qx, 0). The wall along z faces (-qx sign, 0). */
@@ -152,34 +152,27 @@ static int upright_arc(const struct cube_layers *layers, int layer, int i, int j
   return convex;
 }
 
+/* Whether the top (rim CAPPED_TOP) or bottom rim of `layer` is rounded at the corner at grid point
+ * (i, j): the rim of the piece of the footprint that the cells around it in the solid belong to
+ * (one piece, since cubes meeting only along an upright line are refused). */
+static int corner_rim_rounded(const struct cube_layers *layers, int layer, int i, int j, float radius, int rim)
+{
+  for (int di = -1; di <= 0; ++di)
+    for (int dj = -1; dj <= 0; ++dj)
+      if (cube_layers_filled(layers, layer, i + di, j + dj)) return rim_rounded(layers, layer, i + di, j + dj, radius, rim);
+  return 0;
+}
+
 /* The quarter cylinder of the rounded upright at grid point (i, j) of `layer`, R short of the
  * layer's top and bottom where they are rounded rims. */
 static void upright_cylinder(const struct cube_layers *layers, int layer, int i, int j, float radius)
 {
   float from[2], corner[2], to[2], s0, s_length;
-  int odd_i, odd_j;
-  const int convex = upright_arc(layers, layer, i, j, radius, from, corner, to, &s0, &s_length, &odd_i, &odd_j);
-  const float drop = convex && rim_rounded(layers, layer, odd_i, odd_j, radius, CAPPED_TOP) ? radius : 0;
-  const float rise = convex && rim_rounded(layers, layer, odd_i, odd_j, radius, CAPPED_BOTTOM) ? radius : 0;
+  upright_arc(layers, layer, i, j, radius, from, corner, to, &s0, &s_length);
+  const float drop = corner_rim_rounded(layers, layer, i, j, radius, CAPPED_TOP) ? radius : 0;
+  const float rise = corner_rim_rounded(layers, layer, i, j, radius, CAPPED_BOTTOM) ? radius : 0;
   const float y0 = (float)layers->height[layer] + rise, y1 = (float)layers->height[layer + 1] - drop;
   quarter_cylinder(from, corner, to, y0, y1, s0, s_length, texture_t(layers, y0), texture_t(layers, y1));
-}
-
-/* Draws the rational patch net[v][u] (rows = 2 or 3 rows of 3 homogeneous points) with texture
- * coordinates tex[v][u], ARC_STEPS steps along u and v_steps along v. Its normals come from a map
- * of their own, not from GL_AUTO_NORMAL, whose dP/du x dP/dv vanishes where a sphere's net closes
- * in a pole: the rim lies at distance R from the centres centre[v][u] (each control point's
- * nearest on the rim's axis, or the sphere's centre), so w(u, v) (P(u, v) - centre) is a
- * polynomial patch with control points w_ij (P_ij - centre_ij) and, with GL_NORMALIZE, gives the
- * exact unit normal (as homework45.c draws the one-layer object's rims). */
-static void rim_patch(const float net[][3][4], const float tex[][3][2], const float centre[][3][3], int rows,
-                      int v_steps)
-{
-  float normals[3][3][3];
-  for (int v = 0; v < rows; ++v)
-    for (int u = 0; u < 3; ++u)
-      for (int k = 0; k < 3; ++k) normals[v][u][k] = net[v][u][k] - net[v][u][3] * centre[v][u][k];
-  draw_rational_patch(net, tex, (const float (*)[3][3])normals, rows, v_steps);
 }
 
 /* The rounded top (rim CAPPED_TOP) or bottom rim of `layer` along its wall on grid line `fixed`
@@ -204,7 +197,8 @@ static void rim_strip(const struct cube_layers *layers, int layer, int along_x, 
   const float t0 = texture_t(layers, below), t2 = t0 + out * (float)(PI / 2.0) * radius;
   const int in_x = -normal_x, in_z = -normal_z;
   for (int c = 0; c + 1 < count; ++c) {
-    float net[2][3][4], tex[2][3][2], centre[2][3][3];
+    float net[2][3][4], tex[2][3][2];
+    double centre[2][3][3];
     for (int v = 0; v < 2; ++v) {
       const float x = along_x ? columns[c + v] : fixed, z = along_x ? fixed : columns[c + v];
       control_point(net[v][0], x, below, z, 1.0);
@@ -219,7 +213,7 @@ static void rim_strip(const struct cube_layers *layers, int layer, int along_x, 
         centre[v][u][2] = z + (float)in_z * radius;
       }
     }
-    rim_patch((const float (*)[3][4])net, (const float (*)[3][2])tex, (const float (*)[3][3])centre, 2, 1);
+    draw_rim_net((const float (*)[3][4])net, (const float (*)[3][2])tex, (const double (*)[3][3])centre, 2, 1);
   }
 }
 
@@ -246,37 +240,24 @@ static void rim_strips(const struct cube_layers *layers, int layer, float radius
 }
 
 /* Above (below, for rim CAPPED_BOTTOM) the rounded upright at grid point (i, j) of `layer` where
- * the rims of its two walls are rounded: an eighth of a sphere, the upright's quarter circle
- * turned by the rim's. Its rows are the upright's arc control points scaled from the arc's centre
- * by the rim's profile, 1 R below the top and at the top's edge, 0 on the top (the net closes in
- * a pole over the centre). */
+ * the rims of its two walls are rounded: the upright's quarter circle turned by the rim's
+ * (rim_corner_net), an eighth of a sphere at a convex corner, a quarter of a torus round the
+ * fillet at a concave one. */
 static void rim_corner(const struct cube_layers *layers, int layer, int i, int j, float radius, int rim)
 {
   float from[2], corner[2], to[2], s0, s_length;
-  int odd_i, odd_j;
-  if (!upright_arc(layers, layer, i, j, radius, from, corner, to, &s0, &s_length, &odd_i, &odd_j) ||
-      !rim_rounded(layers, layer, odd_i, odd_j, radius, rim))
-    return;
-  const double w = sqrt(2.0) / 2.0;
+  const int convex = upright_arc(layers, layer, i, j, radius, from, corner, to, &s0, &s_length);
+  if (!corner_rim_rounded(layers, layer, i, j, radius, rim)) return;
   const float axis[2] = {from[0] + to[0] - corner[0], from[1] + to[1] - corner[1]};
-  const float *arc[3] = {from, corner, to};
-  const double arc_weight[3] = {1.0, w, 1.0};
+  const double arc[3][2] = {{from[0], from[1]}, {corner[0], corner[1]}, {to[0], to[1]}};
+  const double centre_axis[2] = {axis[0], axis[1]};
   const float out = rim == CAPPED_TOP ? 1.0f : -1.0f;
   const float top = (float)layers->height[rim == CAPPED_TOP ? layer + 1 : layer], below = top - out * radius;
-  const float scale[3] = {1, 1, 0}, y[3] = {below, top, top};
   const float t0 = texture_t(layers, below), t2 = t0 + out * (float)(PI / 2.0) * radius;
-  float net[3][3][4], tex[3][3][2], centre[3][3][3];
-  for (int v = 0; v < 3; ++v)
-    for (int u = 0; u < 3; ++u) {
-      control_point(net[v][u], axis[0] + scale[v] * (arc[u][0] - axis[0]), y[v],
-                    axis[1] + scale[v] * (arc[u][1] - axis[1]), arc_weight[u] * arc_weight[v]);
-      tex[v][u][0] = s0 + s_length * (float)u / 2;
-      tex[v][u][1] = t0 + (t2 - t0) * (float)v / 2;
-      centre[v][u][0] = axis[0];
-      centre[v][u][1] = below;
-      centre[v][u][2] = axis[1];
-    }
-  rim_patch((const float (*)[3][4])net, (const float (*)[3][2])tex, (const float (*)[3][3])centre, 3, ARC_STEPS);
+  float net[3][3][4], tex[3][3][2];
+  double centre[3][3][3];
+  rim_corner_net(arc, centre_axis, convex, below, top, s0, s_length, t0, t2, net, tex, centre);
+  draw_rim_net((const float (*)[3][4])net, (const float (*)[3][2])tex, (const double (*)[3][3])centre, 3, ARC_STEPS);
 }
 
 /* What `layer` covers of the R x R square of cell (i, j) at its grid point (gi, gj). */
@@ -335,6 +316,58 @@ static void flat_square(const float corner[2], int dx, int dz, int cover, float 
   glEnd();
 }
 
+/* Whether a quarter of a torus turns the rounded top (rim CAPPED_TOP) or bottom rim of `layer`
+ * round the rounded upright at grid point (i, j): a concave corner (three of the cells around it
+ * in the solid) of a piece whose rim there is rounded. */
+static int torus_corner(const struct cube_layers *layers, int layer, int i, int j, float radius, int rim)
+{
+  int around = 0;
+  for (int di = -1; di <= 0; ++di)
+    for (int dj = -1; dj <= 0; ++dj) around += cube_layers_filled(layers, layer, i + di, j + dj);
+  return around == 3 && upright_rounded(layers, layer, i, j, radius) &&
+         corner_rim_rounded(layers, layer, i, j, radius, rim);
+}
+
+/* The flat face at height y round the torus piece at the concave grid point (i, j) of `layer`:
+ * of the three R x R squares round the point in the solid, what lies outside the torus's inner
+ * rim, the fillet's arc scaled by 2 from its axis (2 R from the axis, through the squares' far
+ * corners' sides). The rim's ends lie at corners of the squares, and every point of it is seen
+ * from the middle of the squares' outer sides next to it, so two fans from those points, split
+ * at the rim's middle and at the squares' far corner, cover it; their sides along the squares'
+ * edges meet the neighbouring cells' pieces there. */
+static void torus_corner_flat(const struct cube_layers *layers, int layer, int i, int j, float y, float radius)
+{
+  float from[2], corner[2], to[2], s0, s_length;
+  upright_arc(layers, layer, i, j, radius, from, corner, to, &s0, &s_length);
+  const float axis[2] = {from[0] + to[0] - corner[0], from[1] + to[1] - corner[1]};
+  float far_from[2], far_corner[2], far_to[2], far_square[2], apex_from[2], apex_to[2];
+  for (int k = 0; k < 2; ++k) {
+    far_from[k] = axis[k] + 2 * (from[k] - axis[k]);
+    far_corner[k] = axis[k] + 2 * (corner[k] - axis[k]);
+    far_to[k] = axis[k] + 2 * (to[k] - axis[k]);
+    far_square[k] = corner[k] - (axis[k] - corner[k]);
+    /* Each end of the rim is R from the point along both axes, towards the empty cell along one:
+     * the fan's apex is the point on the squares' outer side, level with the grid point there. */
+    const int towards_empty = (far_from[k] - corner[k] > 0) == (axis[k] - corner[k] > 0);
+    apex_from[k] = towards_empty ? corner[k] : far_from[k];
+    apex_to[k] = (far_to[k] - corner[k] > 0) == (axis[k] - corner[k] > 0) ? corner[k] : far_to[k];
+  }
+  for (int half = 0; half < 2; ++half) {
+    const float *apex = half ? apex_to : apex_from;
+    glBegin(GL_TRIANGLE_FAN);
+    flat_vertex(apex[0], y, apex[1]);
+    if (half) flat_vertex(far_square[0], y, far_square[1]);
+    for (int step = half ? ARC_STEPS / 2 : 0; step <= (half ? ARC_STEPS : ARC_STEPS / 2); ++step) {
+      double p[2];
+      quarter_arc_point(far_from, far_corner, far_to, (double)step / ARC_STEPS, p);
+      glTexCoord2d(p[0], p[1]);
+      glVertex3d(p[0], y, p[1]);
+    }
+    if (!half) flat_vertex(far_square[0], y, far_square[1]);
+    glEnd();
+  }
+}
+
 /* The flat face at height `level`: what the layer below covers and the layer above does not
  * (facing up, up = 1) or the other way round (facing down, up = 0), cell by cell: its middle and
  * its bands along the sides as the cells are, its corners' squares by square_cover. */
@@ -362,6 +395,7 @@ static void flat_face(const struct cube_layers *layers, int level, int up, float
           if ((a == 0 && rim[0]) || (a == 2 && rim[1]) || (b == 0 && rim[2]) || (b == 2 && rim[3])) continue;
           if (a != 1 && b != 1) {
             const int gi = a ? i + 1 : i, gj = b ? j + 1 : j;
+            if (torus_corner(layers, inner, gi, gj, radius, rim_bit)) continue;
             const int cover = square_cover(layers, inner, i, j, gi, gj, radius) &
                               ~square_cover(layers, outer, i, j, gi, gj, radius);
             const float corner[2] = {(float)layers->x[gi], (float)layers->z[gj]};
@@ -371,6 +405,10 @@ static void flat_face(const struct cube_layers *layers, int level, int up, float
           }
         }
     }
+  for (int j = 0; j < layers->z_count; ++j)
+    for (int i = 0; i < layers->x_count; ++i)
+      if (torus_corner(layers, inner, i, j, radius, up ? CAPPED_TOP : CAPPED_BOTTOM))
+        torus_corner_flat(layers, inner, i, j, y, radius);
 }
 
 void draw_layered_block(const struct cube_layers *layers, float radius)

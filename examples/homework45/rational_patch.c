@@ -1,5 +1,6 @@
 #include "rational_patch.h"
 
+#include <math.h>
 #include <GL/glut.h>
 
 #include "rounded_upright.h"
@@ -28,4 +29,33 @@ void draw_rational_patch(const float net[][3][4], const float tex[][3][2], const
   glDisable(GL_MAP2_NORMAL);
   glDisable(GL_MAP2_VERTEX_4);
   glDisable(GL_MAP2_TEXTURE_COORD_2);
+}
+
+void draw_rim_net(const float net[][3][4], const float tex[][3][2], const double centre[][3][3], int rows,
+                  int v_steps)
+{
+  float normals[3][3][3];
+  for (int v = 0; v < rows; ++v)
+    for (int u = 0; u < 3; ++u)
+      for (int k = 0; k < 3; ++k) normals[v][u][k] = net[v][u][k] - net[v][u][3] * (float)centre[v][u][k];
+  draw_rational_patch(net, tex, (const float (*)[3][3])normals, rows, v_steps);
+}
+
+void rim_corner_net(const double arc[3][2], const double axis[2], int convex, double below, double rim, float s0,
+                    float s_length, float t0, float t2, float net[3][3][4], float tex[3][3][2],
+                    double centre[3][3][3])
+{
+  const double w = sqrt(2.0) / 2.0;
+  const double arc_weight[3] = {1.0, w, 1.0};
+  const double scale[3] = {1.0, 1.0, convex ? 0.0 : 2.0}, y[3] = {below, rim, rim};
+  for (int v = 0; v < 3; ++v)
+    for (int u = 0; u < 3; ++u) {
+      control_point(net[v][u], axis[0] + scale[v] * (arc[u][0] - axis[0]), y[v],
+                    axis[1] + scale[v] * (arc[u][1] - axis[1]), arc_weight[u] * arc_weight[v]);
+      tex[v][u][0] = s0 + s_length * (float)u / 2;
+      tex[v][u][1] = t0 + (t2 - t0) * (float)v / 2;
+      centre[v][u][0] = axis[0] + scale[2] * (arc[u][0] - axis[0]);
+      centre[v][u][1] = below;
+      centre[v][u][2] = axis[1] + scale[2] * (arc[u][1] - axis[1]);
+    }
 }

@@ -15,4 +15,25 @@ void control_point(float out[4], double x, double y, double z, double w);
 void draw_rational_patch(const float net[][3][4], const float tex[][3][2], const float normals[][3][3], int rows,
                          int v_steps);
 
+/* Draws a rim's patch (a strip or a corner piece, as draw_rational_patch) with its normals from
+ * the centres of the rim's curvature: the rim lies at distance R from centre[v][u] (the centre
+ * nearest each control point, on the strip's axis or the corner piece's tube centre circle), so
+ * w(u, v) (P(u, v) - centre) is a polynomial patch with control points w_ij (P_ij - centre_ij),
+ * whose value, normalized, is the exact unit normal, also at a sphere's pole. */
+void draw_rim_net(const float net[][3][4], const float tex[][3][2], const double centre[][3][3], int rows,
+                  int v_steps);
+
+/* The net of the piece where a rim rounded on both sides of a rounded upright turns with it: the
+ * rim's quarter circle turned about the upright's axis (x, z) by the upright's quarter arc
+ * arc[0..2] (x, z: from, corner, to). Its rows are the arc's control points scaled from the axis
+ * by the rim's profile, at heights `below` (R below the rim, scale 1), `rim` (scale 1) and `rim`
+ * (scale 0 at a convex corner, where the net closes in a pole: an eighth of a sphere; 2 at a
+ * concave one: a quarter of the inner half of a torus of radii 2 R and R about the fillet's
+ * axis), weighted by the products of the two arcs' weights. The texture's s runs from s0 over
+ * s_length round the arc, t from t0 at `below` to t2 on the rim; centre[v][u] is the tube's
+ * centre circle at `below` (the sphere's centre), for draw_rim_net. */
+void rim_corner_net(const double arc[3][2], const double axis[2], int convex, double below, double rim, float s0,
+                    float s_length, float t0, float t2, float net[3][3][4], float tex[3][3][2],
+                    double centre[3][3][3]);
+
 #endif

@@ -4,7 +4,7 @@
 #   homework45_tests.sh PROGRAM PNG_PROBE WORK_DIR MODEL UPRIGHTS_MODEL ALL_HARD_MODEL PARTIAL_MODEL
 #                       PARTIAL_SHARP_UPRIGHTS_MODEL HALF_SIDE_MODEL TWO_LAYERS_MODEL SLAB_CUBE_MODEL
 #                       NOT_CUBES_MODEL TALL_L_MODEL BLOCK_MODEL OVERHANG_HIGH_MODEL OVERHANG_LOW_MODEL
-#                       TWO_LAYERS_UPRIGHTS_MODEL
+#                       TWO_LAYERS_UPRIGHTS_MODEL L_ON_SLAB_MODEL
 # (UPRIGHTS_MODEL: the same L with only its uprights hard, its top's rim sharp; ALL_HARD_MODEL:
 # with every edge hard, the bottom's rim too; PARTIAL_MODEL and PARTIAL_SHARP_UPRIGHTS_MODEL: the
 # rims of the top and the bottom hard along some sides only, with some uprights hard or none;
@@ -13,7 +13,8 @@
 # TALL_L_MODEL and BLOCK_MODEL: objects of two layers alike, an L with its uprights hard and a
 # block of 2 x 2 x 2 cubes with its top's rim and one upright hard; OVERHANG_HIGH_MODEL and
 # OVERHANG_LOW_MODEL: a column with an arm along +z at x = 1, its bottom above the walker's head
-# and below it; TWO_LAYERS_UPRIGHTS_MODEL: the cube on an L with only its uprights hard.)
+# and below it; TWO_LAYERS_UPRIGHTS_MODEL: the cube on an L with only its uprights hard;
+# L_ON_SLAB_MODEL: an L of three cubes on a slab of 2 x 2, every edge hard.)
 set -eu
 program=$1
 probe=$2
@@ -32,6 +33,7 @@ block_model=${14}
 overhang_high_model=${15}
 overhang_low_model=${16}
 two_layers_uprights_model=${17}
+l_on_slab_model=${18}
 . "$(dirname "$0")/../shell_test_support.sh"
 
 # repeat N LINE: the event line N times.
@@ -179,13 +181,14 @@ done
 "$probe" corner4.png differ corner12.png || fail "did not walk into the L's inner corner"
 "$probe" corner12.png same corner20.png || fail "walked on out of the L's inner corner"
 # Objects of two layers of cubes, every edge hard: a cube on the corner of an L of three, a cube
-# on a slab of 2 x 2. Each is drawn (unlike the L and unlike each other), its uprights are rounded
-# layer by layer (every press of R up to the largest radius, 0.5, changes the picture; r takes it
-# back), the standing cube's top rim is rounded too (and the slab's bottom rim), it says that the
-# other hard edges along its layers' tops and bottoms stay sharp (16 of the cube on an L's, 8 of
-# the cube on a slab's), and walking
+# on a slab of 2 x 2, an L of three on a slab of 2 x 2. Each is drawn (unlike the L and unlike each
+# other), its uprights are rounded layer by layer (every press of R up to the largest radius, 0.5,
+# changes the picture; r takes it back), the standing cube's top rim is rounded too (and the
+# bottom rims of the L and the slab below, the top rim of the L on the slab), it says that the
+# other hard edges along its layers' tops and bottoms stay sharp (8 of the cube on an L's and of
+# the cube on a slab's, 4 of the L on a slab's: the slab's top rim and the L's foot), and walking
 # into it stops.
-for kind in two_layers slab_cube; do
+for kind in two_layers slab_cube l_on_slab; do
   eval "file=\$${kind}_model"
   {
     echo "snapshot ${kind}_sharp.png"
@@ -215,8 +218,8 @@ for kind in two_layers slab_cube; do
   GLASS_GLUT_SNAPSHOT=last_$kind.png GLASS_GLUT_EVENTS=${kind}_events.txt "$program" "$file" \
     >out.txt 2>err.txt || status=$?
   [ "$status" -eq 0 ] || fail "the program exited with $status on $file: $(cat err.txt)"
-  sharp=16
-  [ "$kind" = two_layers ] || sharp=8
+  sharp=8
+  [ "$kind" != l_on_slab ] || sharp=4
   grep -q "^homework45: .*$kind.wings: $sharp hard edges stay sharp (of an object of more than one layer" err.txt ||
     fail "no message about the edges $file leaves sharp: $(cat err.txt)"
   "$probe" ${kind}_sharp.png size 400 300 differ sharp.png || fail "$file looks like the L"
@@ -232,6 +235,7 @@ for kind in two_layers slab_cube; do
 done
 "$probe" two_layers_sharp.png differ slab_cube_sharp.png || fail "the two objects of two layers look the same"
 "$probe" two_layers_round6.png differ slab_cube_round6.png || fail "the two rounded objects look the same"
+"$probe" l_on_slab_sharp.png differ slab_cube_sharp.png || fail "the L on a slab looks like the cube on a slab"
 # The standing cube's top rim is rounded: the cube on an L with only its uprights hard looks the
 # same sharp and different rounded, and reports nothing left sharp.
 {

@@ -8,9 +8,19 @@
  * than 30 degrees apart (a seam, not a sharp crease), they must agree to 1e-3 radians, and their
  * texture coordinates must agree but for whole repeats of the checkerboard (0.25 in s, 1 in t),
  * except on the flat tops and bottoms (normal straight up or down), whose texture is (x, z).
+ * Where two rational patches share a side (their side curves have the same end points), the
+ * curves must be the same: their control points (divided by their weights) and their weights
+ * (relative to the first) agree, so the patches meet along the whole side, not only at the
+ * vertices drawn. glMap2f takes single-precision control points: the rims' pieces, built by one
+ * function (control_point), share theirs bit for bit (to 1e-12), while an upright's quarter
+ * cylinder rounds its weighted points in single precision and meets them to that rounding (one
+ * or two units in the last place, a few 1e-7), and at the largest radius of a grid whose spacing
+ * is not a power of two, the strips' columns a + R and b - R, rounded apart, leave 1e-6. So the
+ * count of sides not exact to 1e-12 and the largest gap are printed, and a gap beyond 1e-5 (the
+ * twin test's tolerance) fails.
  *   homework45_layered_closed OBJECT.wings...
- * Prints a line per object and radius, and exits 1 when an edge has no twin or a seam is not
- * smooth. */
+ * Prints a line per object and radius, and exits 1 when an edge has no twin, a seam is not
+ * smooth or two patches that share a side are apart along it. */
 #include <GL/glut.h>
 #include <math.h>
 #include <stdio.h>
@@ -54,6 +64,85 @@ static void add_drawn(const double point[3], const double normal[3], const doubl
   ++drawn_count;
 }
 static int grid_steps_u, grid_steps_v;
+
+/* A side of a drawn patch: its control points divided by their weights, and the weights
+ * relative to the first. */
+struct side_curve {
+  int order;
+  double point[3][3], weight[3];
+};
+static struct side_curve *sides;
+static size_t side_count, side_capacity;
+
+static void add_side(const GLfloat (*control)[4], int order, int stride)
+{
+  if (side_count == side_capacity) {
+    side_capacity = side_capacity ? 2 * side_capacity : 1024;
+    sides = realloc(sides, side_capacity * sizeof *sides);
+    if (!sides) exit(2);
+  }
+  struct side_curve *side = &sides[side_count++];
+  side->order = order;
+  for (int k = 0; k < order; ++k) {
+    const GLfloat *h = control[k * stride];
+    for (int c = 0; c < 3; ++c) side->point[k][c] = (double)h[c] / h[3];
+    side->weight[k] = (double)h[3] / control[0][3];
+  }
+}
+
+/* The four sides of the patch in cylinder_net: its first and last rows, its first and last
+ * columns. */
+static void add_patch_sides(void)
+{
+  const GLfloat (*first)[4] = (const GLfloat (*)[4])cylinder_net[0];
+  add_side(first, 3, 1);
+  add_side((const GLfloat (*)[4])cylinder_net[net_rows - 1], 3, 1);
+  add_side(first, net_rows, 3);
+  add_side(first + 2, net_rows, 3);
+}
+
+static double distance(const double a[3], const double b[3])
+{
+  return fmax(fabs(a[0] - b[0]), fmax(fabs(a[1] - b[1]), fabs(a[2] - b[2])));
+}
+
+/* How far apart the control points and relative weights of sides a and b are, b walked forwards
+ * or backwards; a negative value when they do not share their end points (to 1e-5). */
+static double side_mismatch(const struct side_curve *a, const struct side_curve *b)
+{
+  if (a->order != b->order) return -1;
+  const int last = a->order - 1;
+  for (int backwards = 0; backwards < 2; ++backwards) {
+    const int first_b = backwards ? last : 0, last_b = backwards ? 0 : last;
+    if (distance(a->point[0], b->point[first_b]) > 1e-5 || distance(a->point[last], b->point[last_b]) > 1e-5)
+      continue;
+    double mismatch = 0;
+    for (int k = 0; k <= last; ++k) {
+      const int kb = backwards ? last - k : k;
+      mismatch = fmax(mismatch, distance(a->point[k], b->point[kb]));
+      mismatch = fmax(mismatch, fabs(a->weight[k] / a->weight[0] * b->weight[first_b] - b->weight[kb]));
+    }
+    return mismatch;
+  }
+  return -1;
+}
+
+/* How many pairs of patches share a side whose curves differ by more than 1e-12 (sides that
+ * shrink to a point, such as a sphere's pole, left out); the largest difference goes into *gap. */
+static size_t inexact_seams(double *gap)
+{
+  size_t inexact = 0;
+  *gap = 0;
+  for (size_t i = 0; i < side_count; ++i) {
+    if (distance(sides[i].point[0], sides[i].point[sides[i].order - 1]) < 1e-5) continue;
+    for (size_t j = i + 1; j < side_count; ++j) {
+      const double mismatch = side_mismatch(&sides[i], &sides[j]);
+      inexact += mismatch > 1e-12;
+      *gap = fmax(*gap, mismatch);
+    }
+  }
+  return inexact;
+}
 
 static void add_triangle(const double *a, const double *b, const double *c)
 {
@@ -209,6 +298,7 @@ static void record_grid_vertex(double u, double v)
 void glEvalMesh2(GLenum mode, GLint i1, GLint i2, GLint j1, GLint j2)
 {
   (void)mode;
+  add_patch_sides();
   for (int j = j1; j <= j2; ++j)
     for (int i = i1; i <= i2; ++i) record_grid_vertex((double)i / grid_steps_u, (double)j / grid_steps_v);
   for (int j = j1; j < j2; ++j)
@@ -339,15 +429,19 @@ int main(int argc, char **argv)
       const float radius = (float)(layers.max_radius * step / 8);
       triangle_count = 0;
       drawn_count = 0;
+      side_count = 0;
       draw_layered_block(&layers, radius);
-      const size_t lonely = edges_without_twin(), rough = rough_seams();
-      printf("%s at radius %g: %zu triangles, %zu edges without a twin, %zu rough seams\n", argv[a], radius,
-             triangle_count, lonely, rough);
-      failed |= lonely > 0 || rough > 0;
+      double gap;
+      const size_t lonely = edges_without_twin(), rough = rough_seams(), inexact = inexact_seams(&gap);
+      printf("%s at radius %g: %zu triangles, %zu edges without a twin, %zu rough seams, %zu shared patch sides "
+             "not exact to 1e-12 (largest gap %.3g)\n", argv[a], radius, triangle_count, lonely, rough, inexact, gap);
+      if (gap > 1e-5) fprintf(stderr, "homework45_layered_closed: %s: patches %g apart\n", argv[a], gap);
+      failed |= lonely > 0 || rough > 0 || gap > 1e-5;
     }
     cube_layers_free(&layers);
   }
   free(triangles);
   free(drawn);
+  free(sides);
   return failed;
 }
