@@ -10,7 +10,7 @@
 %% tests/homework45/l_block_uprights.wings, tests/homework45/l_block_all_hard.wings,
 %% tests/homework45/l_block_partial*.wings, tests/homework45/overhang_*.wings,
 %% tests/homework45/two_layers_uprights.wings, tests/homework45/l_on_slab.wings,
-%% tests/homework45/slab_on_l.wings,
+%% tests/homework45/slab_on_l.wings, tests/homework45/u_on_slab.wings, tests/homework45/ring_on_slab.wings,
 %% tests/homework45/refused_*.wings (objects the homework program refuses) and tests/unit/data/wings/*.wings and *.term.
 
 main([Root]) ->
@@ -143,6 +143,18 @@ main([Root]) ->
                                    {0.0, 0.0, 0.0}),
     write(filename:join(Root, "tests/homework45/slab_on_l.wings"),
           [object("Steps", SlabOnLVs, SlabOnLFs, All, top_paint, true)], Materials, []),
+    %% A U of five cubes on a slab of 3 x 2 (two concave corners on its top), and a ring of eight
+    %% on a slab of 3 x 3 (its top outlined by two loops, round the hole and round the ring: its
+    %% rims stay sharp).
+    {UOnSlabVs, UOnSlabFs} = cubes([{X, 0, Z} || X <- [0, 1, 2], Z <- [0, 1]] ++
+                                       [{0, 1, 0}, {1, 1, 0}, {2, 1, 0}, {0, 1, 1}, {2, 1, 1}], 1.0, {0.0, 0.0, 0.0}),
+    write(filename:join(Root, "tests/homework45/u_on_slab.wings"),
+          [object("Steps", UOnSlabVs, UOnSlabFs, All, top_paint, true)], Materials, []),
+    {RingOnSlabVs, RingOnSlabFs} = cubes([{X, 0, Z} || X <- [0, 1, 2], Z <- [0, 1, 2]] ++
+                                             [{X, 1, Z} || X <- [0, 1, 2], Z <- [0, 1, 2], {X, Z} =/= {1, 1}], 1.0,
+                                         {0.0, 0.0, 0.0}),
+    write(filename:join(Root, "tests/homework45/ring_on_slab.wings"),
+          [object("Steps", RingOnSlabVs, RingOnSlabFs, All, top_paint, true)], Materials, []),
     %% A cube standing on a slab of 2 x 2 cubes at one corner, every edge marked: at the foot of
     %% its inner upright the upright meets the two fillets along its foot (a standing torus
     %% piece); at the two feet beside the slab's sides a fillet ends between two rounded convex
