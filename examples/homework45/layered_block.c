@@ -115,9 +115,9 @@ static void walls(const struct cube_layers *layers, int layer, float radius)
 /* The arc of the rounded upright at grid point (i, j) of `layer`. Of the four cells around it one
  * differs from the others (the only one in the solid at a convex corner, the only one out of it
  * at a concave one), in direction (qx, qz) from the point; the walls run from the point along x
- * and along z on its sides. The arc goes from R along the
- * wall the walk arrives by to R along the wall it leaves by, the solid on the walk's left. Its
- * texture's s runs from *s0 over *s_length. Returns whether the corner is convex. */
+ * and along z on its sides. The arc goes from R along the wall the walk arrives by to R along the
+ * wall it leaves by, the solid on the walk's left. Its texture's s runs from *s0 over *s_length.
+ * Returns whether the corner is convex. */
 static int upright_arc(const struct cube_layers *layers, int layer, int i, int j, float radius, float from[2],
                        float corner[2], float to[2], float *s0, float *s_length)
 {
@@ -250,13 +250,13 @@ static void rim_corner(const struct cube_layers *layers, int layer, int i, int j
   if (!corner_rim_rounded(layers, layer, i, j, radius, rim)) return;
   const float axis[2] = {from[0] + to[0] - corner[0], from[1] + to[1] - corner[1]};
   const double arc[3][2] = {{from[0], from[1]}, {corner[0], corner[1]}, {to[0], to[1]}};
-  const double centre_axis[2] = {axis[0], axis[1]};
+  const double axis_xz[2] = {axis[0], axis[1]};
   const float out = rim == CAPPED_TOP ? 1.0f : -1.0f;
   const float top = (float)layers->height[rim == CAPPED_TOP ? layer + 1 : layer], below = top - out * radius;
   const float t0 = texture_t(layers, below), t2 = t0 + out * (float)(PI / 2.0) * radius;
   float net[3][3][4], tex[3][3][2];
   double centre[3][3][3];
-  rim_corner_net(arc, centre_axis, convex, below, top, s0, s_length, t0, t2, net, tex, centre);
+  rim_corner_net(arc, axis_xz, convex, below, top, s0, s_length, t0, t2, net, tex, centre);
   draw_rim_net((const float (*)[3][4])net, (const float (*)[3][2])tex, (const double (*)[3][3])centre, 3, ARC_STEPS);
 }
 
@@ -328,6 +328,15 @@ static int torus_corner(const struct cube_layers *layers, int layer, int i, int 
          corner_rim_rounded(layers, layer, i, j, radius, rim);
 }
 
+/* Where a fan of torus_corner_flat starts: the end `end` of the torus's inner rim is R from the
+ * concave grid point `corner` along both axes, towards the empty cell (the side of the fillet's
+ * axis) along one; the fan starts on the squares' outer side beside it, level with the grid
+ * point along that axis. */
+static void fan_apex(const float end[2], const float corner[2], const float axis[2], float apex[2])
+{
+  for (int k = 0; k < 2; ++k) apex[k] = (end[k] > corner[k]) == (axis[k] > corner[k]) ? corner[k] : end[k];
+}
+
 /* The flat face at height y round the torus piece at the concave grid point (i, j) of `layer`:
  * of the three R x R squares round the point in the solid, what lies outside the torus's inner
  * rim, the fillet's arc scaled by 2 from its axis (2 R from the axis, through the squares' far
@@ -346,12 +355,9 @@ static void torus_corner_flat(const struct cube_layers *layers, int layer, int i
     far_corner[k] = axis[k] + 2 * (corner[k] - axis[k]);
     far_to[k] = axis[k] + 2 * (to[k] - axis[k]);
     far_square[k] = corner[k] - (axis[k] - corner[k]);
-    /* Each end of the rim is R from the point along both axes, towards the empty cell along one:
-     * the fan's apex is the point on the squares' outer side, level with the grid point there. */
-    const int towards_empty = (far_from[k] - corner[k] > 0) == (axis[k] - corner[k] > 0);
-    apex_from[k] = towards_empty ? corner[k] : far_from[k];
-    apex_to[k] = (far_to[k] - corner[k] > 0) == (axis[k] - corner[k] > 0) ? corner[k] : far_to[k];
   }
+  fan_apex(far_from, corner, axis, apex_from);
+  fan_apex(far_to, corner, axis, apex_to);
   for (int half = 0; half < 2; ++half) {
     const float *apex = half ? apex_to : apex_from;
     glBegin(GL_TRIANGLE_FAN);
