@@ -197,19 +197,19 @@ static int in_piece(const struct cube_layers *layers, const int *piece, int star
 }
 
 /* Whether the piece numbered `start` of `layer`'s footprint, whose cells lie from (i0, j0) to
- * (i1, j1), is outlined by one loop with a rounded upright at every corner. A loop of right
- * angles turns once, so its convex corners outnumber its concave ones by four; a hole's loop
- * turns the other way and takes four more concave ones. */
-static int one_rounded_loop(const struct cube_layers *layers, const int *piece, int start, int layer, int i0,
-                            int i1, int j0, int j1)
+ * (i1, j1), is outlined by one loop with a rounded upright at every concave corner (its rim turns
+ * round the fillet in a piece of torus; at a sharp convex corner the rim's strips meet in a
+ * mitre). A loop of right angles turns once, so its convex corners outnumber its concave ones by
+ * four; a hole's loop turns the other way and takes four more concave ones. */
+static int one_loop_round_fillets(const struct cube_layers *layers, const int *piece, int start, int layer, int i0,
+                                  int i1, int j0, int j1)
 {
   int convex = 0, concave = 0;
   for (int gj = j0; gj <= j1 + 1; ++gj)
     for (int gi = i0; gi <= i1 + 1; ++gi) {
       const int around = in_piece(layers, piece, start, gi - 1, gj - 1) + in_piece(layers, piece, start, gi, gj - 1) +
                          in_piece(layers, piece, start, gi - 1, gj) + in_piece(layers, piece, start, gi, gj);
-      if (around != 1 && around != 3) continue;
-      if (!cube_layers_rounded(layers, layer, gi, gj)) return 0;
+      if (around == 3 && !cube_layers_rounded(layers, layer, gi, gj)) return 0;
       convex += around == 1;
       concave += around == 3;
     }
@@ -218,8 +218,8 @@ static int one_rounded_loop(const struct cube_layers *layers, const int *piece, 
 
 /* Which cells have their top or bottom rim rounded (cube_layers.h): each piece of a layer's
  * footprint (its cells joined side to side) outlined by one loop (a rectangle, an L, ...) with
- * every corner's upright rounded, nothing above it (below it) and every edge along its top
- * (bottom) rim hard. */
+ * every concave corner's upright rounded, nothing above it (below it) and every edge along its
+ * top (bottom) rim hard. */
 static int cap_pieces(const struct wings_mesh *mesh, struct cube_layers *layers, const int *place)
 {
   const int cells_x = layers->x_count - 1, cells_z = layers->z_count - 1;
@@ -265,7 +265,7 @@ static int cap_pieces(const struct wings_mesh *mesh, struct cube_layers *layers,
           stack[top++] = nj * cells_x + ni;
         }
       }
-      const int loop = one_rounded_loop(layers, piece, start, k, i0, i1, j0, j1);
+      const int loop = one_loop_round_fillets(layers, piece, start, k, i0, i1, j0, j1);
       unsigned char rims = 0;
       for (int side = 0; side < 2; ++side) {
         /* side 0: the top rim, at level k + 1, with nothing above; side 1: the bottom's. Every

@@ -175,21 +175,39 @@ static void upright_cylinder(const struct cube_layers *layers, int layer, int i,
   quarter_cylinder(from, corner, to, y0, y1, s0, s_length, texture_t(layers, y0), texture_t(layers, y1));
 }
 
+/* How a rim's strip ends at a grid point along its wall: at a rounded upright, where the corner's
+ * piece of sphere or torus takes over R before the point; at a sharp convex corner, in the
+ * corner's diagonal plane, where the next wall's strip ends too (a mitre, as on the one-layer
+ * object); or running on along the wall. */
+enum strip_end { ENDS_AT_CORNER_PIECE, ENDS_IN_MITRE, RUNS_ON };
+
+static enum strip_end strip_end_at(const struct cube_layers *layers, int layer, int i, int j, float radius)
+{
+  if (upright_rounded(layers, layer, i, j, radius)) return ENDS_AT_CORNER_PIECE;
+  int around = 0;
+  for (int di = -1; di <= 0; ++di)
+    for (int dj = -1; dj <= 0; ++dj) around += cube_layers_filled(layers, layer, i + di, j + dj);
+  return around == 1 ? ENDS_IN_MITRE : RUNS_ON;
+}
+
 /* The rounded top (rim CAPPED_TOP) or bottom rim of `layer` along its wall on grid line `fixed`
  * (x = fixed for along_x 0, else z = fixed) from a to b, facing (normal_x, normal_z): a quarter
  * cylinder along the wall, its axis R in from the wall and R below the top (above the bottom),
- * cut at the wall's columns (a, a + R, b - R, b, the
- * ends at a rounded upright left out, where the sphere's eighth takes over), so that it meets the
- * wall's top (bottom) row and the flat face's bands at their vertices. The texture's s is the
- * wall's; t runs on from the wall's top (bottom) by the arc's length. */
+ * cut at the wall's columns (a, a + R, b - R, b, the ends at a rounded upright left out, where the
+ * sphere's eighth takes over), so that it meets the wall's top (bottom) row and the flat face's
+ * bands at their vertices. At a mitred end the end's profile keeps its points on the wall and
+ * the rim's edge, and its inner end moves R along the wall, onto the corner's diagonal plane, so
+ * that the strip ends in the ellipse the next wall's strip ends in; its normals stay the
+ * cylinder's (each control point's centre is its own projection onto the strip's axis). The
+ * texture's s is the wall's; t runs on from the wall's top (bottom) by the arc's length. */
 static void rim_strip(const struct cube_layers *layers, int layer, int along_x, float fixed, float a, float b,
-                      int rounded_a, int rounded_b, int normal_x, int normal_z, float radius, int rim)
+                      enum strip_end end_a, enum strip_end end_b, int normal_x, int normal_z, float radius, int rim)
 {
   const double w = sqrt(2.0) / 2.0;
   float columns[4];
   int count = 0;
   const float candidates[4] = {a, a + radius, b - radius, b};
-  const int wanted[4] = {!rounded_a, 1, 1, !rounded_b};
+  const int wanted[4] = {end_a != ENDS_AT_CORNER_PIECE, 1, 1, end_b != ENDS_AT_CORNER_PIECE};
   for (int c = 0; c < 4; ++c)
     if (wanted[c] && (count == 0 || candidates[c] > columns[count - 1])) columns[count++] = candidates[c];
   const float out = rim == CAPPED_TOP ? 1.0f : -1.0f;
@@ -201,16 +219,21 @@ static void rim_strip(const struct cube_layers *layers, int layer, int along_x, 
     double centre[2][3][3];
     for (int v = 0; v < 2; ++v) {
       const float x = along_x ? columns[c + v] : fixed, z = along_x ? fixed : columns[c + v];
+      const float mitre = c + v == 0 && end_a == ENDS_IN_MITRE            ? radius
+                          : c + v == count - 1 && end_b == ENDS_IN_MITRE ? -radius
+                                                                          : 0.0f;
+      const float inner_x = x + (float)in_x * radius + (along_x ? mitre : 0.0f);
+      const float inner_z = z + (float)in_z * radius + (along_x ? 0.0f : mitre);
       control_point(net[v][0], x, below, z, 1.0);
       control_point(net[v][1], x, top, z, w);
-      control_point(net[v][2], x + (float)in_x * radius, top, z + (float)in_z * radius, 1.0);
+      control_point(net[v][2], inner_x, top, inner_z, 1.0);
       const float s = wall_s(x, z, normal_x, normal_z), ts[3] = {t0, (t0 + t2) / 2, t2};
       for (int u = 0; u < 3; ++u) {
         tex[v][u][0] = s;
         tex[v][u][1] = ts[u];
-        centre[v][u][0] = x + (float)in_x * radius;
+        centre[v][u][0] = along_x && u == 2 ? inner_x : x + (float)in_x * radius;
         centre[v][u][1] = below;
-        centre[v][u][2] = z + (float)in_z * radius;
+        centre[v][u][2] = !along_x && u == 2 ? inner_z : z + (float)in_z * radius;
       }
     }
     draw_rim_net((const float (*)[3][4])net, (const float (*)[3][2])tex, (const double (*)[3][3])centre, 2, 1);
@@ -226,7 +249,7 @@ static void rim_strips(const struct cube_layers *layers, int layer, float radius
       const int before = cube_layers_filled(layers, layer, i - 1, j), after = cube_layers_filled(layers, layer, i, j);
       if (before != after && rim_rounded(layers, layer, before ? i - 1 : i, j, radius, rim))
         rim_strip(layers, layer, 0, (float)layers->x[i], (float)layers->z[j], (float)layers->z[j + 1],
-                  upright_rounded(layers, layer, i, j, radius), upright_rounded(layers, layer, i, j + 1, radius),
+                  strip_end_at(layers, layer, i, j, radius), strip_end_at(layers, layer, i, j + 1, radius),
                   before ? 1 : -1, 0, radius, rim);
     }
   for (int j = 0; j < layers->z_count; ++j)
@@ -234,7 +257,7 @@ static void rim_strips(const struct cube_layers *layers, int layer, float radius
       const int before = cube_layers_filled(layers, layer, i, j - 1), after = cube_layers_filled(layers, layer, i, j);
       if (before != after && rim_rounded(layers, layer, i, before ? j - 1 : j, radius, rim))
         rim_strip(layers, layer, 1, (float)layers->z[j], (float)layers->x[i], (float)layers->x[i + 1],
-                  upright_rounded(layers, layer, i, j, radius), upright_rounded(layers, layer, i + 1, j, radius), 0,
+                  strip_end_at(layers, layer, i, j, radius), strip_end_at(layers, layer, i + 1, j, radius), 0,
                   before ? 1 : -1, radius, rim);
     }
 }

@@ -10,7 +10,7 @@
 %% tests/homework45/l_block_uprights.wings, tests/homework45/l_block_all_hard.wings,
 %% tests/homework45/l_block_partial*.wings, tests/homework45/overhang_*.wings,
 %% tests/homework45/two_layers_uprights.wings, tests/homework45/l_on_slab.wings,
-%% tests/homework45/slab_on_l.wings, tests/homework45/u_on_slab.wings, tests/homework45/ring_on_slab.wings,
+%% tests/homework45/slab_on_l.wings, tests/homework45/l_on_slab_sharp_corners.wings, tests/homework45/u_on_slab.wings, tests/homework45/ring_on_slab.wings,
 %% tests/homework45/refused_*.wings (objects the homework program refuses) and tests/unit/data/wings/*.wings and *.term.
 
 main([Root]) ->
@@ -143,6 +143,13 @@ main([Root]) ->
                                    {0.0, 0.0, 0.0}),
     write(filename:join(Root, "tests/homework45/slab_on_l.wings"),
           [object("Steps", SlabOnLVs, SlabOnLFs, All, top_paint, true)], Materials, []),
+    %% The L on the slab with the L's convex uprights sharp (its top rim meets in mitres there) and
+    %% its inner upright hard.
+    LSharpCorners = fun({AX, AY, AZ} = A, {_, BY, _} = B) ->
+                            not (upright(A, B) andalso min(AY, BY) >= 1.0 andalso {AX, AZ} =/= {1.0, 1.0})
+                    end,
+    write(filename:join(Root, "tests/homework45/l_on_slab_sharp_corners.wings"),
+          [object("Steps", LOnSlabVs, LOnSlabFs, LSharpCorners, top_paint, true)], Materials, []),
     %% A U of five cubes on a slab of 3 x 2 (two concave corners on its top), and a ring of eight
     %% on a slab of 3 x 3 (its top outlined by two loops, round the hole and round the ring: its
     %% rims stay sharp).

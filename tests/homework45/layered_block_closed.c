@@ -7,7 +7,8 @@
  * and texture coordinates are recorded too: where two vertices at one point have normals less
  * than 30 degrees apart (a seam, not a sharp crease), they must agree to 1e-3 radians, and their
  * texture coordinates must agree but for whole repeats of the checkerboard (0.25 in s, 1 in t),
- * except on the flat tops and bottoms (normal straight up or down), whose texture is (x, z).
+ * except on the flat tops and bottoms (normal straight up or down), whose texture is (x, z), and
+ * along a mitre's crease (two rims' strips ending in a sharp corner's diagonal plane).
  * Where two rational patches share a side (their side curves have the same end points), the
  * curves must be the same: their control points (divided by their weights) and their weights
  * (relative to the first) agree, so the patches meet along the whole side, not only at the
@@ -325,10 +326,37 @@ static void round_point(const double p[3], long long out[3])
   for (int k = 0; k < 3; ++k) out[k] = llround(p[k] * 1e5);
 }
 
+static int by_x(const void *a, const void *b)
+{
+  const double x = (*(const double *const *)a)[0], y = (*(const double *const *)b)[0];
+  return (x > y) - (x < y);
+}
+
+/* Moves every triangle corner within 1e-6 of an earlier one (in order of x) onto it, so that
+ * copies of one point a rounding error apart round alike even where they straddle a multiple of
+ * 1e-5 (the objects' points lie on dyadic fractions such as k / 64, some exactly halfway). */
+static void merge_close_corners(void)
+{
+  const size_t count = 3 * triangle_count;
+  double **corners = malloc(count * sizeof *corners + 1);
+  if (!corners) exit(2);
+  for (size_t t = 0; t < triangle_count; ++t)
+    for (int k = 0; k < 3; ++k) corners[3 * t + k] = triangles[t].corner[k];
+  qsort(corners, count, sizeof *corners, by_x);
+  for (size_t i = 1; i < count; ++i)
+    for (size_t j = i; j-- > 0 && corners[i][0] - corners[j][0] < 1e-6;)
+      if (fabs(corners[i][1] - corners[j][1]) < 1e-6 && fabs(corners[i][2] - corners[j][2]) < 1e-6) {
+        memcpy(corners[i], corners[j], sizeof(double[3]));
+        break;
+      }
+  free(corners);
+}
+
 /* How many of the recorded triangles' edges have no twin (degenerate triangles, such as a fan's
  * at a cylinder's pole, left out). */
 static size_t edges_without_twin(void)
 {
+  merge_close_corners();
   struct edge_key *edges = malloc(3 * triangle_count * sizeof *edges + 1);
   if (!edges) exit(2);
   size_t count = 0;
@@ -371,6 +399,17 @@ static int by_point(const void *a, const void *b)
   return 0;
 }
 
+/* Whether unit normals a and b meet in a mitre's crease, where two rims' strips end in a sharp
+ * corner's diagonal plane (as on the one-layer object, the crease of the exact rounded solid):
+ * the same height above the horizontal (the same point of the rim's quarter circle), turned to
+ * two walls, one facing along x and one along z. */
+static int mitre_crease(const double a[3], const double b[3])
+{
+  const double e = 1e-6;
+  return fabs(a[1] - b[1]) < e && fabs(a[1]) < 1 - e &&
+         ((fabs(a[2]) < e && fabs(b[0]) < e) || (fabs(a[0]) < e && fabs(b[2]) < e));
+}
+
 /* How far x is from a whole multiple of `period`. */
 static double off_period(double x, double period) { return fabs(x - period * floor(x / period + 0.5)); }
 
@@ -396,7 +435,7 @@ static size_t rough_seams(void)
         if (la < 1e-12 || lb < 1e-12) continue;
         for (int k = 0; k < 3; ++k) na[k] = drawn[a].normal[k] / la, nb[k] = drawn[b].normal[k] / lb;
         const double angle = acos(fmin(1.0, fmax(-1.0, na[0] * nb[0] + na[1] * nb[1] + na[2] * nb[2])));
-        if (angle > 30 * 3.14159265358979323846 / 180) continue;
+        if (angle > 30 * 3.14159265358979323846 / 180 || mitre_crease(na, nb)) continue;
         int bad = angle > 1e-3;
         if (fabs(na[1]) < 0.999 && fabs(nb[1]) < 0.999)
           bad |= off_period(drawn[a].texture[0] - drawn[b].texture[0], 0.25) > 1e-4 ||
