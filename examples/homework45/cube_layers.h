@@ -26,10 +26,11 @@ struct cube_layers {
                              is a corner of the layer's footprint and marked hard there */
   unsigned char *capped;  /* [layer][j][i]: CAPPED_TOP when cell (i, j) lies in a piece of the
                              layer's footprint (its cells joined side to side) outlined by one
-                             loop, with nothing above, its corners' uprights rounded and the edges
-                             round its top all hard: that rim is rounded too, meeting the uprights
-                             in eighths of a sphere (convex corners) and quarters of a torus
-                             (concave ones); CAPPED_BOTTOM the same below (nothing under it, its
+                             loop, with nothing above, its concave corners' uprights rounded and
+                             the edges round its top all hard: that rim is rounded too, meeting
+                             the uprights in eighths of a sphere (rounded convex corners) and
+                             quarters of a torus (concave ones), and itself in mitres (sharp
+                             convex corners); CAPPED_BOTTOM the same below (nothing under it, its
                              bottom rim hard) */
   double max_radius;      /* half the closest spacing of the grid lines: the corners' quarter
                              circles keep apart */

@@ -903,8 +903,8 @@ static void load_object(int argc, char **argv)
   if (layered && layers.sharp_hard_edges > 0)
     fprintf(stderr, "homework45: %s: %d hard edges stay sharp (of an object of more than one layer of cubes "
             "this program rounds the upright edges, layer by layer, and the top (bottom) rim of a piece of a "
-            "layer (cubes joined side to side, outlined by one loop, such as a rectangle or an L, its uprights "
-            "rounded) with nothing above (below) it; it leaves the other edges along the layers' tops and "
+            "layer (cubes joined side to side, outlined by one loop, such as a rectangle or an L, its concave "
+            "corners' uprights rounded) with nothing above (below) it; it leaves the other edges along the layers' tops and "
             "bottoms sharp)\n", path, layers.sharp_hard_edges);
   if (layered) {
     block_min[0] = (float)layers.x[0], block_max[0] = (float)layers.x[layers.x_count - 1];

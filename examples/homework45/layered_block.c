@@ -13,10 +13,12 @@
  * the walls and the cylinders), so the surface has no T-junctions and no cracks. The arcs' squares
  * keep apart, as R is at most half the closest spacing of the grid lines.
  *
- * The top (bottom) rim of a capped rectangle (cube_layers.h) is rounded: its walls and uprights
- * stop R below the top (above the bottom), a rim strip runs along each wall cut at the wall's
- * columns, an eighth of a sphere joins two strips and the upright at each corner, and the flat
- * face loses its bands along the rim; so the pieces still share their vertices. */
+ * The top (bottom) rim of a capped piece (cube_layers.h) is rounded: its walls and uprights stop
+ * R below the top (above the bottom), a rim strip runs along each wall cut at the wall's columns,
+ * an eighth of a sphere joins two strips and the upright at each rounded convex corner, a quarter
+ * of a torus at each concave one, the strips meet in a mitre at a sharp convex corner, and the
+ * flat face loses its bands along the rim and, round each torus piece, what the torus covers; so
+ * the pieces still share their vertices. */
 #include "layered_block.h"
 
 #include "rational_patch.h"
@@ -52,7 +54,7 @@ static int upright_rounded(const struct cube_layers *layers, int layer, int i, i
 }
 
 /* Whether cell (i, j) of `layer` has its top (rim CAPPED_TOP) or bottom rim (CAPPED_BOTTOM)
- * rounded at this radius: a capped rectangle's (cube_layers.h), when the radius leaves some of the
+ * rounded at this radius: a capped piece's (cube_layers.h), when the radius leaves some of the
  * layer's height to its walls (R for each rounded rim less than the height). */
 static int rim_rounded(const struct cube_layers *layers, int layer, int i, int j, float radius, int rim)
 {
