@@ -87,13 +87,19 @@ class DrawPipeline {
                     const PipelineVertex& provoking, unsigned boundaryEdges);
 
  private:
+  // A triangle's three vertices where they are, so that a triangle drawn with its vertices'
+  // own colours is not copied (polygon_fill.cpp).
+  struct ClipCorners {
+    const raster::ClipVertex* v[3];
+  };
+  static ClipCorners cornersOf(const raster::ClipVertex (&v)[3]) { return {{&v[0], &v[1], &v[2]}}; }
   // polygon_fill.cpp
-  void fillTriangle(const raster::ClipVertex (&v)[3], bool frontFacing);
+  void fillTriangle(const ClipCorners& corners, bool frontFacing);
   // unfilled_polygon.cpp
   void drawTriangleEdges(const raster::ClipVertex (&v)[3], unsigned boundaryEdges);
   void drawTriangleVertices(const raster::ClipVertex (&v)[3], unsigned boundaryEdges);
   // The offset of a polygon for a polygon mode whose offset is enabled, else 0.
-  double polygonDepthBias(const raster::ClipVertex (&v)[3], bool offsetEnabled);
+  double polygonDepthBias(const ClipCorners& corners, bool offsetEnabled);
   // line_stage.cpp, point_stage.cpp: clip, viewport, rasterize.
   void rasterizeSegment(raster::ClipVertex a, raster::ClipVertex b, double depthBias);
   void rasterizeVertexPoint(const raster::ClipVertex& v, double depthBias);
@@ -108,7 +114,7 @@ class DrawPipeline {
   void rasterizeSmoothPoint(const raster::WindowVertex& v, float size, double depthBias);
   // Clips a triangle to a polygon in window coordinates; returns its vertex count (0: nothing
   // visible). polygon_fill.cpp
-  int clipToWindow(const raster::ClipVertex (&v)[3], raster::WindowVertex* out);
+  int clipToWindow(const ClipCorners& corners, raster::WindowVertex* out);
   // GLASS_STATS: whether clipping cut a primitive with these outcodes or rejected it whole;
   // `produced` is what the cut one became (primitive_statistics.cpp).
   void countClipping(unsigned outcodeUnion, unsigned outcodeIntersection, int produced);

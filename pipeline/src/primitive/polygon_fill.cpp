@@ -7,38 +7,40 @@
 
 namespace glass::gl {
 
-int DrawPipeline::clipToWindow(const raster::ClipVertex (&v)[3], raster::WindowVertex* out) {
-  const unsigned o0 = raster::outcode(v[0], clip_);
-  const unsigned o1 = raster::outcode(v[1], clip_);
-  const unsigned o2 = raster::outcode(v[2], clip_);
+int DrawPipeline::clipToWindow(const ClipCorners& corners, raster::WindowVertex* out) {
+  const raster::ClipVertex* const* v = corners.v;
+  const unsigned o0 = raster::outcode(*v[0], clip_);
+  const unsigned o1 = raster::outcode(*v[1], clip_);
+  const unsigned o2 = raster::outcode(*v[2], clip_);
   if (o0 & o1 & o2) return 0;  // all vertices outside one plane: trivially rejected
 
-  const raster::ClipVertex* polygon = v;
-  int count = 3;
   if (o0 | o1 | o2) {
-    count = raster::clipPolygon(v, 3, clip_, clipped_);
-    polygon = clipped_;
+    const raster::ClipVertex triangle[3] = {*v[0], *v[1], *v[2]};
+    const int count = raster::clipPolygon(triangle, 3, clip_, clipped_);
+    if (count < 3) return 0;
+    for (int i = 0; i < count; ++i)
+      if (!toWindow(viewport_, clipped_[i], clip_.varyingCount, out[i])) return 0;
+    return count;
   }
-  if (count < 3) return 0;
-  for (int i = 0; i < count; ++i)
-    if (!toWindow(viewport_, polygon[i], clip_.varyingCount, out[i])) return 0;
-  return count;
+  for (int i = 0; i < 3; ++i)
+    if (!toWindow(viewport_, *v[i], clip_.varyingCount, out[i])) return 0;
+  return 3;
 }
 
-double DrawPipeline::polygonDepthBias(const raster::ClipVertex (&v)[3], bool offsetEnabled) {
+double DrawPipeline::polygonDepthBias(const ClipCorners& corners, bool offsetEnabled) {
   if (!offsetEnabled) return 0.0;
   const RasterState& r = ctx_.raster;
   if (r.polygonOffsetFactor == 0.0f && r.polygonOffsetUnits == 0.0f) return 0.0;
-  const int count = clipToWindow(v, window_);
+  const int count = clipToWindow(corners, window_);
   return count >= 3 ? polygonOffset(r.polygonOffsetFactor, r.polygonOffsetUnits, window_, count)
                     : 0.0;
 }
 
-void DrawPipeline::fillTriangle(const raster::ClipVertex (&v)[3], bool frontFacing) {
-  const int count = clipToWindow(v, window_);
+void DrawPipeline::fillTriangle(const ClipCorners& corners, bool frontFacing) {
+  const int count = clipToWindow(corners, window_);
   if (statistics_) {
-    const unsigned o0 = raster::outcode(v[0], clip_), o1 = raster::outcode(v[1], clip_),
-                   o2 = raster::outcode(v[2], clip_);
+    const unsigned o0 = raster::outcode(*corners.v[0], clip_), o1 = raster::outcode(*corners.v[1], clip_),
+                   o2 = raster::outcode(*corners.v[2], clip_);
     countClipping(o0 | o1 | o2, o0 & o1 & o2, count - 2);
   }
   if (count < 3) return;

@@ -19,8 +19,13 @@ void DrawPipeline::drawTriangle(const PipelineVertex& a, const PipelineVertex& b
   }
   if (isCulled(r, front)) return;
 
-  raster::ClipVertex v[3] = {a.clip, b.clip, c.clip};
   const bool back = vertex_.twoSided && !front;
+  const GLenum mode = front ? r.polygonModeFront : r.polygonModeBack;
+  // Filled with the vertices' own colours (smooth shading, front colours): drawn from the
+  // vertices where they are.
+  if (mode == GL_FILL && !flat_ && !back) return fillTriangle({{&a.clip, &b.clip, &c.clip}}, front);
+
+  raster::ClipVertex v[3] = {a.clip, b.clip, c.clip};
   if (flat_) {
     for (raster::ClipVertex& vertex : v) useProvokingColors(provoking, back, vertex);
   } else if (back) {
@@ -29,7 +34,7 @@ void DrawPipeline::drawTriangle(const PipelineVertex& a, const PipelineVertex& b
     useBackColors(c, v[2]);
   }
 
-  switch (front ? r.polygonModeFront : r.polygonModeBack) {
+  switch (mode) {
     case GL_LINE:
       drawTriangleEdges(v, boundaryEdges);
       break;
@@ -37,7 +42,7 @@ void DrawPipeline::drawTriangle(const PipelineVertex& a, const PipelineVertex& b
       drawTriangleVertices(v, boundaryEdges);
       break;
     default:
-      fillTriangle(v, front);
+      fillTriangle(cornersOf(v), front);
       break;
   }
 }
