@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <memory>
@@ -165,15 +166,17 @@ void processBatch(const Context& ctx, bool colorPerVertex, const VertexStageSetu
     out.edgeFlag = in.edgeFlag[i];
     float* varyings = v.varyings;
     if (s.lightPerVertex) {
+      // Lit colours come clamped to [0, 1] (LitColorRows), as the reference path's clamp leaves
+      // them.
       for (int c = 0; c < 4; ++c) {
-        varyings[varying::kPrimaryColor + c] = clamp01(work.front.primary[c][i]);
-        varyings[varying::kSecondaryColor + c] = clamp01(work.front.secondary[c][i]);
+        varyings[varying::kPrimaryColor + c] = work.front.primary[c][i];
+        varyings[varying::kSecondaryColor + c] = work.front.secondary[c][i];
       }
       if (twoSided) {
         // Without GL_LIGHT_MODEL_TWO_SIDE twoSided is false, so work.back is always fresh here.
         for (int c = 0; c < 4; ++c) {
-          out.backColor[c] = clamp01(work.back.primary[c][i]);
-          out.backSecondary[c] = clamp01(work.back.secondary[c][i]);
+          out.backColor[c] = work.back.primary[c][i];
+          out.backSecondary[c] = work.back.secondary[c][i];
         }
       }
     } else {
@@ -206,13 +209,11 @@ void processBatch(const Context& ctx, bool colorPerVertex, const VertexStageSetu
         varyings[varying::kEyeNormal + c] = lighting.normal[c][i];
       }
     }
-    for (int p = 0; p < raster::kMaxUserClipPlanes; ++p) {
-      if (s.clipPlaneMask & (1u << p)) {
-        const float* plane = s.clipPlanes[p];
-        v.userClipDistance[p] = plane[0] * eye[0] + plane[1] * eye[1] + plane[2] * eye[2] + plane[3] * eye[3];
-      } else {
-        v.userClipDistance[p] = 0.0f;
-      }
+    std::fill(std::begin(v.userClipDistance), std::end(v.userClipDistance), 0.0f);
+    for (unsigned planes = s.clipPlaneMask; planes != 0; planes &= planes - 1) {
+      const int p = std::countr_zero(planes);
+      const float* plane = s.clipPlanes[p];
+      v.userClipDistance[p] = plane[0] * eye[0] + plane[1] * eye[1] + plane[2] * eye[2] + plane[3] * eye[3];
     }
   }
 }
