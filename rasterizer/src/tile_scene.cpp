@@ -126,21 +126,26 @@ void TileScene::addTriangle(const TriangleSetup& setup, FragmentSink& sink) {
     planeValues[3 * k + 2] = planes.dy[k];
   }
 
-  // Bin the triangle to the tiles its bounding box overlaps, except those no pixel centre of
-  // which is inside: the coverage walk would reject every block of such a tile anyway. This
-  // matters for large triangles, whose box holds many tiles the triangle misses.
+  const auto addToBin = [&](int tile) {
+    Bin& bin = binOf(tile);
+    bin.order.push_back(Kind::Triangle);
+    bin.triangles.push_back(r);
+    bin.planes.insert(bin.planes.end(), planeValues, planeValues + 3 * r.varyingCount);
+    prefetchAppend(bin.triangles, 1);
+    prefetchAppend(bin.planes, 3 * static_cast<size_t>(r.varyingCount));
+    bytes_ += 1 + sizeof(TriangleRecord) + 3 * sizeof(double) * static_cast<size_t>(r.varyingCount);
+  };
+  const int firstTileX = box.x0 / kTileSize, lastTileX = (box.x1 - 1) / kTileSize;
+  const int firstTileY = box.y0 / kTileSize, lastTileY = (box.y1 - 1) / kTileSize;
+  // A box within one tile goes to that tile's bin as it is (most small triangles).
+  if (firstTileX == lastTileX && firstTileY == lastTileY) return addToBin(firstTileY * tilesX_ + firstTileX);
+  // Otherwise to the tiles its box overlaps, except those no pixel centre of which is inside:
+  // the coverage walk would reject every block of such a tile anyway. This matters for large
+  // triangles, whose box holds many tiles the triangle misses.
   const PixelEdgeFunctions edges(setup);
-  for (int ty = box.y0 / kTileSize; ty <= (box.y1 - 1) / kTileSize; ++ty)
-    for (int tx = box.x0 / kTileSize; tx <= (box.x1 - 1) / kTileSize; ++tx) {
-      if (edges.rejects(tx * kTileSize, ty * kTileSize, kTileSize, kTileSize)) continue;
-      Bin& bin = binOf(ty * tilesX_ + tx);
-      bin.order.push_back(Kind::Triangle);
-      bin.triangles.push_back(r);
-      bin.planes.insert(bin.planes.end(), planeValues, planeValues + 3 * r.varyingCount);
-      prefetchAppend(bin.triangles, 1);
-      prefetchAppend(bin.planes, 3 * static_cast<size_t>(r.varyingCount));
-      bytes_ += 1 + sizeof(TriangleRecord) + 3 * sizeof(double) * static_cast<size_t>(r.varyingCount);
-    }
+  for (int ty = firstTileY; ty <= lastTileY; ++ty)
+    for (int tx = firstTileX; tx <= lastTileX; ++tx)
+      if (!edges.rejects(tx * kTileSize, ty * kTileSize, kTileSize, kTileSize)) addToBin(ty * tilesX_ + tx);
 }
 
 void TileScene::addLine(const WindowVertex& a, const WindowVertex& b, const LineSettings& settings,
