@@ -31,23 +31,36 @@ void draw_rational_patch(const float net[][3][4], const float tex[][3][2], const
   glDisable(GL_MAP2_TEXTURE_COORD_2);
 }
 
-void draw_rim_net(const float net[][3][4], const float tex[][3][2], const double centre[][3][3], int rows,
-                  int v_steps)
+/* Draws a patch whose normals, times w, are `side` (1 or -1) times w (P - centre), a
+ * polynomial net: side 1 for a rim (the solid inside its tube), -1 for a fillet (outside). */
+static void draw_net_about_centres(const float net[][3][4], const float tex[][3][2], const double centre[][3][3],
+                                   float side, int rows, int v_steps)
 {
   float normals[3][3][3];
   for (int v = 0; v < rows; ++v)
     for (int u = 0; u < 3; ++u)
-      for (int k = 0; k < 3; ++k) normals[v][u][k] = net[v][u][k] - net[v][u][3] * (float)centre[v][u][k];
+      for (int k = 0; k < 3; ++k) normals[v][u][k] = side * (net[v][u][k] - net[v][u][3] * (float)centre[v][u][k]);
   draw_rational_patch(net, tex, (const float (*)[3][3])normals, rows, v_steps);
 }
 
-void rim_corner_net(const double arc[3][2], const double axis[2], int convex, double below, double rim, float s0,
-                    float s_length, float t0, float t2, float net[3][3][4], float tex[3][3][2],
-                    double centre[3][3][3])
+void draw_rim_net(const float net[][3][4], const float tex[][3][2], const double centre[][3][3], int rows,
+                  int v_steps)
+{
+  draw_net_about_centres(net, tex, centre, 1.0f, rows, v_steps);
+}
+
+void draw_fillet_net(const float net[][3][4], const float tex[][3][2], const double centre[][3][3], int rows,
+                     int v_steps)
+{
+  draw_net_about_centres(net, tex, centre, -1.0f, rows, v_steps);
+}
+
+void turned_profile_net(const double arc[3][2], const double axis[2], const double scale[3], const double y[3],
+                        float s0, float s_length, float t0, float t2, float net[3][3][4], float tex[3][3][2],
+                        double centre[3][3][3])
 {
   const double w = sqrt(2.0) / 2.0;
   const double arc_weight[3] = {1.0, w, 1.0};
-  const double scale[3] = {1.0, 1.0, convex ? 0.0 : 2.0}, y[3] = {below, rim, rim};
   for (int v = 0; v < 3; ++v)
     for (int u = 0; u < 3; ++u) {
       control_point(net[v][u], axis[0] + scale[v] * (arc[u][0] - axis[0]), y[v],
@@ -55,7 +68,15 @@ void rim_corner_net(const double arc[3][2], const double axis[2], int convex, do
       tex[v][u][0] = s0 + s_length * (float)u / 2;
       tex[v][u][1] = t0 + (t2 - t0) * (float)v / 2;
       centre[v][u][0] = axis[0] + scale[2] * (arc[u][0] - axis[0]);
-      centre[v][u][1] = below;
+      centre[v][u][1] = y[0];
       centre[v][u][2] = axis[1] + scale[2] * (arc[u][1] - axis[1]);
     }
+}
+
+void rim_corner_net(const double arc[3][2], const double axis[2], int convex, double below, double rim, float s0,
+                    float s_length, float t0, float t2, float net[3][3][4], float tex[3][3][2],
+                    double centre[3][3][3])
+{
+  const double scale[3] = {1.0, 1.0, convex ? 0.0 : 2.0}, y[3] = {below, rim, rim};
+  turned_profile_net(arc, axis, scale, y, s0, s_length, t0, t2, net, tex, centre);
 }

@@ -23,6 +23,22 @@ void draw_rational_patch(const float net[][3][4], const float tex[][3][2], const
 void draw_rim_net(const float net[][3][4], const float tex[][3][2], const double centre[][3][3], int rows,
                   int v_steps);
 
+/* Draws a fillet's patch (a concave edge filled by a quarter cylinder or its corner piece, as
+ * draw_rim_net) with its normals towards the centres of its curvature, w(u, v) (centre - P(u, v)):
+ * the solid lies outside the fillet's tube. */
+void draw_fillet_net(const float net[][3][4], const float tex[][3][2], const double centre[][3][3], int rows,
+                     int v_steps);
+
+/* The net of a profile (rows: the quarter circle from the upright at y[0] through y[1] to y[2])
+ * turned about an upright axis (x, z) by a quarter arc arc[0..2] (x, z: from, corner, to): its rows
+ * are the arc's control points scaled from the axis by scale[v] at height y[v], weighted by the
+ * products of the two arcs' weights (exact for a surface of revolution). The texture's s runs from
+ * s0 over s_length round the arc, t from t0 on row 0 to t2 on row 2; centre[v][u] is the tube's
+ * centre circle, the arc scaled by scale[2] at height y[0], for draw_rim_net or draw_fillet_net. */
+void turned_profile_net(const double arc[3][2], const double axis[2], const double scale[3], const double y[3],
+                        float s0, float s_length, float t0, float t2, float net[3][3][4], float tex[3][3][2],
+                        double centre[3][3][3]);
+
 /* The net of the piece where a rim rounded on both sides of a rounded upright turns with it: the
  * rim's quarter circle turned about the upright's axis (x, z) by the upright's quarter arc
  * arc[0..2] (x, z: from, corner, to). Its rows are the arc's control points scaled from the axis
