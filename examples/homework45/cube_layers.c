@@ -216,6 +216,28 @@ static int one_loop_round_fillets(const struct cube_layers *layers, const int *p
   return convex - concave == 4;
 }
 
+/* Whether the piece numbered `start` of `layer`'s footprint, `count` cells from (i0, j0) to
+ * (i1, j1), gets fillets round its foot (FILLETED_FOOT in cube_layers.h): a rectangle whose cells
+ * and the ring of cells round them the layer below fills, the ring empty in this layer (so each
+ * fillet has a cell's top beside it, at least 2 R wide), every edge round its foot hard. */
+static int foot_filleted(const struct cube_layers *layers, const unsigned char *covered, const unsigned char *soft,
+                         int layer, int count, int i0, int i1, int j0, int j1)
+{
+  if (layer == 0 || count != (i1 - i0 + 1) * (j1 - j0 + 1)) return 0;
+  for (int j = j0 - 1; j <= j1 + 1; ++j)
+    for (int i = i0 - 1; i <= i1 + 1; ++i) {
+      const int ring = i < i0 || i > i1 || j < j0 || j > j1;
+      if (!cube_layers_filled(layers, layer - 1, i, j) || (ring && cube_layers_filled(layers, layer, i, j))) return 0;
+    }
+  for (int i = i0; i <= i1; ++i)
+    if (!rim_hard(covered, soft, layers, 1, layer, i, j0) || !rim_hard(covered, soft, layers, 1, layer, i, j1 + 1))
+      return 0;
+  for (int j = j0; j <= j1; ++j)
+    if (!rim_hard(covered, soft, layers, 0, layer, i0, j) || !rim_hard(covered, soft, layers, 0, layer, i1 + 1, j))
+      return 0;
+  return 1;
+}
+
 /* Which cells have their top or bottom rim rounded (cube_layers.h): each piece of a layer's
  * footprint (its cells joined side to side) outlined by one loop (a rectangle, an L, ...) with
  * every concave corner's upright rounded, nothing above it (below it) and every edge along its
@@ -281,6 +303,7 @@ static int cap_pieces(const struct wings_mesh *mesh, struct cube_layers *layers,
         }
         if (capped) rims |= side ? CAPPED_BOTTOM : CAPPED_TOP;
       }
+      if (foot_filleted(layers, covered, soft, k, count, i0, i1, j0, j1)) rims |= FILLETED_FOOT;
       for (int m = 0; rims && m < count; ++m)
         layers->capped[(size_t)k * cells + (size_t)members[m]] = rims;
     }
@@ -341,9 +364,10 @@ static int mark_hard_edges(const struct wings_mesh *mesh, struct cube_layers *la
     int along_x, from, to;
     if (horizontal_segment(a, b, &along_x, &from, &to)) {
       /* Along x or z at a height: on a capped rim when every cell it runs beside is capped on one
-       * side of it, as the top of the layer below or the bottom of the layer above. */
-      for (int side = 0; side < 2 && !rounded; ++side) {
-        const int k = side ? a[1] : a[1] - 1, bit = side ? CAPPED_BOTTOM : CAPPED_TOP;
+       * side of it, as the top of the layer below or the bottom of the layer above, or along a
+       * filleted foot of the layer above. */
+      for (int side = 0; side < 3 && !rounded; ++side) {
+        const int k = side ? a[1] : a[1] - 1, bit = side == 2 ? FILLETED_FOOT : side ? CAPPED_BOTTOM : CAPPED_TOP;
         rounded = 1;
         for (int c = from; rounded && c < to; ++c)
           rounded = along_x ? (cube_layers_capped(layers, k, c, a[2]) & bit) != (cube_layers_capped(layers, k, c, a[2] - 1) & bit)
@@ -441,6 +465,16 @@ int cube_layers_from_mesh(const struct wings_mesh *mesh, struct cube_layers *lay
       layers->max_radius = fmin(layers->max_radius, (layers->x[i + 1] - layers->x[i]) / 2);
     for (int j = 0; j + 1 < layers->z_count; ++j)
       layers->max_radius = fmin(layers->max_radius, (layers->z[j + 1] - layers->z[j]) / 2);
+    /* A filleted foot and a rounded top rim share the layer's height, its wall between them
+     * (none at the largest radius). */
+    const size_t footprint_cells = (size_t)(layers->x_count - 1) * (size_t)(layers->z_count - 1);
+    for (int k = 0; k < layers->layer_count; ++k)
+      for (size_t c = 0; c < footprint_cells; ++c) {
+        const int capped = layers->capped[(size_t)k * footprint_cells + c];
+        if (!(capped & FILLETED_FOOT)) continue;
+        const double room = (layers->height[k + 1] - layers->height[k]) / (1 + !!(capped & CAPPED_TOP));
+        if (room < layers->max_radius) layers->max_radius = room, layers->radius_limited_by_fillet = 1;
+      }
   }
   free(place);
   free(face_axis);

@@ -5,7 +5,8 @@
  * are rounded one layer at a time when they are marked hard in Wings3D; the edges along the
  * layers' tops and bottoms stay sharp, but for the top rim of a piece of a layer's footprint
  * outlined by one loop (a rectangle, an L) with nothing above it (a cube standing on a slab, an L
- * on a slab) and the bottom rim of one with nothing below it (the slab on the floor). */
+ * on a slab), the bottom rim of one with nothing below it (the slab on the floor) and the foot of
+ * a rectangle standing inside the top of the layer below (a cube in the middle of a slab). */
 #ifndef HOMEWORK45_CUBE_LAYERS_H
 #define HOMEWORK45_CUBE_LAYERS_H
 
@@ -13,7 +14,7 @@
 
 #include "wings_mesh.h"
 
-enum { CAPPED_TOP = 1, CAPPED_BOTTOM = 2 };
+enum { CAPPED_TOP = 1, CAPPED_BOTTOM = 2, FILLETED_FOOT = 4 };
 
 struct cube_layers {
   int x_count, z_count; /* grid lines: the distinct x and z of the vertices */
@@ -31,11 +32,18 @@ struct cube_layers {
                              the uprights in eighths of a sphere (rounded convex corners) and
                              quarters of a torus (concave ones), and itself in mitres (sharp
                              convex corners); CAPPED_BOTTOM the same below (nothing under it, its
-                             bottom rim hard) */
+                             bottom rim hard); FILLETED_FOOT when the piece is a rectangle
+                             standing wholly inside the top of the layer below (that layer
+                             fills the cells under it and the ring of cells round it, this one
+                             leaves the ring empty) with every edge round its foot hard: the
+                             concave edges along its foot are filled by a quarter cylinder of
+                             radius R (a fillet), turning round its corners */
   double max_radius;      /* half the closest spacing of the grid lines: the corners' quarter
-                             circles keep apart */
+                             circles keep apart; for a layer with a filleted foot also its height
+                             shared by the fillet and its top rim when that is rounded */
+  int radius_limited_by_fillet; /* whether that last bound is the smaller */
   int sharp_hard_edges;   /* hard edges left sharp: the creases along the layers' tops and
-                             bottoms but the capped pieces' rims */
+                             bottoms but the capped pieces' rims and filleted feet */
 };
 
 /* The cells of a mesh's object. Returns 0 and writes the reason into `error` when the object is

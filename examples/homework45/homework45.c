@@ -904,8 +904,12 @@ static void load_object(int argc, char **argv)
     fprintf(stderr, "homework45: %s: %d hard edges stay sharp (of an object of more than one layer of cubes "
             "this program rounds the upright edges, layer by layer, and the top (bottom) rim of a piece of a "
             "layer (cubes joined side to side, outlined by one loop, such as a rectangle or an L, its concave "
-            "corners' uprights rounded) with nothing above (below) it; it leaves the other edges along the layers' tops and "
+            "corners' uprights rounded) with nothing above (below) it, and fills with fillets the foot of a rectangle "
+            "of cubes standing inside the top of the layer below; it leaves the other edges along the layers' tops and "
             "bottoms sharp)\n", path, layers.sharp_hard_edges);
+  if (layered && layers.radius_limited_by_fillet)
+    fprintf(stderr, "homework45: %s: the radius goes up to %g only: the height of a layer whose foot is filleted, "
+            "shared with its top rim when that is rounded\n", path, layers.max_radius);
   if (layered) {
     block_min[0] = (float)layers.x[0], block_max[0] = (float)layers.x[layers.x_count - 1];
     block_min[1] = (float)layers.height[0], block_max[1] = (float)layers.height[layers.layer_count];

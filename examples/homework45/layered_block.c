@@ -18,7 +18,9 @@
  * an eighth of a sphere joins two strips and the upright at each rounded convex corner, a quarter
  * of a torus at each concave one, the strips meet in a mitre at a sharp convex corner, and the
  * flat face loses its bands along the rim and, round each torus piece, what the torus covers; so
- * the pieces still share their vertices. */
+ * the pieces still share their vertices. In the same way a filleted foot (cube_layers.h) has its
+ * walls and uprights start R above the foot, a fillet along each wall, a torus or horn piece at
+ * each corner, and the top below loses what they cover. */
 #include "layered_block.h"
 
 #include "rational_patch.h"
@@ -54,13 +56,40 @@ static int upright_rounded(const struct cube_layers *layers, int layer, int i, i
 }
 
 /* Whether cell (i, j) of `layer` has its top (rim CAPPED_TOP) or bottom rim (CAPPED_BOTTOM)
- * rounded at this radius: a capped piece's (cube_layers.h), when the radius leaves some of the
- * layer's height to its walls (R for each rounded rim less than the height). */
+ * rounded, or its foot filleted (FILLETED_FOOT), at this radius: a capped piece's (cube_layers.h),
+ * when the radius leaves some of the layer's height to its walls (R for each rounded rim less than
+ * the height). A piece with a filleted foot may give its fillet and its top rim the whole height
+ * (cube_layers.c bounds the radius by it; at the largest radius its walls are left out), compared
+ * in single precision, in which the radius is kept. */
 static int rim_rounded(const struct cube_layers *layers, int layer, int i, int j, float radius, int rim)
 {
   const int capped = cube_layers_capped(layers, layer, i, j);
-  const int rims = !!(capped & CAPPED_TOP) + !!(capped & CAPPED_BOTTOM);
-  return radius > 0 && radius * rims < layers->height[layer + 1] - layers->height[layer] && (capped & rim);
+  if (radius <= 0 || !(capped & rim)) return 0;
+  const int rims = !!(capped & CAPPED_TOP) + !!(capped & CAPPED_BOTTOM) + !!(capped & FILLETED_FOOT);
+  const double height = layers->height[layer + 1] - layers->height[layer];
+  const int room = capped & FILLETED_FOOT ? radius * (float)rims <= (float)height : radius * rims < height;
+  return room;
+}
+
+/* How far above the bottom of cell (i, j) of `layer` its walls start: R over a rounded bottom rim
+ * or a fillet. */
+static float foot_rise(const struct cube_layers *layers, int layer, int i, int j, float radius)
+{
+  return rim_rounded(layers, layer, i, j, radius, CAPPED_BOTTOM) || rim_rounded(layers, layer, i, j, radius, FILLETED_FOOT)
+             ? radius
+             : 0;
+}
+
+/* The columns of a wall from grid value a to b, and of the strips along it: a and b where `keep_a`
+ * (`keep_b`) and, for a radius, a + R and b - R. Returns how many. */
+static int wall_columns(float a, float b, int keep_a, int keep_b, float radius, float columns[4])
+{
+  int count = 0;
+  const float candidates[4] = {a, a + radius, b - radius, b};
+  const int wanted[4] = {keep_a, radius > 0, radius > 0, keep_b};
+  for (int c = 0; c < 4; ++c)
+    if (wanted[c] && (count == 0 || candidates[c] > columns[count - 1])) columns[count++] = candidates[c];
+  return count;
 }
 
 /* The wall of `layer` along grid line `fixed` (x = fixed for along_x 0, else z = fixed), from
@@ -70,13 +99,11 @@ static void wall(const struct cube_layers *layers, int layer, int along_x, float
                  int rounded_a, int rounded_b, int normal_x, int normal_z, float radius, float drop, float rise)
 {
   float columns[4];
-  int count = 0;
-  const float candidates[4] = {a, a + radius, b - radius, b};
-  const int wanted[4] = {!rounded_a, radius > 0, radius > 0, !rounded_b};
-  for (int c = 0; c < 4; ++c)
-    if (wanted[c] && (count == 0 || candidates[c] > columns[count - 1])) columns[count++] = candidates[c];
+  const int count = wall_columns(a, b, !rounded_a, !rounded_b, radius, columns);
   const double y0 = rise > 0 ? (double)((float)layers->height[layer] + rise) : layers->height[layer];
   const double y1 = drop > 0 ? (double)((float)layers->height[layer + 1] - drop) : layers->height[layer + 1];
+  /* A fillet and a top rim that share the whole height leave no wall. */
+  if (y1 <= y0) return;
   glNormal3f((float)normal_x, 0, (float)normal_z);
   for (int row = 0; row < ROWS; ++row) {
     glBegin(GL_QUAD_STRIP);
@@ -101,7 +128,7 @@ static void walls(const struct cube_layers *layers, int layer, float radius)
         wall(layers, layer, 0, (float)layers->x[i], (float)layers->z[j], (float)layers->z[j + 1],
              upright_rounded(layers, layer, i, j, radius), upright_rounded(layers, layer, i, j + 1, radius),
              before ? 1 : -1, 0, radius, rim_rounded(layers, layer, before ? i - 1 : i, j, radius, CAPPED_TOP) ? radius : 0,
-             rim_rounded(layers, layer, before ? i - 1 : i, j, radius, CAPPED_BOTTOM) ? radius : 0);
+             foot_rise(layers, layer, before ? i - 1 : i, j, radius));
     }
   for (int j = 0; j < layers->z_count; ++j)
     for (int i = 0; i + 1 < layers->x_count; ++i) {
@@ -110,8 +137,16 @@ static void walls(const struct cube_layers *layers, int layer, float radius)
         wall(layers, layer, 1, (float)layers->z[j], (float)layers->x[i], (float)layers->x[i + 1],
              upright_rounded(layers, layer, i, j, radius), upright_rounded(layers, layer, i + 1, j, radius), 0,
              before ? 1 : -1, radius, rim_rounded(layers, layer, i, before ? j - 1 : j, radius, CAPPED_TOP) ? radius : 0,
-             rim_rounded(layers, layer, i, before ? j - 1 : j, radius, CAPPED_BOTTOM) ? radius : 0);
+             foot_rise(layers, layer, i, before ? j - 1 : j, radius));
     }
+}
+
+/* The length over which the texture's s runs across a corner piece of length `arc` from s0 to
+ * reach s1 but for whole repeats of the checkerboard: arc stretched by less than a repeat. */
+static float s_across(float s0, float s1, float arc)
+{
+  const double short_of = (double)s1 - s0 - arc;
+  return arc + (float)(short_of - CHECKER_PERIOD * floor(short_of / CHECKER_PERIOD));
 }
 
 /* The arc of the rounded upright at grid point (i, j) of `layer`. Of the four cells around it one
@@ -148,9 +183,7 @@ static int upright_arc(const struct cube_layers *layers, int layer, int i, int j
    * (squares of 8 of its 64 texels) repeats every quarter, so it runs on across both seams. */
   *s0 = leaves_along_x ? wall_s(from[0], from[1], -qx * sign, 0) : wall_s(from[0], from[1], 0, -qz * sign);
   const float s1 = leaves_along_x ? wall_s(to[0], to[1], 0, -qz * sign) : wall_s(to[0], to[1], -qx * sign, 0);
-  const float arc = (float)(PI / 2.0) * radius;
-  const double short_of = (double)s1 - *s0 - arc;
-  *s_length = arc + (float)(short_of - CHECKER_PERIOD * floor(short_of / CHECKER_PERIOD));
+  *s_length = s_across(*s0, s1, (float)(PI / 2.0) * radius);
   return convex;
 }
 
@@ -172,8 +205,12 @@ static void upright_cylinder(const struct cube_layers *layers, int layer, int i,
   float from[2], corner[2], to[2], s0, s_length;
   upright_arc(layers, layer, i, j, radius, from, corner, to, &s0, &s_length);
   const float drop = corner_rim_rounded(layers, layer, i, j, radius, CAPPED_TOP) ? radius : 0;
-  const float rise = corner_rim_rounded(layers, layer, i, j, radius, CAPPED_BOTTOM) ? radius : 0;
+  const float rise = corner_rim_rounded(layers, layer, i, j, radius, CAPPED_BOTTOM) ||
+                             corner_rim_rounded(layers, layer, i, j, radius, FILLETED_FOOT)
+                         ? radius
+                         : 0;
   const float y0 = (float)layers->height[layer] + rise, y1 = (float)layers->height[layer + 1] - drop;
+  if (y1 <= y0) return;
   quarter_cylinder(from, corner, to, y0, y1, s0, s_length, texture_t(layers, y0), texture_t(layers, y1));
 }
 
@@ -207,11 +244,7 @@ static void rim_strip(const struct cube_layers *layers, int layer, int along_x, 
 {
   const double w = sqrt(2.0) / 2.0;
   float columns[4];
-  int count = 0;
-  const float candidates[4] = {a, a + radius, b - radius, b};
-  const int wanted[4] = {end_a != ENDS_AT_CORNER_PIECE, 1, 1, end_b != ENDS_AT_CORNER_PIECE};
-  for (int c = 0; c < 4; ++c)
-    if (wanted[c] && (count == 0 || candidates[c] > columns[count - 1])) columns[count++] = candidates[c];
+  const int count = wall_columns(a, b, end_a != ENDS_AT_CORNER_PIECE, end_b != ENDS_AT_CORNER_PIECE, radius, columns);
   const float out = rim == CAPPED_TOP ? 1.0f : -1.0f;
   const float top = (float)layers->height[rim == CAPPED_TOP ? layer + 1 : layer], below = top - out * radius;
   const float t0 = texture_t(layers, below), t2 = t0 + out * (float)(PI / 2.0) * radius;
@@ -242,25 +275,70 @@ static void rim_strip(const struct cube_layers *layers, int layer, int along_x, 
   }
 }
 
-/* The rounded top (rim CAPPED_TOP) or bottom rims of `layer`: along every wall of a cell whose
- * rim is rounded. */
+/* The fillet along the foot of `layer`'s wall on grid line `fixed` (x = fixed for along_x 0, else
+ * z = fixed) from a to b, facing (normal_x, normal_z), standing on the layer below: a quarter
+ * cylinder whose axis lies R out from the wall and R above the foot, from the wall R up to the
+ * top below R out, cut at the wall's columns (the ends at a rounded upright left out, where the
+ * corner's piece takes over) so that it meets the wall's bottom row and the bands of the top
+ * below at their vertices. The texture's s is the wall's; t runs on down from the wall's bottom
+ * by the arc's length. */
+static void fillet_strip(const struct cube_layers *layers, int layer, int along_x, float fixed, float a, float b,
+                         enum strip_end end_a, enum strip_end end_b, int normal_x, int normal_z, float radius)
+{
+  const double w = sqrt(2.0) / 2.0;
+  float columns[4];
+  const int count = wall_columns(a, b, end_a != ENDS_AT_CORNER_PIECE, end_b != ENDS_AT_CORNER_PIECE, radius, columns);
+  const float foot = (float)layers->height[layer], above = foot + radius;
+  const float t0 = texture_t(layers, above), t2 = t0 - (float)(PI / 2.0) * radius;
+  for (int c = 0; c + 1 < count; ++c) {
+    float net[2][3][4], tex[2][3][2];
+    double centre[2][3][3];
+    for (int v = 0; v < 2; ++v) {
+      const float x = along_x ? columns[c + v] : fixed, z = along_x ? fixed : columns[c + v];
+      const float out_x = x + (float)normal_x * radius, out_z = z + (float)normal_z * radius;
+      control_point(net[v][0], x, above, z, 1.0);
+      control_point(net[v][1], x, foot, z, w);
+      control_point(net[v][2], out_x, foot, out_z, 1.0);
+      const float s = wall_s(x, z, normal_x, normal_z), ts[3] = {t0, (t0 + t2) / 2, t2};
+      for (int u = 0; u < 3; ++u) {
+        tex[v][u][0] = s;
+        tex[v][u][1] = ts[u];
+        centre[v][u][0] = out_x;
+        centre[v][u][1] = above;
+        centre[v][u][2] = out_z;
+      }
+    }
+    draw_fillet_net((const float (*)[3][4])net, (const float (*)[3][2])tex, (const double (*)[3][3])centre, 2, 1);
+  }
+}
+
+/* The rounded top (rim CAPPED_TOP) or bottom rims of `layer`, or its fillets (FILLETED_FOOT):
+ * along every wall of a cell whose rim is rounded (foot filleted). */
+static void rim_or_fillet_strip(const struct cube_layers *layers, int layer, int along_x, float fixed, float a,
+                                float b, enum strip_end end_a, enum strip_end end_b, int normal_x, int normal_z,
+                                float radius, int rim)
+{
+  if (rim == FILLETED_FOOT) fillet_strip(layers, layer, along_x, fixed, a, b, end_a, end_b, normal_x, normal_z, radius);
+  else rim_strip(layers, layer, along_x, fixed, a, b, end_a, end_b, normal_x, normal_z, radius, rim);
+}
+
 static void rim_strips(const struct cube_layers *layers, int layer, float radius, int rim)
 {
   for (int i = 0; i < layers->x_count; ++i)
     for (int j = 0; j + 1 < layers->z_count; ++j) {
       const int before = cube_layers_filled(layers, layer, i - 1, j), after = cube_layers_filled(layers, layer, i, j);
       if (before != after && rim_rounded(layers, layer, before ? i - 1 : i, j, radius, rim))
-        rim_strip(layers, layer, 0, (float)layers->x[i], (float)layers->z[j], (float)layers->z[j + 1],
-                  strip_end_at(layers, layer, i, j, radius), strip_end_at(layers, layer, i, j + 1, radius),
-                  before ? 1 : -1, 0, radius, rim);
+        rim_or_fillet_strip(layers, layer, 0, (float)layers->x[i], (float)layers->z[j], (float)layers->z[j + 1],
+                            strip_end_at(layers, layer, i, j, radius), strip_end_at(layers, layer, i, j + 1, radius),
+                            before ? 1 : -1, 0, radius, rim);
     }
   for (int j = 0; j < layers->z_count; ++j)
     for (int i = 0; i + 1 < layers->x_count; ++i) {
       const int before = cube_layers_filled(layers, layer, i, j - 1), after = cube_layers_filled(layers, layer, i, j);
       if (before != after && rim_rounded(layers, layer, i, before ? j - 1 : j, radius, rim))
-        rim_strip(layers, layer, 1, (float)layers->z[j], (float)layers->x[i], (float)layers->x[i + 1],
-                  strip_end_at(layers, layer, i, j, radius), strip_end_at(layers, layer, i + 1, j, radius), 0,
-                  before ? 1 : -1, radius, rim);
+        rim_or_fillet_strip(layers, layer, 1, (float)layers->z[j], (float)layers->x[i], (float)layers->x[i + 1],
+                            strip_end_at(layers, layer, i, j, radius), strip_end_at(layers, layer, i + 1, j, radius),
+                            0, before ? 1 : -1, radius, rim);
     }
 }
 
@@ -283,6 +361,54 @@ static void rim_corner(const struct cube_layers *layers, int layer, int i, int j
   double centre[3][3][3];
   rim_corner_net(arc, axis_xz, convex, below, top, s0, s_length, t0, t2, net, tex, centre);
   draw_rim_net((const float (*)[3][4])net, (const float (*)[3][2])tex, (const double (*)[3][3])centre, 3, ARC_STEPS);
+}
+
+/* Whether fillets turn round the foot of the corner at grid point (i, j) of `layer`: a convex
+ * corner (one of the cells around it in the solid) of a piece whose foot is filleted. */
+static int fillet_corner_at(const struct cube_layers *layers, int layer, int i, int j, float radius)
+{
+  int around = 0;
+  for (int di = -1; di <= 0; ++di)
+    for (int dj = -1; dj <= 0; ++dj) around += cube_layers_filled(layers, layer, i + di, j + dj);
+  return around == 1 && corner_rim_rounded(layers, layer, i, j, radius, FILLETED_FOOT);
+}
+
+/* Where the fillets along two walls of `layer` meet round the foot of their corner at grid point
+ * (i, j): the fillet's profile turned round the upright (turned_profile_net). Round a rounded
+ * upright, whose arc runs about an axis R in from both walls, the profile runs from the upright's
+ * arc R above the foot to that arc scaled by 2 from the axis on the top below: a quarter of the
+ * inner half of a torus of radii 2 R and R. Round a sharp upright the profile runs from the
+ * corner's point R above the foot to a quarter circle of radius R about the upright on the top
+ * below: a horn piece, its rows 0 and 1 closed in points, whose side curves are the fillets' end
+ * profiles. The texture's s runs on from the wall the walk arrives by, as round an upright. */
+static void fillet_corner(const struct cube_layers *layers, int layer, int i, int j, float radius)
+{
+  float from[2], corner[2], to[2], s0, s_length;
+  upright_arc(layers, layer, i, j, radius, from, corner, to, &s0, &s_length);
+  const float upright_axis[2] = {from[0] + to[0] - corner[0], from[1] + to[1] - corner[1]};
+  const int rounded = upright_rounded(layers, layer, i, j, radius);
+  /* Round a sharp upright the arc moves out to the corner's quarter circle, and s starts and ends at
+   * the corner, R further along each wall. */
+  const double shift[2] = {rounded ? 0.0 : (double)corner[0] - upright_axis[0],
+                           rounded ? 0.0 : (double)corner[1] - upright_axis[1]};
+  const double arc[3][2] = {{from[0] + shift[0], from[1] + shift[1]},
+                            {corner[0] + shift[0], corner[1] + shift[1]},
+                            {to[0] + shift[0], to[1] + shift[1]}};
+  const double axis[2] = {upright_axis[0] + shift[0], upright_axis[1] + shift[1]};
+  const double inner = rounded ? 1.0 : 0.0, scale[3] = {inner, inner, inner + 1.0};
+  if (!rounded) {
+    const float s1 = s0 + s_length;
+    s0 += radius;
+    s_length = s_across(s0, s1 - radius, (float)(PI / 2.0) * radius);
+  }
+  const float foot = (float)layers->height[layer], above = foot + radius;
+  const double y[3] = {above, foot, foot};
+  const float t0 = texture_t(layers, above), t2 = t0 - (float)(PI / 2.0) * radius;
+  float net[3][3][4], tex[3][3][2];
+  double centre[3][3][3];
+  turned_profile_net(arc, axis, scale, y, s0, s_length, t0, t2, net, tex, centre);
+  draw_fillet_net((const float (*)[3][4])net, (const float (*)[3][2])tex, (const double (*)[3][3])centre, 3,
+                  ARC_STEPS);
 }
 
 /* What `layer` covers of the R x R square of cell (i, j) at its grid point (gi, gj). */
@@ -417,16 +543,33 @@ static void flat_face(const struct cube_layers *layers, int level, int up, float
        * strips' and the spheres' eighths. */
       const int rim_bit = up ? CAPPED_TOP : CAPPED_BOTTOM;
       const int capped = rim_rounded(layers, inner, i, j, radius, rim_bit);
-      const int rim[4] = {capped && !(cube_layers_capped(layers, inner, i - 1, j) & rim_bit),
-                          capped && !(cube_layers_capped(layers, inner, i + 1, j) & rim_bit),
-                          capped && !(cube_layers_capped(layers, inner, i, j - 1) & rim_bit),
-                          capped && !(cube_layers_capped(layers, inner, i, j + 1) & rim_bit)};
+      /* Along a fillet at the foot of the layer above, the band R wide is the fillet's. */
+      const int rim[4] = {(capped && !(cube_layers_capped(layers, inner, i - 1, j) & rim_bit)) ||
+                              (up && rim_rounded(layers, outer, i - 1, j, radius, FILLETED_FOOT)),
+                          (capped && !(cube_layers_capped(layers, inner, i + 1, j) & rim_bit)) ||
+                              (up && rim_rounded(layers, outer, i + 1, j, radius, FILLETED_FOOT)),
+                          (capped && !(cube_layers_capped(layers, inner, i, j - 1) & rim_bit)) ||
+                              (up && rim_rounded(layers, outer, i, j - 1, radius, FILLETED_FOOT)),
+                          (capped && !(cube_layers_capped(layers, inner, i, j + 1) & rim_bit)) ||
+                              (up && rim_rounded(layers, outer, i, j + 1, radius, FILLETED_FOOT))};
       for (int b = 0; b < 3; ++b)
         for (int a = 0; a < 3; ++a) {
           if ((a == 0 && rim[0]) || (a == 2 && rim[1]) || (b == 0 && rim[2]) || (b == 2 && rim[3])) continue;
           if (a != 1 && b != 1) {
             const int gi = a ? i + 1 : i, gj = b ? j + 1 : j;
             if (torus_corner(layers, inner, gi, gj, radius, rim_bit)) continue;
+            if (up && fillet_corner_at(layers, outer, gi, gj, radius)) {
+              /* Of the squares round a fillets' corner, the bands' are the fillets', the one under
+               * the piece above is covered, and the one across the corner keeps what lies outside
+               * the corner piece: outside its quarter circle about a sharp upright, outside the
+               * 2 R arc (torus_corner_flat, with the bands' squares) about a rounded one. */
+              if (!upright_rounded(layers, outer, gi, gj, radius) && !cube_layers_filled(layers, outer, i, j)) {
+                const float far[2] = {(float)layers->x[gi] + (float)(a ? -1 : 1) * radius,
+                                      (float)layers->z[gj] + (float)(b ? -1 : 1) * radius};
+                flat_square(far, a ? 1 : -1, b ? 1 : -1, CORNER_PIECE, y, radius);
+              }
+              continue;
+            }
             const int cover = square_cover(layers, inner, i, j, gi, gj, radius) &
                               ~square_cover(layers, outer, i, j, gi, gj, radius);
             const float corner[2] = {(float)layers->x[gi], (float)layers->z[gj]};
@@ -437,9 +580,12 @@ static void flat_face(const struct cube_layers *layers, int level, int up, float
         }
     }
   for (int j = 0; j < layers->z_count; ++j)
-    for (int i = 0; i < layers->x_count; ++i)
+    for (int i = 0; i < layers->x_count; ++i) {
       if (torus_corner(layers, inner, i, j, radius, up ? CAPPED_TOP : CAPPED_BOTTOM))
         torus_corner_flat(layers, inner, i, j, y, radius);
+      if (up && fillet_corner_at(layers, outer, i, j, radius) && upright_rounded(layers, outer, i, j, radius))
+        torus_corner_flat(layers, outer, i, j, y, radius);
+    }
 }
 
 void draw_layered_block(const struct cube_layers *layers, float radius)
@@ -455,6 +601,10 @@ void draw_layered_block(const struct cube_layers *layers, float radius)
         }
     rim_strips(layers, layer, radius, CAPPED_TOP);
     rim_strips(layers, layer, radius, CAPPED_BOTTOM);
+    rim_strips(layers, layer, radius, FILLETED_FOOT);
+    for (int j = 0; j < layers->z_count; ++j)
+      for (int i = 0; i < layers->x_count; ++i)
+        if (fillet_corner_at(layers, layer, i, j, radius)) fillet_corner(layers, layer, i, j, radius);
   }
   for (int level = 0; level <= layers->layer_count; ++level) {
     flat_face(layers, level, 1, radius);

@@ -6,7 +6,8 @@
 #include "cube_layers.h"
 
 /* Draws the object with its rounded uprights at `radius` (0: sharp; at most layers->max_radius):
- * walls, quarter cylinders, rim strips, eighths of spheres and quarters of tori, and the flat
+ * walls, quarter cylinders, rim strips, eighths of spheres and quarters of tori, fillets and their
+ * corner pieces, and the flat
  * pieces of every height, with normals and texture coordinates (s along a wall, t the height
  * above the bottom, (x, z) on the flat pieces). */
 void draw_layered_block(const struct cube_layers *layers, float radius);

@@ -31,6 +31,9 @@
 #include "cube_layers.h"
 #include "layered_block.h"
 
+/* How far a fillet's drawn point may lie off R from its axis: glMap2f takes single-precision
+ * control points, whose rounding moves the evaluated points by a few 1e-8 (1e-9 is out of reach). */
+#define FILLET_TOLERANCE 1e-7
 struct triangle {
   double corner[3][3];
 };
@@ -48,6 +51,7 @@ static double current_normal[3], current_texture[2];
 /* Every vertex drawn: its point, normal and texture coordinates. */
 struct drawn_vertex {
   double point[3], normal[3], texture[2];
+  int horn_tip; /* the tip of a horn piece (below) */
 };
 static struct drawn_vertex *drawn;
 static size_t drawn_count, drawn_capacity;
@@ -62,6 +66,7 @@ static void add_drawn(const double point[3], const double normal[3], const doubl
   memcpy(drawn[drawn_count].point, point, sizeof(double[3]));
   memcpy(drawn[drawn_count].normal, normal, sizeof(double[3]));
   memcpy(drawn[drawn_count].texture, texture, sizeof(double[2]));
+  drawn[drawn_count].horn_tip = 0;
   ++drawn_count;
 }
 static int grid_steps_u, grid_steps_v;
@@ -272,6 +277,19 @@ static void polynomial_point(int size, double u, double v, double *out)
         out[k] += bv[j] * bu[i] * (size == 3 ? normal_net[j][i][k] : texture_net[j][i][k]);
 }
 
+/* Whether row `row` of the patch's net closes in one point (its control points divided by their
+ * weights equal): a sphere's pole, or the tip of a horn piece, where two fillets meet round the
+ * foot of a sharp upright and the normal turns through the right angle between its walls. */
+static int row_closes(int row)
+{
+  for (int u = 1; u < 3; ++u)
+    for (int k = 0; k < 3; ++k)
+      if (fabs(cylinder_net[row][u][k] / cylinder_net[row][u][3] - cylinder_net[row][0][k] / cylinder_net[row][0][3]) >
+          1e-9)
+        return 0;
+  return 1;
+}
+
 /* The vertex the evaluator draws at (u, v), with its normal and texture coordinates. */
 static void record_grid_vertex(double u, double v)
 {
@@ -294,6 +312,7 @@ static void record_grid_vertex(double u, double v)
   }
   polynomial_point(2, u, v, texture);
   add_drawn(point, normal, texture);
+  drawn[drawn_count - 1].horn_tip = v == 0 && net_rows == 3 && row_closes(0);
 }
 
 void glEvalMesh2(GLenum mode, GLint i1, GLint i2, GLint j1, GLint j2)
@@ -417,7 +436,7 @@ static double off_period(double x, double period) { return fabs(x - period * flo
  * 30 degrees apart but more than 1e-3 radians, or (off the flat tops and bottoms) texture
  * coordinates that differ by more than 1e-4 beyond whole repeats. The pole of a sphere's net,
  * where the evaluator's normal map is exact but the point is shared by the whole row, counts
- * like any other point. */
+ * like any other point; a horn piece's tip, on the sharp upright's line, does not. */
 static size_t rough_seams(void)
 {
   qsort(drawn, drawn_count, sizeof *drawn, by_point);
@@ -432,7 +451,7 @@ static size_t rough_seams(void)
                                drawn[a].normal[2] * drawn[a].normal[2]);
         const double lb = sqrt(drawn[b].normal[0] * drawn[b].normal[0] + drawn[b].normal[1] * drawn[b].normal[1] +
                                drawn[b].normal[2] * drawn[b].normal[2]);
-        if (la < 1e-12 || lb < 1e-12) continue;
+        if (la < 1e-12 || lb < 1e-12 || drawn[a].horn_tip || drawn[b].horn_tip) continue;
         for (int k = 0; k < 3; ++k) na[k] = drawn[a].normal[k] / la, nb[k] = drawn[b].normal[k] / lb;
         const double angle = acos(fmin(1.0, fmax(-1.0, na[0] * nb[0] + na[1] * nb[1] + na[2] * nb[2])));
         if (angle > 30 * 3.14159265358979323846 / 180 || mitre_crease(na, nb)) continue;
@@ -449,6 +468,55 @@ static size_t rough_seams(void)
     i = j;
   }
   return rough;
+}
+
+/* The distance from a horizontal point (x, z) outside the rectangle [x0, x1] x [z0, z1] whose
+ * corners are rounded by corner_radius[c] (c: bit 0 for x1's side, bit 1 for z1's; 0: sharp) to
+ * it: from the corner's arc's centre less its radius in the corner's quadrant, else from the
+ * nearest side. */
+static double outline_distance(double x, double z, double x0, double x1, double z0, double z1,
+                               const double corner_radius[4])
+{
+  const int high_x = x > (x0 + x1) / 2, high_z = z > (z0 + z1) / 2;
+  const double r = corner_radius[high_x + 2 * high_z];
+  const double cx = high_x ? x1 - r : x0 + r, cz = high_z ? z1 - r : z0 + r;
+  if ((x - cx) * (high_x ? 1 : -1) > 0 && (z - cz) * (high_z ? 1 : -1) > 0) return hypot(x - cx, z - cz) - r;
+  return fmax(fmax(x0 - x, x - x1), fmax(z0 - z, z - z1));
+}
+
+/* How far from R the drawn points in a fillet's reach lie from its axis, at most: each filleted
+ * foot (cube_layers.h) is a rectangle of cells, and every point between its foot and R above it,
+ * within R of its outline (its uprights rounded or sharp), must lie R from the fillet's axis, the
+ * line R out from the wall and R above the foot (round a corner the circle R out from the rounded
+ * outline or about the sharp upright). A point of the top below left under the fillet, or of a
+ * wall reaching below R, lies off it by R (sqrt(2) - 1) or more. */
+static double fillet_axis_error(const struct cube_layers *layers, double radius)
+{
+  double worst = 0;
+  if (radius <= 0) return 0;
+  for (int k = 1; k < layers->layer_count; ++k)
+    for (int j = 0; j + 1 < layers->z_count; ++j)
+      for (int i = 0; i + 1 < layers->x_count; ++i) {
+        if (!(cube_layers_capped(layers, k, i, j) & FILLETED_FOOT) || cube_layers_filled(layers, k, i - 1, j) ||
+            cube_layers_filled(layers, k, i, j - 1))
+          continue;
+        int i1 = i, j1 = j;
+        while (cube_layers_filled(layers, k, i1 + 1, j)) ++i1;
+        while (cube_layers_filled(layers, k, i, j1 + 1)) ++j1;
+        const double x0 = layers->x[i], x1 = layers->x[i1 + 1], z0 = layers->z[j], z1 = layers->z[j1 + 1];
+        const double foot = layers->height[k], e = 1e-9;
+        double corner_radius[4];
+        for (int c = 0; c < 4; ++c)
+          corner_radius[c] = cube_layers_rounded(layers, k, c & 1 ? i1 + 1 : i, c & 2 ? j1 + 1 : j) ? radius : 0;
+        for (size_t v = 0; v < drawn_count; ++v) {
+          const double *p = drawn[v].point;
+          if (p[1] < foot - e || p[1] > foot + radius + e) continue;
+          const double d = outline_distance(p[0], p[2], x0, x1, z0, z1, corner_radius);
+          if (d < -e || d > radius + e) continue;
+          worst = fmax(worst, fabs(hypot(radius - d, foot + radius - p[1]) - radius));
+        }
+      }
+  return worst;
 }
 
 int main(int argc, char **argv)
@@ -472,10 +540,14 @@ int main(int argc, char **argv)
       draw_layered_block(&layers, radius);
       double gap;
       const size_t lonely = edges_without_twin(), rough = rough_seams(), inexact = inexact_seams(&gap);
+      const double off_axis = fillet_axis_error(&layers, radius);
       printf("%s at radius %g: %zu triangles, %zu edges without a twin, %zu rough seams, %zu shared patch sides "
-             "not exact to 1e-12 (largest gap %.3g)\n", argv[a], radius, triangle_count, lonely, rough, inexact, gap);
+             "not exact to 1e-12 (largest gap %.3g), fillet points off R from the axis by %.3g\n", argv[a], radius,
+             triangle_count, lonely, rough, inexact, gap, off_axis);
       if (gap > 1e-5) fprintf(stderr, "homework45_layered_closed: %s: patches %g apart\n", argv[a], gap);
-      failed |= lonely > 0 || rough > 0 || gap > 1e-5;
+      if (off_axis > FILLET_TOLERANCE)
+        fprintf(stderr, "homework45_layered_closed: %s: a fillet's point %g off R from its axis\n", argv[a], off_axis);
+      failed |= lonely > 0 || rough > 0 || gap > 1e-5 || off_axis > FILLET_TOLERANCE;
     }
     cube_layers_free(&layers);
   }
