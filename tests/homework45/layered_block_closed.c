@@ -7,8 +7,10 @@
  * and texture coordinates are recorded too: where two vertices at one point have normals less
  * than 30 degrees apart (a seam, not a sharp crease), they must agree to 1e-3 radians, and their
  * texture coordinates must agree but for whole repeats of the checkerboard (0.25 in s, 1 in t),
- * except on the flat tops and bottoms (normal straight up or down), whose texture is (x, z), and
- * along a mitre's crease (two rims' strips ending in a sharp corner's diagonal plane).
+ * except on the flat tops and bottoms (normal straight up or down), whose texture is (x, z),
+ * along a mitre's crease (two rims' strips ending in a sharp corner's diagonal plane) and at a
+ * horn piece's tip (two fillets meeting round a sharp upright's foot). Every point drawn within
+ * a filleted foot's reach must lie R from the fillet's axis.
  * Where two rational patches share a side (their side curves have the same end points), the
  * curves must be the same: their control points (divided by their weights) and their weights
  * (relative to the first) agree, so the patches meet along the whole side, not only at the
@@ -21,7 +23,7 @@
  * twin test's tolerance) fails.
  *   homework45_layered_closed OBJECT.wings...
  * Prints a line per object and radius, and exits 1 when an edge has no twin, a seam is not
- * smooth or two patches that share a side are apart along it. */
+ * smooth, two patches that share a side are apart along it or a fillet's point is off its axis. */
 #include <GL/glut.h>
 #include <math.h>
 #include <stdio.h>
