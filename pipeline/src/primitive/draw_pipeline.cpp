@@ -1,26 +1,14 @@
 #include "primitive/draw_pipeline.h"
 
 #include <algorithm>
-#include <cstdlib>
-#include <thread>
 
 #include "core/context.h"
+#include "glass/raster/thread_count.h"
 #include "primitive/point_parameters.h"
 #include "primitive/queued_drawing.h"
 
 namespace glass::gl {
 namespace {
-
-// GLASS_THREADS, a whole number from 1 to 256, chooses how many threads rasterize; otherwise
-// as many as the machine has hardware threads. The count changes the speed, never the bytes.
-int rasterThreadCount() {
-  if (const char* text = std::getenv("GLASS_THREADS")) {
-    char* end = nullptr;
-    const long n = std::strtol(text, &end, 10);
-    if (end != text && *end == '\0' && n >= 1 && n <= 256) return static_cast<int>(n);
-  }
-  return static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-}
 
 // The early depth test of triangles (glass/raster/depth_test.h): only when a fragment that fails
 // the depth test has no effect. With the stencil test on, its depth-fail operation still writes
@@ -46,7 +34,7 @@ raster::EarlyDepthTest earlyDepthTest(const Context& ctx) {
 }  // namespace
 
 DrawPipeline::DrawPipeline(Context& ctx)
-    : ctx_(ctx), tiles_(ctx.framebuffer, rasterThreadCount()) {}
+    : ctx_(ctx), tiles_(ctx.framebuffer, raster::configuredThreadCount()) {}
 
 void DrawPipeline::prepare() {
   Context& ctx = ctx_;
