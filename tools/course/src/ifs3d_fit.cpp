@@ -2,10 +2,14 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
+#include <functional>
 #include <limits>
+#include <mutex>
 #include <numeric>
 #include <optional>
+#include <thread>
 
 #include <glm/geometric.hpp>
 #include <glm/mat3x3.hpp>
@@ -19,6 +23,7 @@
 #include "glass/geometry/kd_tree.h"
 #include "glass/geometry/polar_decomposition.h"
 #include "glass/geometry/portable_math.h"
+#include "glass/raster/thread_count.h"
 
 namespace glass::course {
 
@@ -55,13 +60,43 @@ Trimmed trimmedMean(std::vector<double> values, double trim) {
   return out;
 }
 
+// Which attempts of the search are still needed, shared by the threads that run them: once the
+// attempts finished decide the fit (chooseAttempt), the later ones are not.
+class AttemptCancellation {
+ public:
+  explicit AttemptCancellation(int attempts) : needed_(attempts) {}
+  void needOnly(int attempts) {
+    int needed = needed_.load();
+    while (attempts < needed && !needed_.compare_exchange_weak(needed, attempts)) {
+    }
+  }
+  bool cancelled(int attempt) const { return attempt >= needed_.load(std::memory_order_relaxed); }
+
+ private:
+  std::atomic<int> needed_;
+};
+
+// Thrown out of an attempt that is no longer needed, at its next batch of queries.
+struct AttemptCancelled {};
+
 // The search's work, counted as it goes in nearest-neighbour queries (k-d tree searches, most of
 // its time), against the budget of Ifs3FitOptions::workBudget. Counted rather than timed, so that
 // where the search stops depends on the cloud alone, not on the machine or its load.
 struct WorkMeter {
   std::uint64_t used = 0;
   std::uint64_t budget = 0;  // 0: no limit
-  void add(std::size_t queries) { used += queries; }
+  // For an attempt on threads (attemptsOnThreads): its number, and where it learns that it is
+  // not needed any more; it then stops at the next batch of queries (AttemptCancelled).
+  const AttemptCancellation* cancellation = nullptr;
+  int attempt = 0;
+  void add(std::size_t queries) {
+    stopWhenCancelled();
+    used += queries;
+  }
+  // Also called in the few long stretches without queries.
+  void stopWhenCancelled() const {
+    if (cancellation != nullptr && cancellation->cancelled(attempt)) throw AttemptCancelled{};
+  }
   bool spent() const { return budget != 0 && used >= budget; }
 };
 
@@ -357,7 +392,8 @@ InclusionPool inclusionPool(std::span<const glm::dvec3> cloud, const g::KdTree3&
     for (std::size_t q = 0; q < orientations.size(); ++q)
       for (std::size_t j = 0; j < probes.size(); ++j) offsets[q * probes.size() + j] = ratio * (orientations[q] * (probes[j] - cloudMoments.mean));
     std::vector<Candidate> candidates;
-    for (int z = 0; z < grid.size(2); z += 2)
+    for (int z = 0; z < grid.size(2); z += 2) {
+      work.stopWhenCancelled();
       for (int y = 0; y < grid.size(1); y += 2)
         for (int x = 0; x < grid.size(0); x += 2) {
           const glm::dvec3 centre = grid.lo() + (glm::dvec3(x, y, z) + 0.5) * h;
@@ -371,6 +407,7 @@ InclusionPool inclusionPool(std::span<const glm::dvec3> cloud, const g::KdTree3&
           }
           candidates.push_back(best);
         }
+    }
     std::stable_sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) { return a.score < b.score; });
     std::vector<Candidate> kept;
     for (const Candidate& c : candidates) {
@@ -389,6 +426,7 @@ InclusionPool inclusionPool(std::span<const glm::dvec3> cloud, const g::KdTree3&
       if (!near) kept.push_back(c);
     }
     for (Candidate c : kept) {
+      work.stopWhenCancelled();
       const glm::dmat3 a = climbOnGrid(inclusionScore, ratio * orientations[c.orientation], c.centre, h);
       hypotheses.push_back(g::Affine3::fromParts(a, c.centre - a * cloudMoments.mean));
     }
@@ -922,6 +960,89 @@ double estimatedPointSpacing(std::span<const glm::dvec3> cloud, std::uint64_t se
          std::cbrt(static_cast<double>(probeSize) / static_cast<double>(cloud.size()));
 }
 
+// One attempt's fit, and the work it did.
+struct AttemptOutcome {
+  Ifs3Fit fit;
+  std::uint64_t work = 0;
+};
+using AttemptRunner = std::function<Ifs3Fit(int attempt, WorkMeter& work)>;
+
+// What the outcomes of attempts 0, 1, ... decide, as the search takes them in turn: the fit is
+// the one whose attractor lies nearest the cloud (least regeneratedDistance, the first of equal
+// ones; none while every distance is infinite), and the search stops after the attempt that made
+// it a converged fit (decided), else after them all.
+struct AttemptChoice {
+  std::optional<std::size_t> chosen;
+  std::size_t attempts = 0;
+  bool decided = false;
+};
+AttemptChoice chooseAttempt(std::span<const AttemptOutcome> outcomes) {
+  AttemptChoice choice;
+  double nearest = std::numeric_limits<double>::infinity();
+  for (std::size_t attempt = 0; attempt < outcomes.size() && !choice.decided; ++attempt) {
+    choice.attempts = attempt + 1;
+    if (outcomes[attempt].fit.regeneratedDistance < nearest) {
+      nearest = outcomes[attempt].fit.regeneratedDistance;
+      choice.chosen = attempt;
+    }
+    choice.decided = choice.chosen && outcomes[*choice.chosen].fit.converged();
+  }
+  return choice;
+}
+
+// The attempts one after the other on one work meter, as a work budget needs: an attempt stops
+// where the meter, counting the attempts before it, reaches the budget, and no attempt begins
+// after that.
+std::vector<AttemptOutcome> attemptsInTurn(const AttemptRunner& runAttempt, int attempts, std::uint64_t budget) {
+  std::vector<AttemptOutcome> outcomes;
+  WorkMeter work{0, budget};
+  for (int attempt = 0; attempt < attempts && !(attempt > 0 && work.spent()) && !chooseAttempt(outcomes).decided; ++attempt) {
+    const std::uint64_t before = work.used;
+    Ifs3Fit fit = runAttempt(attempt, work);
+    outcomes.push_back({std::move(fit), work.used - before});
+  }
+  return outcomes;
+}
+
+// The attempts on `threads` threads (the calling one and threads - 1 more), which take them in
+// order, each attempt whole on one thread and on a meter of its own. Without a budget an attempt's
+// fit and work depend on its seed alone, never on the attempts before it (the meter is only
+// read against a budget), so each outcome is the one attemptsInTurn gives. Once the attempts
+// finished so far, in order, decide the fit, the later ones are cancelled: the search in turn would
+// not make them. Returns the outcomes up to the first attempt not finished.
+std::vector<AttemptOutcome> attemptsOnThreads(const AttemptRunner& runAttempt, int attempts, int threads) {
+  std::vector<AttemptOutcome> outcomes(static_cast<std::size_t>(attempts));
+  std::vector<char> finished(outcomes.size(), 0);
+  const auto finishedInOrder = [&] {
+    return static_cast<std::size_t>(std::find(finished.begin(), finished.end(), 0) - finished.begin());
+  };
+  AttemptCancellation cancellation(attempts);
+  std::mutex outcomesMutex;
+  std::atomic<int> nextAttempt{0};
+  const auto runAttempts = [&] {
+    for (int attempt = nextAttempt++; attempt < attempts && !cancellation.cancelled(attempt); attempt = nextAttempt++) {
+      WorkMeter work;
+      work.cancellation = &cancellation;
+      work.attempt = attempt;
+      try {
+        Ifs3Fit fit = runAttempt(attempt, work);
+        const std::lock_guard<std::mutex> lock(outcomesMutex);
+        outcomes[static_cast<std::size_t>(attempt)] = {std::move(fit), work.used};
+        finished[static_cast<std::size_t>(attempt)] = 1;
+        const AttemptChoice choice = chooseAttempt(std::span<const AttemptOutcome>(outcomes.data(), finishedInOrder()));
+        if (choice.decided) cancellation.needOnly(static_cast<int>(choice.attempts));
+      } catch (const AttemptCancelled&) {
+      }
+    }
+  };
+  std::vector<std::thread> helpers;
+  for (int t = 1; t < threads; ++t) helpers.emplace_back(runAttempts);
+  runAttempts();
+  for (std::thread& helper : helpers) helper.join();
+  outcomes.resize(finishedInOrder());
+  return outcomes;
+}
+
 }  // namespace
 
 Ifs3Fit fitIfs3(std::span<const glm::dvec3> fullCloud, const Ifs3FitOptions& options) {
@@ -936,25 +1057,26 @@ Ifs3Fit fitIfs3(std::span<const glm::dvec3> fullCloud, const Ifs3FitOptions& opt
   // A fit whose collage distance is well below the cloud's own spacing has found the maps;
   // otherwise another attempt from other seeds may do better, and the best is kept.
   const double spacing = estimatedPointSpacing(cloud, options.seed + 5);
-  int attempts = 0;
-  WorkMeter work{0, options.workBudget};
-  for (int attempt = 0; attempt < std::max(1, options.attempts) && !(attempt > 0 && work.spent()); ++attempt) {
-    ++attempts;
+  const auto runAttempt = [&](int attempt, WorkMeter& work) {
     Ifs3FitOptions seeded = options;
     seeded.seed = options.seed + 7919 * static_cast<std::uint64_t>(attempt);
     // Attempts alternate between the two kinds of start: k-means first, the cheaper one, which
     // finds the maps when the parts are apart; the inclusion search's pool next, for
     // overlapping parts; from the second attempt on, the pool also re-seeds single maps.
-    Ifs3Fit fit = fitOnce(cloud, cloudTree, seeded, spacing, attempt > 0, attempt % 2 == 1, work);
-    if (fit.regeneratedDistance < best.regeneratedDistance) best = std::move(fit);
-    best.pointSpacing = spacing;
-    if (best.converged()) break;
-  }
+    return fitOnce(cloud, cloudTree, seeded, spacing, attempt > 0, attempt % 2 == 1, work);
+  };
+  const int attempts = std::max(1, options.attempts);
+  const int threads = std::min(attempts, options.threads > 0 ? options.threads : raster::configuredThreadCount());
+  std::vector<AttemptOutcome> outcomes = options.workBudget != 0 ? attemptsInTurn(runAttempt, attempts, options.workBudget)
+                                                                 : attemptsOnThreads(runAttempt, attempts, threads);
+  const AttemptChoice choice = chooseAttempt(outcomes);
+  if (choice.chosen) best = std::move(outcomes[*choice.chosen].fit);
   best.pointSpacing = spacing;
   best.isolatedShare = isolatedShare;
-  best.attempts = attempts;
-  best.work = work.used;
-  best.stoppedByBudget = work.spent() && !best.converged();
+  best.attempts = static_cast<int>(choice.attempts);
+  best.work = 0;
+  for (std::size_t attempt = 0; attempt < choice.attempts; ++attempt) best.work += outcomes[attempt].work;
+  best.stoppedByBudget = options.workBudget != 0 && best.work >= options.workBudget && !best.converged();
   // The plain collage distance on the whole cloud as given, noise included.
   if (!best.maps.empty() && cloud.size() != fullCloud.size()) {
     best.collageDistance = chamferDistance(fullCloud, mapImages(best.maps, fullCloud));

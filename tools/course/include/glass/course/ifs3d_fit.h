@@ -83,6 +83,10 @@ struct Ifs3FitOptions {
   // found ones (docs/course.md). `glass ifs3d fit --work 12` gives up in about a third of the time.
   std::uint64_t workBudget = 0;
   std::uint64_t seed = 1;
+  // Threads the attempts run on, each attempt whole on one thread (without a work budget; with one
+  // they run in turn). 0: GLASS_THREADS, else the machine's hardware threads
+  // (glass/raster/thread_count.h). The fit is the same on any number of threads.
+  int threads = 0;
 };
 
 struct Ifs3Fit {
@@ -96,8 +100,11 @@ struct Ifs3Fit {
   double regeneratedDistance = 0.0;
   double pointSpacing = 0.0;             // the cloud's mean nearest-neighbour distance (estimated)
   double isolatedShare = 0.0;            // share of the points left out as noise before the fit
-  int attempts = 0;                      // whole attempts made (Ifs3FitOptions::attempts at most)
-  std::uint64_t work = 0;                // nearest-neighbour queries made (Ifs3FitOptions::workBudget)
+  // Whole attempts made, as the search makes them in turn: up to the first that gives a converged
+  // fit, else all (Ifs3FitOptions::attempts), fewer when the work budget ran out. On threads, later
+  // attempts may have begun and been cancelled; they are not counted, nor is their work.
+  int attempts = 0;
+  std::uint64_t work = 0;                // nearest-neighbour queries of those attempts (Ifs3FitOptions::workBudget)
   bool stoppedByBudget = false;          // not converged when the work budget ran out
   // The search found the maps when the trimmed collage distance is well below the point spacing
   // (in tests: about a third of it) and the regenerated attractor lies as close to the cloud as a
