@@ -352,10 +352,8 @@ static void rim_strip(int i, enum rim_level level, float s0, float s1)
     control_point(net[end][2], on_top[0], top, on_top[1], 1.0);
     const float s = end ? s1 : s0;
     const float t0 = side_t(top - out * r), t2 = (float)(t0 + out * PI / 2 * r / height);
-    const float ts[3] = {t0, (t0 + t2) / 2, t2};
+    strip_column_texture(tex[end], s, t0, t2);
     for (int u = 0; u < 3; ++u) {
-      tex[end][u][0] = s;
-      tex[end][u][1] = ts[u];
       const double x = net[end][u][0] / net[end][u][3], z = net[end][u][2] / net[end][u][3];
       const double on_axis = (x - axis[0]) * along[0] + (z - axis[1]) * along[1];
       centre[end][u][0] = axis[0] + on_axis * along[0];

@@ -262,10 +262,8 @@ static void rim_strip(const struct cube_layers *layers, int layer, int along_x, 
       control_point(net[v][0], x, below, z, 1.0);
       control_point(net[v][1], x, top, z, w);
       control_point(net[v][2], inner_x, top, inner_z, 1.0);
-      const float s = wall_s(x, z, normal_x, normal_z), ts[3] = {t0, (t0 + t2) / 2, t2};
+      strip_column_texture(tex[v], wall_s(x, z, normal_x, normal_z), t0, t2);
       for (int u = 0; u < 3; ++u) {
-        tex[v][u][0] = s;
-        tex[v][u][1] = ts[u];
         centre[v][u][0] = along_x && u == 2 ? inner_x : x + (float)in_x * radius;
         centre[v][u][1] = below;
         centre[v][u][2] = !along_x && u == 2 ? inner_z : z + (float)in_z * radius;
@@ -299,10 +297,8 @@ static void fillet_strip(const struct cube_layers *layers, int layer, int along_
       control_point(net[v][0], x, above, z, 1.0);
       control_point(net[v][1], x, foot, z, w);
       control_point(net[v][2], out_x, foot, out_z, 1.0);
-      const float s = wall_s(x, z, normal_x, normal_z), ts[3] = {t0, (t0 + t2) / 2, t2};
+      strip_column_texture(tex[v], wall_s(x, z, normal_x, normal_z), t0, t2);
       for (int u = 0; u < 3; ++u) {
-        tex[v][u][0] = s;
-        tex[v][u][1] = ts[u];
         centre[v][u][0] = out_x;
         centre[v][u][1] = above;
         centre[v][u][2] = out_z;

@@ -80,3 +80,12 @@ void rim_corner_net(const double arc[3][2], const double axis[2], int convex, do
   const double scale[3] = {1.0, 1.0, convex ? 0.0 : 2.0}, y[3] = {below, rim, rim};
   turned_profile_net(arc, axis, scale, y, s0, s_length, t0, t2, net, tex, centre);
 }
+
+void strip_column_texture(float tex[3][2], float s, float t0, float t2)
+{
+  const float ts[3] = {t0, (t0 + t2) / 2, t2};
+  for (int u = 0; u < 3; ++u) {
+    tex[u][0] = s;
+    tex[u][1] = ts[u];
+  }
+}

@@ -15,6 +15,10 @@ void control_point(float out[4], double x, double y, double z, double w);
 void draw_rational_patch(const float net[][3][4], const float tex[][3][2], const float normals[][3][3], int rows,
                          int v_steps);
 
+/* The texture coordinates of one column of a strip's 3-point net (a rim or a fillet, u = 0, 1, 2
+ * across it): s along the strip, t from t0 through their midpoint to t2. */
+void strip_column_texture(float tex[3][2], float s, float t0, float t2);
+
 /* Draws a rim's patch (a strip or a corner piece, as draw_rational_patch) with its normals from
  * the centres of the rim's curvature: the rim lies at distance R from centre[v][u] (the centre
  * nearest each control point, on the strip's axis or the corner piece's tube centre circle), so
