@@ -9,12 +9,20 @@
 
 namespace glass::raster {
 
-Framebuffer::Framebuffer(int width, int height) : width_(width), height_(height) {
+namespace {
+
+size_t pixelCount(int width, int height) {
   if (width <= 0 || height <= 0) throw std::invalid_argument("framebuffer size must be positive");
-  const size_t pixels = static_cast<size_t>(width) * static_cast<size_t>(height);
-  color_.assign(pixels * 4, 0);
-  depth_.assign(pixels, kDepthMax);
-  stencil_.assign(pixels, 0);
+  return static_cast<size_t>(width) * static_cast<size_t>(height);
 }
+
+}  // namespace
+
+Framebuffer::Framebuffer(int width, int height)
+    : width_(width),
+      height_(height),
+      color_(pixelCount(width, height) * 4, 0),
+      depth_(pixelCount(width, height), kDepthMax),
+      stencil_(pixelCount(width, height), 0) {}
 
 }  // namespace glass::raster

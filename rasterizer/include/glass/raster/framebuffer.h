@@ -3,9 +3,33 @@
 
 #include <cstddef>
 #include <cstdint>
-#include <vector>
+#include <memory>
+#include <new>
 
 namespace glass::raster {
+
+// The pixels of one buffer, starting on a cache line. Threads draw neighbouring 64 x 64 tiles at
+// the same time, and a tile's rows begin at multiples of 64 pixels: with the rows' start on a
+// cache line (and a width of a multiple of 16 pixels), no cache line holds pixels of two tiles,
+// so two threads never write the same line. (From malloc, a large buffer starts 16 bytes into a
+// page, and the lines at the tiles' left and right edges held pixels of both neighbours.)
+template <typename T>
+class CacheAlignedPixels {
+ public:
+  static constexpr std::align_val_t kAlignment{64};
+  CacheAlignedPixels(size_t count, T value)
+      : data_(static_cast<T*>(::operator new(count * sizeof(T), kAlignment))) {
+    std::uninitialized_fill_n(data_.get(), count, value);
+  }
+  T& operator[](size_t i) { return data_[i]; }
+  const T& operator[](size_t i) const { return data_[i]; }
+
+ private:
+  struct Release {
+    void operator()(T* p) const { ::operator delete(p, kAlignment); }
+  };
+  std::unique_ptr<T[], Release> data_;
+};
 
 class Framebuffer {
  public:
@@ -25,9 +49,9 @@ class Framebuffer {
 
  private:
   int width_, height_;
-  std::vector<uint8_t> color_;
-  std::vector<uint32_t> depth_;
-  std::vector<uint8_t> stencil_;
+  CacheAlignedPixels<uint8_t> color_;
+  CacheAlignedPixels<uint32_t> depth_;
+  CacheAlignedPixels<uint8_t> stencil_;
 };
 
 }  // namespace glass::raster
