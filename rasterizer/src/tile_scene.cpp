@@ -216,6 +216,15 @@ void TileScene::addClear(const ClearRequest& request) {
   });
 }
 
+void TileScene::orderActiveTilesByPlace() { std::sort(activeTiles_.begin(), activeTiles_.end()); }
+
+int TileScene::firstActiveTileFrom(int numerator, int denominator) const {
+  const int64_t tileCount = int64_t{tilesX_} * tilesY_;
+  const int first = static_cast<int>(tileCount * numerator / denominator);
+  return static_cast<int>(std::lower_bound(activeTiles_.begin(), activeTiles_.end(), first) -
+                          activeTiles_.begin());
+}
+
 void TileScene::runTile(int activeIndex) const {
   const int tile = activeTiles_[static_cast<size_t>(activeIndex)];
   const PixelRect rect = tileRect(tile);

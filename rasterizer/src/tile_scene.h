@@ -43,6 +43,14 @@ class TileScene {
     return tileRect(activeTiles_[static_cast<size_t>(activeIndex)]);
   }
 
+  // Puts the active tiles in the order of their place in the window, row by row from the bottom
+  // (the order of bins, not of the primitives' arrival), so that a share of the window is a run of
+  // active indices: the threads share the tiles out by place (tiled_rasterizer.cpp).
+  void orderActiveTilesByPlace();
+  // After orderActiveTilesByPlace: the first active index whose tile comes at or after the given
+  // fraction of the window's tiles in that order (activeTileCount() when none does).
+  int firstActiveTileFrom(int numerator, int denominator) const;
+
   bool empty() const { return activeTiles_.empty(); }
   // Whether a triangle, line or point is queued (whose sink the tiles will call), not only clears.
   bool hasPrimitives() const { return hasPrimitives_; }
