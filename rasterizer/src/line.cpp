@@ -22,6 +22,7 @@
 // set. The counter runs over fragments outside the bounds too: the scissor does not move it.
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 #include "glass/raster/depth_value.h"
 #include "glass/raster/line.h"
@@ -47,6 +48,13 @@ class LineRunWriter {
     length_ = (xMajor ? double(b.x) : double(b.y)) - start_;
     qa_ = settings.perspectiveCorrect ? double(a.invW) : 1.0;
     qb_ = settings.perspectiveCorrect ? double(b.invW) : 1.0;
+    // The ends' varyings as doubles, once per segment, in whole groups of four (zeros after the
+    // last), so that each run's interpolation is a loop of fixed length the compiler vectorizes.
+    lanes_ = (varyingCount_ + kGroup - 1) / kGroup * kGroup;
+    for (int k = 0; k < lanes_; ++k) {
+      varyingsA_[k] = k < varyingCount_ ? double(a.varyings[k]) : 0.0;
+      varyingsB_[k] = k < varyingCount_ ? double(b.varyings[k]) : 0.0;
+    }
   }
   ~LineRunWriter() { flush(); }
 
@@ -89,9 +97,16 @@ class LineRunWriter {
     // only where they cannot change a bit.
     const bool unit = q == 1.0;
     const double weightA = unit ? wa : wa / q, weightB = unit ? wb : wb / q;
-    for (int k = 0; k < varyingCount_; ++k)
-      f.varyings[k] = static_cast<float>(weightA * a_.varyings[k] + weightB * b_.varyings[k]);
+    for (int group = 0; group < lanes_; group += kGroup) {
+      float values[kGroup];
+      for (int k = 0; k < kGroup; ++k)
+        values[k] = static_cast<float>(weightA * varyingsA_[group + k] + weightB * varyingsB_[group + k]);
+      std::memcpy(f.varyings + group, values, sizeof values);
+    }
   }
+
+  static constexpr int kGroup = 4;
+  static_assert(kMaxVaryings % kGroup == 0);
 
   const WindowVertex& a_;
   const WindowVertex& b_;
@@ -100,6 +115,8 @@ class LineRunWriter {
   bool xMajor_;
   int varyingCount_;
   double start_, length_, qa_, qb_;
+  int lanes_;  // varyingCount_ rounded up to whole groups
+  double varyingsA_[kMaxVaryings], varyingsB_[kMaxVaryings];
   LineRun runs_[LineRunBatch::kMaxRuns];
   int count_ = 0;
 };
