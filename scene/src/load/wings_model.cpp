@@ -1,11 +1,14 @@
 // Wings3D models in scenes (see wings_model.h).
 #include "load/wings_model.h"
 
+#include "glass/geometry/polyhedron_check.h"
+
 #include <cmath>
 #include <fstream>
 #include <iterator>
 #include <limits>
 #include <map>
+#include <sstream>
 
 namespace glass::scene {
 
@@ -34,6 +37,13 @@ void appendTriangles(const geometry::MarkedPolyhedron &shape, const geometry::Ro
   }
 }
 
+std::string volumeText(double volume) {
+  std::ostringstream text;
+  text.precision(6);
+  text << volume;
+  return text.str();
+}
+
 } // namespace
 
 std::vector<ModelPart> roundedWingsParts(const RoundableModel &model, double radius) {
@@ -52,6 +62,40 @@ std::vector<ModelPart> roundedWingsParts(const RoundableModel &model, double rad
   std::vector<ModelPart> parts;
   for (auto &[material, part] : byMaterial) parts.push_back(std::move(part));
   return parts;
+}
+
+std::vector<std::string> wingsModelWarnings(const RoundableModel &model) {
+  std::vector<std::string> warnings;
+  if (model.objects.empty()) warnings.push_back("the file has no objects: nothing is drawn");
+  const auto edge = [](const std::array<std::uint32_t, 2> &e) {
+    return "between vertices " + std::to_string(e[0]) + " and " + std::to_string(e[1]);
+  };
+  const auto count = [](int n, const std::string &one, const std::string &many) {
+    return std::to_string(n) + " " + (n == 1 ? one : many);
+  };
+  for (const WingsObject &object : model.objects) {
+    const geometry::PolyhedronCheck check = geometry::checkPolyhedron(object.shape);
+    const std::string name = "object '" + object.name + "' ";
+    if (check.openEdges > 0)
+      warnings.push_back(name + "is open: " + count(check.openEdges, "edge belongs", "edges belong") +
+                         " to one face only (the first " + edge(check.firstOpenEdge) + ")");
+    if (check.nonManifoldEdges > 0)
+      warnings.push_back(name + "is not one surface: " +
+                         count(check.nonManifoldEdges, "edge belongs", "edges belong") +
+                         " to three faces or more (the first " + edge(check.firstNonManifoldEdge) + ")");
+    if (check.reversedEdges > 0)
+      warnings.push_back(name + "has faces turned the other way round: at " +
+                         count(check.reversedEdges, "edge", "edges") +
+                         " the two faces run the same way (the first " + edge(check.firstReversedEdge) + ")");
+    if (check.insideOut())
+      warnings.push_back(name + "is inside out: its faces face inwards (volume " + volumeText(check.volume) +
+                         "), so lighting and culling take its inside for its outside");
+    if (check.crossingFacePairs > 0)
+      warnings.push_back(name + "crosses itself: " + count(check.crossingFacePairs, "pair", "pairs") +
+                         " of faces cut through each other (the first faces " +
+                         std::to_string(check.firstCrossing[0]) + " and " + std::to_string(check.firstCrossing[1]) + ")");
+  }
+  return warnings;
 }
 
 double largestWingsRadius(const RoundableModel &model, std::string &limit) {

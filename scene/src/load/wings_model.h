@@ -26,6 +26,11 @@ bool loadWingsModel(const std::string &path, Model &model, std::string &reason);
 // model's materials). Throws geometry::RoundingError, its message naming the object.
 std::vector<ModelPart> roundedWingsParts(const RoundableModel &model, double radius);
 
+// What is wrong with the model's objects as solids (geometry/polyhedron_check.h), one message
+// each, naming the object: open, faces turned unlike their neighbours, inside out, crossing
+// itself; or that the file has no objects. Such a model still draws, as the file gives it.
+std::vector<std::string> wingsModelWarnings(const RoundableModel &model);
+
 // The largest radius every object can be rounded with, and what limits it.
 double largestWingsRadius(const RoundableModel &model, std::string &limit);
 

@@ -185,6 +185,10 @@ void Parser::parseModel(StatementReader &r) {
     std::string reason;
     const bool loaded = wings ? loadWingsModel(path, model, reason) : loadObjModel(path, model, program_.textures, reason);
     if (!loaded) r.fail(pathToken, "cannot load model '" + written + "': " + reason);
+    if (wings) {
+      for (const std::string &warning : wingsModelWarnings(*model.roundable))
+        diagnostics_.warning(pathToken.where, "model '" + written + "': " + warning, pathToken.length);
+    }
     draw.model = static_cast<int>(program_.models.size());
     program_.models.push_back(std::move(model));
   }
