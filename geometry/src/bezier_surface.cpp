@@ -69,10 +69,10 @@ glm::dvec3 BezierSurface::controlPoint(int i, int j) const {
 glm::dvec4 BezierSurface::evaluateHomogeneous(double u, double v) const {
   if (net_.empty()) return glm::dvec4(0.0);
   const std::size_t columns = static_cast<std::size_t>(degreeV_ + 1);
-  std::vector<glm::dvec4> column(static_cast<std::size_t>(degreeU_ + 1));
+  WorkingRow<glm::dvec4> column(static_cast<std::size_t>(degreeU_ + 1));
   for (int i = 0; i <= degreeU_; ++i)
     column[i] = deCasteljau(std::span<const glm::dvec4>(net_.data() + i * columns, columns), v);
-  return deCasteljau(std::span<const glm::dvec4>(column), u);
+  return deCasteljau(column.points(), u);
 }
 
 glm::dvec3 BezierSurface::evaluate(double u, double v) const {
@@ -84,12 +84,12 @@ std::vector<glm::dvec4> BezierSurface::homogeneousDerivatives(double u, double v
   const std::size_t columns = static_cast<std::size_t>(degreeV_ + 1);
   const int tableColumns = orderV + 1;
   std::vector<glm::dvec4> table(static_cast<std::size_t>((orderU + 1) * tableColumns));
-  std::vector<glm::dvec4> column(static_cast<std::size_t>(degreeU_ + 1));
+  WorkingRow<glm::dvec4> column(static_cast<std::size_t>(degreeU_ + 1));
   for (int b = 0; b <= orderV; ++b) {
     for (int i = 0; i <= degreeU_; ++i)
       column[i] = deCasteljauDerivative(std::span<const glm::dvec4>(net_.data() + i * columns, columns), v, b);
     for (int a = 0; a <= orderU; ++a)
-      table[a * tableColumns + b] = deCasteljauDerivative(std::span<const glm::dvec4>(column), u, a);
+      table[a * tableColumns + b] = deCasteljauDerivative(column.points(), u, a);
   }
   return table;
 }

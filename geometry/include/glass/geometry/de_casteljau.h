@@ -24,26 +24,52 @@ P interpolate(const P& a, const P& b, double t) {
   return (1.0 - t) * a + t * b;
 }
 
+// A row of points to work on in place: on the stack up to 16 points (every GL evaluator, the
+// teapot, the conics, the rounding's patches), on the heap beyond. Evaluating a surface point or a
+// derivative then allocates nothing, which matters where a tessellation evaluates thousands.
+template <class P>
+class WorkingRow {
+ public:
+  explicit WorkingRow(std::size_t size) : size_(size) {
+    if (size > kStackPoints) heap_.resize(size);
+    data_ = size > kStackPoints ? heap_.data() : stack_.data();
+  }
+  explicit WorkingRow(std::span<const P> points) : WorkingRow(points.size()) {
+    for (std::size_t i = 0; i < size_; ++i) data_[i] = points[i];
+  }
+  WorkingRow(const WorkingRow&) = delete;
+  WorkingRow& operator=(const WorkingRow&) = delete;
+
+  P& operator[](std::size_t i) { return data_[i]; }
+  std::size_t size() const { return size_; }
+  std::span<const P> points() const { return {data_, size_}; }
+
+ private:
+  static constexpr std::size_t kStackPoints = 16;
+  std::array<P, kStackPoints> stack_;
+  std::vector<P> heap_;
+  P* data_;
+  std::size_t size_;
+};
+
+namespace detail {
+// de Casteljau on the first n points of `level`, overwriting them.
+template <class P>
+P deCasteljauInPlace(WorkingRow<P>& level, std::size_t n, double t) {
+  if (n == 0) return P{};
+  for (; n > 1; --n)
+    for (std::size_t i = 0; i + 1 < n; ++i) level[i] = interpolate(level[i], level[i + 1], t);
+  return level[0];
+}
+}  // namespace detail
+
 // de Casteljau's algorithm (study guide, section 2.4, equations (10) and (12)): repeated linear
 // interpolation of neighbouring control points until one point is left. Numerically stable for
 // t in [0, 1]; the empty row evaluates to P{}.
 template <class P>
 P deCasteljau(std::span<const P> control, double t) {
-  if (control.empty()) return P{};
-  // Low degrees (every GL evaluator, the teapot, the conics) work on the stack.
-  constexpr std::size_t kStackPoints = 16;
-  std::array<P, kStackPoints> stackLevel;
-  std::vector<P> heapLevel;
-  P* level = stackLevel.data();
-  if (control.size() > kStackPoints) {
-    heapLevel.assign(control.begin(), control.end());
-    level = heapLevel.data();
-  } else {
-    for (std::size_t i = 0; i < control.size(); ++i) level[i] = control[i];
-  }
-  for (std::size_t n = control.size(); n > 1; --n)
-    for (std::size_t i = 0; i + 1 < n; ++i) level[i] = interpolate(level[i], level[i + 1], t);
-  return level[0];
+  WorkingRow<P> level(control);
+  return detail::deCasteljauInPlace(level, level.size(), t);
 }
 
 // Subdivision at t: the left edge of de Casteljau's triangle (p00, p10, p20, ...) controls the
@@ -78,12 +104,15 @@ std::vector<P> hodograph(std::span<const P> control) {
 // The k-th derivative at t: k hodographs, then de Casteljau. Beyond the degree it is zero.
 template <class P>
 P deCasteljauDerivative(std::span<const P> control, double t, int order) {
-  std::vector<P> row(control.begin(), control.end());
-  for (int k = 0; k < order; ++k) {
-    if (row.size() < 2) return P{};
-    row = hodograph(std::span<const P>(row));
+  WorkingRow<P> row(control);
+  std::size_t n = row.size();
+  for (int k = 0; k < order; ++k, --n) {
+    if (n < 2) return P{};
+    // hodograph() in place: point i is read before it is overwritten, point i + 1 after.
+    const double degree = static_cast<double>(n - 1);
+    for (std::size_t i = 0; i + 1 < n; ++i) row[i] = degree * (row[i + 1] + (-1.0) * row[i]);
   }
-  return deCasteljau(std::span<const P>(row), t);
+  return detail::deCasteljauInPlace(row, n, t);
 }
 
 // Degree elevation: the same curve with one more control point,
