@@ -16,6 +16,9 @@
  *   textured_scene   a floor with its 256 x 256 texture repeated 30 times each way and 24 textured
  *                    cubes, in perspective, lit by a directional light, GL_MODULATE, mipmapped
  *                    (GL_GENERATE_MIPMAP) and filtered trilinearly (GL_LINEAR_MIPMAP_LINEAR)
+ *   small_triangles_immediate, gouraud_quads_immediate, textured_scene_immediate
+ *                    those frames through glBegin/glColor4ubv/(glNormal3fv/glTexCoord2fv)/
+ *                    glVertex3fv/glEnd, as programs written in immediate mode draw them
  * A frame is glClear, the draw and glFinish. Each frame is drawn once to warm up, then RUNS
  * times; the median time is reported, with the fastest and slowest. The last line gives the
  * process's peak memory (maximum resident set size).
@@ -485,10 +488,12 @@ static double peakMemoryMiB(void)
   return (double)usage.ru_maxrss / 1024.0;
 }
 
-enum { FRAME_COUNT = 9 };
+enum { FRAME_COUNT = 12 };
 static const char *const frameNames[FRAME_COUNT + 1] = {
-    "small_triangles", "large_triangles",       "gouraud_quads",       "lines",          "lines_immediate",
-    "lit_spheres",     "lit_spheres_immediate", "lit_spheres_indexed", "textured_scene", NULL};
+    "small_triangles",       "large_triangles",     "gouraud_quads",  "lines",
+    "lines_immediate",       "lit_spheres",         "lit_spheres_immediate",
+    "lit_spheres_indexed",   "textured_scene",      "small_triangles_immediate",
+    "gouraud_quads_immediate", "textured_scene_immediate", NULL};
 
 /* Builds frame `name`; returns 0 for a name no frame has. */
 static int makeFrame(const char *name, Frame *frame)
@@ -503,6 +508,12 @@ static int makeFrame(const char *name, Frame *frame)
     *frame = immediately(litSpheres(), "lit_spheres_immediate");
   else if (strcmp(name, "lit_spheres_indexed") == 0) *frame = litSpheresIndexed();
   else if (strcmp(name, "textured_scene") == 0) *frame = texturedScene();
+  else if (strcmp(name, "small_triangles_immediate") == 0)
+    *frame = immediately(smallTriangles(), "small_triangles_immediate");
+  else if (strcmp(name, "gouraud_quads_immediate") == 0)
+    *frame = immediately(gouraudQuads(), "gouraud_quads_immediate");
+  else if (strcmp(name, "textured_scene_immediate") == 0)
+    *frame = immediately(texturedScene(), "textured_scene_immediate");
   else return 0;
   return 1;
 }
@@ -577,7 +588,7 @@ int main(int argc, char **argv)
     drawFrame(&frame);
     for (int r = 0; r < runs; ++r) times[r] = drawFrame(&frame);
     qsort(times, (size_t)runs, sizeof times[0], byValue);
-    printf("frame %-22s %8d primitives  median %9.2f ms  (min %.2f, max %.2f)\n", frame.name,
+    printf("frame %-26s %8d primitives  median %9.2f ms  (min %.2f, max %.2f)\n", frame.name,
            frame.primitives, times[runs / 2], times[0], times[runs - 1]);
     fflush(stdout);
     if (pngDir) {

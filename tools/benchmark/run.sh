@@ -118,14 +118,14 @@ awk -v threads="$thread_counts" '
   $4 == "peak" && $5 == "memory:" { if ($6 + 0 > peak[$1, $3] + 0) peak[$1, $3] = $6 }
   END {
     t = split(threads, counts, " ")
-    printf "%-22s %9s", "", ""
+    printf "%-26s %9s", "", ""
     for (k = 1; k <= t; k++) printf "   %-25s", counts[k] (counts[k] == 1 ? " thread" : " threads")
-    printf "\n%-22s %9s", "frame", "primitives"
+    printf "\n%-26s %9s", "frame", "primitives"
     for (k = 1; k <= t; k++) printf "   %8s %8s %7s", "glass", "Mesa", "ratio"
     printf "\n"
     for (i = 1; i <= n; i++) {
       name = order[i]
-      printf "%-22s %9s", name, count[name]
+      printf "%-26s %9s", name, count[name]
       for (k = 1; k <= t; k++) {
         g = median(ms["glass", counts[k], name]); m = median(ms["mesa", counts[k], name])
         printf "   %8s %8s %7s", g == "" ? "-" : sprintf("%.1f", g), m == "" ? "-" : sprintf("%.1f", m),
@@ -142,7 +142,7 @@ awk -v threads="$thread_counts" '
       for (i = 1; i <= n; i++) {
         name = order[i]
         if (name !~ /^scene_/) continue
-        printf "%-22s", name
+        printf "%-26s", name
         for (k = 1; k <= t; k++) {
           g = median(ms["glass", counts[k], name]); m = median(ms["mesa", counts[k], name])
           printf "   %8s / %-8s", g == "" ? "-" : sprintf("%.1f", 1000 / g), m == "" ? "-" : sprintf("%.1f", 1000 / m)
@@ -154,7 +154,7 @@ awk -v threads="$thread_counts" '
     for (p = 1; p <= 2; p++) {
       program = p == 1 ? "frames" : "scenes"
       if (!(("glass", program) in peak)) continue
-      printf "%-22s glass %8s   Mesa %8s\n", p == 1 ? "benchmark" : "scene_benchmark", peak["glass", program],
+      printf "%-26s glass %8s   Mesa %8s\n", p == 1 ? "benchmark" : "scene_benchmark", peak["glass", program],
              (("mesa", program) in peak) ? peak["mesa", program] : "-"
     }
   }' "$results"
