@@ -2,7 +2,8 @@
 # are far larger than the image tests' (1920 x 1080, up to 250,000 primitives), so they fill
 # scenes past the sizes at which the rasterizer hands them to its threads early or in several
 # parts (rasterizer/src/tiled_rasterizer.cpp); the images must not depend on where a frame was
-# cut.
+# cut. Each frame drawn through immediate mode (NAME_immediate) must also give the same bytes as
+# the frame from arrays (NAME): the same vertices, whichever way they arrive.
 #
 #   cmake -DBENCHMARK=<benchmark program> -DOUTPUT_DIR=<dir> -P benchmark_thread_determinism.cmake
 if(NOT BENCHMARK OR NOT OUTPUT_DIR)
@@ -37,4 +38,18 @@ foreach(threads 1 2 3 8)
     endif()
   endforeach()
 endforeach()
-message(STATUS "${count} benchmark frames: the same bytes with 1, 2, 3 and 8 threads")
+set(pairs 0)
+foreach(png IN LISTS first_pngs)
+  if(png MATCHES "^(.*)_immediate\\.png$")
+    file(SHA256 ${OUTPUT_DIR}/threads1/${CMAKE_MATCH_1}.png arrays)
+    file(SHA256 ${OUTPUT_DIR}/threads1/${png} immediate)
+    if(NOT immediate STREQUAL arrays)
+      message(FATAL_ERROR "${png}: immediate mode drew other bytes than ${CMAKE_MATCH_1}.png from arrays")
+    endif()
+    math(EXPR pairs "${pairs} + 1")
+  endif()
+endforeach()
+if(pairs LESS 5)
+  message(FATAL_ERROR "only ${pairs} frames drawn both from arrays and in immediate mode, not 5")
+endif()
+message(STATUS "${count} benchmark frames: the same bytes with 1, 2, 3 and 8 threads, and in immediate mode as from arrays (${pairs} pairs)")
