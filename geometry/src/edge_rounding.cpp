@@ -18,6 +18,18 @@
 
 namespace glass::geometry {
 
+glm::dvec3 newellNormal(const MarkedPolyhedron& poly, const MarkedPolyhedron::Face& face) {
+  glm::dvec3 n(0.0);
+  const std::size_t count = face.vertices.size();
+  for (std::size_t i = 0; i < count; ++i) {
+    const glm::dvec3& a = poly.vertices[face.vertices[i]];
+    const glm::dvec3& b = poly.vertices[face.vertices[(i + 1) % count]];
+    n += glm::dvec3((a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x), (a.x - b.x) * (a.y + b.y));
+  }
+  const double length = glm::length(n);
+  return length > 0.0 ? n / length : n;
+}
+
 namespace {
 
 // Directions are unit vectors; dot products below this count as zero (a right angle), above
@@ -59,18 +71,6 @@ struct EdgeRecord {
 
 std::string describeEdge(const EdgeRecord& e) {
   return "edge " + std::to_string(e.from) + "-" + std::to_string(e.to);
-}
-
-glm::dvec3 newellNormal(const MarkedPolyhedron& poly, const MarkedPolyhedron::Face& face) {
-  glm::dvec3 n(0.0);
-  const std::size_t count = face.vertices.size();
-  for (std::size_t i = 0; i < count; ++i) {
-    const glm::dvec3& a = poly.vertices[face.vertices[i]];
-    const glm::dvec3& b = poly.vertices[face.vertices[(i + 1) % count]];
-    n += glm::dvec3((a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x), (a.x - b.x) * (a.y + b.y));
-  }
-  const double length = glm::length(n);
-  return length > 0.0 ? n / length : n;
 }
 
 // The topology of the polyhedron: edges with their two faces, edges around each vertex, face

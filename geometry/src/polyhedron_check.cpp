@@ -49,18 +49,6 @@ void countEdges(const MarkedPolyhedron& shape, PolyhedronCheck& check) {
   }
 }
 
-// Newell's normal of the face's loop (not normalized).
-glm::dvec3 loopNormal(const MarkedPolyhedron& shape, const MarkedPolyhedron::Face& face) {
-  glm::dvec3 normal(0.0);
-  const std::size_t n = face.vertices.size();
-  for (std::size_t k = 0; k < n; ++k) {
-    const glm::dvec3& a = shape.vertices[face.vertices[k]];
-    const glm::dvec3& b = shape.vertices[face.vertices[(k + 1) % n]];
-    normal += glm::dvec3((a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x), (a.x - b.x) * (a.y + b.y));
-  }
-  return normal;
-}
-
 // The face's loop in the plane across its normal's largest component, turned so that the loop
 // keeps its sense.
 std::vector<PlanarPoint> projectedLoop(const MarkedPolyhedron& shape, const MarkedPolyhedron::Face& face,
@@ -93,7 +81,7 @@ std::vector<Triangle> faceTriangles(const MarkedPolyhedron& shape, const MarkedP
   const std::size_t n = face.vertices.size();
   if (n < 3) return triangles;
   const auto at = [&](std::size_t k) { return shape.vertices[face.vertices[k]]; };
-  const std::vector<PlanarPoint> loop = projectedLoop(shape, face, loopNormal(shape, face));
+  const std::vector<PlanarPoint> loop = projectedLoop(shape, face, newellNormal(shape, face));
   if (n > 3 && !isConvex(loop)) {
     const PolygonTessellation tessellation = tessellatePolygon({loop}, WindingRule::NonZero, false);
     if (tessellation.created.empty()) {

@@ -122,6 +122,10 @@ struct MarkedPolyhedron {
   std::vector<std::array<std::uint32_t, 2>> markedEdges;  // vertex pairs
 };
 
+// The unit normal of a face by Newell's method (the sum over its edges, which stays right for a
+// concave or slightly warped loop); zero for a face without area.
+glm::dvec3 newellNormal(const MarkedPolyhedron& poly, const MarkedPolyhedron::Face& face);
+
 // A polyhedron the rounding cannot handle, or a radius out of range; what() names the edge,
 // vertex or face.
 class RoundingError : public std::runtime_error {
