@@ -216,7 +216,7 @@ static void rounded_edge(int k, const float from[2], const float corner[2], cons
 {
   const float y0 = block_min[1] + (corner_rounded(k, BOTTOM) ? radius : 0.0f);
   const float y1 = block_max[1] - (corner_rounded(k, TOP) ? radius : 0.0f);
-  quarter_cylinder(from, corner, to, y0, y1, s0, (float)(PI / 2.0) * radius, side_t(y0), side_t(y1));
+  quarter_cylinder(from, corner, to, y0, y1, s0, (float)(PI / 2.0) * radius, side_t(y0), side_t(y1), 4);
 }
 
 /* Where the outline leaves and reaches corner i: R along its sides from the corner when the

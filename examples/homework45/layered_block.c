@@ -71,6 +71,28 @@ static int rim_rounded(const struct cube_layers *layers, int layer, int i, int j
   return room;
 }
 
+/* The heights of the rows of `layer`'s walls and upright cylinders from y0 to y1 (each the
+ * layer's bottom or R above it, its top or R below it): R above the bottom, four rows between
+ * that and R below the top, and R below the top, so that walls and cylinders of one layer,
+ * whichever of them stop short of the top or the bottom, have their vertices at the same heights
+ * where they meet. Returns how many. */
+static int layer_rows(const struct cube_layers *layers, int layer, float radius, double y0, double y1, float rows[ROWS + 3])
+{
+  const double bottom = layers->height[layer], top = layers->height[layer + 1];
+  const double low = radius > 0 ? (double)((float)bottom + radius) : bottom;
+  const double high = radius > 0 ? (double)((float)top - radius) : top;
+  const double a = fmin(low, high), b = fmax(low, high);
+  double heights[ROWS + 3];
+  heights[0] = bottom;
+  for (int row = 0; row <= ROWS; ++row) heights[1 + row] = a + (b - a) * row / ROWS;
+  heights[ROWS + 2] = top;
+  int count = 0;
+  for (int h = 0; h < ROWS + 3; ++h)
+    if (heights[h] >= y0 && heights[h] <= y1 && (count == 0 || (float)heights[h] > rows[count - 1]))
+      rows[count++] = (float)heights[h];
+  return count;
+}
+
 /* How far above the bottom of cell (i, j) of `layer` its walls start: R over a rounded bottom rim
  * or a fillet. */
 static float foot_rise(const struct cube_layers *layers, int layer, int i, int j, float radius)
@@ -94,22 +116,22 @@ static int wall_columns(float a, float b, int keep_a, int keep_b, float radius, 
 
 /* The wall of `layer` along grid line `fixed` (x = fixed for along_x 0, else z = fixed), from
  * grid value a to b > a, facing (normal_x, normal_z): R shorter at an end where the upright is
- * rounded, with columns at a, a + R, b - R and b. */
+ * rounded, with columns at a, a + R, b - R and b, rows by layer_rows. */
 static void wall(const struct cube_layers *layers, int layer, int along_x, float fixed, float a, float b,
                  int rounded_a, int rounded_b, int normal_x, int normal_z, float radius, float drop, float rise)
 {
-  float columns[4];
+  float columns[4], rows[ROWS + 3];
   const int count = wall_columns(a, b, !rounded_a, !rounded_b, radius, columns);
   const double y0 = rise > 0 ? (double)((float)layers->height[layer] + rise) : layers->height[layer];
   const double y1 = drop > 0 ? (double)((float)layers->height[layer + 1] - drop) : layers->height[layer + 1];
-  /* A fillet and a top rim that share the whole height leave no wall. */
-  if (y1 <= y0) return;
+  /* A fillet and a top rim that share the whole height leave no wall (one row height). */
+  const int row_count = layer_rows(layers, layer, radius, y0, y1, rows);
   glNormal3f((float)normal_x, 0, (float)normal_z);
-  for (int row = 0; row < ROWS; ++row) {
+  for (int row = 0; row + 1 < row_count; ++row) {
     glBegin(GL_QUAD_STRIP);
     for (int c = 0; c < count; ++c)
       for (int k = 1; k >= 0; --k) {
-        const float y = (float)(y0 + (y1 - y0) * (row + k) / ROWS);
+        const float y = rows[row + k];
         const float x = along_x ? columns[c] : fixed, z = along_x ? fixed : columns[c];
         glTexCoord2f(wall_s(x, z, normal_x, normal_z), texture_t(layers, y));
         glVertex3f(x, y, z);
@@ -209,9 +231,13 @@ static void upright_cylinder(const struct cube_layers *layers, int layer, int i,
                              corner_rim_rounded(layers, layer, i, j, radius, FILLETED_FOOT)
                          ? radius
                          : 0;
-  const float y0 = (float)layers->height[layer] + rise, y1 = (float)layers->height[layer + 1] - drop;
-  if (y1 <= y0) return;
-  quarter_cylinder(from, corner, to, y0, y1, s0, s_length, texture_t(layers, y0), texture_t(layers, y1));
+  const double y0 = rise > 0 ? (double)((float)layers->height[layer] + rise) : layers->height[layer];
+  const double y1 = drop > 0 ? (double)((float)layers->height[layer + 1] - drop) : layers->height[layer + 1];
+  float rows[ROWS + 3];
+  const int row_count = layer_rows(layers, layer, radius, y0, y1, rows);
+  for (int row = 0; row + 1 < row_count; ++row)
+    quarter_cylinder(from, corner, to, rows[row], rows[row + 1], s0, s_length, texture_t(layers, rows[row]),
+                     texture_t(layers, rows[row + 1]), 1);
 }
 
 /* How a rim's strip ends at a grid point along its wall: at a rounded upright, where the corner's

@@ -17,7 +17,7 @@ void quarter_arc_point(const float from[2], const float corner[2], const float t
 }
 
 void quarter_cylinder(const float from[2], const float corner[2], const float to[2], float y0, float y1, float s0,
-                      float arc, float t0, float t1)
+                      float arc, float t0, float t1, int v_steps)
 {
   const float w = (float)(sqrt(2.0) / 2.0);
   float points[2][3][4]; /* [v][u][xyzw] */
@@ -38,8 +38,8 @@ void quarter_cylinder(const float from[2], const float corner[2], const float to
   glMap2f(GL_MAP2_TEXTURE_COORD_2, 0, 1, 2, 3, 0, 1, 6, 2, &texture_points[0][0][0]);
   glEnable(GL_MAP2_VERTEX_4);
   glEnable(GL_MAP2_TEXTURE_COORD_2);
-  glMapGrid2f(ARC_STEPS, 0, 1, 4, 0, 1);
-  glEvalMesh2(GL_FILL, 0, ARC_STEPS, 0, 4);
+  glMapGrid2f(ARC_STEPS, 0, 1, v_steps, 0, 1);
+  glEvalMesh2(GL_FILL, 0, ARC_STEPS, 0, v_steps);
   glDisable(GL_MAP2_VERTEX_4);
   glDisable(GL_MAP2_TEXTURE_COORD_2);
 }

@@ -13,10 +13,10 @@
 void quarter_arc_point(const float from[2], const float corner[2], const float to[2], double u, double out[2]);
 
 /* The quarter cylinder over that arc from height y0 to y1, by glMap2f (GL_MAP2_VERTEX_4) and
- * glEvalMesh2 with ARC_STEPS steps round and 4 up; GL_AUTO_NORMAL's dP/du x dP/dv points out of
+ * glEvalMesh2 with ARC_STEPS steps round and v_steps up; GL_AUTO_NORMAL's dP/du x dP/dv points out of
  * the solid when the arc runs counter-clockwise seen from above. The texture's s runs from s0 to
  * s0 + arc (the arc's length), t from t0 at y0 to t1 at y1. */
 void quarter_cylinder(const float from[2], const float corner[2], const float to[2], float y0, float y1, float s0,
-                      float arc, float t0, float t1);
+                      float arc, float t0, float t1, int v_steps);
 
 #endif
