@@ -216,10 +216,17 @@ static int one_loop_round_fillets(const struct cube_layers *layers, const int *p
   return convex - concave == 4;
 }
 
-/* Whether the piece numbered `start` of `layer`'s footprint, `count` cells from (i0, j0) to
- * (i1, j1), gets fillets round its foot (FILLETED_FOOT in cube_layers.h): a rectangle whose cells
- * and the ring of cells round them the layer below fills, the ring empty in this layer (so each
- * fillet has a cell's top beside it, at least 2 R wide), every edge round its foot hard. */
+/* How the foot of the piece of `layer`'s footprint, `count` cells from (i0, j0) to (i1, j1), is
+ * filleted (FILLETED_FOOT in cube_layers.h): 0 not at all; else it is a rectangle whose cells the
+ * layer below fills, with the ring of cells round them empty in this layer, and along each of its
+ * four sides the layer below fills either every cell of the ring (a fillet runs there, with a
+ * cell's top beside it at least 2 R wide, every edge along that foot hard) or none (the side is
+ * flush with the layer below's side, its wall running on down). Where two filleted sides meet,
+ * the layer below fills the ring's corner cell too; where a filleted side meets a flush one, the
+ * lower layer's side runs on past the corner under the flush side, so the fillet ends against the
+ * lower layer's top rim, in a piece of torus round the corner's upright, which must be rounded
+ * (returns 2: the foot is filleted only when that rim is rounded, cap_pieces); where two flush
+ * sides meet, the corner's upright runs on down. Returns 1 for a foot filleted all round. */
 static int foot_filleted(const struct cube_layers *layers, const unsigned char *covered, const unsigned char *soft,
                          int layer, int count, int i0, int i1, int j0, int j1)
 {
@@ -227,21 +234,58 @@ static int foot_filleted(const struct cube_layers *layers, const unsigned char *
   for (int j = j0 - 1; j <= j1 + 1; ++j)
     for (int i = i0 - 1; i <= i1 + 1; ++i) {
       const int ring = i < i0 || i > i1 || j < j0 || j > j1;
-      if (!cube_layers_filled(layers, layer - 1, i, j) || (ring && cube_layers_filled(layers, layer, i, j))) return 0;
+      if (ring ? cube_layers_filled(layers, layer, i, j) : !cube_layers_filled(layers, layer - 1, i, j)) return 0;
     }
-  for (int i = i0; i <= i1; ++i)
-    if (!rim_hard(covered, soft, layers, 1, layer, i, j0) || !rim_hard(covered, soft, layers, 1, layer, i, j1 + 1))
-      return 0;
-  for (int j = j0; j <= j1; ++j)
-    if (!rim_hard(covered, soft, layers, 0, layer, i0, j) || !rim_hard(covered, soft, layers, 0, layer, i1 + 1, j))
-      return 0;
-  return 1;
+  /* Sides 0 to 3: x = i0 (its ring at i0 - 1), x = i1 + 1, z = j0, z = j1 + 1. */
+  int filleted[4];
+  for (int side = 0; side < 4; ++side) {
+    const int along_x = side >= 2, length = along_x ? i1 - i0 + 1 : j1 - j0 + 1;
+    const int ring = side == 0 ? i0 - 1 : side == 1 ? i1 + 1 : side == 2 ? j0 - 1 : j1 + 1;
+    const int line = side == 0 ? i0 : side == 1 ? i1 + 1 : side == 2 ? j0 : j1 + 1;
+    int below = 0, hard = 1;
+    for (int c = 0; c < length; ++c) {
+      const int i = along_x ? i0 + c : ring, j = along_x ? ring : j0 + c;
+      below += cube_layers_filled(layers, layer - 1, i, j);
+      hard &= rim_hard(covered, soft, layers, along_x, layer, along_x ? i : line, along_x ? line : j);
+    }
+    if (below != 0 && below != length) return 0;
+    filleted[side] = below == length;
+    if (filleted[side] && !hard) return 0;
+  }
+  if (!filleted[0] && !filleted[1] && !filleted[2] && !filleted[3]) return 0;
+  int standing_corner = 0;
+  for (int corner = 0; corner < 4; ++corner) {
+    const int x_side = corner & 1, z_side = 2 + (corner >> 1);
+    const int i = x_side ? i1 + 1 : i0 - 1, j = z_side == 3 ? j1 + 1 : j0 - 1;
+    if (cube_layers_filled(layers, layer - 1, i, j) != (filleted[x_side] && filleted[z_side])) return 0;
+    if (filleted[x_side] != filleted[z_side]) {
+      if (!cube_layers_rounded(layers, layer, x_side ? i1 + 1 : i0, z_side == 3 ? j1 + 1 : j0)) return 0;
+      standing_corner = 1;
+    }
+  }
+  return 1 + standing_corner;
 }
 
-/* Which cells have their top or bottom rim rounded (cube_layers.h): each piece of a layer's
- * footprint (its cells joined side to side) outlined by one loop (a rectangle, an L, ...) with
- * every concave corner's upright rounded, nothing above it (below it) and every edge along its
- * top (bottom) rim hard. */
+/* A piece of a layer's footprint (its cells joined side to side), as cap_pieces sees it. */
+struct footprint_piece {
+  int layer, first, count; /* its cells: members[first .. first + count - 1] */
+  int top_possible;        /* outlined by one loop with its concave corners' uprights rounded,
+                              every edge along its top rim (but under a layer standing on it) hard */
+  int bottom_capped;       /* the same below, with nothing below it */
+  int foot;                /* foot_filleted */
+  int below;               /* with a foot, the piece of the layer below under it */
+  int top_capped, foot_filleted; /* found by cap_pieces */
+};
+
+/* Which cells have their top or bottom rim rounded or their foot filleted (cube_layers.h): each
+ * piece of a layer's footprint outlined by one loop (a rectangle, an L, ...) with every concave
+ * corner's upright rounded, every edge along its top (bottom) rim hard and nothing below it (for
+ * its bottom rim) or, above it, only pieces whose feet are filleted (for its top rim: its rim
+ * then runs along its sides where nothing stands, and ends where a flush side of a piece on it
+ * meets a filleted one); and each foot foot_filleted finds, when it ends against no rim or
+ * against the rounded top rim of the piece under it. Since a foot ending against a rim needs it
+ * rounded and a rim under pieces needs their feet filleted, both are first taken as possible and
+ * then given up in turn until every one left has what it needs. */
 static int cap_pieces(const struct wings_mesh *mesh, struct cube_layers *layers, const int *place)
 {
   const int cells_x = layers->x_count - 1, cells_z = layers->z_count - 1;
@@ -250,11 +294,13 @@ static int cap_pieces(const struct wings_mesh *mesh, struct cube_layers *layers,
    * (rim_z) at height `level` is hard, and whether there is one, in the slots rim_slot gives. */
   const size_t points = (size_t)layers->x_count * (size_t)layers->z_count;
   const size_t levels = (size_t)layers->layer_count + 1;
+  const size_t all_cells = (size_t)layers->layer_count * cells;
   unsigned char *covered = calloc(2 * levels * points + 1, 1), *soft = calloc(2 * levels * points + 1, 1);
-  int *piece = malloc(cells * sizeof *piece + 1), *stack = malloc(cells * sizeof *stack + 1);
-  int *members = malloc(cells * sizeof *members + 1);
-  layers->capped = calloc((size_t)layers->layer_count * cells + 1, 1);
-  int ok = covered && soft && piece && stack && members && layers->capped;
+  int *piece = malloc(all_cells * sizeof *piece + 1), *stack = malloc(cells * sizeof *stack + 1);
+  int *members = malloc(all_cells * sizeof *members + 1);
+  struct footprint_piece *pieces = malloc(all_cells * sizeof *pieces + 1);
+  layers->capped = calloc(all_cells + 1, 1);
+  int ok = covered && soft && piece && stack && members && pieces && layers->capped;
   for (long e = 0; ok && e < mesh->edge_count; ++e) {
     const int *a = &place[3 * mesh->edges[e].vs], *b = &place[3 * mesh->edges[e].ve];
     int along_x, from, to;
@@ -265,54 +311,80 @@ static int cap_pieces(const struct wings_mesh *mesh, struct cube_layers *layers,
       soft[at] |= (unsigned char)!mesh->hard[e];
     }
   }
+  int piece_count = 0, member_count = 0;
+  for (size_t c = 0; ok && c < all_cells; ++c) piece[c] = -1;
   for (int k = 0; ok && k < layers->layer_count; ++k) {
-    for (size_t c = 0; c < cells; ++c) piece[c] = -1;
+    int *layer_piece = piece + (size_t)k * cells;
     for (int start = 0; start < (int)cells; ++start) {
-      if (piece[start] >= 0 || !cube_layers_filled(layers, k, start % cells_x, start / cells_x)) continue;
-      /* The piece of the footprint through cell `start`, its bounds and whether anything stands on it. */
-      int count = 0, top = 0, i0 = cells_x, i1 = -1, j0 = cells_z, j1 = -1, covered_above = 0, covered_below = 0;
+      if (layer_piece[start] >= 0 || !cube_layers_filled(layers, k, start % cells_x, start / cells_x)) continue;
+      /* The piece of the footprint through cell `start`, its bounds and whether anything is below it. */
+      struct footprint_piece *p = &pieces[piece_count];
+      int top = 0, i0 = cells_x, i1 = -1, j0 = cells_z, j1 = -1, covered_below = 0;
+      p->layer = k, p->first = member_count, p->count = 0;
       stack[top++] = start;
-      piece[start] = start;
+      layer_piece[start] = piece_count;
       while (top > 0) {
         const int c = stack[--top], i = c % cells_x, j = c / cells_x;
-        members[count++] = c;
+        members[member_count++] = c;
+        ++p->count;
         i0 = i < i0 ? i : i0, i1 = i > i1 ? i : i1, j0 = j < j0 ? j : j0, j1 = j > j1 ? j : j1;
-        covered_above |= cube_layers_filled(layers, k + 1, i, j);
         covered_below |= cube_layers_filled(layers, k - 1, i, j);
         const int next[4][2] = {{i - 1, j}, {i + 1, j}, {i, j - 1}, {i, j + 1}};
         for (int n = 0; n < 4; ++n) {
           const int ni = next[n][0], nj = next[n][1];
-          if (!cube_layers_filled(layers, k, ni, nj) || piece[nj * cells_x + ni] >= 0) continue;
-          piece[nj * cells_x + ni] = start;
+          if (!cube_layers_filled(layers, k, ni, nj) || layer_piece[nj * cells_x + ni] >= 0) continue;
+          layer_piece[nj * cells_x + ni] = piece_count;
           stack[top++] = nj * cells_x + ni;
         }
       }
-      const int loop = one_loop_round_fillets(layers, piece, start, k, i0, i1, j0, j1);
-      unsigned char rims = 0;
+      const int loop = one_loop_round_fillets(layers, layer_piece, piece_count, k, i0, i1, j0, j1);
       for (int side = 0; side < 2; ++side) {
-        /* side 0: the top rim, at level k + 1, with nothing above; side 1: the bottom's. Every
-         * side of a cell with no cell of the layer beside it is on the rim. */
+        /* side 0: the top rim, at level k + 1; side 1: the bottom's. Every side of a cell with no
+         * cell of the layer beside it is on the rim, but at the top where a cell of the layer
+         * above stands on the cell (its wall runs on down there). */
         const int level = side ? k : k + 1;
-        int capped = loop && !(side ? covered_below : covered_above);
-        for (int m = 0; capped && m < count; ++m) {
-          const int i = members[m] % cells_x, j = members[m] / cells_x;
-          capped = (cube_layers_filled(layers, k, i - 1, j) || rim_hard(covered, soft, layers, 0, level, i, j)) &&
-                   (cube_layers_filled(layers, k, i + 1, j) || rim_hard(covered, soft, layers, 0, level, i + 1, j)) &&
-                   (cube_layers_filled(layers, k, i, j - 1) || rim_hard(covered, soft, layers, 1, level, i, j)) &&
-                   (cube_layers_filled(layers, k, i, j + 1) || rim_hard(covered, soft, layers, 1, level, i, j + 1));
+        int capped = loop && !(side && covered_below);
+        for (int m = 0; capped && m < p->count; ++m) {
+          const int i = members[p->first + m] % cells_x, j = members[p->first + m] / cells_x;
+          const int under = !side && cube_layers_filled(layers, k + 1, i, j);
+          capped = (under || cube_layers_filled(layers, k, i - 1, j) || rim_hard(covered, soft, layers, 0, level, i, j)) &&
+                   (under || cube_layers_filled(layers, k, i + 1, j) || rim_hard(covered, soft, layers, 0, level, i + 1, j)) &&
+                   (under || cube_layers_filled(layers, k, i, j - 1) || rim_hard(covered, soft, layers, 1, level, i, j)) &&
+                   (under || cube_layers_filled(layers, k, i, j + 1) || rim_hard(covered, soft, layers, 1, level, i, j + 1));
         }
-        if (capped) rims |= side ? CAPPED_BOTTOM : CAPPED_TOP;
+        if (side) p->bottom_capped = capped;
+        else p->top_possible = capped;
       }
-      if (foot_filleted(layers, covered, soft, k, count, i0, i1, j0, j1)) rims |= FILLETED_FOOT;
-      for (int m = 0; rims && m < count; ++m)
-        layers->capped[(size_t)k * cells + (size_t)members[m]] = rims;
+      p->foot = foot_filleted(layers, covered, soft, k, p->count, i0, i1, j0, j1);
+      p->below = p->foot ? piece[(size_t)(k - 1) * cells + (size_t)(j0 * cells_x + i0)] : -1;
+      p->top_capped = p->top_possible;
+      p->foot_filleted = p->foot != 0;
+      ++piece_count;
     }
+  }
+  for (int changed = ok; changed;) {
+    changed = 0;
+    for (int n = 0; n < piece_count; ++n) {
+      struct footprint_piece *p = &pieces[n];
+      for (int m = 0; p->top_capped && m < p->count; ++m) {
+        const int above = p->layer + 1 < layers->layer_count ? piece[(size_t)(p->layer + 1) * cells + (size_t)members[p->first + m]] : -1;
+        if (above >= 0 && !pieces[above].foot_filleted) p->top_capped = 0, changed = 1;
+      }
+      if (p->foot_filleted && p->foot == 2 && !pieces[p->below].top_capped) p->foot_filleted = 0, changed = 1;
+    }
+  }
+  for (int n = 0; ok && n < piece_count; ++n) {
+    const struct footprint_piece *p = &pieces[n];
+    const unsigned char rims = (unsigned char)((p->top_capped ? CAPPED_TOP : 0) | (p->bottom_capped ? CAPPED_BOTTOM : 0) |
+                                               (p->foot_filleted ? FILLETED_FOOT : 0));
+    for (int m = 0; m < p->count; ++m) layers->capped[(size_t)p->layer * cells + (size_t)members[p->first + m]] = rims;
   }
   free(covered);
   free(soft);
   free(piece);
   free(stack);
   free(members);
+  free(pieces);
   return ok;
 }
 
@@ -466,13 +538,17 @@ int cube_layers_from_mesh(const struct wings_mesh *mesh, struct cube_layers *lay
     for (int j = 0; j + 1 < layers->z_count; ++j)
       layers->max_radius = fmin(layers->max_radius, (layers->z[j + 1] - layers->z[j]) / 2);
     /* A filleted foot and a rounded top rim share the layer's height, its wall between them
-     * (none at the largest radius). */
+     * (none at the largest radius); so do the top and bottom rims of a piece that fillets end
+     * against (which must stay rounded while the fillets are). */
     const size_t footprint_cells = (size_t)(layers->x_count - 1) * (size_t)(layers->z_count - 1);
     for (int k = 0; k < layers->layer_count; ++k)
       for (size_t c = 0; c < footprint_cells; ++c) {
         const int capped = layers->capped[(size_t)k * footprint_cells + c];
-        if (!(capped & FILLETED_FOOT)) continue;
-        const double room = (layers->height[k + 1] - layers->height[k]) / (1 + !!(capped & CAPPED_TOP));
+        const int under_fillet = (capped & CAPPED_TOP) && k + 1 < layers->layer_count &&
+                                 layers->filled[(size_t)(k + 1) * footprint_cells + c];
+        if (!(capped & FILLETED_FOOT) && !under_fillet) continue;
+        const int rims = !!(capped & FILLETED_FOOT) + !!(capped & CAPPED_TOP) + !!(capped & CAPPED_BOTTOM);
+        const double room = (layers->height[k + 1] - layers->height[k]) / rims;
         if (room < layers->max_radius) layers->max_radius = room, layers->radius_limited_by_fillet = 1;
       }
   }

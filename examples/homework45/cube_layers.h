@@ -5,8 +5,10 @@
  * are rounded one layer at a time when they are marked hard in Wings3D; the edges along the
  * layers' tops and bottoms stay sharp, but for the top rim of a piece of a layer's footprint
  * outlined by one loop (a rectangle, an L) with nothing above it (a cube standing on a slab, an L
- * on a slab), the bottom rim of one with nothing below it (the slab on the floor) and the foot of
- * a rectangle standing inside the top of the layer below (a cube in the middle of a slab). */
+ * on a slab) or only rectangles with filleted feet (the slab under a cube), the bottom rim of one
+ * with nothing below it (the slab on the floor) and the foot of a rectangle standing on the layer
+ * below, each of its sides inside that layer's top or flush with its side (a cube in the middle,
+ * on the side or at the corner of a slab). */
 #ifndef HOMEWORK45_CUBE_LAYERS_H
 #define HOMEWORK45_CUBE_LAYERS_H
 
@@ -27,20 +29,28 @@ struct cube_layers {
                              is a corner of the layer's footprint and marked hard there */
   unsigned char *capped;  /* [layer][j][i]: CAPPED_TOP when cell (i, j) lies in a piece of the
                              layer's footprint (its cells joined side to side) outlined by one
-                             loop, with nothing above, its concave corners' uprights rounded and
-                             the edges round its top all hard: that rim is rounded too, meeting
+                             loop, with nothing above but pieces whose feet are filleted, its
+                             concave corners' uprights rounded and the edges round its top all
+                             hard (but under the pieces on it): that rim is rounded too, meeting
                              the uprights in eighths of a sphere (rounded convex corners) and
                              quarters of a torus (concave ones), and itself in mitres (sharp
-                             convex corners); CAPPED_BOTTOM the same below (nothing under it, its
-                             bottom rim hard); FILLETED_FOOT when the piece is a rectangle
-                             standing wholly inside the top of the layer below (that layer
-                             fills the cells under it and the ring of cells round it, this one
-                             leaves the ring empty) with every edge round its foot hard: the
-                             concave edges along its foot are filled by a quarter cylinder of
-                             radius R (a fillet), turning round its corners */
+                             convex corners), and ending at a standing corner (below);
+                             CAPPED_BOTTOM the same below (nothing under it, its bottom rim hard);
+                             FILLETED_FOOT when the piece is a rectangle standing on the layer
+                             below (that layer fills the cells under it, this one leaves the ring
+                             of cells round it empty), each of its sides either inside the lower
+                             layer's top (which fills the ring's cells beyond it, every edge
+                             along that foot hard) or flush with the lower layer's side (which
+                             fills none of them), at least one inside: the concave edges along
+                             its foot are filled by a quarter cylinder of radius R (a fillet),
+                             turning round its corners between two sides inside and ending at a
+                             standing corner, where a side inside meets a flush one (its upright
+                             rounded, the lower piece's top rim rounded), against the lower
+                             layer's rim in a quarter of a torus */
   double max_radius;      /* half the closest spacing of the grid lines: the corners' quarter
                              circles keep apart; for a layer with a filleted foot also its height
-                             shared by the fillet and its top rim when that is rounded */
+                             shared by the fillet and its rounded rims, and for a piece with
+                             filleted pieces on it its height shared by its rounded rims */
   int radius_limited_by_fillet; /* whether that last bound is the smaller */
   int sharp_hard_edges;   /* hard edges left sharp: the creases along the layers' tops and
                              bottoms but the capped pieces' rims and filleted feet */

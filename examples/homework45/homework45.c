@@ -11,8 +11,9 @@
  * patch whose weights are products of the two arcs' weights, exact as both arcs are (study
  * guide, section 2.4). An object of several layers of cubes that is not one outline raised (a
  * cube on a slab) is drawn by layers (layered_block.c): its hard uprights rounded layer by layer,
- * the rims of a layer's piece (a rectangle, an L) with nothing above (below) it rounded as above,
- * its other rims left sharp. A texture runs on across the rounded strips, planar shadows
+ * the rims of a layer's piece (a rectangle, an L) with nothing above (below) it, or with only
+ * rectangles standing on it whose feet are filleted, rounded as above, the feet of those
+ * rectangles filled by fillets, its other rims left sharp. A texture runs on across the rounded strips, planar shadows
  * of the object fall on the floor and both walls (shadow matrices, kept on their surface by the
  * stencil buffer); walk mode with collisions, examine mode, three kinds of light, five
  * viewpoints, orthographic or perspective projection.
@@ -902,12 +903,13 @@ static void load_object(int argc, char **argv)
     fprintf(stderr, "homework45: %s: %d hard edges stay sharp (of an object of more than one layer of cubes "
             "this program rounds the upright edges, layer by layer, and the top (bottom) rim of a piece of a "
             "layer (cubes joined side to side, outlined by one loop, such as a rectangle or an L, its concave "
-            "corners' uprights rounded) with nothing above (below) it, and fills with fillets the foot of a rectangle "
-            "of cubes standing inside the top of the layer below; it leaves the other edges along the layers' tops and "
-            "bottoms sharp)\n", path, layers.sharp_hard_edges);
+            "corners' uprights rounded) with nothing above (below) it or, above it, only rectangles of cubes whose "
+            "feet it fills with fillets (rectangles standing on the layer below, each side inside its top or flush "
+            "with its side); it leaves the other edges along the layers' tops and bottoms sharp)\n",
+            path, layers.sharp_hard_edges);
   if (layered && layers.radius_limited_by_fillet)
-    fprintf(stderr, "homework45: %s: the radius goes up to %g only: the height of a layer whose foot is filleted, "
-            "shared with its top rim when that is rounded\n", path, layers.max_radius);
+    fprintf(stderr, "homework45: %s: the radius goes up to %g only: the height of a layer whose foot is filleted "
+            "or that filleted feet stand on, shared by its fillet and its rounded rims\n", path, layers.max_radius);
   if (layered) {
     block_min[0] = (float)layers.x[0], block_max[0] = (float)layers.x[layers.x_count - 1];
     block_min[1] = (float)layers.height[0], block_max[1] = (float)layers.height[layers.layer_count];

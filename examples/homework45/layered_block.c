@@ -19,8 +19,13 @@
  * of a torus at each concave one, the strips meet in a mitre at a sharp convex corner, and the
  * flat face loses its bands along the rim and, round each torus piece, what the torus covers; so
  * the pieces still share their vertices. In the same way a filleted foot (cube_layers.h) has its
- * walls and uprights start R above the foot, a fillet along each wall, a torus or horn piece at
- * each corner, and the top below loses what they cover. */
+ * walls and uprights start R above the foot, a fillet along each wall inside the top below, a
+ * torus or horn piece at each corner between two of them, and the top below loses what they
+ * cover; where a fillet ends at a side flush with the layer below (a standing corner), a quarter
+ * of a torus joins it to the upright above and to the lower layer's top rim, which runs on along
+ * the flush side, and the flush plane keeps what lies outside it. Walls and uprights have their
+ * rows at the same heights in each layer (layer_rows), so that they meet those flat pieces and
+ * one another vertex for vertex whichever of them stop R short of the top or the bottom. */
 #include "layered_block.h"
 
 #include "rational_patch.h"
@@ -57,25 +62,63 @@ static int upright_rounded(const struct cube_layers *layers, int layer, int i, i
 
 /* Whether cell (i, j) of `layer` has its top (rim CAPPED_TOP) or bottom rim (CAPPED_BOTTOM)
  * rounded, or its foot filleted (FILLETED_FOOT), at this radius: a capped piece's (cube_layers.h),
- * when the radius leaves some of the layer's height to its walls (R for each rounded rim less than
- * the height). A piece with a filleted foot may give its fillet and its top rim the whole height
- * (cube_layers.c bounds the radius by it; at the largest radius its walls are left out), compared
- * in single precision, in which the radius is kept. */
+ * when the radius leaves room for its rims in the layer's height (R for each, compared in single
+ * precision, in which the radius is kept): the rims may take the whole height (cube_layers.c
+ * bounds the radius by it; at the largest radius the walls between them are left out), so that
+ * a rim that a fillet ends against is rounded whenever the fillet is. */
 static int rim_rounded(const struct cube_layers *layers, int layer, int i, int j, float radius, int rim)
 {
   const int capped = cube_layers_capped(layers, layer, i, j);
   if (radius <= 0 || !(capped & rim)) return 0;
   const int rims = !!(capped & CAPPED_TOP) + !!(capped & CAPPED_BOTTOM) + !!(capped & FILLETED_FOOT);
-  const double height = layers->height[layer + 1] - layers->height[layer];
-  const int room = capped & FILLETED_FOOT ? radius * (float)rims <= (float)height : radius * rims < height;
-  return room;
+  return radius * (float)rims <= (float)(layers->height[layer + 1] - layers->height[layer]);
+}
+
+/* Whether the rim `rim` of cell (i, j) of `layer` is rounded along the cell's open sides: as
+ * rim_rounded, but a top rim under a cell of the layer above is no rim (the wall above runs on
+ * down there). */
+static int rim_shown(const struct cube_layers *layers, int layer, int i, int j, float radius, int rim)
+{
+  return rim_rounded(layers, layer, i, j, radius, rim) &&
+         !(rim == CAPPED_TOP && cube_layers_filled(layers, layer + 1, i, j));
+}
+
+/* How many of the four cells around grid point (i, j) `layer` fills. */
+static int cells_around(const struct cube_layers *layers, int layer, int i, int j)
+{
+  int around = 0;
+  for (int di = -1; di <= 0; ++di)
+    for (int dj = -1; dj <= 0; ++dj) around += cube_layers_filled(layers, layer, i + di, j + dj);
+  return around;
+}
+
+/* Whether the top (rim CAPPED_TOP) or bottom rim of `layer` is rounded at the corner at grid point
+ * (i, j) (or its foot filleted, FILLETED_FOOT): the rim of the piece of the footprint that the
+ * cells around it in the solid belong to (one piece, since cubes meeting only along an upright
+ * line are refused), where no cell of the layer above stands on them (for a top rim). */
+static int corner_rim_rounded(const struct cube_layers *layers, int layer, int i, int j, float radius, int rim)
+{
+  for (int di = -1; di <= 0; ++di)
+    for (int dj = -1; dj <= 0; ++dj)
+      if (cube_layers_filled(layers, layer, i + di, j + dj)) return rim_shown(layers, layer, i + di, j + dj, radius, rim);
+  return 0;
+}
+
+/* Whether the foot of `layer`'s convex corner at grid point (i, j) is filleted and stands on the
+ * layer below with one side flush with that layer's side (the layer below fills two of the cells
+ * around the point): the fillet along the other side ends there against the lower layer's
+ * rounded top rim, in a piece of torus (standing_corner). */
+static int standing_corner_at(const struct cube_layers *layers, int layer, int i, int j, float radius)
+{
+  return cells_around(layers, layer, i, j) == 1 && cells_around(layers, layer - 1, i, j) == 2 &&
+         upright_rounded(layers, layer, i, j, radius) && corner_rim_rounded(layers, layer, i, j, radius, FILLETED_FOOT);
 }
 
 /* The heights of the rows of `layer`'s walls and upright cylinders from y0 to y1 (each the
  * layer's bottom or R above it, its top or R below it): R above the bottom, four rows between
  * that and R below the top, and R below the top, so that walls and cylinders of one layer,
  * whichever of them stop short of the top or the bottom, have their vertices at the same heights
- * where they meet. Returns how many. */
+ * where they meet, also round a standing corner's flat pieces. Returns how many. */
 static int layer_rows(const struct cube_layers *layers, int layer, float radius, double y0, double y1, float rows[ROWS + 3])
 {
   const double bottom = layers->height[layer], top = layers->height[layer + 1];
@@ -93,11 +136,13 @@ static int layer_rows(const struct cube_layers *layers, int layer, float radius,
   return count;
 }
 
-/* How far above the bottom of cell (i, j) of `layer` its walls start: R over a rounded bottom rim
- * or a fillet. */
-static float foot_rise(const struct cube_layers *layers, int layer, int i, int j, float radius)
+/* How far above the bottom of cell (i, j) of `layer` its wall towards cell (oi, oj) starts: R over
+ * a rounded bottom rim or a fillet (which runs where the layer below fills the cell across the
+ * wall; a wall flush with the layer below runs on down). */
+static float foot_rise(const struct cube_layers *layers, int layer, int i, int j, int oi, int oj, float radius)
 {
-  return rim_rounded(layers, layer, i, j, radius, CAPPED_BOTTOM) || rim_rounded(layers, layer, i, j, radius, FILLETED_FOOT)
+  return rim_rounded(layers, layer, i, j, radius, CAPPED_BOTTOM) ||
+                 (rim_rounded(layers, layer, i, j, radius, FILLETED_FOOT) && cube_layers_filled(layers, layer - 1, oi, oj))
              ? radius
              : 0;
 }
@@ -116,20 +161,24 @@ static int wall_columns(float a, float b, int keep_a, int keep_b, float radius, 
 
 /* The wall of `layer` along grid line `fixed` (x = fixed for along_x 0, else z = fixed), from
  * grid value a to b > a, facing (normal_x, normal_z): R shorter at an end where the upright is
- * rounded, with columns at a, a + R, b - R and b, rows by layer_rows. */
+ * rounded, with columns at a, a + R, b - R and b, rows by layer_rows. Its top R x R square at an
+ * end `cut_a` (`cut_b`) is left out: there the flat pieces round a standing corner's torus
+ * piece take over. */
 static void wall(const struct cube_layers *layers, int layer, int along_x, float fixed, float a, float b,
-                 int rounded_a, int rounded_b, int normal_x, int normal_z, float radius, float drop, float rise)
+                 int rounded_a, int rounded_b, int cut_a, int cut_b, int normal_x, int normal_z, float radius,
+                 float drop, float rise)
 {
   float columns[4], rows[ROWS + 3];
   const int count = wall_columns(a, b, !rounded_a, !rounded_b, radius, columns);
   const double y0 = rise > 0 ? (double)((float)layers->height[layer] + rise) : layers->height[layer];
   const double y1 = drop > 0 ? (double)((float)layers->height[layer + 1] - drop) : layers->height[layer + 1];
-  /* A fillet and a top rim that share the whole height leave no wall (one row height). */
   const int row_count = layer_rows(layers, layer, radius, y0, y1, rows);
+  const float cut_from = (float)layers->height[layer + 1] - radius;
   glNormal3f((float)normal_x, 0, (float)normal_z);
   for (int row = 0; row + 1 < row_count; ++row) {
+    const int first = cut_a && rows[row] >= cut_from ? 1 : 0, last = cut_b && rows[row] >= cut_from ? count - 2 : count - 1;
     glBegin(GL_QUAD_STRIP);
-    for (int c = 0; c < count; ++c)
+    for (int c = first; c <= last; ++c)
       for (int k = 1; k >= 0; --k) {
         const float y = rows[row + k];
         const float x = along_x ? columns[c] : fixed, z = along_x ? fixed : columns[c];
@@ -140,26 +189,36 @@ static void wall(const struct cube_layers *layers, int layer, int along_x, float
   }
 }
 
-/* The walls of `layer`: along every grid segment with the solid on one side only. */
+/* The walls of `layer`: along every grid segment with the solid on one side only (the cell
+ * (ci, cj) inside, (oi, oj) outside), from grid point (i, j) to (i + along_x, j + !along_x). Under a
+ * cell of the layer above, the wall runs on up into that layer's flush wall and gives up its top
+ * square at a standing corner of that layer. */
+static void wall_of_segment(const struct cube_layers *layers, int layer, int along_x, int i, int j, int ci, int cj,
+                            int oi, int oj, float radius)
+{
+  const int i1 = i + along_x, j1 = j + !along_x, under = cube_layers_filled(layers, layer + 1, ci, cj);
+  wall(layers, layer, along_x, (float)(along_x ? layers->z[j] : layers->x[i]),
+       (float)(along_x ? layers->x[i] : layers->z[j]), (float)(along_x ? layers->x[i1] : layers->z[j1]),
+       upright_rounded(layers, layer, i, j, radius), upright_rounded(layers, layer, i1, j1, radius),
+       under && standing_corner_at(layers, layer + 1, i, j, radius),
+       under && standing_corner_at(layers, layer + 1, i1, j1, radius), along_x ? 0 : ci < oi ? 1 : -1,
+       along_x ? (cj < oj ? 1 : -1) : 0, radius, rim_shown(layers, layer, ci, cj, radius, CAPPED_TOP) ? radius : 0,
+       foot_rise(layers, layer, ci, cj, oi, oj, radius));
+}
+
 static void walls(const struct cube_layers *layers, int layer, float radius)
 {
   for (int i = 0; i < layers->x_count; ++i)
     for (int j = 0; j + 1 < layers->z_count; ++j) {
       const int before = cube_layers_filled(layers, layer, i - 1, j), after = cube_layers_filled(layers, layer, i, j);
       if (before != after)
-        wall(layers, layer, 0, (float)layers->x[i], (float)layers->z[j], (float)layers->z[j + 1],
-             upright_rounded(layers, layer, i, j, radius), upright_rounded(layers, layer, i, j + 1, radius),
-             before ? 1 : -1, 0, radius, rim_rounded(layers, layer, before ? i - 1 : i, j, radius, CAPPED_TOP) ? radius : 0,
-             foot_rise(layers, layer, before ? i - 1 : i, j, radius));
+        wall_of_segment(layers, layer, 0, i, j, before ? i - 1 : i, j, before ? i : i - 1, j, radius);
     }
   for (int j = 0; j < layers->z_count; ++j)
     for (int i = 0; i + 1 < layers->x_count; ++i) {
       const int before = cube_layers_filled(layers, layer, i, j - 1), after = cube_layers_filled(layers, layer, i, j);
       if (before != after)
-        wall(layers, layer, 1, (float)layers->z[j], (float)layers->x[i], (float)layers->x[i + 1],
-             upright_rounded(layers, layer, i, j, radius), upright_rounded(layers, layer, i + 1, j, radius), 0,
-             before ? 1 : -1, radius, rim_rounded(layers, layer, i, before ? j - 1 : j, radius, CAPPED_TOP) ? radius : 0,
-             foot_rise(layers, layer, i, before ? j - 1 : j, radius));
+        wall_of_segment(layers, layer, 1, i, j, i, before ? j - 1 : j, i, before ? j : j - 1, radius);
     }
 }
 
@@ -209,17 +268,6 @@ static int upright_arc(const struct cube_layers *layers, int layer, int i, int j
   return convex;
 }
 
-/* Whether the top (rim CAPPED_TOP) or bottom rim of `layer` is rounded at the corner at grid point
- * (i, j): the rim of the piece of the footprint that the cells around it in the solid belong to
- * (one piece, since cubes meeting only along an upright line are refused). */
-static int corner_rim_rounded(const struct cube_layers *layers, int layer, int i, int j, float radius, int rim)
-{
-  for (int di = -1; di <= 0; ++di)
-    for (int dj = -1; dj <= 0; ++dj)
-      if (cube_layers_filled(layers, layer, i + di, j + dj)) return rim_rounded(layers, layer, i + di, j + dj, radius, rim);
-  return 0;
-}
-
 /* The quarter cylinder of the rounded upright at grid point (i, j) of `layer`, R short of the
  * layer's top and bottom where they are rounded rims. */
 static void upright_cylinder(const struct cube_layers *layers, int layer, int i, int j, float radius)
@@ -227,8 +275,10 @@ static void upright_cylinder(const struct cube_layers *layers, int layer, int i,
   float from[2], corner[2], to[2], s0, s_length;
   upright_arc(layers, layer, i, j, radius, from, corner, to, &s0, &s_length);
   const float drop = corner_rim_rounded(layers, layer, i, j, radius, CAPPED_TOP) ? radius : 0;
+  /* A fillet ends at the upright's foot unless both its walls are flush with the layer below. */
   const float rise = corner_rim_rounded(layers, layer, i, j, radius, CAPPED_BOTTOM) ||
-                             corner_rim_rounded(layers, layer, i, j, radius, FILLETED_FOOT)
+                             (corner_rim_rounded(layers, layer, i, j, radius, FILLETED_FOOT) &&
+                              cells_around(layers, layer - 1, i, j) >= 2)
                          ? radius
                          : 0;
   const double y0 = rise > 0 ? (double)((float)layers->height[layer] + rise) : layers->height[layer];
@@ -240,19 +290,75 @@ static void upright_cylinder(const struct cube_layers *layers, int layer, int i,
                      texture_t(layers, rows[row + 1]), 1);
 }
 
-/* How a rim's strip ends at a grid point along its wall: at a rounded upright, where the corner's
- * piece of sphere or torus takes over R before the point; at a sharp convex corner, in the
- * corner's diagonal plane, where the next wall's strip ends too (a mitre, as on the one-layer
- * object); or running on along the wall. */
-enum strip_end { ENDS_AT_CORNER_PIECE, ENDS_IN_MITRE, RUNS_ON };
+/* How a rim's strip or a fillet ends at a grid point along its wall: at a rounded upright, where
+ * the corner's piece of sphere or torus takes over R before the point; at a standing corner
+ * (standing_corner_at), where the torus piece between a fillet and the rim it ends against takes
+ * over R before the point; at a sharp convex corner, in the corner's diagonal plane, where the
+ * next wall's strip ends too (a mitre, as on the one-layer object); or running on along the wall. */
+enum strip_end { ENDS_AT_CORNER_PIECE, ENDS_AT_STANDING_CORNER, ENDS_IN_MITRE, RUNS_ON };
 
-static enum strip_end strip_end_at(const struct cube_layers *layers, int layer, int i, int j, float radius)
+static enum strip_end strip_end_at(const struct cube_layers *layers, int layer, int i, int j, float radius, int rim)
 {
+  if ((rim == CAPPED_TOP && standing_corner_at(layers, layer + 1, i, j, radius)) ||
+      (rim == FILLETED_FOOT && standing_corner_at(layers, layer, i, j, radius)))
+    return ENDS_AT_STANDING_CORNER;
   if (upright_rounded(layers, layer, i, j, radius)) return ENDS_AT_CORNER_PIECE;
-  int around = 0;
+  return cells_around(layers, layer, i, j) == 1 ? ENDS_IN_MITRE : RUNS_ON;
+}
+
+/* Whether a strip keeps the column at its end (not where a corner's piece takes over). */
+static int keeps_end_column(enum strip_end end) { return end != ENDS_AT_CORNER_PIECE && end != ENDS_AT_STANDING_CORNER; }
+
+/* The texture's s where a fillet along the wall facing n_w (x, z) ends against the rim along the
+ * flush wall facing n_f at the standing corner `corner`: the fillet's s (its wall's, R in from
+ * the corner) into *fillet_s, and how far the rim's (its wall's, R out from the corner) is from
+ * it beyond whole repeats of the checkerboard into *delta (0 on a grid of whole units); the rim's
+ * s moves by -delta and the torus piece's by delta across the rim's end, so that the two meet at
+ * the point where the fillet and the rim touch on the top below. */
+static void standing_corner_s(const float corner[2], const int n_f[2], const int n_w[2], float radius, float *fillet_s,
+                              float *delta)
+{
+  *fillet_s = wall_s(corner[0] - (float)n_f[0] * radius, corner[1] - (float)n_f[1] * radius, n_w[0], n_w[1]);
+  const float rim_s = wall_s(corner[0] + (float)n_w[0] * radius, corner[1] + (float)n_w[1] * radius, n_f[0], n_f[1]);
+  *delta = (float)remainder((double)rim_s - *fillet_s, CHECKER_PERIOD);
+}
+
+/* The outward normals (x, z) of the walls meeting at the standing corner at grid point (i, j) of
+ * `layer`: n_w of the one with the fillet at its foot, n_f of the one flush with the layer below. */
+static void standing_corner_walls(const struct cube_layers *layers, int layer, int i, int j, int n_w[2], int n_f[2])
+{
+  int qx = 0, qz = 0;
   for (int di = -1; di <= 0; ++di)
-    for (int dj = -1; dj <= 0; ++dj) around += cube_layers_filled(layers, layer, i + di, j + dj);
-  return around == 1 ? ENDS_IN_MITRE : RUNS_ON;
+    for (int dj = -1; dj <= 0; ++dj)
+      if (cube_layers_filled(layers, layer, i + di, j + dj)) qx = di ? -1 : 1, qz = dj ? -1 : 1;
+  /* The layer below runs on past the wall x = corner (facing -qx) or past z = corner (facing -qz). */
+  const int past_x = cube_layers_filled(layers, layer - 1, qx > 0 ? i - 1 : i, qz > 0 ? j : j - 1);
+  n_w[0] = past_x ? -qx : 0, n_w[1] = past_x ? 0 : -qz;
+  n_f[0] = past_x ? 0 : -qx, n_f[1] = past_x ? -qz : 0;
+}
+
+/* Where the strip from the corner piece at `corner` to a standing corner of `layer` 2 R away is
+ * left out, so that the corner piece's end column u_end, at `at` (R from `corner` along a wall),
+ * meets the standing corner's torus piece: that column takes the strip's texture at a standing
+ * corner (rim_strip, fillet_strip), t reaching the height `level` (the standing piece's foot) on
+ * the top below and, for a rim's piece (`rim`), s moving as standing_corner_s says. */
+static void meet_standing_corner(const struct cube_layers *layers, int layer, const float at[2], const float corner[2],
+                                 float radius, float level, int rim, float tex[3][3][2], int u_end)
+{
+  const float standing[2] = {2 * at[0] - corner[0], 2 * at[1] - corner[1]};
+  for (int i = 0; i < layers->x_count; ++i)
+    for (int j = 0; j < layers->z_count; ++j)
+      if ((float)layers->x[i] == standing[0] && (float)layers->z[j] == standing[1] &&
+          standing_corner_at(layers, layer, i, j, radius)) {
+        int n_w[2], n_f[2];
+        float fillet_s, delta;
+        standing_corner_walls(layers, layer, i, j, n_w, n_f);
+        standing_corner_s(standing, n_f, n_w, radius, &fillet_s, &delta);
+        tex[1][u_end][0] -= rim ? delta / 2 : 0;
+        tex[2][u_end][0] -= rim ? delta : 0;
+        tex[1][u_end][1] = (tex[0][u_end][1] + texture_t(layers, level)) / 2;
+        tex[2][u_end][1] = texture_t(layers, level);
+      }
 }
 
 /* The rounded top (rim CAPPED_TOP) or bottom rim of `layer` along its wall on grid line `fixed`
@@ -270,7 +376,7 @@ static void rim_strip(const struct cube_layers *layers, int layer, int along_x, 
 {
   const double w = sqrt(2.0) / 2.0;
   float columns[4];
-  const int count = wall_columns(a, b, end_a != ENDS_AT_CORNER_PIECE, end_b != ENDS_AT_CORNER_PIECE, radius, columns);
+  const int count = wall_columns(a, b, keeps_end_column(end_a), keeps_end_column(end_b), radius, columns);
   const float out = rim == CAPPED_TOP ? 1.0f : -1.0f;
   const float top = (float)layers->height[rim == CAPPED_TOP ? layer + 1 : layer], below = top - out * radius;
   const float t0 = texture_t(layers, below), t2 = t0 + out * (float)(PI / 2.0) * radius;
@@ -288,7 +394,20 @@ static void rim_strip(const struct cube_layers *layers, int layer, int along_x, 
       control_point(net[v][0], x, below, z, 1.0);
       control_point(net[v][1], x, top, z, w);
       control_point(net[v][2], inner_x, top, inner_z, 1.0);
-      strip_column_texture(tex[v], wall_s(x, z, normal_x, normal_z), t0, t2);
+      /* At a standing corner t reaches the top's height on the top (where the fillet's does), and
+       * s moves to the fillet's there (standing_corner_s). */
+      const int standing = (c + v == 0 && end_a == ENDS_AT_STANDING_CORNER) ||
+                           (c + v == count - 1 && end_b == ENDS_AT_STANDING_CORNER);
+      strip_column_texture(tex[v], wall_s(x, z, normal_x, normal_z), t0, standing ? texture_t(layers, top) : t2);
+      if (standing) {
+        const int away = c + v == 0 ? 1 : -1;
+        const float corner[2] = {along_x ? x - (float)away * radius : x, along_x ? z : z - (float)away * radius};
+        const int n_f[2] = {normal_x, normal_z}, n_w[2] = {along_x ? away : 0, along_x ? 0 : away};
+        float fillet_s, delta;
+        standing_corner_s(corner, n_f, n_w, radius, &fillet_s, &delta);
+        tex[v][1][0] -= delta / 2;
+        tex[v][2][0] -= delta;
+      }
       for (int u = 0; u < 3; ++u) {
         centre[v][u][0] = along_x && u == 2 ? inner_x : x + (float)in_x * radius;
         centre[v][u][1] = below;
@@ -311,7 +430,7 @@ static void fillet_strip(const struct cube_layers *layers, int layer, int along_
 {
   const double w = sqrt(2.0) / 2.0;
   float columns[4];
-  const int count = wall_columns(a, b, end_a != ENDS_AT_CORNER_PIECE, end_b != ENDS_AT_CORNER_PIECE, radius, columns);
+  const int count = wall_columns(a, b, keeps_end_column(end_a), keeps_end_column(end_b), radius, columns);
   const float foot = (float)layers->height[layer], above = foot + radius;
   const float t0 = texture_t(layers, above), t2 = t0 - (float)(PI / 2.0) * radius;
   for (int c = 0; c + 1 < count; ++c) {
@@ -323,7 +442,10 @@ static void fillet_strip(const struct cube_layers *layers, int layer, int along_
       control_point(net[v][0], x, above, z, 1.0);
       control_point(net[v][1], x, foot, z, w);
       control_point(net[v][2], out_x, foot, out_z, 1.0);
-      strip_column_texture(tex[v], wall_s(x, z, normal_x, normal_z), t0, t2);
+      /* At a standing corner t reaches the foot's height on the top below, as the rim's does. */
+      const int standing = (c + v == 0 && end_a == ENDS_AT_STANDING_CORNER) ||
+                           (c + v == count - 1 && end_b == ENDS_AT_STANDING_CORNER);
+      strip_column_texture(tex[v], wall_s(x, z, normal_x, normal_z), t0, standing ? texture_t(layers, foot) : t2);
       for (int u = 0; u < 3; ++u) {
         centre[v][u][0] = out_x;
         centre[v][u][1] = above;
@@ -344,23 +466,32 @@ static void rim_or_fillet_strip(const struct cube_layers *layers, int layer, int
   else rim_strip(layers, layer, along_x, fixed, a, b, end_a, end_b, normal_x, normal_z, radius, rim);
 }
 
+/* Whether the rim `rim` of cell (i, j) of `layer` runs along its side towards the empty cell
+ * (oi, oj): a rim shown there (rim_shown), or a fillet where the layer below fills the cell
+ * across. */
+static int rim_along(const struct cube_layers *layers, int layer, int i, int j, int oi, int oj, float radius, int rim)
+{
+  return rim_shown(layers, layer, i, j, radius, rim) &&
+         (rim != FILLETED_FOOT || cube_layers_filled(layers, layer - 1, oi, oj));
+}
+
 static void rim_strips(const struct cube_layers *layers, int layer, float radius, int rim)
 {
   for (int i = 0; i < layers->x_count; ++i)
     for (int j = 0; j + 1 < layers->z_count; ++j) {
       const int before = cube_layers_filled(layers, layer, i - 1, j), after = cube_layers_filled(layers, layer, i, j);
-      if (before != after && rim_rounded(layers, layer, before ? i - 1 : i, j, radius, rim))
+      if (before != after && rim_along(layers, layer, before ? i - 1 : i, j, before ? i : i - 1, j, radius, rim))
         rim_or_fillet_strip(layers, layer, 0, (float)layers->x[i], (float)layers->z[j], (float)layers->z[j + 1],
-                            strip_end_at(layers, layer, i, j, radius), strip_end_at(layers, layer, i, j + 1, radius),
-                            before ? 1 : -1, 0, radius, rim);
+                            strip_end_at(layers, layer, i, j, radius, rim),
+                            strip_end_at(layers, layer, i, j + 1, radius, rim), before ? 1 : -1, 0, radius, rim);
     }
   for (int j = 0; j < layers->z_count; ++j)
     for (int i = 0; i + 1 < layers->x_count; ++i) {
       const int before = cube_layers_filled(layers, layer, i, j - 1), after = cube_layers_filled(layers, layer, i, j);
-      if (before != after && rim_rounded(layers, layer, i, before ? j - 1 : j, radius, rim))
+      if (before != after && rim_along(layers, layer, i, before ? j - 1 : j, i, before ? j : j - 1, radius, rim))
         rim_or_fillet_strip(layers, layer, 1, (float)layers->z[j], (float)layers->x[i], (float)layers->x[i + 1],
-                            strip_end_at(layers, layer, i, j, radius), strip_end_at(layers, layer, i + 1, j, radius),
-                            0, before ? 1 : -1, radius, rim);
+                            strip_end_at(layers, layer, i, j, radius, rim),
+                            strip_end_at(layers, layer, i + 1, j, radius, rim), 0, before ? 1 : -1, radius, rim);
     }
 }
 
@@ -382,17 +513,18 @@ static void rim_corner(const struct cube_layers *layers, int layer, int i, int j
   float net[3][3][4], tex[3][3][2];
   double centre[3][3][3];
   rim_corner_net(arc, axis_xz, convex, below, top, s0, s_length, t0, t2, net, tex, centre);
+  for (int end = 0; rim == CAPPED_TOP && end < 2; ++end)
+    meet_standing_corner(layers, layer + 1, end ? to : from, corner, radius, top, 1, tex, 2 * end);
   draw_rim_net((const float (*)[3][4])net, (const float (*)[3][2])tex, (const double (*)[3][3])centre, 3, ARC_STEPS);
 }
 
 /* Whether fillets turn round the foot of the corner at grid point (i, j) of `layer`: a convex
- * corner (one of the cells around it in the solid) of a piece whose foot is filleted. */
+ * corner (one of the cells around it in the solid) of a piece whose foot is filleted, standing
+ * inside the top of the layer below (which fills the four cells around the point). */
 static int fillet_corner_at(const struct cube_layers *layers, int layer, int i, int j, float radius)
 {
-  int around = 0;
-  for (int di = -1; di <= 0; ++di)
-    for (int dj = -1; dj <= 0; ++dj) around += cube_layers_filled(layers, layer, i + di, j + dj);
-  return around == 1 && corner_rim_rounded(layers, layer, i, j, radius, FILLETED_FOOT);
+  return cells_around(layers, layer, i, j) == 1 && cells_around(layers, layer - 1, i, j) == 4 &&
+         corner_rim_rounded(layers, layer, i, j, radius, FILLETED_FOOT);
 }
 
 /* Where the fillets along two walls of `layer` meet round the foot of their corner at grid point
@@ -429,6 +561,8 @@ static void fillet_corner(const struct cube_layers *layers, int layer, int i, in
   float net[3][3][4], tex[3][3][2];
   double centre[3][3][3];
   turned_profile_net(arc, axis, scale, y, s0, s_length, t0, t2, net, tex, centre);
+  for (int end = 0; rounded && end < 2; ++end)
+    meet_standing_corner(layers, layer, end ? to : from, corner, radius, foot, 0, tex, 2 * end);
   draw_fillet_net((const float (*)[3][4])net, (const float (*)[3][2])tex, (const double (*)[3][3])centre, 3,
                   ARC_STEPS);
 }
@@ -501,7 +635,7 @@ static int torus_corner(const struct cube_layers *layers, int layer, int i, int 
          corner_rim_rounded(layers, layer, i, j, radius, rim);
 }
 
-/* Where a fan of torus_corner_flat starts: the end `end` of the torus's inner rim is R from the
+/* Where a fan of concave_corner_fans starts: the end `end` of the torus's inner rim is R from the
  * concave grid point `corner` along both axes, towards the empty cell (the side of the fillet's
  * axis) along one; the fan starts on the squares' outer side beside it, level with the grid
  * point along that axis. */
@@ -510,17 +644,28 @@ static void fan_apex(const float end[2], const float corner[2], const float axis
   for (int k = 0; k < 2; ++k) apex[k] = (end[k] > corner[k]) == (axis[k] > corner[k]) ? corner[k] : end[k];
 }
 
-/* The flat face at height y round the torus piece at the concave grid point (i, j) of `layer`:
- * of the three R x R squares round the point in the solid, what lies outside the torus's inner
- * rim, the fillet's arc scaled by 2 from its axis (2 R from the axis, through the squares' far
- * corners' sides). The rim's ends lie at corners of the squares, and every point of it is seen
- * from the middle of the squares' outer sides next to it, so two fans from those points, split
- * at the rim's middle and at the squares' far corner, cover it; their sides along the squares'
- * edges meet the neighbouring cells' pieces there. */
-static void torus_corner_flat(const struct cube_layers *layers, int layer, int i, int j, float y, float radius)
+/* A plane in which concave_corner_fans draws: `vertex` draws the point (a, b) of the plane, at
+ * parameter u of the torus's inner rim when on_rim. */
+struct fan_plane {
+  void (*vertex)(const struct fan_plane *plane, double a, double b, int on_rim, double u);
+  const struct cube_layers *layers;
+  float y;                      /* a top or bottom: its height */
+  float origin[2];              /* a wall: (a, b) is the point origin + a along[] at height b */
+  int along[2], normal[2];      /* (x, z) */
+  float s_shift, rim_tex[3][2]; /* its texture: the wall's s moved by whole repeats, and the
+                                   torus piece's on the rim (its texture net's last row) */
+};
+
+/* Round the concave point `corner` of a plane (a, b) whose torus piece's fillet arc runs from
+ * `from` round `corner` to `to`: of the three R x R squares round the point in the solid, what
+ * lies outside the torus's inner rim, the arc scaled by 2 from its axis (2 R from the axis,
+ * through the squares' far corners' sides). The rim's ends lie at corners of the squares, and
+ * every point of it is seen from the middle of the squares' outer sides next to it, so two fans
+ * from those points, split at the rim's middle and at the squares' far corner, cover it; their
+ * sides along the squares' edges meet the neighbouring pieces there. */
+static void concave_corner_fans(const float from[2], const float corner[2], const float to[2],
+                                const struct fan_plane *plane)
 {
-  float from[2], corner[2], to[2], s0, s_length;
-  upright_arc(layers, layer, i, j, radius, from, corner, to, &s0, &s_length);
   const float axis[2] = {from[0] + to[0] - corner[0], from[1] + to[1] - corner[1]};
   float far_from[2], far_corner[2], far_to[2], far_square[2], apex_from[2], apex_to[2];
   for (int k = 0; k < 2; ++k) {
@@ -534,17 +679,120 @@ static void torus_corner_flat(const struct cube_layers *layers, int layer, int i
   for (int half = 0; half < 2; ++half) {
     const float *apex = half ? apex_to : apex_from;
     glBegin(GL_TRIANGLE_FAN);
-    flat_vertex(apex[0], y, apex[1]);
-    if (half) flat_vertex(far_square[0], y, far_square[1]);
+    plane->vertex(plane, apex[0], apex[1], 0, 0);
+    if (half) plane->vertex(plane, far_square[0], far_square[1], 0, 0);
     for (int step = half ? ARC_STEPS / 2 : 0; step <= (half ? ARC_STEPS : ARC_STEPS / 2); ++step) {
       double p[2];
       quarter_arc_point(far_from, far_corner, far_to, (double)step / ARC_STEPS, p);
-      glTexCoord2d(p[0], p[1]);
-      glVertex3d(p[0], y, p[1]);
+      plane->vertex(plane, p[0], p[1], 1, (double)step / ARC_STEPS);
     }
-    if (!half) flat_vertex(far_square[0], y, far_square[1]);
+    if (!half) plane->vertex(plane, far_square[0], far_square[1], 0, 0);
     glEnd();
   }
+}
+
+/* A point (x, z) of a top or bottom, its texture (x, z). */
+static void level_vertex(const struct fan_plane *plane, double a, double b, int on_rim, double u)
+{
+  (void)on_rim, (void)u;
+  glTexCoord2d(a, b);
+  glVertex3d(a, plane->y, b);
+}
+
+/* The flat face at height y round the torus piece at the concave grid point (i, j) of `layer`
+ * (concave_corner_fans in the plane (x, z)). */
+static void torus_corner_flat(const struct cube_layers *layers, int layer, int i, int j, float y, float radius)
+{
+  float from[2], corner[2], to[2], s0, s_length;
+  upright_arc(layers, layer, i, j, radius, from, corner, to, &s0, &s_length);
+  const struct fan_plane plane = {.vertex = level_vertex, .layers = layers, .y = y};
+  concave_corner_fans(from, corner, to, &plane);
+}
+
+/* A point (a, b) of a wall, its texture the wall's moved by the plane's s_shift, on the torus's
+ * inner rim the torus piece's texture there (its net's last row at u), so that the two agree. */
+static void wall_vertex(const struct fan_plane *plane, double a, double b, int on_rim, double u)
+{
+  const double x = plane->origin[0] + a * plane->along[0], z = plane->origin[1] + a * plane->along[1];
+  if (on_rim) {
+    const double bu[3] = {(1 - u) * (1 - u), 2 * u * (1 - u), u * u};
+    glTexCoord2d(bu[0] * plane->rim_tex[0][0] + bu[1] * plane->rim_tex[1][0] + bu[2] * plane->rim_tex[2][0],
+                 bu[0] * plane->rim_tex[0][1] + bu[1] * plane->rim_tex[1][1] + bu[2] * plane->rim_tex[2][1]);
+  } else {
+    glTexCoord2d(x * plane->normal[1] - z * plane->normal[0] + plane->s_shift, b - plane->layers->height[0]);
+  }
+  glVertex3d(x, b, z);
+}
+
+/* The standing corner at grid point (i, j) of `layer` (standing_corner_at): the piece's convex
+ * corner whose fillet, along the wall facing n_w, ends against the top rim of the layer below,
+ * which runs on along the piece's other wall, flush with the lower layer's side and facing n_f.
+ * Seen in that flush plane, with a along n_w from the corner and b the height, the fillet's
+ * quarter circle runs from the wall (0, foot + R) round (0, foot) to the top below (R, foot) about
+ * its axis (R, foot + R), and the three edges meeting at the corner are the concave edge along
+ * the fillet and two convex ones, the upright and the rim: the L's concave corner with its top
+ * turned to face n_f. Its piece is the same quarter of a torus (turned_profile_net in that frame:
+ * the fillet's quarter circle R inside the flush plane, in the plane and scaled by 2 from its
+ * axis), radii 2 R and R about the fillet's axis, between the fillet's end, the upright's
+ * quarter cylinder R above the foot and the rim's end, its normals from its tube's centre circle
+ * (draw_rim_net); the flush plane keeps what lies outside its arc of radius 2 R
+ * (concave_corner_fans). Its texture takes each neighbour's along their seams: the fillet's end
+ * (s the fillet's, t from the foot + R to the foot's height), the upright's foot (s as on the
+ * upright, moved by whole repeats to start at the fillet's, t at the foot + R) and the rim's end
+ * (t from the foot's height to the foot - R, s the fillet's moved as standing_corner_s says),
+ * and the flush plane's along its inner rim. */
+static void standing_corner(const struct cube_layers *layers, int layer, int i, int j, float radius)
+{
+  float from[2], corner[2], to[2], s0, s_length;
+  upright_arc(layers, layer, i, j, radius, from, corner, to, &s0, &s_length);
+  int n_w[2], n_f[2];
+  standing_corner_walls(layers, layer, i, j, n_w, n_f);
+  const double foot = layers->height[layer];
+  const double frame[4][3] = {{corner[0], 0, corner[1]}, {n_w[0], 0, n_w[1]}, {n_f[0], 0, n_f[1]}, {0, 1, 0}};
+  const double arc[3][2] = {{0, foot + radius}, {0, foot}, {radius, foot}}, axis[2] = {radius, foot + radius};
+  const double scale[3] = {1, 1, 2}, depth[3] = {-radius, 0, 0};
+  float net[3][3][4], tex[3][3][2];
+  double centre[3][3][3];
+  turned_profile_net_in_frame(arc, axis, scale, depth, frame, 0, 0, 0, 0, net, tex, centre);
+  float fillet_s, delta;
+  standing_corner_s(corner, n_f, n_w, radius, &fillet_s, &delta);
+  /* Which end of the upright's arc lies on the fillet's wall (R in from the flush wall). */
+  const float on_fillet_wall[2] = {corner[0] - (float)n_f[0] * radius, corner[1] - (float)n_f[1] * radius};
+  const int from_fillet = fabsf(from[0] - on_fillet_wall[0]) + fabsf(from[1] - on_fillet_wall[1]) < radius / 2;
+  const float upright_turn = from_fillet ? s_length : -s_length;
+  const float t_above = texture_t(layers, foot + radius), t_foot = texture_t(layers, foot);
+  const float t_below = texture_t(layers, foot - radius);
+  for (int k = 0; k < 3; ++k) {
+    tex[0][k][0] = fillet_s;
+    tex[0][k][1] = t_above + (t_foot - t_above) * (float)k / 2;
+    tex[k][0][0] = fillet_s + upright_turn * (float)k / 2;
+    tex[k][0][1] = t_above;
+    tex[k][2][0] = fillet_s + delta * (float)k / 2;
+    tex[k][2][1] = t_foot + (t_below - t_foot) * (float)k / 2;
+  }
+  /* In the flush plane the texture runs on as the plane's (s along a, t the height): the last
+   * row's middle value makes it the plane's at the arc's middle, (a, b) = (1 - sqrt(2)) R (1, 1)
+   * from (0, foot), and the net's middle is the blend of its four sides (a Coons net). */
+  const double middle = (1 - sqrt(2.0)) * radius;
+  const double plane_middle[2] = {tex[2][0][0] + (tex[2][2][0] - tex[2][0][0]) * (middle + radius) / (2 * radius),
+                                  texture_t(layers, foot + middle)};
+  for (int k = 0; k < 2; ++k) {
+    tex[2][1][k] = (float)((4 * plane_middle[k] - tex[2][0][k] - tex[2][2][k]) / 2);
+    tex[1][1][k] = (tex[0][1][k] + tex[2][1][k] + tex[1][0][k] + tex[1][2][k]) / 2 -
+                   (tex[0][0][k] + tex[0][2][k] + tex[2][0][k] + tex[2][2][k]) / 4;
+  }
+  draw_rim_net((const float (*)[3][4])net, (const float (*)[3][2])tex, (const double (*)[3][3])centre, 3, ARC_STEPS);
+
+  struct fan_plane plane = {.vertex = wall_vertex, .layers = layers, .origin = {corner[0], corner[1]},
+                            .along = {n_w[0], n_w[1]}, .normal = {n_f[0], n_f[1]}};
+  for (int u = 0; u < 3; ++u)
+    for (int k = 0; k < 2; ++k) plane.rim_tex[u][k] = tex[2][u][k];
+  /* The wall's s at the rim's start, (a, b) = (-R, foot + R), moved by whole repeats to the torus's there. */
+  const float wall_start_s = wall_s(corner[0] - (float)n_w[0] * radius, corner[1] - (float)n_w[1] * radius, n_f[0], n_f[1]);
+  plane.s_shift = (float)(CHECKER_PERIOD * nearbyint((tex[2][0][0] - wall_start_s) / CHECKER_PERIOD));
+  const float fan_from[2] = {0, (float)foot + radius}, fan_corner[2] = {0, (float)foot}, fan_to[2] = {radius, (float)foot};
+  glNormal3f((float)n_f[0], 0, (float)n_f[1]);
+  concave_corner_fans(fan_from, fan_corner, fan_to, &plane);
 }
 
 /* The flat face at height `level`: what the layer below covers and the layer above does not
@@ -564,7 +812,7 @@ static void flat_face(const struct cube_layers *layers, int level, int up, float
       /* Along a rounded rim the band R wide is the rim's strip, and its corners' squares are the
        * strips' and the spheres' eighths. */
       const int rim_bit = up ? CAPPED_TOP : CAPPED_BOTTOM;
-      const int capped = rim_rounded(layers, inner, i, j, radius, rim_bit);
+      const int capped = rim_shown(layers, inner, i, j, radius, rim_bit);
       /* Along a fillet at the foot of the layer above, the band R wide is the fillet's. */
       const int rim[4] = {(capped && !(cube_layers_capped(layers, inner, i - 1, j) & rim_bit)) ||
                               (up && rim_rounded(layers, outer, i - 1, j, radius, FILLETED_FOOT)),
@@ -579,7 +827,9 @@ static void flat_face(const struct cube_layers *layers, int level, int up, float
           if ((a == 0 && rim[0]) || (a == 2 && rim[1]) || (b == 0 && rim[2]) || (b == 2 && rim[3])) continue;
           if (a != 1 && b != 1) {
             const int gi = a ? i + 1 : i, gj = b ? j + 1 : j;
-            if (torus_corner(layers, inner, gi, gj, radius, rim_bit)) continue;
+            /* Round a standing corner the torus piece stands on the top below at one point only. */
+            if (torus_corner(layers, inner, gi, gj, radius, rim_bit) || (up && standing_corner_at(layers, outer, gi, gj, radius)))
+              continue;
             if (up && fillet_corner_at(layers, outer, gi, gj, radius)) {
               /* Of the squares round a fillets' corner, the bands' are the fillets', the one under
                * the piece above is covered, and the one across the corner keeps what lies outside
@@ -627,6 +877,7 @@ void draw_layered_block(const struct cube_layers *layers, float radius)
     for (int j = 0; j < layers->z_count; ++j)
       for (int i = 0; i < layers->x_count; ++i)
         if (fillet_corner_at(layers, layer, i, j, radius)) fillet_corner(layers, layer, i, j, radius);
+        else if (standing_corner_at(layers, layer, i, j, radius)) standing_corner(layers, layer, i, j, radius);
   }
   for (int level = 0; level <= layers->layer_count; ++level) {
     flat_face(layers, level, 1, radius);

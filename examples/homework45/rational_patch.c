@@ -1,6 +1,7 @@
 #include "rational_patch.h"
 
 #include <math.h>
+#include <stddef.h>
 #include <GL/glut.h>
 
 #include "rounded_upright.h"
@@ -55,22 +56,36 @@ void draw_fillet_net(const float net[][3][4], const float tex[][3][2], const dou
   draw_net_about_centres(net, tex, centre, -1.0f, rows, v_steps);
 }
 
-void turned_profile_net(const double arc[3][2], const double axis[2], const double scale[3], const double y[3],
-                        float s0, float s_length, float t0, float t2, float net[3][3][4], float tex[3][3][2],
-                        double centre[3][3][3])
+/* The point (x, y, z) of `frame` (NULL: the object's own axes) into out. */
+static void frame_point(const double frame[4][3], double x, double y, double z, double out[3])
+{
+  for (int k = 0; k < 3; ++k)
+    out[k] = frame ? frame[0][k] + x * frame[1][k] + y * frame[2][k] + z * frame[3][k] : k == 0 ? x : k == 1 ? y : z;
+}
+
+void turned_profile_net_in_frame(const double arc[3][2], const double axis[2], const double scale[3],
+                                 const double y[3], const double frame[4][3], float s0, float s_length, float t0,
+                                 float t2, float net[3][3][4], float tex[3][3][2], double centre[3][3][3])
 {
   const double w = sqrt(2.0) / 2.0;
   const double arc_weight[3] = {1.0, w, 1.0};
   for (int v = 0; v < 3; ++v)
     for (int u = 0; u < 3; ++u) {
-      control_point(net[v][u], axis[0] + scale[v] * (arc[u][0] - axis[0]), y[v],
-                    axis[1] + scale[v] * (arc[u][1] - axis[1]), arc_weight[u] * arc_weight[v]);
+      double p[3];
+      frame_point(frame, axis[0] + scale[v] * (arc[u][0] - axis[0]), y[v], axis[1] + scale[v] * (arc[u][1] - axis[1]), p);
+      control_point(net[v][u], p[0], p[1], p[2], arc_weight[u] * arc_weight[v]);
       tex[v][u][0] = s0 + s_length * (float)u / 2;
       tex[v][u][1] = t0 + (t2 - t0) * (float)v / 2;
-      centre[v][u][0] = axis[0] + scale[2] * (arc[u][0] - axis[0]);
-      centre[v][u][1] = y[0];
-      centre[v][u][2] = axis[1] + scale[2] * (arc[u][1] - axis[1]);
+      frame_point(frame, axis[0] + scale[2] * (arc[u][0] - axis[0]), y[0], axis[1] + scale[2] * (arc[u][1] - axis[1]),
+                  centre[v][u]);
     }
+}
+
+void turned_profile_net(const double arc[3][2], const double axis[2], const double scale[3], const double y[3],
+                        float s0, float s_length, float t0, float t2, float net[3][3][4], float tex[3][3][2],
+                        double centre[3][3][3])
+{
+  turned_profile_net_in_frame(arc, axis, scale, y, NULL, s0, s_length, t0, t2, net, tex, centre);
 }
 
 void rim_corner_net(const double arc[3][2], const double axis[2], int convex, double below, double rim, float s0,

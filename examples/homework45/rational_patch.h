@@ -43,6 +43,13 @@ void turned_profile_net(const double arc[3][2], const double axis[2], const doub
                         float s0, float s_length, float t0, float t2, float net[3][3][4], float tex[3][3][2],
                         double centre[3][3][3]);
 
+/* turned_profile_net in another frame: the net's points and centres (x, y, z) are taken as the
+ * points frame[0] + x frame[1] + y frame[2] + z frame[3] (an origin and three orthonormal axes),
+ * so that the profile turns about an axis along frame[2] (NULL: the object's own axes). */
+void turned_profile_net_in_frame(const double arc[3][2], const double axis[2], const double scale[3],
+                                 const double y[3], const double frame[4][3], float s0, float s_length, float t0,
+                                 float t2, float net[3][3][4], float tex[3][3][2], double centre[3][3][3]);
+
 /* The net of the piece where a rim rounded on both sides of a rounded upright turns with it: the
  * rim's quarter circle turned about the upright's axis (x, z) by the upright's quarter arc
  * arc[0..2] (x, z: from, corner, to). Its rows are the arc's control points scaled from the axis

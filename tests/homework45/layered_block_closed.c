@@ -10,7 +10,9 @@
  * except on the flat tops and bottoms (normal straight up or down), whose texture is (x, z),
  * along a mitre's crease (two rims' strips ending in a sharp corner's diagonal plane) and at a
  * horn piece's tip (two fillets meeting round a sharp upright's foot). Every point drawn within
- * a filleted foot's reach must lie R from the fillet's axis.
+ * a filleted foot's reach must lie R from the fillet's axis, and round a standing corner (a
+ * fillet ending against the rim of the layer below, where the foot's side is flush with that
+ * layer's side) R from the torus piece's centre circle, its normal pointing away from it.
  * Where two rational patches share a side (their side curves have the same end points), the
  * curves must be the same: their control points (divided by their weights) and their weights
  * (relative to the first) agree, so the patches meet along the whole side, not only at the
@@ -23,7 +25,8 @@
  * twin test's tolerance) fails.
  *   homework45_layered_closed OBJECT.wings...
  * Prints a line per object and radius, and exits 1 when an edge has no twin, a seam is not
- * smooth, two patches that share a side are apart along it or a fillet's point is off its axis. */
+ * smooth, two patches that share a side are apart along it, a fillet's point is off its axis or
+ * a standing corner's point is off its circle or its normal turned from it by more than 1e-3. */
 #include <GL/glut.h>
 #include <math.h>
 #include <stdio.h>
@@ -472,26 +475,21 @@ static size_t rough_seams(void)
   return rough;
 }
 
-/* The distance from a horizontal point (x, z) outside the rectangle [x0, x1] x [z0, z1] whose
- * corners are rounded by corner_radius[c] (c: bit 0 for x1's side, bit 1 for z1's; 0: sharp) to
- * it: from the corner's arc's centre less its radius in the corner's quadrant, else from the
- * nearest side. */
-static double outline_distance(double x, double z, double x0, double x1, double z0, double z1,
-                               const double corner_radius[4])
+/* How many of the four cells around grid point (i, j) `layer` fills. */
+static int cells_around(const struct cube_layers *layers, int layer, int i, int j)
 {
-  const int high_x = x > (x0 + x1) / 2, high_z = z > (z0 + z1) / 2;
-  const double r = corner_radius[high_x + 2 * high_z];
-  const double cx = high_x ? x1 - r : x0 + r, cz = high_z ? z1 - r : z0 + r;
-  if ((x - cx) * (high_x ? 1 : -1) > 0 && (z - cz) * (high_z ? 1 : -1) > 0) return hypot(x - cx, z - cz) - r;
-  return fmax(fmax(x0 - x, x - x1), fmax(z0 - z, z - z1));
+  return cube_layers_filled(layers, layer, i - 1, j - 1) + cube_layers_filled(layers, layer, i, j - 1) +
+         cube_layers_filled(layers, layer, i - 1, j) + cube_layers_filled(layers, layer, i, j);
 }
 
 /* How far from R the drawn points in a fillet's reach lie from its axis, at most: each filleted
  * foot (cube_layers.h) is a rectangle of cells, and every point between its foot and R above it,
- * within R of its outline (its uprights rounded or sharp), must lie R from the fillet's axis, the
- * line R out from the wall and R above the foot (round a corner the circle R out from the rounded
- * outline or about the sharp upright). A point of the top below left under the fillet, or of a
- * wall reaching below R, lies off it by R (sqrt(2) - 1) or more. */
+ * within R of a side along which the layer below runs on (a fillet's side), must lie R from the
+ * fillet's axis, the line R out from the wall and R above the foot, or round a corner between two
+ * such sides the circle R out from the rounded outline or about the sharp upright. A point of the
+ * top below left under the fillet, or of a wall reaching below R, lies off it by R (sqrt(2) - 1)
+ * or more. Near a side flush with the layer below there is no fillet; a corner between a
+ * fillet's side and a flush one is standing_corner_error's. */
 static double fillet_axis_error(const struct cube_layers *layers, double radius)
 {
   double worst = 0;
@@ -507,15 +505,77 @@ static double fillet_axis_error(const struct cube_layers *layers, double radius)
         while (cube_layers_filled(layers, k, i, j1 + 1)) ++j1;
         const double x0 = layers->x[i], x1 = layers->x[i1 + 1], z0 = layers->z[j], z1 = layers->z[j1 + 1];
         const double foot = layers->height[k], e = 1e-9;
-        double corner_radius[4];
-        for (int c = 0; c < 4; ++c)
-          corner_radius[c] = cube_layers_rounded(layers, k, c & 1 ? i1 + 1 : i, c & 2 ? j1 + 1 : j) ? radius : 0;
+        /* Whether a fillet runs along the sides x = x0, x1 and z = z0, z1 (the layer below fills the
+         * ring of cells beyond them, or none of it). */
+        const int fillet[4] = {cube_layers_filled(layers, k - 1, i - 1, j), cube_layers_filled(layers, k - 1, i1 + 1, j),
+                               cube_layers_filled(layers, k - 1, i, j - 1), cube_layers_filled(layers, k - 1, i, j1 + 1)};
         for (size_t v = 0; v < drawn_count; ++v) {
           const double *p = drawn[v].point;
           if (p[1] < foot - e || p[1] > foot + radius + e) continue;
-          const double d = outline_distance(p[0], p[2], x0, x1, z0, z1, corner_radius);
+          const int high_x = p[0] > (x0 + x1) / 2, high_z = p[2] > (z0 + z1) / 2;
+          const double r = cube_layers_rounded(layers, k, high_x ? i1 + 1 : i, high_z ? j1 + 1 : j) ? radius : 0;
+          const double cx = high_x ? x1 - r : x0 + r, cz = high_z ? z1 - r : z0 + r;
+          const double out_x = high_x ? p[0] - x1 : x0 - p[0], out_z = high_z ? p[2] - z1 : z0 - p[2];
+          double d;
+          if ((p[0] - cx) * (high_x ? 1 : -1) > 0 && (p[2] - cz) * (high_z ? 1 : -1) > 0) {
+            /* Beyond the corner's arc centre: the fillets turn round it only between two fillets' sides. */
+            if (!fillet[high_x] || !fillet[2 + high_z]) continue;
+            d = hypot(p[0] - cx, p[2] - cz) - r;
+          } else {
+            if (!fillet[out_x > out_z ? high_x : 2 + high_z]) continue;
+            d = fmax(out_x, out_z);
+          }
           if (d < -e || d > radius + e) continue;
           worst = fmax(worst, fabs(hypot(radius - d, foot + radius - p[1]) - radius));
+        }
+      }
+  return worst;
+}
+
+/* How far the drawn points round each standing corner (a filleted foot's corner between a
+ * fillet's side, facing n_w, and a side flush with the layer below, facing n_f) lie off R from
+ * the torus piece's centre circle, at most, and how far their normals turn from the direction
+ * away from it (radians, into *normal_error): the points R deep behind the flush plane, within
+ * R of the corner along n_w and of the foot in height, are the torus piece's and its seams' with
+ * the fillet's end, the upright's foot and the rim's end. In the flush plane, with a along n_w
+ * from the corner, the circle lies R deep, about the fillet's axis (a, y) = (R, foot + R), of
+ * radius 2 R. */
+static double standing_corner_error(const struct cube_layers *layers, double radius, double *normal_error)
+{
+  double worst = 0;
+  *normal_error = 0;
+  if (radius <= 0) return 0;
+  for (int k = 1; k < layers->layer_count; ++k)
+    for (int j = 0; j < layers->z_count; ++j)
+      for (int i = 0; i < layers->x_count; ++i) {
+        if (cells_around(layers, k, i, j) != 1 || cells_around(layers, k - 1, i, j) != 2) continue;
+        int qi = 0, qj = 0;
+        for (int di = -1; di <= 0; ++di)
+          for (int dj = -1; dj <= 0; ++dj)
+            if (cube_layers_filled(layers, k, i + di, j + dj)) qi = di, qj = dj;
+        if (!(cube_layers_capped(layers, k, i + qi, j + qj) & FILLETED_FOOT)) continue;
+        const int qx = qi ? -1 : 1, qz = qj ? -1 : 1;
+        const int past_x = cube_layers_filled(layers, k - 1, qx > 0 ? i - 1 : i, qz > 0 ? j : j - 1);
+        const double n_w[2] = {past_x ? -qx : 0, past_x ? 0 : -qz}, n_f[2] = {past_x ? 0 : -qx, past_x ? -qz : 0};
+        const double gx = layers->x[i], gz = layers->z[j], foot = layers->height[k], e = 1e-9;
+        for (size_t v = 0; v < drawn_count; ++v) {
+          const double *p = drawn[v].point;
+          const double a = (p[0] - gx) * n_w[0] + (p[2] - gz) * n_w[1];
+          const double depth = -((p[0] - gx) * n_f[0] + (p[2] - gz) * n_f[1]);
+          if (depth < e || depth > radius + e || a < -radius - e || a > radius + e || fabs(p[1] - foot) > radius + e)
+            continue;
+          const double in_plane = hypot(a - radius, p[1] - foot - radius);
+          worst = fmax(worst, fabs(hypot(in_plane - 2 * radius, depth - radius) - radius));
+          /* The nearest point of the circle, and the direction from it to the point. */
+          const double c_a = radius + 2 * radius * (a - radius) / in_plane;
+          const double c_y = foot + radius + 2 * radius * (p[1] - foot - radius) / in_plane;
+          const double out_a = a - c_a, out_depth = depth - radius, out_y = p[1] - c_y;
+          const double away[3] = {out_a * n_w[0] - out_depth * n_f[0], out_y, out_a * n_w[1] - out_depth * n_f[1]};
+          const double *n = drawn[v].normal;
+          const double dot = (away[0] * n[0] + away[1] * n[1] + away[2] * n[2]) /
+                             (sqrt(away[0] * away[0] + away[1] * away[1] + away[2] * away[2]) *
+                              sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]));
+          *normal_error = fmax(*normal_error, acos(fmin(1.0, fmax(-1.0, dot))));
         }
       }
   return worst;
@@ -543,13 +603,20 @@ int main(int argc, char **argv)
       double gap;
       const size_t lonely = edges_without_twin(), rough = rough_seams(), inexact = inexact_seams(&gap);
       const double off_axis = fillet_axis_error(&layers, radius);
+      double standing_normal;
+      const double off_circle = standing_corner_error(&layers, radius, &standing_normal);
       printf("%s at radius %g: %zu triangles, %zu edges without a twin, %zu rough seams, %zu shared patch sides "
-             "not exact to 1e-12 (largest gap %.3g), fillet points off R from the axis by %.3g\n", argv[a], radius,
-             triangle_count, lonely, rough, inexact, gap, off_axis);
+             "not exact to 1e-12 (largest gap %.3g), fillet points off R from the axis by %.3g, standing corners' "
+             "points off R from their circle by %.3g, their normals off by %.3g\n", argv[a], radius, triangle_count,
+             lonely, rough, inexact, gap, off_axis, off_circle, standing_normal);
       if (gap > 1e-5) fprintf(stderr, "homework45_layered_closed: %s: patches %g apart\n", argv[a], gap);
       if (off_axis > FILLET_TOLERANCE)
         fprintf(stderr, "homework45_layered_closed: %s: a fillet's point %g off R from its axis\n", argv[a], off_axis);
-      failed |= lonely > 0 || rough > 0 || gap > 1e-5 || off_axis > FILLET_TOLERANCE;
+      if (off_circle > FILLET_TOLERANCE || standing_normal > 1e-3)
+        fprintf(stderr, "homework45_layered_closed: %s: a standing corner's point %g off R from its circle, a normal "
+                "%g off\n", argv[a], off_circle, standing_normal);
+      failed |= lonely > 0 || rough > 0 || gap > 1e-5 || off_axis > FILLET_TOLERANCE || off_circle > FILLET_TOLERANCE ||
+                standing_normal > 1e-3;
     }
     cube_layers_free(&layers);
   }
