@@ -348,7 +348,8 @@ static void meet_standing_corner(const struct cube_layers *layers, int layer, co
   const float standing[2] = {2 * at[0] - corner[0], 2 * at[1] - corner[1]};
   for (int i = 0; i < layers->x_count; ++i)
     for (int j = 0; j < layers->z_count; ++j)
-      if ((float)layers->x[i] == standing[0] && (float)layers->z[j] == standing[1] &&
+      /* The point is found to within the float rounding of `standing`. */
+      if (fabs(layers->x[i] - standing[0]) < 1e-3 * radius && fabs(layers->z[j] - standing[1]) < 1e-3 * radius &&
           standing_corner_at(layers, layer, i, j, radius)) {
         int n_w[2], n_f[2];
         float fillet_s, delta;

@@ -23,7 +23,9 @@
  * is not a power of two, the strips' columns a + R and b - R, rounded apart, leave 1e-6. So the
  * count of sides not exact to 1e-12 and the largest gap are printed, and a gap beyond 1e-5 (the
  * twin test's tolerance) fails.
- *   homework45_layered_closed OBJECT.wings...
+ *   homework45_layered_closed [--scale=SX,SY,SZ] OBJECT.wings...
+ * (--scale stretches the objects after it along x, y and z: cells of other sizes than the test
+ * files' unit cubes, layers lower than their cells are wide.)
  * Prints a line per object and radius, and exits 1 when an edge has no twin, a seam is not
  * smooth, two patches that share a side are apart along it, a fillet's point is off its axis or
  * a standing corner's point is off its circle or its normal turned from it by more than 1e-3. */
@@ -584,12 +586,19 @@ static double standing_corner_error(const struct cube_layers *layers, double rad
 int main(int argc, char **argv)
 {
   int failed = 0;
+  double scale[3] = {1, 1, 1};
   for (int a = 1; a < argc; ++a) {
     struct wings_mesh mesh;
     struct cube_layers layers;
     char error[300];
-    if (!wings_read_mesh(argv[a], &mesh, error, sizeof error) ||
-        !cube_layers_from_mesh(&mesh, &layers, error, sizeof error)) {
+    if (sscanf(argv[a], "--scale=%lf,%lf,%lf", &scale[0], &scale[1], &scale[2]) == 3) continue;
+    if (!wings_read_mesh(argv[a], &mesh, error, sizeof error)) {
+      fprintf(stderr, "homework45_layered_closed: %s: %s\n", argv[a], error);
+      return 1;
+    }
+    for (long v = 0; v < mesh.vertex_count; ++v)
+      for (int k = 0; k < 3; ++k) mesh.position[v][k] *= scale[k];
+    if (!cube_layers_from_mesh(&mesh, &layers, error, sizeof error)) {
       fprintf(stderr, "homework45_layered_closed: %s: %s\n", argv[a], error);
       return 1;
     }
