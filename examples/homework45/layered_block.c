@@ -573,11 +573,8 @@ static int square_cover(const struct cube_layers *layers, int layer, int i, int 
 {
   const int filled = cube_layers_filled(layers, layer, i, j);
   if (!upright_rounded(layers, layer, gi, gj, radius)) return filled ? WHOLE_SQUARE : 0;
-  int around = 0;
-  for (int di = -1; di <= 0; ++di)
-    for (int dj = -1; dj <= 0; ++dj) around += cube_layers_filled(layers, layer, gi + di, gj + dj);
   /* The cell that differs from the other three holds the arc. */
-  const int odd = (around == 1) == filled;
+  const int odd = (cells_around(layers, layer, gi, gj) == 1) == filled;
   if (!odd) return filled ? WHOLE_SQUARE : 0;
   return filled ? QUARTER_DISK : CORNER_PIECE;
 }
@@ -629,10 +626,7 @@ static void flat_square(const float corner[2], int dx, int dz, int cover, float 
  * in the solid) of a piece whose rim there is rounded. */
 static int torus_corner(const struct cube_layers *layers, int layer, int i, int j, float radius, int rim)
 {
-  int around = 0;
-  for (int di = -1; di <= 0; ++di)
-    for (int dj = -1; dj <= 0; ++dj) around += cube_layers_filled(layers, layer, i + di, j + dj);
-  return around == 3 && upright_rounded(layers, layer, i, j, radius) &&
+  return cells_around(layers, layer, i, j) == 3 && upright_rounded(layers, layer, i, j, radius) &&
          corner_rim_rounded(layers, layer, i, j, radius, rim);
 }
 
