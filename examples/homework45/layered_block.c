@@ -765,9 +765,10 @@ static void standing_corner(const struct cube_layers *layers, int layer, int i, 
     tex[k][2][0] = fillet_s + delta * (float)k / 2;
     tex[k][2][1] = t_foot + (t_below - t_foot) * (float)k / 2;
   }
-  /* In the flush plane the texture runs on as the plane's (s along a, t the height): the last
-   * row's middle value makes it the plane's at the arc's middle, (a, b) = (1 - sqrt(2)) R (1, 1)
-   * from (0, foot), and the net's middle is the blend of its four sides (a Coons net). */
+  /* In the flush plane the texture runs on as the plane's (t the height, s along a from the
+   * row's one end to its other, by 2 R on cells of whole units): the last row's middle value
+   * makes it so at the arc's middle, (a, b) = (1 - sqrt(2)) R (1, 1) from (0, foot), and the
+   * net's middle is the blend of its four sides (a Coons net). */
   const double middle = (1 - sqrt(2.0)) * radius;
   const double plane_middle[2] = {tex[2][0][0] + (tex[2][2][0] - tex[2][0][0]) * (middle + radius) / (2 * radius),
                                   texture_t(layers, foot + middle)};
