@@ -2,7 +2,6 @@
 #include "interpret/executor.h"
 #include "load/wings_model.h"
 
-#include <sstream>
 
 namespace glass::scene {
 
@@ -98,10 +97,7 @@ void Interpreter::Executor::run(const DrawModel &s) {
       if (!(radius >= 0.0)) throw geometry::RoundingError("the radius must be 0 or more");
       rounded = model.roundable->rounded.partsFor(*model.roundable, radius);
     } catch (const geometry::RoundingError &error) {
-      std::ostringstream text;
-      text.precision(6);
-      text << "cannot round the model with radius " << radius << ": " << error.what();
-      fail(text.str());
+      fail("cannot round the model with radius " + formatModelNumber(radius) + ": " + error.what());
     }
     drawModelParts(model, *rounded, s);
     return;

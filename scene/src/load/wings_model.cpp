@@ -37,14 +37,14 @@ void appendTriangles(const geometry::MarkedPolyhedron &shape, const geometry::Ro
   }
 }
 
-std::string volumeText(double volume) {
+} // namespace
+
+std::string formatModelNumber(double value) {
   std::ostringstream text;
   text.precision(6);
-  text << volume;
+  text << value;
   return text.str();
 }
-
-} // namespace
 
 std::vector<ModelPart> roundedWingsParts(const RoundableModel &model, double radius) {
   std::map<int, ModelPart> byMaterial;
@@ -88,7 +88,7 @@ std::vector<std::string> wingsModelWarnings(const RoundableModel &model) {
                          count(check.reversedEdges, "edge", "edges") +
                          " the two faces run the same way (the first " + edge(check.firstReversedEdge) + ")");
     if (check.insideOut())
-      warnings.push_back(name + "is inside out: its faces face inwards (volume " + volumeText(check.volume) +
+      warnings.push_back(name + "is inside out: its faces face inwards (volume " + formatModelNumber(check.volume) +
                          "), so lighting and culling take its inside for its outside");
     if (check.crossingFacePairs > 0)
       warnings.push_back(name + "crosses itself: " + count(check.crossingFacePairs, "pair", "pairs") +

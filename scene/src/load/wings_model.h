@@ -31,6 +31,9 @@ std::vector<ModelPart> roundedWingsParts(const RoundableModel &model, double rad
 // itself; or that the file has no objects. Such a model still draws, as the file gives it.
 std::vector<std::string> wingsModelWarnings(const RoundableModel &model);
 
+// A radius or a volume as messages about models give it: six significant digits.
+std::string formatModelNumber(double value);
+
 // The largest radius every object can be rounded with, and what limits it.
 double largestWingsRadius(const RoundableModel &model, std::string &limit);
 

@@ -6,7 +6,6 @@
 
 #include <cctype>
 #include <optional>
-#include <sstream>
 
 namespace glass::scene {
 
@@ -155,13 +154,6 @@ bool isWingsPath(const std::string &path) {
   return true;
 }
 
-std::string formatRadius(double radius) {
-  std::ostringstream text;
-  text.precision(6);
-  text << radius;
-  return text.str();
-}
-
 } // namespace
 
 void Parser::parseModel(StatementReader &r) {
@@ -203,7 +195,7 @@ void Parser::parseModel(StatementReader &r) {
         if (radius < 0.0) throw geometry::RoundingError("the radius must be 0 or more");
         if (radius > 0.0) model.roundable->rounded.partsFor(*model.roundable, radius);
       } catch (const geometry::RoundingError &error) {
-        r.fail(round->where, round->length, "cannot round '" + written + "' with radius " + formatRadius(radius) + ": " + error.what());
+        r.fail(round->where, round->length, "cannot round '" + written + "' with radius " + formatModelNumber(radius) + ": " + error.what());
       }
     }
   }
