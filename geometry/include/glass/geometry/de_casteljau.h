@@ -53,6 +53,15 @@ class WorkingRow {
 };
 
 namespace detail {
+// The hodograph of the first n >= 2 points of `row`, in place: its n - 1 points
+// (n - 1) (p(i+1) - p(i)) replace the first n - 1 (point i is read before it is overwritten,
+// point i + 1 after).
+template <class Row>
+void hodographInPlace(Row& row, std::size_t n) {
+  const double degree = static_cast<double>(n - 1);
+  for (std::size_t i = 0; i + 1 < n; ++i) row[i] = degree * (row[i + 1] + (-1.0) * row[i]);
+}
+
 // de Casteljau on the first n points of `level`, overwriting them.
 template <class P>
 P deCasteljauInPlace(WorkingRow<P>& level, std::size_t n, double t) {
@@ -94,10 +103,9 @@ std::pair<std::vector<P>, std::vector<P>> deCasteljauSplit(std::span<const P> co
 template <class P>
 std::vector<P> hodograph(std::span<const P> control) {
   if (control.size() < 2) return {};
-  const double degree = static_cast<double>(control.size() - 1);
-  std::vector<P> result(control.size() - 1);
-  for (std::size_t i = 0; i + 1 < control.size(); ++i)
-    result[i] = degree * (control[i + 1] + (-1.0) * control[i]);
+  std::vector<P> result(control.begin(), control.end());
+  detail::hodographInPlace(result, result.size());
+  result.pop_back();
   return result;
 }
 
@@ -108,9 +116,7 @@ P deCasteljauDerivative(std::span<const P> control, double t, int order) {
   std::size_t n = row.size();
   for (int k = 0; k < order; ++k, --n) {
     if (n < 2) return P{};
-    // hodograph() in place: point i is read before it is overwritten, point i + 1 after.
-    const double degree = static_cast<double>(n - 1);
-    for (std::size_t i = 0; i + 1 < n; ++i) row[i] = degree * (row[i + 1] + (-1.0) * row[i]);
+    detail::hodographInPlace(row, n);
   }
   return detail::deCasteljauInPlace(row, n, t);
 }
