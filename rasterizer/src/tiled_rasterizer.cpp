@@ -122,10 +122,11 @@ struct TiledRasterizer::Impl {
   // Cuts the scene's active tiles into the threads' runs by place (see the top of this file).
   void shareOut(TileScene& scene) {
     scene.orderActiveTilesByPlace();
+    int start = 0;  // each run ends where the next one starts
     for (int r = 0; r < threadCount; ++r) {
       Run& run = flight.runs[static_cast<size_t>(r)];
-      run.next.store(scene.firstActiveTileFrom(r, threadCount), std::memory_order_relaxed);
-      run.end = scene.firstActiveTileFrom(r + 1, threadCount);
+      run.next.store(start, std::memory_order_relaxed);
+      run.end = start = scene.firstActiveTileFrom(r + 1, threadCount);
     }
   }
 
