@@ -7,7 +7,11 @@
 // two triangles cross when each has vertices strictly on both sides of the other's plane and the
 // segments where each meets the other's plane overlap along the planes' common line by more than
 // the tolerance; faces are paired by a sweep over their bounding boxes along x, so that a mesh of
-// many faces is not checked pair by pair.
+// many faces is not checked pair by pair. Faces with common vertices are checked like the others:
+// a common vertex or edge lies in both planes, so it makes no triangle straddle the other's plane,
+// and two faces that meet only there give segments along the common line that touch at the
+// vertex, or lie on opposite sides of it, without overlapping; two that cut through each other
+// beyond it give segments that overlap.
 #include "glass/geometry/polyhedron_check.h"
 
 #include <algorithm>
@@ -145,12 +149,6 @@ struct FaceBox {
   int face;
 };
 
-bool shareVertex(const MarkedPolyhedron::Face& a, const MarkedPolyhedron::Face& b) {
-  for (const std::uint32_t i : a.vertices)
-    if (std::find(b.vertices.begin(), b.vertices.end(), i) != b.vertices.end()) return true;
-  return false;
-}
-
 void findCrossings(const MarkedPolyhedron& shape, PolyhedronCheck& check) {
   if (shape.vertices.empty()) return;
   glm::dvec3 low = shape.vertices[0], high = shape.vertices[0];
@@ -183,9 +181,6 @@ void findCrossings(const MarkedPolyhedron& shape, PolyhedronCheck& check) {
       if (b.low.y >= a.high.y - tolerance || a.low.y >= b.high.y - tolerance ||
           b.low.z >= a.high.z - tolerance || a.low.z >= b.high.z - tolerance)
         continue;
-      const auto& faceA = shape.faces[static_cast<std::size_t>(a.face)];
-      const auto& faceB = shape.faces[static_cast<std::size_t>(b.face)];
-      if (shareVertex(faceA, faceB)) continue;
       bool cross = false;
       for (const Triangle& p : triangles[static_cast<std::size_t>(a.face)])
         for (const Triangle& q : triangles[static_cast<std::size_t>(b.face)])

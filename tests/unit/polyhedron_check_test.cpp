@@ -103,6 +103,24 @@ TEST_CASE("polyhedron check: cubes pushed into each other cross; cubes side by s
   CHECK(checkPolyhedron(inside).crossingFacePairs == 0);
 }
 
+TEST_CASE("polyhedron check: faces with a common vertex cross when they cut through each other beyond it") {
+  // Two triangles from the origin: one in the plane y = 0, one in the plane z = 0. Both reach out
+  // along +x, so they cut through each other along the x axis from the common vertex to x = 2.
+  MarkedPolyhedron crossing;
+  crossing.vertices = {glm::dvec3(0.0), glm::dvec3(2.0, 0.0, -1.0), glm::dvec3(2.0, 0.0, 1.0),
+                       glm::dvec3(2.0, -1.0, 0.0), glm::dvec3(2.0, 1.0, 0.0)};
+  crossing.faces.resize(2);
+  crossing.faces[0].vertices = {0, 1, 2};
+  crossing.faces[1].vertices = {0, 3, 4};
+  CHECK(checkPolyhedron(crossing).crossingFacePairs == 1);
+
+  // The second one turned to reach along -x: they meet at the common vertex only.
+  MarkedPolyhedron meeting = crossing;
+  meeting.vertices[3] = glm::dvec3(-2.0, -1.0, 0.0);
+  meeting.vertices[4] = glm::dvec3(-2.0, 1.0, 0.0);
+  CHECK(checkPolyhedron(meeting).crossingFacePairs == 0);
+}
+
 TEST_CASE("polyhedron check: an L prism with a concave face of six vertices") {
   // The L: (0,0) (2,0) (2,1) (1,1) (1,2) (0,2), one unit high.
   const double plan[6][2] = {{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}};

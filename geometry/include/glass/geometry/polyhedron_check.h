@@ -1,7 +1,7 @@
 // Is a polyhedron given by its faces a solid whose faces face outwards? Closed (every edge shared
 // by exactly two faces), its faces turned alike (the two faces at an edge run along it in opposite
-// directions), facing out (a positive volume) and not crossing itself (no two faces without a
-// common vertex cut through each other). A mesh that fails draws all the same, but lighting and
+// directions), facing out (a positive volume) and not crossing itself (no two faces cut through
+// each other; faces that meet only at common vertices or edges do not). A mesh that fails draws all the same, but lighting and
 // back-face culling take the side its faces face for the outside, and the rounding of its edges
 // assumes one solid: the scene language warns of each problem it finds in a model
 // (docs/scene-format.md, "model").
