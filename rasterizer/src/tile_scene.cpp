@@ -30,17 +30,6 @@ int64_t floorToPixel(double v) {
   return static_cast<int64_t>(std::floor(v));
 }
 
-// Asks for the memory where the next `count` elements of a bin's list will be written. A new
-// record lands on cache lines nobody has touched yet, and with hundreds of bins filled in turn
-// each write would otherwise wait for its line; by the time the bin's next primitive arrives,
-// the line is there. (A hint only, and only within the capacity the list already has.)
-template <typename T>
-void prefetchAppend(const std::vector<T>& list, size_t count) {
-  if (list.size() + count > list.capacity()) return;
-  const char* next = reinterpret_cast<const char*>(list.data() + list.size());
-  for (size_t offset = 0; offset < count * sizeof(T); offset += 64) __builtin_prefetch(next + offset, 1);
-}
-
 WindowVertex rebuildVertex(const float position[4], const float* varyings, int count) {
   WindowVertex v;
   v.x = position[0];
@@ -53,14 +42,14 @@ WindowVertex rebuildVertex(const float position[4], const float* varyings, int c
 
 }  // namespace
 
-void TileScene::Bin::clear() {
-  order.clear();
-  triangles.clear();
-  lines.clear();
-  points.clear();
-  clears.clear();
-  planes.clear();
-  varyings.clear();
+void TileScene::Bin::reset() {
+  order.reset();
+  triangles.reset();
+  lines.reset();
+  points.reset();
+  clears.reset();
+  planes.reset();
+  varyings.reset();
 }
 
 TileScene::TileScene(int width, int height)
@@ -68,6 +57,7 @@ TileScene::TileScene(int width, int height)
       height_(height),
       tilesX_((width + kTileSize - 1) / kTileSize),
       tilesY_((height + kTileSize - 1) / kTileSize),
+      arena_(std::make_unique<BinArena>()),
       bins_(static_cast<size_t>(tilesX_) * static_cast<size_t>(tilesY_)) {}
 
 PixelRect TileScene::tileRect(int tile) const {
@@ -128,11 +118,15 @@ void TileScene::addTriangle(const TriangleSetup& setup, FragmentSink& sink) {
 
   const auto addToBin = [&](int tile) {
     Bin& bin = binOf(tile);
-    bin.order.push_back(Kind::Triangle);
-    bin.triangles.push_back(r);
-    bin.planes.insert(bin.planes.end(), planeValues, planeValues + 3 * r.varyingCount);
-    prefetchAppend(bin.triangles, 1);
-    prefetchAppend(bin.planes, 3 * static_cast<size_t>(r.varyingCount));
+    const size_t planeCount = 3 * static_cast<size_t>(r.varyingCount);
+    bin.order.push(*arena_, Kind::Triangle);
+    bin.triangles.push(*arena_, r);
+    bin.planes.append(*arena_, planeValues, planeCount);
+    // A new record lands on cache lines nobody has touched yet, and with hundreds of bins filled
+    // in turn each write would otherwise wait for its line; by the time the bin's next
+    // primitive arrives, the lines are there.
+    bin.triangles.prefetchNext(1);
+    bin.planes.prefetchNext(planeCount);
     bytes_ += 1 + sizeof(TriangleRecord) + 3 * sizeof(double) * static_cast<size_t>(r.varyingCount);
   };
   const int firstTileX = box.x0 / kTileSize, lastTileX = (box.x1 - 1) / kTileSize;
@@ -174,10 +168,12 @@ void TileScene::addLine(const WindowVertex& a, const WindowVertex& b, const Line
              std::min<int64_t>(floorToPixel(std::max(a.x, b.x) + reach), bounds.x1 - 1),
              std::min<int64_t>(floorToPixel(std::max(a.y, b.y) + reach), bounds.y1 - 1),
              [&](Bin& bin) {
-               bin.order.push_back(Kind::Line);
-               bin.lines.push_back(r);
-               bin.varyings.insert(bin.varyings.end(), a.varyings, a.varyings + n);
-               bin.varyings.insert(bin.varyings.end(), b.varyings, b.varyings + n);
+               bin.order.push(*arena_, Kind::Line);
+               bin.lines.push(*arena_, r);
+               // Both vertices' varyings in one run, as runTile takes them.
+               float* varyings = bin.varyings.extend(*arena_, 2 * static_cast<size_t>(n));
+               std::copy(a.varyings, a.varyings + n, varyings);
+               std::copy(b.varyings, b.varyings + n, varyings + n);
                bytes_ += 1 + sizeof(LineRecord) + 2 * sizeof(float) * static_cast<size_t>(n);
              });
 }
@@ -199,9 +195,9 @@ void TileScene::addPoint(const WindowVertex& v, const PointSettings& settings, F
              std::max<int64_t>(floorToPixel(v.y - reach), bounds.y0),
              std::min<int64_t>(floorToPixel(v.x + reach), bounds.x1 - 1),
              std::min<int64_t>(floorToPixel(v.y + reach), bounds.y1 - 1), [&](Bin& bin) {
-               bin.order.push_back(Kind::Point);
-               bin.points.push_back(r);
-               bin.varyings.insert(bin.varyings.end(), v.varyings, v.varyings + n);
+               bin.order.push(*arena_, Kind::Point);
+               bin.points.push(*arena_, r);
+               bin.varyings.append(*arena_, v.varyings, static_cast<size_t>(n));
                bytes_ += 1 + sizeof(PointRecord) + sizeof(float) * static_cast<size_t>(n);
              });
 }
@@ -210,8 +206,8 @@ void TileScene::addClear(const ClearRequest& request) {
   if (!request.clearsSomething()) return;
   const PixelRect& rect = request.rect;
   forTilesIn(rect.x0, rect.y0, int64_t{rect.x1} - 1, int64_t{rect.y1} - 1, [&](Bin& bin) {
-    bin.order.push_back(Kind::Clear);
-    bin.clears.push_back(request);
+    bin.order.push(*arena_, Kind::Clear);
+    bin.clears.push(*arena_, request);
     bytes_ += 1 + sizeof(ClearRequest);
   });
 }
@@ -230,16 +226,17 @@ void TileScene::runTile(int activeIndex) const {
   const PixelRect rect = tileRect(tile);
   const Bin& bin = bins_[static_cast<size_t>(tile)];
   // Each list is read front to back; `order` says which list the next primitive comes from.
-  const TriangleRecord* triangle = bin.triangles.data();
-  const LineRecord* line = bin.lines.data();
-  const PointRecord* point = bin.points.data();
-  const ClearRequest* clear = bin.clears.data();
-  const double* plane = bin.planes.data();
-  const float* varyings = bin.varyings.data();
-  for (const Kind kind : bin.order) {
-    switch (kind) {
+  BinList<Kind>::Reader order(bin.order);
+  BinList<TriangleRecord>::Reader triangles(bin.triangles);
+  BinList<LineRecord>::Reader lines(bin.lines);
+  BinList<PointRecord>::Reader points(bin.points);
+  BinList<ClearRequest>::Reader clears(bin.clears);
+  BinList<double>::Reader planes(bin.planes);
+  BinList<float>::Reader varyingRuns(bin.varyings);
+  for (size_t k = 0; k < bin.order.size(); ++k) {
+    switch (*order.take(1)) {
       case Kind::Triangle: {
-        const TriangleRecord& r = *triangle++;
+        const TriangleRecord& r = *triangles.take(1);
         TriangleSetup setup;
         for (int i = 0; i < 3; ++i) {
           setup.edgeA[i] = r.edgeA[i];
@@ -253,10 +250,11 @@ void TileScene::runTile(int activeIndex) const {
         setup.planes.invW0 = r.invW0;
         setup.planes.invWdx = r.invWdx;
         setup.planes.invWdy = r.invWdy;
-        for (int k = 0; k < r.varyingCount; ++k, plane += 3) {
-          setup.planes.a0[k] = plane[0];
-          setup.planes.dx[k] = plane[1];
-          setup.planes.dy[k] = plane[2];
+        const double* plane = planes.take(3 * static_cast<size_t>(r.varyingCount));
+        for (int v = 0; v < r.varyingCount; ++v, plane += 3) {
+          setup.planes.a0[v] = plane[0];
+          setup.planes.dx[v] = plane[1];
+          setup.planes.dy[v] = plane[2];
         }
         setup.varyingCount = r.varyingCount;
         setup.perspectiveCorrect = r.perspectiveCorrect;
@@ -267,35 +265,35 @@ void TileScene::runTile(int activeIndex) const {
         break;
       }
       case Kind::Line: {
-        const LineRecord& r = *line++;
+        const LineRecord& r = *lines.take(1);
         const int n = r.settings.varyingCount;
+        const float* varyings = varyingRuns.take(2 * static_cast<size_t>(n));
         const WindowVertex a = rebuildVertex(r.a, varyings, n);
         const WindowVertex b = rebuildVertex(r.b, varyings + n, n);
-        varyings += 2 * n;
         LineSettings settings = r.settings;
         settings.bounds = intersect(settings.bounds, rect);
         rasterizeLineSection(a, b, settings, r.stippleStart, *r.sink);
         break;
       }
       case Kind::Point: {
-        const PointRecord& r = *point++;
+        const PointRecord& r = *points.take(1);
         const int n = r.settings.varyingCount;
-        const WindowVertex v = rebuildVertex(r.v, varyings, n);
-        varyings += n;
+        const WindowVertex v = rebuildVertex(r.v, varyingRuns.take(static_cast<size_t>(n)), n);
         PointSettings settings = r.settings;
         settings.bounds = intersect(settings.bounds, rect);
         rasterizePoint(v, settings, *r.sink);
         break;
       }
       case Kind::Clear:
-        clearFramebuffer(*clear++, rect);
+        clearFramebuffer(*clears.take(1), rect);
         break;
     }
   }
 }
 
 void TileScene::clear() {
-  for (const int tile : activeTiles_) bins_[static_cast<size_t>(tile)].clear();
+  for (const int tile : activeTiles_) bins_[static_cast<size_t>(tile)].reset();
+  arena_->reset();
   activeTiles_.clear();
   bytes_ = 0;
   hasPrimitives_ = false;

@@ -7,13 +7,17 @@
 // one or two tiles, and reading its record from a cold, scattered place cost about as much as
 // rasterizing it. Copies are compact: a triangle keeps its setup with the attribute planes of
 // only as many varyings as it has, a line or point its vertices' varyings likewise, and runTile
-// rebuilds the full setup or vertex on its stack. clear() keeps every buffer's capacity, so once
-// the first frame has grown them, drawing allocates no memory.
+// rebuilds the full setup or vertex on its stack. The lists' memory comes from the scene's arena
+// (bin_arena.h), which clear() takes back whole and keeps, so once the first frames have grown it,
+// drawing allocates no memory.
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <vector>
+
+#include "bin_arena.h"
 
 #include "glass/raster/fragment.h"
 #include "glass/raster/framebuffer_clear.h"
@@ -85,15 +89,15 @@ class TileScene {
   enum class Kind : uint8_t { Triangle, Line, Point, Clear };
 
   struct Bin {
-    std::vector<Kind> order;  // which list the next primitive comes from
-    std::vector<TriangleRecord> triangles;
-    std::vector<LineRecord> lines;
-    std::vector<PointRecord> points;
-    std::vector<ClearRequest> clears;
-    std::vector<double> planes;   // a0, dx, dy of each varying of each triangle, in order
-    std::vector<float> varyings;  // the varyings of each line's and point's vertices, in order
+    BinList<Kind> order;  // which list the next primitive comes from
+    BinList<TriangleRecord> triangles;
+    BinList<LineRecord> lines;
+    BinList<PointRecord> points;
+    BinList<ClearRequest> clears;
+    BinList<double> planes;   // a0, dx, dy of each varying of each triangle, in order
+    BinList<float> varyings;  // the varyings of each line's and point's vertices, in order
     bool empty() const { return order.empty(); }
-    void clear();
+    void reset();
   };
 
   Bin& binOf(int tile);
@@ -103,6 +107,7 @@ class TileScene {
   PixelRect tileRect(int tile) const;
 
   int width_, height_, tilesX_, tilesY_;
+  std::unique_ptr<BinArena> arena_;  // the memory of the bins' lists
   std::vector<Bin> bins_;
   std::vector<int> activeTiles_;
   size_t bytes_ = 0;
