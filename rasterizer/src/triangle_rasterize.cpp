@@ -42,15 +42,15 @@
 // the block is dropped before any per-pixel work; when the farthest corner passes against the
 // nearest stored value, every pixel passes and none is compared.
 //
-// Rows. Each row of a block is worked as lanes without branches (the depths of the columns in
-// the triangle's box, the coverage of their centres as a bit mask), which the compiler turns
-// into vector code.
+// Rows. Each row of a block is worked as lanes without branches (the depths of all its columns,
+// the coverage of their centres as a bit mask, the early depth test of the columns in the
+// triangle's box), which the compiler turns into vector code. Loops over the covered pixels
+// alone were slower: their branches follow the triangle's shape and are mispredicted.
 //
 // The walk ends at a CoveredBlock (triangle_block.h): which pixels of the block are covered and
 // passed the early test, and their depths. The sink decides what happens next; by default it is
 // the reference path below (emitBlockFragments), which interpolates every varying.
 #include <algorithm>
-#include <bit>
 #include <cstring>
 
 #include "glass/raster/depth_value.h"
@@ -66,8 +66,10 @@ constexpr int kBlockSize = CoveredBlock::kSize;
 
 // The depth plane at the block's pixel centres, split as described at the top of the file.
 // Made with the corner columns and rows of the box's part of the block only (i0 and i1 - 1, j0
-// and j1 - 1: all the hidden-block test reads); fillInterior() sets the columns [i0, i1) and rows
-// [j0, j1) between them for the pixels. Every entry is the same expression either way.
+// and j1 - 1: all the hidden-block test reads); fillInterior() sets all eight columns and the rows
+// [j0, j1) for the pixels: a row's depths are computed whole, a fixed loop without branches,
+// whichever of its pixels are covered (the others are never read). Every entry is the same
+// expression either way.
 struct BlockDepth {
   const TriangleSetup& setup;
   int bx, by, i0, i1, j0, j1;
@@ -81,7 +83,7 @@ struct BlockDepth {
     setRow(j1 - 1);
   }
   void fillInterior() {
-    for (int i = i0 + 1; i < i1 - 1; ++i) setColumn(i);
+    for (int i = 0; i < kBlockSize; ++i) setColumn(i);
     for (int j = j0 + 1; j < j1 - 1; ++j) setRow(j);
   }
   uint32_t at(int i, int j) const { return depthValue(column[i] + row[j]); }
@@ -237,23 +239,14 @@ void walkTriangle(const TriangleSetup& setup, FragmentSink& sink) {
         const int y = by + j;
         unsigned mask = accepted ? columns : rowCoverage(edges, bx, y, i0, i1);
         uint32_t* z = block.depth[j];
-        if (accepted && i0 == 0 && i1 == kBlockSize) {  // a whole row: a loop of fixed length
-          depth.wholeRow(j, z);
-        } else if (accepted) {  // every column: one loop without branches
-          for (int i = i0; i < i1; ++i) z[i] = depth.at(i, j);
-        } else {  // the covered ones only
-          for (unsigned rest = mask; rest != 0; rest &= rest - 1) {
-            const int i = std::countr_zero(rest);
-            z[i] = depth.at(i, j);
-          }
-        }
+        if (mask != 0) depth.wholeRow(j, z);
         if constexpr (kEarly) {
           if (test && mask != 0) {
             const uint32_t* stored = earlyDepth->depthAt(bx, y);
-            for (unsigned rest = mask; rest != 0; rest &= rest - 1) {
-              const int i = std::countr_zero(rest);
-              if (!passesDepthCompare(kCompare, z[i], stored[i])) mask &= ~(1u << i);
-            }
+            unsigned passing = 0;
+            for (int i = i0; i < i1; ++i)
+              passing |= static_cast<unsigned>(passesDepthCompare(kCompare, z[i], stored[i])) << i;
+            mask &= passing;
           }
         }
         block.rowMask[j] = static_cast<uint8_t>(mask);
