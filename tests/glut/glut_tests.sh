@@ -266,6 +266,20 @@ key g
   # Two presses: the overdraw view, of the 20 x 20 square, one fragment a pixel (dark blue).
   probe snapshot.png size 200 200 count 30 40 140 400 400 count 0 0 0 39600 39600
   ;;
+window_position)
+  # glutGet(GLUT_WINDOW_X/Y) says where the window is: where -geometry put it, and where the
+  # system placed it when the program asked for no place (a number, never the -1 of an unknown
+  # query, and no warning).
+  run glut_keys_and_reshape "key p
+" -geometry +10+20
+  [ "$status" -eq 0 ] || fail "keys_and_reshape exited with $status"
+  expect_text out.txt "position 10 20"
+  run glut_keys_and_reshape "key p
+"
+  [ "$status" -eq 0 ] || fail "keys_and_reshape exited with $status"
+  grep -E '^position [0-9]+ [0-9]+$' out.txt >/dev/null || fail "no placed position in: $(cat out.txt)"
+  if grep -F "missing enum" err.txt >/dev/null; then fail "glutGet warned about its own query"; fi
+  ;;
 *)
   fail "unknown case $case_name"
   ;;

@@ -2,6 +2,7 @@
 #include <GL/freeglut.h>
 
 #include <cstring>
+#include <optional>
 
 #include "glut_clock.h"
 #include "glut_errors.h"
@@ -18,7 +19,9 @@ constexpr int kDepthBits = 24;
 constexpr int kStencilBits = 8;
 constexpr int kAccumulationBits = 16;
 
-int windowQuery(const Window& window, GLenum query) {
+// The answer to a query about `window`, or nothing when glutGet has no such query (a position
+// may be negative, so no value can mean that).
+std::optional<int> windowQuery(const Window& window, GLenum query) {
   switch (query) {
     case GLUT_WINDOW_X: return window.x;
     case GLUT_WINDOW_Y: return window.y;
@@ -47,7 +50,7 @@ int windowQuery(const Window& window, GLenum query) {
     case GLUT_FULL_SCREEN: return window.fullScreen ? 1 : 0;
     case GLUT_WINDOW_BORDER_WIDTH:
     case GLUT_WINDOW_HEADER_HEIGHT: return 0;
-    default: return -1;
+    default: return std::nullopt;
   }
 }
 
@@ -95,9 +98,10 @@ int glutGet(GLenum query) {
   }
   const Window* window = currentWindow();
   if (!window) return query >= GLUT_WINDOW_X && query <= GLUT_WINDOW_FORMAT_ID ? 0 : -1;
-  const int answer = windowQuery(*window, query);
-  if (answer == -1) warning("glutGet(): missing enum handle %d", static_cast<int>(query));
-  return answer;
+  const std::optional<int> answer = windowQuery(*window, query);
+  if (answer) return *answer;
+  warning("glutGet(): missing enum handle %d", static_cast<int>(query));
+  return -1;
 }
 
 int glutDeviceGet(GLenum query) {

@@ -302,7 +302,11 @@ bool createSystemWindow(Window& window) {
   const int y = window.y >= 0 ? window.y : static_cast<int>(SDL_WINDOWPOS_UNDEFINED);
   window.sdlWindow = SDL_CreateWindow(shownTitle(window).c_str(), x, y, window.width, window.height,
                                       SDL_WINDOW_RESIZABLE);
-  return window.sdlWindow != nullptr;
+  if (window.sdlWindow == nullptr) return false;
+  // Where the window is (glutGet(GLUT_WINDOW_X)): the system's placement when the program asked
+  // for none. A window manager that moves it later sends a move event, which updates it again.
+  SDL_GetWindowPosition(window.sdlWindow, &window.x, &window.y);
+  return true;
 }
 
 void destroySystemWindow(Window& window) {
