@@ -278,6 +278,8 @@ window_position)
 "
   [ "$status" -eq 0 ] || fail "keys_and_reshape exited with $status"
   grep -E '^position [0-9]+ [0-9]+$' out.txt >/dev/null || fail "no placed position in: $(cat out.txt)"
+  # A new window's cursor is GLUT_CURSOR_INHERIT (100), as in freeglut.
+  expect_text out.txt "cursor 100"
   if grep -F "missing enum" err.txt >/dev/null; then fail "glutGet warned about its own query"; fi
   ;;
 *)

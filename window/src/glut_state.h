@@ -3,6 +3,7 @@
 // that called glutInit (GLUT is single-threaded, spec 1.3).
 #pragma once
 
+#include <GL/freeglut.h>
 #include <glass/context.h>
 
 #include <cstdarg>
@@ -55,7 +56,7 @@ struct Window {
   WindowCallbacks callbacks;
   int menuOnButton[5] = {0, 0, 0, 0, 0};  // glutAttachMenu: the menu of each mouse button
   void* userData = nullptr;
-  int cursor = 0;
+  int cursor = GLUT_CURSOR_INHERIT;  // a new window's cursor (GLUT 3.7 spec 4.13)
   bool fullScreen = false;
   bool visible = true;
 

@@ -2,7 +2,7 @@
  * of 20-pixel cells, 'r' and 'R' make it red, 'g' green (with Ctrl, Ctrl+G is character 7 and
  * makes it blue), and a reshape keeps one pixel per unit with the origin at the bottom left.
  * Every key the keyboard callbacks get is printed, with its modifiers; 'p' also prints where the
- * window is (glutGet(GLUT_WINDOW_X), glutGet(GLUT_WINDOW_Y)). */
+ * window is (glutGet(GLUT_WINDOW_X), glutGet(GLUT_WINDOW_Y)) and its cursor. */
 #include <stdio.h>
 #include <GL/glut.h>
 
@@ -16,7 +16,10 @@ static void keyboard(unsigned char key, int x, int y)
   fflush(stdout);
   if (key == 'r' || key == 'R') { color[0] = 1; color[1] = 0; color[2] = 0; }
   if (key == 'g') { color[0] = 0; color[1] = 1; color[2] = 0; }
-  if (key == 'p') printf("position %d %d\n", glutGet(GLUT_WINDOW_X), glutGet(GLUT_WINDOW_Y));
+  if (key == 'p') {
+    printf("position %d %d\n", glutGet(GLUT_WINDOW_X), glutGet(GLUT_WINDOW_Y));
+    printf("cursor %d\n", glutGet(GLUT_WINDOW_CURSOR));
+  }
   if (key == 7 && (glutGetModifiers() & GLUT_ACTIVE_CTRL)) { color[0] = 0; color[1] = 0; color[2] = 1; }
   glutPostRedisplay();
 }
