@@ -124,6 +124,9 @@ void waitForWork() {
 }  // namespace
 
 void runLoopPass() {
+  // A new window's first reshape comes before the events of its showing (visibility, entry), as
+  // freeglut delivers them.
+  runReshapes();
   std::vector<InputEvent> events;
   pollSystemEvents(events);
   for (const InputEvent& event : events) dispatchInput(event);

@@ -33,11 +33,35 @@ Window* windowOfSystemId(Uint32 sdlId) {
 
 int glutModifiersOf(Uint16 mod) {
   int modifiers = 0;
-  if (mod & KMOD_SHIFT) modifiers |= GLUT_ACTIVE_SHIFT;
+  if (mod & (KMOD_SHIFT | KMOD_CAPS)) modifiers |= GLUT_ACTIVE_SHIFT;  // "Shift or Caps Lock" (spec 7.9)
   if (mod & KMOD_CTRL) modifiers |= GLUT_ACTIVE_CTRL;
   if (mod & KMOD_ALT) modifiers |= GLUT_ACTIVE_ALT;
   if (mod & KMOD_GUI) modifiers |= GLUT_ACTIVE_SUPER;
   return modifiers;
+}
+
+// The modifier bit a modifier key itself sets (KMOD_NONE for other keys).
+Uint16 ownModifierOf(SDL_Keycode key) {
+  switch (key) {
+    case SDLK_LSHIFT: return KMOD_LSHIFT;
+    case SDLK_RSHIFT: return KMOD_RSHIFT;
+    case SDLK_LCTRL: return KMOD_LCTRL;
+    case SDLK_RCTRL: return KMOD_RCTRL;
+    case SDLK_LALT: return KMOD_LALT;
+    case SDLK_RALT: return KMOD_RALT;
+    case SDLK_LGUI: return KMOD_LGUI;
+    case SDLK_RGUI: return KMOD_RGUI;
+    default: return KMOD_NONE;
+  }
+}
+
+// The modifiers glutGetModifiers gives in the callback of a key event: those held before the
+// event, as X reports them to freeglut, so pressing Shift is not yet shifted and releasing it
+// still is (SDL gives the state after the event).
+int glutModifiersOfKeyEvent(const SDL_KeyboardEvent& key) {
+  const Uint16 own = ownModifierOf(key.keysym.sym);
+  const Uint16 before = key.type == SDL_KEYDOWN ? key.keysym.mod & ~own : key.keysym.mod | own;
+  return glutModifiersOf(before);
 }
 
 // The GLUT_KEY_* code of a key that goes to glutSpecialFunc, or 0 (freeglut's X11 key table).
@@ -86,6 +110,25 @@ int characterWithoutText(SDL_Keycode key, Uint16 mod) {
   return -1;
 }
 
+// The character a key's release gives (glutKeyboardUpFunc) as the modifiers held at the release
+// make it, as XLookupString gives it to freeglut: Shift+B pressed, Shift let go first, then B:
+// 'B' down, 'b' up; Shift+1 so: '!' down, '1' up. A letter's case follows Shift and Caps Lock;
+// another printable key without Shift gives its own symbol (SDL's key code); with Shift, the
+// character its press gave, since shifted symbols depend on the keyboard's layout, which SDL
+// tells only as the text of a press.
+int characterOfReleasedKey(const SDL_KeyboardEvent& key, int pressedCharacter) {
+  const SDL_Keycode code = key.keysym.sym;
+  const Uint16 mod = key.keysym.mod;
+  if (code >= SDLK_a && code <= SDLK_z) {
+    if (mod & KMOD_CTRL) return code & 0x1f;
+    const bool upper = ((mod & KMOD_SHIFT) != 0) != ((mod & KMOD_CAPS) != 0);
+    return upper ? code - SDLK_a + 'A' : code;
+  }
+  const bool printable = code >= ' ' && code <= '~';
+  if (printable && !(mod & (KMOD_SHIFT | KMOD_CTRL))) return code;
+  return pressedCharacter;
+}
+
 // The Latin-1 character of a UTF-8 text, or -1 (GLUT's keyboard callback takes one byte).
 int latin1Of(const char* text) {
   const auto* bytes = reinterpret_cast<const unsigned char*>(text);
@@ -102,7 +145,7 @@ void translateKey(const SDL_KeyboardEvent& key, Window& window, std::vector<Inpu
   event.window = window.id;
   event.x = window.mouseX;
   event.y = window.mouseY;
-  event.modifiers = glutModifiersOf(key.keysym.mod);
+  event.modifiers = glutModifiersOfKeyEvent(key);
   const bool down = key.type == SDL_KEYDOWN;
   if (down && key.repeat && state().ignoreKeyRepeat) return;
   if (const int special = specialKeyOf(key.keysym.sym)) {
@@ -115,7 +158,7 @@ void translateKey(const SDL_KeyboardEvent& key, Window& window, std::vector<Inpu
     auto pressed = characterOfPressedKey.find(key.keysym.scancode);
     if (pressed == characterOfPressedKey.end()) return;
     event.kind = InputKind::KeyUp;
-    event.key = pressed->second;
+    event.key = characterOfReleasedKey(key, pressed->second);
     characterOfPressedKey.erase(pressed);
     events.push_back(event);
     return;
@@ -262,6 +305,10 @@ bool openDisplay(bool allowHeadless, std::string& failure) {
   // Ctrl+C ends a GLUT program at once, as it does with freeglut.
   SDL_SetHint(SDL_HINT_NO_SIGNAL_HANDLERS, "1");
   SDL_SetHint(SDL_HINT_VIDEO_ALLOW_SCREENSAVER, "1");
+  // The window's surface is a plain image of the system's (X11: shared memory), not a texture of
+  // an OpenGL renderer: glass needs no GPU driver to show its pictures, and making that renderer
+  // would also hide and show the new window once (a spurious GLUT_NOT_VISIBLE).
+  SDL_SetHint(SDL_HINT_FRAMEBUFFER_ACCELERATION, "0");
   // SDL falls back to its offscreen driver by itself when there is no display; glass takes a
   // driver without a screen only when asked to (SDL_VIDEODRIVER, or the headless variables).
   const char* requested = std::getenv("SDL_VIDEODRIVER");
