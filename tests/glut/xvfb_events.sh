@@ -2,8 +2,11 @@
 # Real X input (xdotool under Xvfb) to a GLUT program that logs its callbacks
 # (programs/event_log.c); the log must be the one the same program writes on freeglut for the
 # same events (expected/event_log.txt, recorded with freeglut 3.4 under Xvfb without a window
-# manager, by this script with BIN_DIR holding the program built against freeglut). It checks the first reshape before visibility and display, the modifiers of modifier
-# keys (the state before the event), Caps Lock as Shift, and the character of a key's release.
+# manager, by this script with BIN_DIR holding the program built against freeglut). It checks
+# the first reshape before visibility and display, the modifiers of modifier keys (the state
+# before the event), Caps Lock as Shift, the character of a key's release, the vertical wheel to
+# the wheel callback and the horizontal one to the mouse callback, and a move the program asks
+# for: its position callback, and the pointer's coordinates in the moved window.
 #   xvfb_events.sh BIN_DIR WORK_DIR EXPECTED     (run inside xvfb-run, which sets DISPLAY)
 set -eu
 bin=$1
@@ -28,7 +31,7 @@ xdotool mousemove --window "$window" 70 80
 await grep -q "motion 70 80" out.txt
 xdotool mouseup 1
 xdotool click 3
-xdotool click 4
+xdotool click 4 click 5 click 6 click 7
 xdotool keydown ctrl click 1
 xdotool keyup ctrl
 xdotool key ctrl+g
@@ -37,6 +40,10 @@ xdotool keydown shift keydown 1 keyup shift keyup 1
 xdotool key alt+x
 xdotool key Caps_Lock c shift+c Caps_Lock
 xdotool key Escape Return BackSpace Tab Delete
+# The window moved by the program under the pointer: a key now reports it 30, 40 nearer.
+xdotool key m
+await grep -q "position 30 40" out.txt
+xdotool key a
 xdotool key q
 status=0
 wait "$pid" || status=$?

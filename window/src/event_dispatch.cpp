@@ -45,15 +45,19 @@ void dispatchButton(Window& window, const InputEvent& e) {
 
 // freeglut: the wheel goes to glutMouseWheelFunc, or, without one, to glutMouseFunc as buttons 3
 // (away from the user) and 4 (towards), pressed and released.
+// As freeglut on X11: the vertical wheel (X's buttons 4 and 5) goes to the wheel callback, or,
+// without one, to the mouse callback as buttons 3 (up) and 4 (down); the horizontal one (X's
+// buttons 6 and 7) always to the mouse callback, as buttons 5 (left) and 6 (right).
 void dispatchWheel(Window& window, const InputEvent& e) {
-  if (window.callbacks.mouseWheel) {
+  const bool vertical = e.button == 0;
+  if (vertical && window.callbacks.mouseWheel) {
     withModifiers(window, e.modifiers, [&] {
       window.callbacks.mouseWheel(e.button, e.buttonState, e.x, e.y);
     });
     return;
   }
-  if (!window.callbacks.mouse || e.button != 0) return;
-  const int button = e.buttonState > 0 ? 3 : 4;
+  if (!window.callbacks.mouse) return;
+  const int button = vertical ? (e.buttonState > 0 ? 3 : 4) : (e.buttonState < 0 ? 5 : 6);
   const int id = window.id;
   withModifiers(window, e.modifiers, [&] { window.callbacks.mouse(button, GLUT_DOWN, e.x, e.y); });
   if (Window* still = findWindow(id); still && still->callbacks.mouse) {
@@ -116,6 +120,10 @@ void dispatchInput(const InputEvent& e) {
     case InputKind::Motion: dispatchMotion(*window, e); return;
     case InputKind::Reshape: resizeWindow(*window, e.width, e.height); return;
     case InputKind::Moved:
+      // The pointer stays where it is on the screen: in the window's coordinates it moves the
+      // other way.
+      window->mouseX -= e.x - window->x;
+      window->mouseY -= e.y - window->y;
       window->x = e.x;
       window->y = e.y;
       if (window->callbacks.position) {

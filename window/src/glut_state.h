@@ -64,6 +64,8 @@ struct Window {
   bool reshapePending = true;       // and told its size first
   bool firstPassDone = false;       // the checks freeglut makes before the first display
   int requestedWidth = 0, requestedHeight = 0;  // glutReshapeWindow, applied by the loop
+  bool movePending = false;                     // glutPositionWindow, reported by the loop
+  int requestedX = 0, requestedY = 0;
   bool inDisplayCallback = false;
   bool presentedInDisplay = false;  // glFlush/glFinish or glutSwapBuffers inside display
 

@@ -15,6 +15,7 @@
 #include "headless_run.h"
 #include "presentation.h"
 #include "sdl_display.h"
+#include "sdl_display.h"
 #include "window_lifecycle.h"
 
 namespace glass::glut {
@@ -46,6 +47,21 @@ void forEachWindow(Work&& work) {
   for (int id : ids) {
     if (Window* window = findWindow(id)) work(*window);
   }
+}
+
+// Moves the program asked for (glutPositionWindow), told as the window system's moves are.
+void runMoves() {
+  forEachWindow([](Window& window) {
+    if (!window.movePending) return;
+    window.movePending = false;
+    InputEvent moved;
+    moved.kind = InputKind::Moved;
+    moved.window = window.id;
+    moved.x = window.requestedX;
+    moved.y = window.requestedY;
+    systemWindowPosition(window, moved.x, moved.y);
+    dispatchInput(moved);
+  });
 }
 
 void runReshapes() {
@@ -89,7 +105,7 @@ void runDisplays() {
 bool anyRedisplayPending() {
   for (const auto& [id, window] : state().windows) {
     if ((window->redisplayPending && window->visible) || window->reshapePending ||
-        window->requestedWidth > 0) {
+        window->requestedWidth > 0 || window->movePending) {
       return true;
     }
   }
@@ -132,6 +148,7 @@ void runLoopPass() {
   for (const InputEvent& event : events) dispatchInput(event);
   runScriptStep();
   runDueTimers();
+  runMoves();
   runReshapes();
   runDisplays();
   finishRunIfDone();

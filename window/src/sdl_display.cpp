@@ -389,8 +389,14 @@ void setSystemWindowSize(Window& window, int width, int height) {
   if (window.sdlWindow) SDL_SetWindowSize(window.sdlWindow, width, height);
 }
 
-void setSystemWindowPosition(Window& window) {
-  if (window.sdlWindow) SDL_SetWindowPosition(window.sdlWindow, window.x, window.y);
+void setSystemWindowPosition(Window& window, int x, int y) {
+  if (window.sdlWindow) SDL_SetWindowPosition(window.sdlWindow, x, y);
+}
+
+bool systemWindowPosition(const Window& window, int& x, int& y) {
+  if (!window.sdlWindow) return false;
+  SDL_GetWindowPosition(window.sdlWindow, &x, &y);
+  return true;
 }
 
 void setSystemWindowFullScreen(Window& window, bool fullScreen) {

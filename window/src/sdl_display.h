@@ -27,7 +27,9 @@ void showOnScreen(Window& window);
 
 void setSystemWindowTitle(Window& window);
 void setSystemWindowSize(Window& window, int width, int height);
-void setSystemWindowPosition(Window& window);
+void setSystemWindowPosition(Window& window, int x, int y);
+// Where the window is on the screen; false when it has no system window (headless runs).
+bool systemWindowPosition(const Window& window, int& x, int& y);
 void setSystemWindowFullScreen(Window& window, bool fullScreen);
 void showSystemWindow(Window& window, bool visible);
 void iconifySystemWindow(Window& window);

@@ -264,9 +264,12 @@ void glutReshapeWindow(int width, int height) {
 void glutPositionWindow(int x, int y) {
   Window* window = requireCurrentWindow("glutPositionWindow");
   if (!window) return;
-  window->x = x;
-  window->y = y;
-  setSystemWindowPosition(*window);
+  // Applied now; the loop reports the move to the position callback, as freeglut does when the
+  // window system confirms it (SDL sends no event for a move the program asked for).
+  window->requestedX = x;
+  window->requestedY = y;
+  window->movePending = true;
+  setSystemWindowPosition(*window, x, y);
 }
 
 void glutShowWindow(void) {

@@ -1,10 +1,11 @@
 /* Prints every callback GLUT makes, with its arguments and glutGetModifiers where GLUT allows
  * it, so that a run driven by real X events (xvfb_events.sh) can be compared line by line with
  * the same program on freeglut: the order of the first reshape, visibility and display, the
- * keys, their releases and the modifiers seen in each. 'q' ends it. */
+ * keys, their releases and the modifiers seen in each, the wheels, and a move the program asks
+ * for ('m': glutPositionWindow(30, 40)). 'q' ends it. */
 #include <stdio.h>
 #include <stdlib.h>
-#include <GL/glut.h>
+#include <GL/freeglut.h>
 
 static int frames = 0;
 
@@ -27,6 +28,7 @@ static void keyboard(unsigned char key, int x, int y)
 {
   printf("key %d at %d %d modifiers %d\n", key, x, y, glutGetModifiers());
   fflush(stdout);
+  if (key == 'm') glutPositionWindow(30, 40);
   if (key == 'q') exit(0);
 }
 
@@ -66,6 +68,18 @@ static void passiveMotion(int x, int y)
   fflush(stdout);
 }
 
+static void mouseWheel(int wheel, int direction, int x, int y)
+{
+  printf("wheel %d %d at %d %d\n", wheel, direction, x, y);
+  fflush(stdout);
+}
+
+static void position(int x, int y)
+{
+  printf("position %d %d\n", x, y);
+  fflush(stdout);
+}
+
 static void visibility(int state)
 {
   printf("visibility %d\n", state);
@@ -88,6 +102,8 @@ int main(int argc, char** argv)
   glutMouseFunc(mouse);
   glutMotionFunc(motion);
   glutPassiveMotionFunc(passiveMotion);
+  glutMouseWheelFunc(mouseWheel);
+  glutPositionFunc(position);
   glutVisibilityFunc(visibility);
   glutMainLoop();
   return 0;
