@@ -4,7 +4,8 @@
 # same events (expected/event_log.txt, recorded with freeglut 3.4 under Xvfb without a window
 # manager, by this script with BIN_DIR holding the program built against freeglut). It checks
 # the first reshape before visibility and display, the modifiers of modifier keys (the state
-# before the event), Caps Lock as Shift, the character of a key's release, the vertical wheel to
+# before the event), Caps Lock as Shift, the character of a key's release, the keypad's keys
+# with Num Lock off, Ctrl with symbols, the vertical wheel to
 # the wheel callback and the horizontal one to the mouse callback, and a move the program asks
 # for: its position callback, and the pointer's coordinates in the moved window.
 #   xvfb_events.sh BIN_DIR WORK_DIR EXPECTED     (run inside xvfb-run, which sets DISPLAY)
@@ -40,6 +41,10 @@ xdotool keydown shift keydown 1 keyup shift keyup 1
 xdotool key alt+x
 xdotool key Caps_Lock c shift+c Caps_Lock
 xdotool key Escape Return BackSpace Tab Delete
+# The keypad with Num Lock off: arrows, Home, End, Page Up, Page Down, Insert, Delete, Begin.
+xdotool key KP_Up KP_Down KP_Left KP_Right KP_Home KP_End KP_Prior KP_Next KP_Insert KP_Delete KP_Begin
+# Ctrl with symbols, as XLookupString maps them (27, 0, 0, 127, 31), and Ctrl+1 once.
+xdotool key ctrl+bracketleft ctrl+space ctrl+2 ctrl+8 ctrl+slash ctrl+1
 # The window moved by the program under the pointer: a key now reports it 30, 40 nearer.
 xdotool key m
 await grep -q "position 30 40" out.txt

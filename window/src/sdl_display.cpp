@@ -65,8 +65,26 @@ int glutModifiersOfKeyEvent(const SDL_KeyboardEvent& key) {
 }
 
 // The GLUT_KEY_* code of a key that goes to glutSpecialFunc, or 0 (freeglut's X11 key table).
-int specialKeyOf(SDL_Keycode key) {
+// With Num Lock off the keypad's keys are its arrows, Home, End, Page Up and Down, Insert,
+// Delete and Begin (X's KP_Up ... KP_Begin); with it on they type digits and '.'.
+int specialKeyOf(SDL_Keycode key, Uint16 mod) {
   if (key >= SDLK_F1 && key <= SDLK_F12) return GLUT_KEY_F1 + (key - SDLK_F1);
+  if (!(mod & KMOD_NUM)) {
+    switch (key) {
+      case SDLK_KP_8: return GLUT_KEY_UP;
+      case SDLK_KP_2: return GLUT_KEY_DOWN;
+      case SDLK_KP_4: return GLUT_KEY_LEFT;
+      case SDLK_KP_6: return GLUT_KEY_RIGHT;
+      case SDLK_KP_7: return GLUT_KEY_HOME;
+      case SDLK_KP_1: return GLUT_KEY_END;
+      case SDLK_KP_9: return GLUT_KEY_PAGE_UP;
+      case SDLK_KP_3: return GLUT_KEY_PAGE_DOWN;
+      case SDLK_KP_0: return GLUT_KEY_INSERT;
+      case SDLK_KP_PERIOD: return GLUT_KEY_DELETE;
+      case SDLK_KP_5: return GLUT_KEY_BEGIN;
+      default: break;
+    }
+  }
   switch (key) {
     case SDLK_LEFT: return GLUT_KEY_LEFT;
     case SDLK_UP: return GLUT_KEY_UP;
@@ -91,7 +109,9 @@ int specialKeyOf(SDL_Keycode key) {
 }
 
 // The character of a key whose press sends no text: the control characters, and any key with
-// Ctrl held (Ctrl+A is 1, as X's XLookupString gives it). -1 for keys whose text comes in an
+// Ctrl held, as X's XLookupString makes it from the key's symbol: '@' to '~' and space give
+// their low five bits (Ctrl+A and Ctrl+a 1, Ctrl+[ 27, Ctrl+space 0), '2' 0, '3' to '7' 27 to
+// 31, '8' 127, '/' 31, any other symbol itself. -1 for keys whose text comes in an
 // SDL_TEXTINPUT event.
 int characterWithoutText(SDL_Keycode key, Uint16 mod) {
   switch (key) {
@@ -104,7 +124,11 @@ int characterWithoutText(SDL_Keycode key, Uint16 mod) {
     default: break;
   }
   if ((mod & KMOD_CTRL) && key >= 0 && key < 128) {
-    if (key >= 'a' && key <= 'z') return key & 0x1f;
+    if ((key >= '@' && key < 127) || key == ' ') return key & 0x1f;
+    if (key == '2') return 0;
+    if (key >= '3' && key <= '7') return key - '3' + 27;
+    if (key == '8') return 127;
+    if (key == '/') return '_' & 0x1f;
     return static_cast<int>(key);
   }
   return -1;
@@ -112,15 +136,18 @@ int characterWithoutText(SDL_Keycode key, Uint16 mod) {
 
 // The character a key's release gives (glutKeyboardUpFunc) as the modifiers held at the release
 // make it, as XLookupString gives it to freeglut: Shift+B pressed, Shift let go first, then B:
-// 'B' down, 'b' up; Shift+1 so: '!' down, '1' up. A letter's case follows Shift and Caps Lock;
+// 'B' down, 'b' up; Shift+1 so: '!' down, '1' up. With Ctrl held, the control character as a
+// press makes it; a letter's case follows Shift and Caps Lock;
 // another printable key without Shift gives its own symbol (SDL's key code); with Shift, the
 // character its press gave, since shifted symbols depend on the keyboard's layout, which SDL
 // tells only as the text of a press.
 int characterOfReleasedKey(const SDL_KeyboardEvent& key, int pressedCharacter) {
   const SDL_Keycode code = key.keysym.sym;
   const Uint16 mod = key.keysym.mod;
+  if (mod & KMOD_CTRL) {
+    if (const int control = characterWithoutText(code, mod); control >= 0) return control;
+  }
   if (code >= SDLK_a && code <= SDLK_z) {
-    if (mod & KMOD_CTRL) return code & 0x1f;
     const bool upper = ((mod & KMOD_SHIFT) != 0) != ((mod & KMOD_CAPS) != 0);
     return upper ? code - SDLK_a + 'A' : code;
   }
@@ -148,7 +175,8 @@ void translateKey(const SDL_KeyboardEvent& key, Window& window, std::vector<Inpu
   event.modifiers = glutModifiersOfKeyEvent(key);
   const bool down = key.type == SDL_KEYDOWN;
   if (down && key.repeat && state().ignoreKeyRepeat) return;
-  if (const int special = specialKeyOf(key.keysym.sym)) {
+  if (down) keyAwaitingText = SDL_SCANCODE_UNKNOWN;  // a new press ends any wait for text
+  if (const int special = specialKeyOf(key.keysym.sym, key.keysym.mod)) {
     event.kind = down ? InputKind::Special : InputKind::SpecialUp;
     event.key = special;
     events.push_back(event);
@@ -176,6 +204,9 @@ void translateKey(const SDL_KeyboardEvent& key, Window& window, std::vector<Inpu
 }
 
 void translateText(const SDL_TextInputEvent& text, std::vector<InputEvent>& events) {
+  // Text is a key's character only when its press gave none (with Ctrl, Ctrl+1's press was
+  // '1' already, and SDL still sends the text "1").
+  if (keyAwaitingText == SDL_SCANCODE_UNKNOWN) return;
   Window* window = findWindow(windowAwaitingText);
   const int character = latin1Of(text.text);
   if (!window || character < 0) return;
