@@ -378,6 +378,86 @@ double denormalize(double c, GLenum type) {
   }
 }
 
+// gluScaleImage works on 16-bit unsigned values, as GLU does: an unsigned byte b is 257 b, a float
+// f is 65535 f in single precision (truncated; clamped to [0, 1] first), other types their
+// normalized value times 65535, rounded. The result goes back as u >> 8 for bytes, u / 65535 for floats.
+uint16_t sixteenBitOf(double raw, GLenum type) {
+  switch (type) {
+    case GL_UNSIGNED_BYTE: return static_cast<uint16_t>(raw * 257.0);
+    case GL_UNSIGNED_SHORT: return static_cast<uint16_t>(raw);
+    case GL_FLOAT: return static_cast<uint16_t>(static_cast<float>(std::clamp(raw, 0.0, 1.0)) * 65535.0f);  // in float
+    default: return static_cast<uint16_t>(std::nearbyint(std::clamp(normalize(raw, type), 0.0, 1.0) * 65535.0));
+  }
+}
+
+double fromSixteenBit(uint16_t u, GLenum type) {
+  switch (type) {
+    case GL_UNSIGNED_BYTE: return u >> 8;
+    case GL_UNSIGNED_SHORT: return u;
+    case GL_FLOAT: return u / 65535.0;
+    default: return denormalize(u / 65535.0, type);
+  }
+}
+
+// gluScaleImage's resampling (GLU's, which is not the one its mipmaps use): each output pixel is
+// the weighted mean of the source area round its centre (x, y) = ((i + 1/2) w_in / w_out, (j +
+// 1/2) h_in / h_out): half an output pixel each way along an axis that shrinks, half a source
+// texel along one that grows (so enlarging interpolates linearly between the two nearest
+// texels), the source indices wrapping round the image; the mean is (sum + 1/2) / area,
+// truncated. An image exactly twice the output size each way is halved by 2 x 2 averages
+// (sum + 2) / 4. Single precision where GLU computes in it, so the same values.
+std::vector<uint16_t> scaleSixteenBit(const std::vector<uint16_t>& in, int widthIn, int heightIn, int components,
+                                      int widthOut, int heightOut) {
+  std::vector<uint16_t> out(static_cast<size_t>(widthOut) * static_cast<size_t>(heightOut) * static_cast<size_t>(components));
+  auto source = [&](int x, int y, int c) {
+    return in[(static_cast<size_t>(y) * static_cast<size_t>(widthIn) + static_cast<size_t>(x)) * static_cast<size_t>(components) +
+              static_cast<size_t>(c)];
+  };
+  auto target = [&](int i, int j, int c) -> uint16_t& {
+    return out[(static_cast<size_t>(j) * static_cast<size_t>(widthOut) + static_cast<size_t>(i)) * static_cast<size_t>(components) +
+               static_cast<size_t>(c)];
+  };
+  if (widthIn == 2 * widthOut && heightIn == 2 * heightOut) {
+    for (int j = 0; j < heightOut; ++j)
+      for (int i = 0; i < widthOut; ++i)
+        for (int c = 0; c < components; ++c) {
+          const unsigned sum = source(2 * i, 2 * j, c) + source(2 * i + 1, 2 * j, c) + source(2 * i, 2 * j + 1, c) +
+                               source(2 * i + 1, 2 * j + 1, c);
+          target(i, j, c) = static_cast<uint16_t>((sum + 2) / 4);
+        }
+    return out;
+  }
+  const float stepX = static_cast<float>(widthIn) / static_cast<float>(widthOut);
+  const float stepY = static_cast<float>(heightIn) / static_cast<float>(heightOut);
+  const float halfX = widthIn > widthOut ? stepX / 2 : 0.5f, halfY = heightIn > heightOut ? stepY / 2 : 0.5f;
+  for (int j = 0; j < heightOut; ++j) {
+    const auto centreY = static_cast<float>(stepY * (j + 0.5));
+    const float lowY = centreY - halfY, highY = centreY + halfY;
+    for (int i = 0; i < widthOut; ++i) {
+      const auto centreX = static_cast<float>(stepX * (i + 0.5));
+      const float lowX = centreX - halfX, highX = centreX + halfX;
+      float totals[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+      float area = 0.0f;
+      // Unit cells from the box's low corner; the first and last are partly inside.
+      float y = lowY;
+      for (auto row = static_cast<int>(std::floor(y)); y < highY; y = static_cast<float>(++row)) {
+        const float shareY = highY < static_cast<float>(row + 1) ? highY - y : static_cast<float>(row + 1) - y;
+        const int sourceRow = ((row % heightIn) + heightIn) % heightIn;
+        float x = lowX;
+        for (auto column = static_cast<int>(std::floor(x)); x < highX; x = static_cast<float>(++column)) {
+          const float shareX = highX < static_cast<float>(column + 1) ? highX - x : static_cast<float>(column + 1) - x;
+          const int sourceColumn = ((column % widthIn) + widthIn) % widthIn;
+          const float share = shareX * shareY;
+          area += share;
+          for (int c = 0; c < components; ++c) totals[c] += static_cast<float>(source(sourceColumn, sourceRow, c)) * share;
+        }
+      }
+      for (int c = 0; c < components; ++c) target(i, j, c) = static_cast<uint16_t>((totals[c] + 0.5) / area);
+    }
+  }
+  return out;
+}
+
 }  // namespace
 
 // C linkage whether or not GL/glu.h declares these (programs written in C call them).
@@ -416,9 +496,15 @@ GLint GLAPIENTRY gluScaleImage(GLenum format, GLsizei widthIn, GLsizei heightIn,
   if (checkMipmapArguments(format, typeIn) != 0 || checkMipmapArguments(format, typeOut) != 0)
     return GLU_INVALID_ENUM;
   try {
-    ClientImage in = readClientImage(widthIn, heightIn, format, typeIn, dataIn);
-    for (double& v : in.values) v = normalize(v, typeIn);
-    const ClientImage out = scaleImage(in, widthOut, heightOut, GL_FLOAT);
+    const ClientImage in = readClientImage(widthIn, heightIn, format, typeIn, dataIn);
+    std::vector<uint16_t> sixteenBit(in.values.size());
+    for (size_t k = 0; k < in.values.size(); ++k) sixteenBit[k] = sixteenBitOf(in.values[k], typeIn);
+    const std::vector<uint16_t> scaled =
+        scaleSixteenBit(sixteenBit, widthIn, heightIn, in.components, widthOut, heightOut);
+    ClientImage out;
+    out.width = widthOut;
+    out.height = heightOut;
+    out.components = in.components;
     // The result is written with the GL_PACK_* layout.
     GLint alignment = 4, rowLength = 0, skipRows = 0, skipPixels = 0;
     glGetIntegerv(GL_PACK_ALIGNMENT, &alignment);
@@ -435,7 +521,10 @@ GLint GLAPIENTRY gluScaleImage(GLenum format, GLsizei widthIn, GLsizei heightIn,
     for (int j = 0; j < heightOut; ++j)
       for (int i = 0; i < widthOut; ++i)
         for (int c = 0; c < out.components; ++c)
-          writeElement(denormalize(out.at(i, j, c), typeOut), typeOut,
+          writeElement(fromSixteenBit(scaled[(static_cast<size_t>(j) * static_cast<size_t>(widthOut) + static_cast<size_t>(i)) *
+                                                 static_cast<size_t>(out.components) + static_cast<size_t>(c)],
+                                          typeOut),
+                       typeOut,
                        base + static_cast<size_t>(j) * rowBytes + static_cast<size_t>(i) * groupBytes +
                            static_cast<size_t>(c) * elementBytes);
   } catch (const std::bad_alloc&) {
