@@ -322,6 +322,39 @@ TEST_CASE("gluBuild2DMipmaps halves with GLU's (a + b + c + d + 2) / 4 and round
   CHECK(glGetError() == GL_NO_ERROR);
 }
 
+TEST_CASE("gluScaleImage interpolates when enlarging, with boxes that wrap, and averages when reducing") {
+  ScopedContext context;
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  // 2 x 1 -> 4 x 1: centres 0.25, 0.75, 1.25, 1.75 source texels, each a box one texel wide. The
+  // first box reaches to -0.25, which wraps to texel 1: a quarter of 65535, (16383.75 + 1/2) /
+  // 1 truncated is 16384, 64 as a byte.
+  const GLubyte ramp[2] = {0, 255};
+  GLubyte enlarged[4] = {};
+  CHECK(gluScaleImage(GL_LUMINANCE, 2, 1, GL_UNSIGNED_BYTE, ramp, 4, 1, GL_UNSIGNED_BYTE, enlarged) == 0);
+  CHECK(enlarged[0] == 64);
+  CHECK(enlarged[1] == 64);
+  CHECK(enlarged[2] == 191);  // (49151.25 + 1/2) truncated is 49151, >> 8
+  CHECK(enlarged[3] == 191);  // the last box wraps to texel 0
+  // Exactly half: (0 + 3 * 65535 + 2) / 4 = 49151.
+  const GLubyte square[4] = {0, 255, 255, 255};
+  GLubyte halved[1] = {};
+  CHECK(gluScaleImage(GL_LUMINANCE, 2, 2, GL_UNSIGNED_BYTE, square, 1, 1, GL_UNSIGNED_BYTE, halved) == 0);
+  CHECK(halved[0] == 191);
+  // 3 x 1 -> 1 x 1: one box over all three, (65535 + 1/2) / 3 truncated is 21845.
+  const GLubyte three[3] = {0, 0, 255};
+  GLubyte reduced[1] = {};
+  CHECK(gluScaleImage(GL_LUMINANCE, 3, 1, GL_UNSIGNED_BYTE, three, 1, 1, GL_UNSIGNED_BYTE, reduced) == 0);
+  CHECK(reduced[0] == 85);
+  // Floats come back as 16-bit values over 65535.
+  GLfloat asFloat[4] = {};
+  CHECK(gluScaleImage(GL_LUMINANCE, 2, 1, GL_UNSIGNED_BYTE, ramp, 4, 1, GL_FLOAT, asFloat) == 0);
+  CHECK(asFloat[0] == doctest::Approx(16384.0 / 65535.0).epsilon(1e-7));
+  CHECK(gluScaleImage(GL_LUMINANCE, 2, 1, GL_UNSIGNED_BYTE, ramp, 4, 1, GL_UNSIGNED_SHORT_5_6_5, enlarged) ==
+        GLU_INVALID_ENUM);
+  CHECK(glGetError() == GL_NO_ERROR);
+}
+
 TEST_CASE("NEAREST and LINEAR texels land where the specification's formulas put them") {
   ScopedContext context(16, 16);
   pixelProjection(16, 16);
