@@ -656,8 +656,15 @@ void gluAndGlutCall(ByteReader &in) {
   case 2: CALL(gluLookAt, in.real(), in.real(), in.real(), in.real(), in.real(), in.real(), in.real(), in.real(), in.real());
     break;
   case 3: {
-    // gluBuild2DMipmaps reads width x height client pixels.
+    // gluBuild2DMipmaps and gluScaleImage read width x height client pixels; gluScaleImage
+    // writes its result into the read-back buffer with the pack settings.
     for (int i = 0; i < 256; ++i) memory->pixels[i] = in.byte();
+    if (in.byte() & 1) {
+      CALL(gluScaleImage, in.enumFrom(kEnums, kEnumCount), clientImageSide(in), clientImageSide(in),
+           in.enumFrom(kEnums, kEnumCount), memory->pixels.data(), clientImageSide(in), clientImageSide(in),
+           in.enumFrom(kEnums, kEnumCount), memory->readback.data());
+      break;
+    }
     CALL(gluBuild2DMipmaps, in.enumFrom(kEnums, kEnumCount), static_cast<GLint>(in.enumFrom(kEnums, kEnumCount)),
                       clientImageSide(in), clientImageSide(in), in.enumFrom(kEnums, kEnumCount),
                       in.enumFrom(kEnums, kEnumCount), memory->pixels.data());
