@@ -405,31 +405,18 @@ double fromSixteenBit(uint16_t u, GLenum type) {
 // texel along one that grows (so enlarging interpolates linearly between the two nearest
 // texels), the source indices wrapping round the image; the mean is (sum + 1/2) / area,
 // truncated. An image exactly twice the output size each way is halved by 2 x 2 averages
-// (sum + 2) / 4. Single precision where GLU computes in it, so the same values.
-std::vector<uint16_t> scaleSixteenBit(const std::vector<uint16_t>& in, int widthIn, int heightIn, int components,
-                                      int widthOut, int heightOut) {
-  std::vector<uint16_t> out(static_cast<size_t>(widthOut) * static_cast<size_t>(heightOut) * static_cast<size_t>(components));
-  auto source = [&](int x, int y, int c) {
-    return in[(static_cast<size_t>(y) * static_cast<size_t>(widthIn) + static_cast<size_t>(x)) * static_cast<size_t>(components) +
-              static_cast<size_t>(c)];
-  };
-  auto target = [&](int i, int j, int c) -> uint16_t& {
-    return out[(static_cast<size_t>(j) * static_cast<size_t>(widthOut) + static_cast<size_t>(i)) * static_cast<size_t>(components) +
-               static_cast<size_t>(c)];
-  };
-  if (widthIn == 2 * widthOut && heightIn == 2 * heightOut) {
-    for (int j = 0; j < heightOut; ++j)
-      for (int i = 0; i < widthOut; ++i)
-        for (int c = 0; c < components; ++c) {
-          const unsigned sum = source(2 * i, 2 * j, c) + source(2 * i + 1, 2 * j, c) + source(2 * i, 2 * j + 1, c) +
-                               source(2 * i + 1, 2 * j + 1, c);
-          target(i, j, c) = static_cast<uint16_t>((sum + 2) / 4);
-        }
-    return out;
-  }
-  const float stepX = static_cast<float>(widthIn) / static_cast<float>(widthOut);
-  const float stepY = static_cast<float>(heightIn) / static_cast<float>(heightOut);
-  const float halfX = widthIn > widthOut ? stepX / 2 : 0.5f, halfY = heightIn > heightOut ? stepY / 2 : 0.5f;
+// (sum + 2) / 4 (halveImage in unsigned shorts). Single precision where GLU computes in it, so
+// the same values. The images hold 16-bit values (sixteenBitOf).
+ClientImage scaleSixteenBit(const ClientImage& in, int widthOut, int heightOut) {
+  if (in.width == 2 * widthOut && in.height == 2 * heightOut) return halveImage(in, GL_UNSIGNED_SHORT);
+  ClientImage out;
+  out.width = widthOut;
+  out.height = heightOut;
+  out.components = in.components;
+  out.values.resize(static_cast<size_t>(widthOut) * static_cast<size_t>(heightOut) * static_cast<size_t>(out.components));
+  const float stepX = static_cast<float>(in.width) / static_cast<float>(widthOut);
+  const float stepY = static_cast<float>(in.height) / static_cast<float>(heightOut);
+  const float halfX = in.width > widthOut ? stepX / 2 : 0.5f, halfY = in.height > heightOut ? stepY / 2 : 0.5f;
   for (int j = 0; j < heightOut; ++j) {
     const auto centreY = static_cast<float>(stepY * (j + 0.5));
     const float lowY = centreY - halfY, highY = centreY + halfY;
@@ -442,17 +429,18 @@ std::vector<uint16_t> scaleSixteenBit(const std::vector<uint16_t>& in, int width
       float y = lowY;
       for (auto row = static_cast<int>(std::floor(y)); y < highY; y = static_cast<float>(++row)) {
         const float shareY = highY < static_cast<float>(row + 1) ? highY - y : static_cast<float>(row + 1) - y;
-        const int sourceRow = ((row % heightIn) + heightIn) % heightIn;
+        const int sourceRow = ((row % in.height) + in.height) % in.height;
         float x = lowX;
         for (auto column = static_cast<int>(std::floor(x)); x < highX; x = static_cast<float>(++column)) {
           const float shareX = highX < static_cast<float>(column + 1) ? highX - x : static_cast<float>(column + 1) - x;
-          const int sourceColumn = ((column % widthIn) + widthIn) % widthIn;
+          const int sourceColumn = ((column % in.width) + in.width) % in.width;
           const float share = shareX * shareY;
           area += share;
-          for (int c = 0; c < components; ++c) totals[c] += static_cast<float>(source(sourceColumn, sourceRow, c)) * share;
+          for (int c = 0; c < out.components; ++c)
+            totals[c] += static_cast<float>(in.at(sourceColumn, sourceRow, c)) * share;
         }
       }
-      for (int c = 0; c < components; ++c) target(i, j, c) = static_cast<uint16_t>((totals[c] + 0.5) / area);
+      for (int c = 0; c < out.components; ++c) out.at(i, j, c) = static_cast<uint16_t>((totals[c] + 0.5) / area);
     }
   }
   return out;
@@ -496,15 +484,10 @@ GLint GLAPIENTRY gluScaleImage(GLenum format, GLsizei widthIn, GLsizei heightIn,
   if (checkMipmapArguments(format, typeIn) != 0 || checkMipmapArguments(format, typeOut) != 0)
     return GLU_INVALID_ENUM;
   try {
-    const ClientImage in = readClientImage(widthIn, heightIn, format, typeIn, dataIn);
-    std::vector<uint16_t> sixteenBit(in.values.size());
-    for (size_t k = 0; k < in.values.size(); ++k) sixteenBit[k] = sixteenBitOf(in.values[k], typeIn);
-    const std::vector<uint16_t> scaled =
-        scaleSixteenBit(sixteenBit, widthIn, heightIn, in.components, widthOut, heightOut);
-    ClientImage out;
-    out.width = widthOut;
-    out.height = heightOut;
-    out.components = in.components;
+    ClientImage in = readClientImage(widthIn, heightIn, format, typeIn, dataIn);
+    for (double& v : in.values) v = sixteenBitOf(v, typeIn);
+    ClientImage out = scaleSixteenBit(in, widthOut, heightOut);
+    for (double& v : out.values) v = fromSixteenBit(static_cast<uint16_t>(v), typeOut);
     // The result is written with the GL_PACK_* layout.
     GLint alignment = 4, rowLength = 0, skipRows = 0, skipPixels = 0;
     glGetIntegerv(GL_PACK_ALIGNMENT, &alignment);
@@ -521,10 +504,7 @@ GLint GLAPIENTRY gluScaleImage(GLenum format, GLsizei widthIn, GLsizei heightIn,
     for (int j = 0; j < heightOut; ++j)
       for (int i = 0; i < widthOut; ++i)
         for (int c = 0; c < out.components; ++c)
-          writeElement(fromSixteenBit(scaled[(static_cast<size_t>(j) * static_cast<size_t>(widthOut) + static_cast<size_t>(i)) *
-                                                 static_cast<size_t>(out.components) + static_cast<size_t>(c)],
-                                          typeOut),
-                       typeOut,
+          writeElement(out.at(i, j, c), typeOut,
                        base + static_cast<size_t>(j) * rowBytes + static_cast<size_t>(i) * groupBytes +
                            static_cast<size_t>(c) * elementBytes);
   } catch (const std::bad_alloc&) {
