@@ -72,13 +72,13 @@ constexpr int kBlockSize = CoveredBlock::kSize;
 // expression either way.
 struct BlockDepth {
   const TriangleSetup& setup;
-  int bx, by, i0, i1, j0, j1;
+  int bx, by, j0, j1;
   double column[kBlockSize], row[kBlockSize];
 
   BlockDepth(const TriangleSetup& s, int x, int y, int firstColumn, int endColumn, int firstRow, int endRow)
-      : setup(s), bx(x), by(y), i0(firstColumn), i1(endColumn), j0(firstRow), j1(endRow) {
-    setColumn(i0);
-    setColumn(i1 - 1);
+      : setup(s), bx(x), by(y), j0(firstRow), j1(endRow) {
+    setColumn(firstColumn);
+    setColumn(endColumn - 1);
     setRow(j0);
     setRow(j1 - 1);
   }
