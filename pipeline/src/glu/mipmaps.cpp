@@ -7,12 +7,13 @@
 //      4 * 2^k, otherwise down), halved further while it exceeds GL_MAX_TEXTURE_SIZE.
 //   2. Level 0 is the image itself when its size already is that power of two; otherwise the
 //      image is resampled to it by a box filter: each new texel averages the source area it
-//      covers, partial texels weighted by the share covered.
+//      covers, partial texels weighted by the share covered, in GLU's single-precision steps.
 //   3. Every further level halves the previous one with a 2 x 2 box filter, in the arithmetic of
 //      the client type: for unsigned bytes (a + b + c + d + 2) / 4; along an axis that is already
 //      1 texel long the filter is 2 x 1, (a + b) / 2.
-// Every level is handed to glTexImage in the client's own format and type. The packed pixel
-// types and GL_BITMAP are not accepted (GLU_INVALID_ENUM).
+// Every 2D level is handed to glTexImage in the client's own format and type. The 1D builders
+// work as gluScaleImage does, in 16-bit values, and load GL_UNSIGNED_SHORT levels (as GLU does).
+// The packed pixel types and GL_BITMAP are not accepted (GLU_INVALID_ENUM).
 #include <GL/gl.h>
 #include <GL/glu.h>
 
@@ -21,6 +22,7 @@
 #include <cstdint>
 #include <cstring>
 #include <new>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -42,6 +44,9 @@ int componentsOfFormat(GLenum format) {
     default: return 0;
   }
 }
+
+// The formats whose values GLU takes as they are, not as colours.
+bool isIndexFormat(GLenum format) { return format == GL_COLOR_INDEX || format == GL_STENCIL_INDEX; }
 
 int bytesOfType(GLenum type) {
   switch (type) {
@@ -186,11 +191,18 @@ double averageOf(const double* v, int n, GLenum type) {
       const long long s = static_cast<long long>(sum) + (n == 4 ? 2 : 0);
       return static_cast<double>(s / n);
     }
-    case GL_UNSIGNED_INT:
-    case GL_INT:
+    case GL_UNSIGNED_INT:  // summed in double, which holds every unsigned int
       return std::trunc(n == 4 ? sum / 4.0 + 0.5 : sum / 2.0);
-    default:
-      return sum / n;
+    case GL_INT: {  // summed in single precision
+      float single = static_cast<float>(v[0]);
+      for (int k = 1; k < n; ++k) single += static_cast<float>(v[k]);
+      return std::trunc(n == 4 ? static_cast<double>(single / 4.0f) + 0.5 : single / 2.0);
+    }
+    default: {  // GL_FLOAT: summed in single precision
+      float single = static_cast<float>(v[0]);
+      for (int k = 1; k < n; ++k) single += static_cast<float>(v[k]);
+      return single / static_cast<float>(n);
+    }
   }
 }
 
@@ -228,40 +240,95 @@ ClientImage halveImage(const ClientImage& in, GLenum type) {
   return out;
 }
 
-// The share of source texel k (covering [k, k + 1)) inside [lo, hi).
-double overlap(int k, double lo, double hi) {
-  return std::max(0.0, std::min(k + 1.0, hi) - std::max(static_cast<double>(k), lo));
+// The value GLU stores for a box filter's result `mean` (single precision) in the client type:
+// integer types truncate towards zero, unsigned ints clamp at their largest value.
+double storedScaledValue(float mean, GLenum type) {
+  switch (type) {
+    case GL_FLOAT: return mean;
+    case GL_UNSIGNED_INT: return mean >= static_cast<float>(UINT32_MAX) ? UINT32_MAX : std::trunc(mean);
+    default: return std::trunc(mean);
+  }
 }
 
-// Box-filter resampling to any size (GLU's scale_internal): each output texel averages the source
-// area it covers. Integer types truncate the average, as GLU does.
+// Box-filter resampling to any size as gluBuild*Mipmaps does it (GLU's scale_internal_<type>):
+// each output texel averages the source area it covers, partial texels weighted by the share
+// covered, the sum divided by the box's area. The box's edges step along the source by the
+// ratio's whole and fractional parts, and every operation is GLU's, in single precision and in
+// its order (first and last rows, first and last columns, then the inside), so that the values
+// come out as libGLU's to the bit. An image exactly twice the size each way is halved instead.
 ClientImage scaleImage(const ClientImage& in, int width, int height, GLenum type) {
+  if (in.width == 2 * width && in.height == 2 * height) return halveImage(in, type);
   ClientImage out;
   out.width = width;
   out.height = height;
   out.components = in.components;
   out.values.resize(static_cast<size_t>(width) * static_cast<size_t>(height) * static_cast<size_t>(out.components));
-  const double sx = static_cast<double>(in.width) / width, sy = static_cast<double>(in.height) / height;
-  for (int j = 0; j < height; ++j) {
-    const double y0 = j * sy, y1 = (j + 1) * sy;
-    for (int i = 0; i < width; ++i) {
-      const double x0 = i * sx, x1 = (i + 1) * sx;
-      for (int c = 0; c < out.components; ++c) {
-        double total = 0.0, area = 0.0;
-        for (int y = static_cast<int>(y0); y < in.height && y < y1; ++y) {
-          const double wy = overlap(y, y0, y1);
-          for (int x = static_cast<int>(x0); x < in.width && x < x1; ++x) {
-            const double w = wy * overlap(x, x0, x1);
-            total += w * in.at(x, y, c);
-            area += w;
-          }
-        }
-        const double mean = area > 0.0 ? total / area : 0.0;
-        // A small allowance keeps an exact average (255 over a uniform area) from truncating to
-        // one less through rounding of the weights.
-        out.at(i, j, c) = type == GL_FLOAT ? mean : std::trunc(mean + (mean >= 0 ? 1e-7 : -1e-7));
-      }
+  const float ratioY = static_cast<float>(in.height) / static_cast<float>(height);
+  const float ratioX = static_cast<float>(in.width) / static_cast<float>(width);
+  const int wholeY = static_cast<int>(std::floor(ratioY)), wholeX = static_cast<int>(std::floor(ratioX));
+  const float fractionY = ratioY - static_cast<float>(wholeY), fractionX = ratioX - static_cast<float>(wholeX);
+  const float area = ratioX * ratioY;
+  // A box edge steps to the next texel when its fraction passes 1 (GLU's test, strictly above).
+  auto step = [](int& whole, float& fraction, int wholeStep, float fractionStep) {
+    whole += wholeStep;
+    fraction += fractionStep;
+    if (fraction > 1.0f) {
+      fraction -= 1.0f;
+      ++whole;
     }
+  };
+  const int components = in.components;
+  // A box edge that ends exactly on the image's far side names the texel past it, with weight 0:
+  // read the last one instead.
+  auto texel = [&](int x, int y, int c) {
+    return static_cast<float>(in.at(std::min(x, in.width - 1), std::min(y, in.height - 1), c));
+  };
+  int lowY = 0, highY = wholeY;
+  float lowYFraction = 0.0f, highYFraction = fractionY;
+  for (int j = 0; j < height; ++j) {
+    int lowX = 0, highX = wholeX;
+    float lowXFraction = 0.0f, highXFraction = fractionX;
+    for (int i = 0; i < width; ++i) {
+      float totals[4] = {};
+      auto add = [&](int x, int y, float weight) {
+        for (int c = 0; c < components; ++c) totals[c] += texel(x, y, c) * weight;
+      };
+      if (highY > lowY && highX > lowX) {  // the box spans several rows and columns
+        float rowShare = 1.0f - lowYFraction;
+        add(lowX, lowY, rowShare * (1.0f - lowXFraction));
+        for (int x = lowX + 1; x < highX; ++x) add(x, lowY, rowShare);
+        add(highX, lowY, rowShare * highXFraction);
+        rowShare = highYFraction;
+        add(lowX, highY, rowShare * (1.0f - lowXFraction));
+        for (int x = lowX + 1; x < highX; ++x) add(x, highY, rowShare);
+        add(highX, highY, rowShare * highXFraction);
+        for (int y = lowY + 1; y < highY; ++y)
+          for (int c = 0; c < components; ++c)
+            totals[c] += texel(lowX, y, c) * (1.0f - lowXFraction) + texel(highX, y, c) * highXFraction;
+      } else if (highY > lowY) {  // one column, several rows
+        const float columnShare = highXFraction - lowXFraction;
+        add(lowX, lowY, (1.0f - lowYFraction) * columnShare);
+        for (int y = lowY + 1; y < highY; ++y) add(lowX, y, columnShare);
+        add(lowX, highY, columnShare * highYFraction);
+      } else if (highX > lowX) {  // one row, several columns
+        const float rowShare = highYFraction - lowYFraction;
+        add(lowX, lowY, (1.0f - lowXFraction) * rowShare);
+        for (int x = lowX + 1; x < highX; ++x) add(x, lowY, rowShare);
+        add(highX, lowY, rowShare * highXFraction);
+      } else {  // inside one texel
+        add(lowX, lowY, (highYFraction - lowYFraction) * (highXFraction - lowXFraction));
+      }
+      for (int y = lowY + 1; y < highY; ++y)  // the texels wholly inside
+        for (int x = lowX + 1; x < highX; ++x)
+          for (int c = 0; c < components; ++c) totals[c] += texel(x, y, c);
+      for (int c = 0; c < components; ++c) out.at(i, j, c) = storedScaledValue(totals[c] / area, type);
+      lowX = highX;
+      lowXFraction = highXFraction;
+      step(highX, highXFraction, wholeX, fractionX);
+    }
+    lowY = highY;
+    lowYFraction = highYFraction;
+    step(highY, highYFraction, wholeY, fractionY);
   }
   return out;
 }
@@ -295,107 +362,43 @@ void uploadLevel(GLenum target, int dimensions, GLint level, GLint internalForma
   glPixelStorei(GL_UNPACK_SWAP_BYTES, swapBytes);
 }
 
-GLint buildMipmaps(GLenum target, int dimensions, GLint internalFormat, GLsizei width, GLsizei height,
-                   GLenum format, GLenum type, const void* data) {
-  if (isPackedOrBitmapType(type)) return GLU_INVALID_ENUM;
-  if (const GLint error = checkMipmapArguments(format, type); error != 0) return error;
-  if (width < 1 || height < 1) return GLU_INVALID_VALUE;
-  GLint maxSize = 0;
-  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
-  if (maxSize < 1) maxSize = 1;
-  int newWidth = nearestPowerOfTwo(width);
-  int newHeight = dimensions == 2 ? nearestPowerOfTwo(height) : 1;
-  while (newWidth > maxSize || newHeight > maxSize) {
-    newWidth = std::max(1, newWidth / 2);
-    newHeight = std::max(1, newHeight / 2);
+// gluScaleImage and the 1D mipmaps work on 16-bit unsigned values, converted as GLU converts
+// them (its "rough" scales, kept so that the values come out as libGLU's): an unsigned byte b is
+// 257 b, a byte 516 b, a short 2 s, an unsigned int u >> 16, an int i >> 15 (the signed products
+// and shifts wrapped to 16 bits as C converts them), a float 65535 f in single precision
+// (truncated, through a 32-bit integer as on x86). Colour and stencil indices are taken as they
+// are.
+uint16_t sixteenBitOf(double raw, GLenum type, bool index) {
+  if (type == GL_FLOAT) {
+    const float scaled = index ? static_cast<float>(raw) : 65535.0f * static_cast<float>(raw);
+    if (!(scaled > -2147483648.0f && scaled < 2147483648.0f)) return 0;  // x86 gives 0x80000000
+    return static_cast<uint16_t>(static_cast<int32_t>(scaled));
   }
-  try {
-    ClientImage image = readClientImage(width, height, format, type, data);
-    if (image.width != newWidth || image.height != newHeight)
-      image = scaleImage(image, newWidth, newHeight, type);
-    const int levels = std::max(log2OfPowerOfTwo(newWidth), log2OfPowerOfTwo(newHeight));
-    for (int level = 0; level <= levels; ++level) {
-      if (level > 0) image = halveImage(image, type);
-      uploadLevel(target, dimensions, level, internalFormat, image, format, type);
-    }
-  } catch (const std::bad_alloc&) {
-    return GLU_OUT_OF_MEMORY;
-  }
-  return 0;
-}
-
-// log2 of a power of two, -1 for any other size (GLU's computeLog).
-int exactLog2(int value) {
-  return value > 0 && (value & (value - 1)) == 0 ? log2OfPowerOfTwo(value) : -1;
-}
-
-// gluBuild*MipmapLevels (GLU 1.3): the image is level `level`, already of the size the caller
-// wants (no resampling); each further level halves the previous one as above, and the levels
-// from base to max are loaded. Every level down to 1 x 1 counts: level + log2 of the larger
-// side is the last, and base and max must lie in [level, last].
-GLint buildMipmapLevels(GLenum target, int dimensions, GLint internalFormat, GLsizei width,
-                        GLsizei height, GLenum format, GLenum type, GLint level, GLint base,
-                        GLint max, const void* data) {
-  if (isPackedOrBitmapType(type)) return GLU_INVALID_ENUM;
-  if (const GLint error = checkMipmapArguments(format, type); error != 0) return error;
-  if (width < 1 || height < 1) return GLU_INVALID_VALUE;
-  const int last = std::max(exactLog2(width), dimensions == 2 ? exactLog2(height) : -1) + level;
-  if (base < 0 || base < level || max < base || last < max) return GLU_INVALID_VALUE;
-  try {
-    ClientImage image = readClientImage(width, height, format, type, data);
-    for (int l = level; l <= max; ++l) {
-      if (l > level) image = halveImage(image, type);
-      if (l >= base) uploadLevel(target, dimensions, l, internalFormat, image, format, type);
-    }
-  } catch (const std::bad_alloc&) {
-    return GLU_OUT_OF_MEMORY;
-  }
-  return 0;
-}
-
-// Normalizes a raw element value to [0, 1] (or [-1, 1]) as GL does (table 2.9), and back.
-double normalize(double v, GLenum type) {
+  const auto value = static_cast<int64_t>(raw);  // every other type's values are integers
+  if (index) return static_cast<uint16_t>(value);
   switch (type) {
-    case GL_UNSIGNED_BYTE: return v / 255.0;
-    case GL_BYTE: return (2.0 * v + 1.0) / 255.0;
-    case GL_UNSIGNED_SHORT: return v / 65535.0;
-    case GL_SHORT: return (2.0 * v + 1.0) / 65535.0;
-    case GL_UNSIGNED_INT: return v / 4294967295.0;
-    case GL_INT: return (2.0 * v + 1.0) / 4294967295.0;
-    default: return v;
+    case GL_UNSIGNED_BYTE: return static_cast<uint16_t>(value * 257);
+    case GL_BYTE: return static_cast<uint16_t>(value * 516);
+    case GL_SHORT: return static_cast<uint16_t>(value * 2);
+    case GL_UNSIGNED_INT: return static_cast<uint16_t>(value >> 16);
+    case GL_INT: return static_cast<uint16_t>(value >> 15);  // arithmetic shift of the signed value
+    default: return static_cast<uint16_t>(value);            // GL_UNSIGNED_SHORT
   }
 }
 
-double denormalize(double c, GLenum type) {
-  switch (type) {
-    case GL_UNSIGNED_BYTE: return std::nearbyint(std::clamp(c, 0.0, 1.0) * 255.0);
-    case GL_BYTE: return std::nearbyint((std::clamp(c, -1.0, 1.0) * 255.0 - 1.0) / 2.0);
-    case GL_UNSIGNED_SHORT: return std::nearbyint(std::clamp(c, 0.0, 1.0) * 65535.0);
-    case GL_SHORT: return std::nearbyint((std::clamp(c, -1.0, 1.0) * 65535.0 - 1.0) / 2.0);
-    case GL_UNSIGNED_INT: return std::nearbyint(std::clamp(c, 0.0, 1.0) * 4294967295.0);
-    case GL_INT: return std::nearbyint((std::clamp(c, -1.0, 1.0) * 4294967295.0 - 1.0) / 2.0);
-    default: return c;
-  }
-}
-
-// gluScaleImage works on 16-bit unsigned values, as GLU does: an unsigned byte b is 257 b, a float
-// f is 65535 f in single precision (truncated; clamped to [0, 1] first), other types their
-// normalized value times 65535, rounded. The result goes back as u >> 8 for bytes, u / 65535 for floats.
-uint16_t sixteenBitOf(double raw, GLenum type) {
-  switch (type) {
-    case GL_UNSIGNED_BYTE: return static_cast<uint16_t>(raw * 257.0);
-    case GL_UNSIGNED_SHORT: return static_cast<uint16_t>(raw);
-    case GL_FLOAT: return static_cast<uint16_t>(static_cast<float>(std::clamp(raw, 0.0, 1.0)) * 65535.0f);  // in float
-    default: return static_cast<uint16_t>(std::nearbyint(std::clamp(normalize(raw, type), 0.0, 1.0) * 65535.0));
-  }
-}
-
-double fromSixteenBit(uint16_t u, GLenum type) {
+// The client value GLU writes for a 16-bit value u: u >> 8 for unsigned bytes, u >> 9 for bytes,
+// u >> 1 for shorts, 65537 u for unsigned ints (half of that for ints), u / 65535 in single
+// precision for floats; indices as they are.
+double fromSixteenBit(uint16_t u, GLenum type, bool index) {
+  if (index) return type == GL_FLOAT ? static_cast<double>(static_cast<float>(u)) : u;
   switch (type) {
     case GL_UNSIGNED_BYTE: return u >> 8;
-    case GL_UNSIGNED_SHORT: return u;
-    case GL_FLOAT: return u / 65535.0;
-    default: return denormalize(u / 65535.0, type);
+    case GL_BYTE: return u >> 9;
+    case GL_SHORT: return u >> 1;
+    case GL_UNSIGNED_INT: return static_cast<uint32_t>(u) * 65537u;
+    case GL_INT: return static_cast<uint32_t>(u) * 65537u / 2u;
+    case GL_FLOAT: return static_cast<float>(u) / 65535.0f;
+    default: return u;  // GL_UNSIGNED_SHORT
   }
 }
 
@@ -446,6 +449,86 @@ ClientImage scaleSixteenBit(const ClientImage& in, int widthOut, int heightOut) 
   return out;
 }
 
+// The 1D mipmaps as GLU builds them (unlike its 2D ones, in gluScaleImage's arithmetic): the
+// client image converted to 16-bit values (sixteenBitOf), each level from `level` to `max`
+// resampled from the one before to `width` halved level by level (scaleSixteenBit), the levels
+// from `base` on loaded as GL_UNSIGNED_SHORT.
+void loadOneDimensionalLevels(GLenum target, GLint internalFormat, ClientImage image, GLenum format, GLenum type,
+                              int width, GLint level, GLint base, GLint max) {
+  for (double& value : image.values) value = sixteenBitOf(value, type, isIndexFormat(format));
+  for (GLint l = level; l <= max; ++l) {
+    if (image.width != width) image = scaleSixteenBit(image, width, 1);
+    if (l >= base) uploadLevel(target, 1, l, internalFormat, image, format, GL_UNSIGNED_SHORT);
+    width = std::max(1, width / 2);
+  }
+}
+
+GLint buildMipmaps(GLenum target, int dimensions, GLint internalFormat, GLsizei width, GLsizei height,
+                   GLenum format, GLenum type, const void* data) {
+  if (isPackedOrBitmapType(type)) return GLU_INVALID_ENUM;
+  if (const GLint error = checkMipmapArguments(format, type); error != 0) return error;
+  if (width < 1 || height < 1) return GLU_INVALID_VALUE;
+  GLint maxSize = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
+  if (maxSize < 1) maxSize = 1;
+  int newWidth = nearestPowerOfTwo(width);
+  int newHeight = dimensions == 2 ? nearestPowerOfTwo(height) : 1;
+  while (newWidth > maxSize || newHeight > maxSize) {
+    newWidth = std::max(1, newWidth / 2);
+    newHeight = std::max(1, newHeight / 2);
+  }
+  try {
+    ClientImage image = readClientImage(width, height, format, type, data);
+    const int levels = std::max(log2OfPowerOfTwo(newWidth), log2OfPowerOfTwo(newHeight));
+    if (dimensions == 1) {
+      loadOneDimensionalLevels(target, internalFormat, std::move(image), format, type, newWidth, 0, 0, levels);
+      return 0;
+    }
+    if (image.width != newWidth || image.height != newHeight)
+      image = scaleImage(image, newWidth, newHeight, type);
+    for (int level = 0; level <= levels; ++level) {
+      if (level > 0) image = halveImage(image, type);
+      uploadLevel(target, dimensions, level, internalFormat, image, format, type);
+    }
+  } catch (const std::bad_alloc&) {
+    return GLU_OUT_OF_MEMORY;
+  }
+  return 0;
+}
+
+// log2 of a power of two, -1 for any other size (GLU's computeLog).
+int exactLog2(int value) {
+  return value > 0 && (value & (value - 1)) == 0 ? log2OfPowerOfTwo(value) : -1;
+}
+
+// gluBuild*MipmapLevels (GLU 1.3): the image is level `level`, already of the size the caller
+// wants (no resampling); each further level halves the previous one as above, and the levels
+// from base to max are loaded. Every level down to 1 x 1 counts: level + log2 of the larger
+// side is the last, and base and max must lie in [level, last].
+GLint buildMipmapLevels(GLenum target, int dimensions, GLint internalFormat, GLsizei width,
+                        GLsizei height, GLenum format, GLenum type, GLint level, GLint base,
+                        GLint max, const void* data) {
+  if (isPackedOrBitmapType(type)) return GLU_INVALID_ENUM;
+  if (const GLint error = checkMipmapArguments(format, type); error != 0) return error;
+  if (width < 1 || height < 1) return GLU_INVALID_VALUE;
+  const int last = std::max(exactLog2(width), dimensions == 2 ? exactLog2(height) : -1) + level;
+  if (base < 0 || base < level || max < base || last < max) return GLU_INVALID_VALUE;
+  try {
+    ClientImage image = readClientImage(width, height, format, type, data);
+    if (dimensions == 1) {
+      loadOneDimensionalLevels(target, internalFormat, std::move(image), format, type, width, level, base, max);
+      return 0;
+    }
+    for (int l = level; l <= max; ++l) {
+      if (l > level) image = halveImage(image, type);
+      if (l >= base) uploadLevel(target, dimensions, l, internalFormat, image, format, type);
+    }
+  } catch (const std::bad_alloc&) {
+    return GLU_OUT_OF_MEMORY;
+  }
+  return 0;
+}
+
 }  // namespace
 
 // C linkage whether or not GL/glu.h declares these (programs written in C call them).
@@ -485,9 +568,9 @@ GLint GLAPIENTRY gluScaleImage(GLenum format, GLsizei widthIn, GLsizei heightIn,
     return GLU_INVALID_ENUM;
   try {
     ClientImage in = readClientImage(widthIn, heightIn, format, typeIn, dataIn);
-    for (double& v : in.values) v = sixteenBitOf(v, typeIn);
+    for (double& v : in.values) v = sixteenBitOf(v, typeIn, isIndexFormat(format));
     ClientImage out = scaleSixteenBit(in, widthOut, heightOut);
-    for (double& v : out.values) v = fromSixteenBit(static_cast<uint16_t>(v), typeOut);
+    for (double& v : out.values) v = fromSixteenBit(static_cast<uint16_t>(v), typeOut, isIndexFormat(format));
     // The result is written with the GL_PACK_* layout.
     GLint alignment = 4, rowLength = 0, skipRows = 0, skipPixels = 0;
     glGetIntegerv(GL_PACK_ALIGNMENT, &alignment);
