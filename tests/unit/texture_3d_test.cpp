@@ -78,6 +78,15 @@ TEST_CASE("3D images unpack slice by slice and read back; glTexSubImage3D and gl
   const GLubyte volume[3 * 4] = {0, 0, 0, 10, 11, 0, 20, 21, 0, 30, 31, 0};
   glTexImage3D(GL_TEXTURE_3D, 0, GL_LUMINANCE, 1, 2, 3, 0, GL_LUMINANCE, GL_UNSIGNED_BYTE,
                volume);
+  // The 3D layout is state a program (or GLU) can read back (table 6.23).
+  GLint imageHeight = 0, skipImages = 0, packImageHeight = -1;
+  glGetIntegerv(GL_UNPACK_IMAGE_HEIGHT, &imageHeight);
+  glGetIntegerv(GL_UNPACK_SKIP_IMAGES, &skipImages);
+  glGetIntegerv(GL_PACK_IMAGE_HEIGHT, &packImageHeight);
+  CHECK(imageHeight == 3);
+  CHECK(skipImages == 1);
+  CHECK(packImageHeight == 0);
+  CHECK(glGetError() == GL_NO_ERROR);
   glPixelStorei(GL_UNPACK_IMAGE_HEIGHT, 0);
   glPixelStorei(GL_UNPACK_SKIP_IMAGES, 0);
   GLubyte back[6] = {};

@@ -47,7 +47,16 @@ bool queryArrayState(const ClientArray& a, GLenum pname, GLenum sizeName, GLenum
   return true;
 }
 
-bool queryPixelStore(const PixelPacking& p, GLenum pname, GLenum base, StateValue& value) {
+bool queryPixelStore(const PixelPacking& p, GLenum pname, GLenum base, GLenum imagesBase, StateValue& value) {
+  // The 3D layout (OpenGL 1.2): GL_PACK_SKIP_IMAGES / GL_UNPACK_SKIP_IMAGES, then the image height.
+  if (pname == imagesBase) {
+    value.setIntegers({double(p.skipImages)});
+    return true;
+  }
+  if (pname == imagesBase + 1) {
+    value.setIntegers({double(p.imageHeight)});
+    return true;
+  }
   // GL_PACK_* and GL_UNPACK_* names are the same offsets from GL_PACK_SWAP_BYTES / GL_UNPACK_....
   switch (pname - base) {
     case GL_PACK_SWAP_BYTES - GL_PACK_SWAP_BYTES: value.setBooleans({p.swapBytes}); return true;
@@ -209,8 +218,8 @@ bool queryCoreState(const Context& ctx, GLenum pname, StateValue& v) {
                          GL_TEXTURE_COORD_ARRAY_SIZE, GL_TEXTURE_COORD_ARRAY_TYPE,
                          GL_TEXTURE_COORD_ARRAY_STRIDE, v) ||
          queryArrayState(arrays.edgeFlag, pname, 0, 0, GL_EDGE_FLAG_ARRAY_STRIDE, v) ||
-         queryPixelStore(pixels.pack, pname, GL_PACK_SWAP_BYTES, v) ||
-         queryPixelStore(pixels.unpack, pname, GL_UNPACK_SWAP_BYTES, v);
+         queryPixelStore(pixels.pack, pname, GL_PACK_SWAP_BYTES, GL_PACK_SKIP_IMAGES, v) ||
+         queryPixelStore(pixels.unpack, pname, GL_UNPACK_SWAP_BYTES, GL_UNPACK_SKIP_IMAGES, v);
 }
 
 }  // namespace
