@@ -1,7 +1,7 @@
 /* What GLU's mipmap builders hand to GL, and what gluScaleImage writes, printed as one FNV-1a
  * hash per level or image: built once against glass and once against Mesa's libGLU, the two
- * outputs must be the same line for line (glu_mipmaps.cmake compares them). The program defines
- * glTexImage1D and glTexImage2D itself (linked with -rdynamic, so GLU calls these), records the
+ * outputs must be the same line for line (compare_outputs.cmake compares them). The program
+ * defines glTexImage1D/2D/3D itself (linked with -rdynamic, so GLU calls these), records the
  * elements they are given and passes the call on to the library's own. */
 #define _GNU_SOURCE
 #include <GL/osmesa.h>
@@ -39,26 +39,32 @@ static uint64_t hashBytes(uint64_t hash, const unsigned char* bytes, size_t n) {
 
 /* The elements of a width x height image laid out by the current GL_UNPACK_* state, row by row
  * without the rows' padding. */
-static void printLevel(GLint level, GLsizei width, GLsizei height, GLenum format, GLenum type, const void* data) {
-  GLint alignment = 4, rowLength = 0;
+static void printLevel(GLint level, GLsizei width, GLsizei height, GLsizei depth, GLenum format, GLenum type,
+                       const void* data) {
+  GLint alignment = 4, rowLength = 0, imageHeight = 0;
   glGetIntegerv(GL_UNPACK_ALIGNMENT, &alignment);
   glGetIntegerv(GL_UNPACK_ROW_LENGTH, &rowLength);
+  glGetIntegerv(GL_UNPACK_IMAGE_HEIGHT, &imageHeight);
   const size_t element = (size_t)bytesOfType(type), group = element * (size_t)componentsOfFormat(format);
   size_t row = group * (size_t)(rowLength > 0 ? rowLength : width);
   if (element < (size_t)alignment) row = (row + (size_t)alignment - 1) / (size_t)alignment * (size_t)alignment;
+  const size_t image = row * (size_t)(imageHeight > 0 ? imageHeight : height);
   uint64_t hash = 14695981039346656037ull;
-  for (GLsizei j = 0; j < height; ++j) hash = hashBytes(hash, (const unsigned char*)data + (size_t)j * row, group * (size_t)width);
-  printf("  level %d %dx%d type 0x%x hash %016llx\n", level, width, height, type, (unsigned long long)hash);
+  for (GLsizei k = 0; k < depth; ++k)
+    for (GLsizei j = 0; j < height; ++j)
+      hash = hashBytes(hash, (const unsigned char*)data + (size_t)k * image + (size_t)j * row, group * (size_t)width);
+  printf("  level %d %dx%dx%d type 0x%x hash %016llx\n", level, width, height, depth, type, (unsigned long long)hash);
 }
 
 typedef void (*TexImage1DCall)(GLenum, GLint, GLint, GLsizei, GLint, GLenum, GLenum, const void*);
 typedef void (*TexImage2DCall)(GLenum, GLint, GLint, GLsizei, GLsizei, GLint, GLenum, GLenum, const void*);
+typedef void (*TexImage3DCall)(GLenum, GLint, GLint, GLsizei, GLsizei, GLsizei, GLint, GLenum, GLenum, const void*);
 
 void glTexImage1D(GLenum target, GLint level, GLint internalFormat, GLsizei width, GLint border, GLenum format,
                   GLenum type, const void* data) {
   static TexImage1DCall library;
   if (!library) library = (TexImage1DCall)dlsym(RTLD_NEXT, "glTexImage1D");
-  if (recording && target == GL_TEXTURE_1D && data) printLevel(level, width, 1, format, type, data);
+  if (recording && target == GL_TEXTURE_1D && data) printLevel(level, width, 1, 1, format, type, data);
   library(target, level, internalFormat, width, border, format, type, data);
 }
 
@@ -66,8 +72,16 @@ void glTexImage2D(GLenum target, GLint level, GLint internalFormat, GLsizei widt
                   GLenum format, GLenum type, const void* data) {
   static TexImage2DCall library;
   if (!library) library = (TexImage2DCall)dlsym(RTLD_NEXT, "glTexImage2D");
-  if (recording && target == GL_TEXTURE_2D && data) printLevel(level, width, height, format, type, data);
+  if (recording && target == GL_TEXTURE_2D && data) printLevel(level, width, height, 1, format, type, data);
   library(target, level, internalFormat, width, height, border, format, type, data);
+}
+
+void glTexImage3D(GLenum target, GLint level, GLint internalFormat, GLsizei width, GLsizei height, GLsizei depth,
+                  GLint border, GLenum format, GLenum type, const void* data) {
+  static TexImage3DCall library;
+  if (!library) library = (TexImage3DCall)dlsym(RTLD_NEXT, "glTexImage3D");
+  if (recording && target == GL_TEXTURE_3D && data) printLevel(level, width, height, depth, format, type, data);
+  library(target, level, internalFormat, width, height, depth, border, format, type, data);
 }
 
 static uint32_t randomState = 12345u;
@@ -136,6 +150,22 @@ int main(void) {
           printf("  result %d\n", result);
           free(data);
         }
+
+  /* gluBuild3DMipmaps: sizes that libGLU builds right (it reads past a level whose height is 1
+   * before its width is, as for 2 x 1 x 5, and crashes on 1 x 9 x 2: docs/texturing.md). */
+  static const int volumes[][3] = {{6, 5, 3}, {8, 8, 8}, {12, 3, 5}, {7, 7, 7}, {16, 4, 2}, {3, 3, 3}, {10, 12, 6}, {5, 1, 1}};
+  for (int t = 0; t < kTypeCount; ++t)
+    for (size_t v = 0; v < sizeof volumes / sizeof volumes[0]; ++v)
+      for (size_t f = 0; f < sizeof mipmapFormats / sizeof mipmapFormats[0]; ++f) {
+        const int width = volumes[v][0], height = volumes[v][1], depth = volumes[v][2];
+        void* data = randomImage((size_t)width * (size_t)height * (size_t)depth *
+                                     (size_t)componentsOfFormat(mipmapFormats[f]),
+                                 kTypes[t], mipmapFormats[f], 1);
+        printf("gluBuild3DMipmaps %dx%dx%d format 0x%x type 0x%x\n", width, height, depth, mipmapFormats[f], kTypes[t]);
+        printf("  result %d\n", gluBuild3DMipmaps(GL_TEXTURE_3D, GL_RGBA, width, height, depth, mipmapFormats[f],
+                                                   kTypes[t], data));
+        free(data);
+      }
   recording = 0;
 
   /* gluScaleImage from every type to every type, colours and indices. */

@@ -1,5 +1,5 @@
 // GLU 1.3's utility additions: gluCheckExtension, gluUnProject4, gluBuild*MipmapLevels,
-// gluBuild3DMipmaps (every level, through GL_GENERATE_MIPMAP), and the error strings of the tessellator.
+// gluBuild3DMipmaps (every level, as libGLU builds them), and the error strings of the tessellator.
 #include <doctest/doctest.h>
 
 #include <GL/gl.h>
@@ -84,7 +84,7 @@ TEST_CASE("gluBuild2DMipmapLevels loads levels base to max from the given level"
   glDeleteTextures(1, &texture);
 }
 
-TEST_CASE("gluBuild3DMipmaps checks its arguments, then loads every level of the 3D texture") {
+TEST_CASE("gluBuild3DMipmaps checks its arguments, then loads every level of the 3D texture, as libGLU builds them") {
   ScopedContext context;
   std::vector<GLubyte> image(4 * 4 * 4 * 4, 0);
   CHECK(gluBuild3DMipmaps(GL_TEXTURE_3D, GL_RGBA, 0, 4, 4, GL_RGBA, GL_UNSIGNED_BYTE,
@@ -112,10 +112,38 @@ TEST_CASE("gluBuild3DMipmaps checks its arguments, then loads every level of the
   CHECK(smallest[0] == 153);  // (255 + 51) / 2
   GLint generate = GL_TRUE;
   glGetTexParameteriv(GL_TEXTURE_3D, GL_GENERATE_MIPMAP, &generate);
-  CHECK(generate == GL_FALSE);  // restored
+  CHECK(generate == GL_FALSE);  // GLU builds the levels itself
   CHECK(glGetError() == GL_NO_ERROR);
   CHECK(gluBuild3DMipmapLevels(GL_TEXTURE_3D, GL_RGBA, 4, 4, 4, GL_RGBA, GL_UNSIGNED_BYTE, 0, 1,
                                0, image.data()) == GLU_INVALID_VALUE);
+
+  // Sides that are not powers of two are resampled to GLU's nearest ones: 6 x 5 x 3 -> 8 x 4 x 4,
+  // then halved down to 1 x 1 x 1 (level 3); a uniform image stays uniform.
+  const std::vector<GLubyte> uniform(6 * 5 * 3 * 4, 200);
+  CHECK(gluBuild3DMipmaps(GL_TEXTURE_3D, GL_RGBA, 6, 5, 3, GL_RGBA, GL_UNSIGNED_BYTE, uniform.data()) == 0);
+  CHECK(glGetError() == GL_NO_ERROR);
+  GLint height = 0;
+  glGetTexLevelParameteriv(GL_TEXTURE_3D, 0, GL_TEXTURE_HEIGHT, &height);
+  glGetTexLevelParameteriv(GL_TEXTURE_3D, 0, GL_TEXTURE_DEPTH, &depth);
+  CHECK(levelWidth(GL_TEXTURE_3D, 0) == 8);
+  CHECK(height == 4);
+  CHECK(depth == 4);
+  CHECK(levelWidth(GL_TEXTURE_3D, 3) == 1);
+  glGetTexImage(GL_TEXTURE_3D, 3, GL_RGBA, GL_UNSIGNED_BYTE, smallest);
+  CHECK(smallest[0] == 200);
+
+  // gluBuild3DMipmapLevels builds the chain from its level, loading base to max.
+  GLuint levels = 0;
+  glGenTextures(1, &levels);
+  glBindTexture(GL_TEXTURE_3D, levels);
+  CHECK(gluBuild3DMipmapLevels(GL_TEXTURE_3D, GL_RGBA, 4, 4, 4, GL_RGBA, GL_UNSIGNED_BYTE, 0, 1, 2, image.data()) ==
+        0);
+  CHECK(levelWidth(GL_TEXTURE_3D, 0) == 0);  // below base: not loaded
+  CHECK(levelWidth(GL_TEXTURE_3D, 1) == 2);
+  glGetTexImage(GL_TEXTURE_3D, 2, GL_RGBA, GL_UNSIGNED_BYTE, smallest);
+  CHECK(smallest[0] == 153);
+  CHECK(glGetError() == GL_NO_ERROR);
+  glDeleteTextures(1, &levels);
 }
 
 TEST_CASE("gluErrorString knows the tessellator's and the NURBS errors") {

@@ -17,6 +17,8 @@
 #include <GL/gl.h>
 #include <GL/glu.h>
 
+#include "glu/client_image.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -27,218 +29,7 @@
 
 namespace {
 
-int componentsOfFormat(GLenum format) {
-  switch (format) {
-    case GL_COLOR_INDEX:
-    case GL_DEPTH_COMPONENT:
-    case GL_RED:
-    case GL_GREEN:
-    case GL_BLUE:
-    case GL_ALPHA:
-    case GL_LUMINANCE: return 1;
-    case GL_LUMINANCE_ALPHA: return 2;
-    case GL_RGB:
-    case GL_BGR: return 3;
-    case GL_RGBA:
-    case GL_BGRA: return 4;
-    default: return 0;
-  }
-}
-
-// The formats whose values GLU takes as they are, not as colours.
-bool isIndexFormat(GLenum format) { return format == GL_COLOR_INDEX || format == GL_STENCIL_INDEX; }
-
-int bytesOfType(GLenum type) {
-  switch (type) {
-    case GL_UNSIGNED_BYTE:
-    case GL_BYTE: return 1;
-    case GL_UNSIGNED_SHORT:
-    case GL_SHORT: return 2;
-    case GL_UNSIGNED_INT:
-    case GL_INT:
-    case GL_FLOAT: return 4;
-    default: return 0;
-  }
-}
-
-bool isPackedOrBitmapType(GLenum type) {
-  switch (type) {
-    case GL_BITMAP:
-    case GL_UNSIGNED_BYTE_3_3_2:
-    case GL_UNSIGNED_BYTE_2_3_3_REV:
-    case GL_UNSIGNED_SHORT_5_6_5:
-    case GL_UNSIGNED_SHORT_5_6_5_REV:
-    case GL_UNSIGNED_SHORT_4_4_4_4:
-    case GL_UNSIGNED_SHORT_4_4_4_4_REV:
-    case GL_UNSIGNED_SHORT_5_5_5_1:
-    case GL_UNSIGNED_SHORT_1_5_5_5_REV:
-    case GL_UNSIGNED_INT_8_8_8_8:
-    case GL_UNSIGNED_INT_8_8_8_8_REV:
-    case GL_UNSIGNED_INT_10_10_10_2:
-    case GL_UNSIGNED_INT_2_10_10_10_REV: return true;
-    default: return false;
-  }
-}
-
-// GLU's argument check: 0 or a GLU error code.
-GLint checkMipmapArguments(GLenum format, GLenum type) {
-  if (componentsOfFormat(format) == 0 || format == GL_STENCIL_INDEX) return GLU_INVALID_ENUM;
-  if (bytesOfType(type) == 0) return GLU_INVALID_ENUM;
-  return 0;
-}
-
-// GLU's "nearest power of two": 3 * 2^k goes up to 4 * 2^k, everything else down.
-int nearestPowerOfTwo(int value) {
-  int power = 1;
-  for (;;) {
-    if (value == 1) return power;
-    if (value == 3) return power * 4;
-    value >>= 1;
-    power *= 2;
-  }
-}
-
-int log2OfPowerOfTwo(int value) {
-  int log = 0;
-  while (value > 1) {
-    value >>= 1;
-    ++log;
-  }
-  return log;
-}
-
-// A client image as raw element values (not normalized), tightly packed, row 0 first.
-struct ClientImage {
-  int width = 0, height = 0, components = 0;
-  std::vector<double> values;
-  double& at(int i, int j, int c) {
-    return values[(static_cast<size_t>(j) * static_cast<size_t>(width) + static_cast<size_t>(i)) * static_cast<size_t>(components) + static_cast<size_t>(c)];
-  }
-  double at(int i, int j, int c) const {
-    return values[(static_cast<size_t>(j) * static_cast<size_t>(width) + static_cast<size_t>(i)) * static_cast<size_t>(components) + static_cast<size_t>(c)];
-  }
-};
-
-double readElement(const unsigned char* p, GLenum type, bool swap) {
-  unsigned char b[4];
-  const int n = bytesOfType(type);
-  std::memcpy(b, p, static_cast<size_t>(n));
-  if (swap) std::reverse(b, b + n);
-  switch (type) {
-    case GL_UNSIGNED_BYTE: return b[0];
-    case GL_BYTE: return static_cast<int8_t>(b[0]);
-    case GL_UNSIGNED_SHORT: { uint16_t v; std::memcpy(&v, b, 2); return v; }
-    case GL_SHORT: { int16_t v; std::memcpy(&v, b, 2); return v; }
-    case GL_UNSIGNED_INT: { uint32_t v; std::memcpy(&v, b, 4); return v; }
-    case GL_INT: { int32_t v; std::memcpy(&v, b, 4); return v; }
-    case GL_FLOAT: { float v; std::memcpy(&v, b, 4); return v; }
-    default: return 0.0;
-  }
-}
-
-void writeElement(double v, GLenum type, unsigned char* p) {
-  switch (type) {
-    case GL_UNSIGNED_BYTE: { const auto x = static_cast<uint8_t>(v); std::memcpy(p, &x, 1); break; }
-    case GL_BYTE: { const auto x = static_cast<int8_t>(v); std::memcpy(p, &x, 1); break; }
-    case GL_UNSIGNED_SHORT: { const auto x = static_cast<uint16_t>(v); std::memcpy(p, &x, 2); break; }
-    case GL_SHORT: { const auto x = static_cast<int16_t>(v); std::memcpy(p, &x, 2); break; }
-    case GL_UNSIGNED_INT: { const auto x = static_cast<uint32_t>(v); std::memcpy(p, &x, 4); break; }
-    case GL_INT: { const auto x = static_cast<int32_t>(v); std::memcpy(p, &x, 4); break; }
-    case GL_FLOAT: { const auto x = static_cast<float>(v); std::memcpy(p, &x, 4); break; }
-    default: break;
-  }
-}
-
-// Reads the client image with the current GL_UNPACK_* layout (spec 3.6.4).
-ClientImage readClientImage(int width, int height, GLenum format, GLenum type, const void* data) {
-  GLint alignment = 4, rowLength = 0, skipRows = 0, skipPixels = 0, swapBytes = 0;
-  glGetIntegerv(GL_UNPACK_ALIGNMENT, &alignment);
-  glGetIntegerv(GL_UNPACK_ROW_LENGTH, &rowLength);
-  glGetIntegerv(GL_UNPACK_SKIP_ROWS, &skipRows);
-  glGetIntegerv(GL_UNPACK_SKIP_PIXELS, &skipPixels);
-  glGetIntegerv(GL_UNPACK_SWAP_BYTES, &swapBytes);
-  ClientImage image;
-  image.width = width;
-  image.height = height;
-  image.components = componentsOfFormat(format);
-  image.values.resize(static_cast<size_t>(width) * static_cast<size_t>(height) * static_cast<size_t>(image.components));
-  const size_t elementBytes = static_cast<size_t>(bytesOfType(type));
-  const size_t groupBytes = elementBytes * static_cast<size_t>(image.components);
-  size_t rowBytes = groupBytes * static_cast<size_t>(rowLength > 0 ? rowLength : width);
-  const size_t align = static_cast<size_t>(std::max(alignment, 1));
-  if (elementBytes < align) rowBytes = (rowBytes + align - 1) / align * align;
-  const auto* base = static_cast<const unsigned char*>(data) + static_cast<size_t>(skipRows) * rowBytes +
-                     static_cast<size_t>(skipPixels) * groupBytes;
-  const bool swap = swapBytes != 0 && elementBytes > 1;
-  for (int j = 0; j < height; ++j)
-    for (int i = 0; i < width; ++i)
-      for (int c = 0; c < image.components; ++c)
-        image.at(i, j, c) = readElement(base + static_cast<size_t>(j) * rowBytes + static_cast<size_t>(i) * groupBytes +
-                                            static_cast<size_t>(c) * elementBytes, type, swap);
-  return image;
-}
-
-// GLU's 2 x 2 (or 2 x 1) average in the arithmetic of each client type.
-double averageOf(const double* v, int n, GLenum type) {
-  double sum = 0.0;
-  for (int k = 0; k < n; ++k) sum += v[k];
-  switch (type) {
-    case GL_UNSIGNED_BYTE:
-    case GL_BYTE:
-    case GL_UNSIGNED_SHORT:
-    case GL_SHORT: {
-      // C integer division, truncating towards zero; the 2 x 2 filter adds 2 first.
-      const long long s = static_cast<long long>(sum) + (n == 4 ? 2 : 0);
-      return static_cast<double>(s / n);
-    }
-    case GL_UNSIGNED_INT:  // summed in double, which holds every unsigned int
-      return std::trunc(n == 4 ? sum / 4.0 + 0.5 : sum / 2.0);
-    case GL_INT: {  // summed in single precision
-      float single = static_cast<float>(v[0]);
-      for (int k = 1; k < n; ++k) single += static_cast<float>(v[k]);
-      return std::trunc(n == 4 ? static_cast<double>(single / 4.0f) + 0.5 : single / 2.0);
-    }
-    default: {  // GL_FLOAT: summed in single precision
-      float single = static_cast<float>(v[0]);
-      for (int k = 1; k < n; ++k) single += static_cast<float>(v[k]);
-      return single / static_cast<float>(n);
-    }
-  }
-}
-
-ClientImage halveImage(const ClientImage& in, GLenum type) {
-  ClientImage out;
-  out.width = std::max(1, in.width / 2);
-  out.height = std::max(1, in.height / 2);
-  out.components = in.components;
-  out.values.resize(static_cast<size_t>(out.width) * static_cast<size_t>(out.height) * static_cast<size_t>(out.components));
-  const bool oneDimensional = in.width == 1 || in.height == 1;
-  for (int j = 0; j < out.height; ++j) {
-    for (int i = 0; i < out.width; ++i) {
-      for (int c = 0; c < out.components; ++c) {
-        double v[4];
-        int n;
-        if (!oneDimensional) {
-          v[0] = in.at(2 * i, 2 * j, c);
-          v[1] = in.at(2 * i + 1, 2 * j, c);
-          v[2] = in.at(2 * i, 2 * j + 1, c);
-          v[3] = in.at(2 * i + 1, 2 * j + 1, c);
-          n = 4;
-        } else if (in.height == 1) {
-          v[0] = in.at(2 * i, 0, c);
-          v[1] = in.at(2 * i + 1, 0, c);
-          n = 2;
-        } else {
-          v[0] = in.at(0, 2 * j, c);
-          v[1] = in.at(0, 2 * j + 1, c);
-          n = 2;
-        }
-        out.at(i, j, c) = averageOf(v, n, type);
-      }
-    }
-  }
-  return out;
-}
+using namespace glass::glu;  // NOLINT(google-build-using-namespace): the shared GLU pieces
 
 // The value GLU stores for a box filter's result `mean` (single precision) in the client type:
 // integer types truncate towards zero, unsigned ints clamp at their largest value.
@@ -333,122 +124,6 @@ ClientImage scaleImage(const ClientImage& in, int width, int height, GLenum type
   return out;
 }
 
-// Uploads one level with a tightly packed layout, restoring the caller's unpack state.
-void uploadLevel(GLenum target, int dimensions, GLint level, GLint internalFormat, const ClientImage& image,
-                 GLenum format, GLenum type) {
-  const size_t elementBytes = static_cast<size_t>(bytesOfType(type));
-  std::vector<unsigned char> data(image.values.size() * elementBytes);
-  for (size_t k = 0; k < image.values.size(); ++k) writeElement(image.values[k], type, &data[k * elementBytes]);
-  GLint alignment, rowLength, skipRows, skipPixels, swapBytes;
-  glGetIntegerv(GL_UNPACK_ALIGNMENT, &alignment);
-  glGetIntegerv(GL_UNPACK_ROW_LENGTH, &rowLength);
-  glGetIntegerv(GL_UNPACK_SKIP_ROWS, &skipRows);
-  glGetIntegerv(GL_UNPACK_SKIP_PIXELS, &skipPixels);
-  glGetIntegerv(GL_UNPACK_SWAP_BYTES, &swapBytes);
-  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-  glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
-  glPixelStorei(GL_UNPACK_SKIP_ROWS, 0);
-  glPixelStorei(GL_UNPACK_SKIP_PIXELS, 0);
-  glPixelStorei(GL_UNPACK_SWAP_BYTES, GL_FALSE);
-  if (dimensions == 1) {
-    glTexImage1D(target, level, internalFormat, image.width, 0, format, type, data.data());
-  } else {
-    glTexImage2D(target, level, internalFormat, image.width, image.height, 0, format, type, data.data());
-  }
-  glPixelStorei(GL_UNPACK_ALIGNMENT, alignment);
-  glPixelStorei(GL_UNPACK_ROW_LENGTH, rowLength);
-  glPixelStorei(GL_UNPACK_SKIP_ROWS, skipRows);
-  glPixelStorei(GL_UNPACK_SKIP_PIXELS, skipPixels);
-  glPixelStorei(GL_UNPACK_SWAP_BYTES, swapBytes);
-}
-
-// gluScaleImage and the 1D mipmaps work on 16-bit unsigned values, converted as GLU converts
-// them (its "rough" scales, kept so that the values come out as libGLU's): an unsigned byte b is
-// 257 b, a byte 516 b, a short 2 s, an unsigned int u >> 16, an int i >> 15 (the signed products
-// and shifts wrapped to 16 bits as C converts them), a float 65535 f in single precision
-// (truncated, through a 32-bit integer as on x86). Colour and stencil indices are taken as they
-// are.
-uint16_t sixteenBitOf(double raw, GLenum type, bool index) {
-  if (type == GL_FLOAT) {
-    const float scaled = index ? static_cast<float>(raw) : 65535.0f * static_cast<float>(raw);
-    if (!(scaled > -2147483648.0f && scaled < 2147483648.0f)) return 0;  // x86 gives 0x80000000
-    return static_cast<uint16_t>(static_cast<int32_t>(scaled));
-  }
-  const auto value = static_cast<int64_t>(raw);  // every other type's values are integers
-  if (index) return static_cast<uint16_t>(value);
-  switch (type) {
-    case GL_UNSIGNED_BYTE: return static_cast<uint16_t>(value * 257);
-    case GL_BYTE: return static_cast<uint16_t>(value * 516);
-    case GL_SHORT: return static_cast<uint16_t>(value * 2);
-    case GL_UNSIGNED_INT: return static_cast<uint16_t>(value >> 16);
-    case GL_INT: return static_cast<uint16_t>(value >> 15);  // arithmetic shift of the signed value
-    default: return static_cast<uint16_t>(value);            // GL_UNSIGNED_SHORT
-  }
-}
-
-// The client value GLU writes for a 16-bit value u: u >> 8 for unsigned bytes, u >> 9 for bytes,
-// u >> 1 for shorts, 65537 u for unsigned ints (half of that for ints), u / 65535 in single
-// precision for floats; indices as they are.
-double fromSixteenBit(uint16_t u, GLenum type, bool index) {
-  if (index) return type == GL_FLOAT ? static_cast<double>(static_cast<float>(u)) : u;
-  switch (type) {
-    case GL_UNSIGNED_BYTE: return u >> 8;
-    case GL_BYTE: return u >> 9;
-    case GL_SHORT: return u >> 1;
-    case GL_UNSIGNED_INT: return static_cast<uint32_t>(u) * 65537u;
-    case GL_INT: return static_cast<uint32_t>(u) * 65537u / 2u;
-    case GL_FLOAT: return static_cast<float>(u) / 65535.0f;
-    default: return u;  // GL_UNSIGNED_SHORT
-  }
-}
-
-// gluScaleImage's resampling (GLU's, which is not the one its mipmaps use): each output pixel is
-// the weighted mean of the source area round its centre (x, y) = ((i + 1/2) w_in / w_out, (j +
-// 1/2) h_in / h_out): half an output pixel each way along an axis that shrinks, half a source
-// texel along one that grows (so enlarging interpolates linearly between the two nearest
-// texels), the source indices wrapping round the image; the mean is (sum + 1/2) / area,
-// truncated. An image exactly twice the output size each way is halved by 2 x 2 averages
-// (sum + 2) / 4 (halveImage in unsigned shorts). Single precision where GLU computes in it, so
-// the same values. The images hold 16-bit values (sixteenBitOf).
-ClientImage scaleSixteenBit(const ClientImage& in, int widthOut, int heightOut) {
-  if (in.width == 2 * widthOut && in.height == 2 * heightOut) return halveImage(in, GL_UNSIGNED_SHORT);
-  ClientImage out;
-  out.width = widthOut;
-  out.height = heightOut;
-  out.components = in.components;
-  out.values.resize(static_cast<size_t>(widthOut) * static_cast<size_t>(heightOut) * static_cast<size_t>(out.components));
-  const float stepX = static_cast<float>(in.width) / static_cast<float>(widthOut);
-  const float stepY = static_cast<float>(in.height) / static_cast<float>(heightOut);
-  const float halfX = in.width > widthOut ? stepX / 2 : 0.5f, halfY = in.height > heightOut ? stepY / 2 : 0.5f;
-  for (int j = 0; j < heightOut; ++j) {
-    const auto centreY = static_cast<float>(stepY * (j + 0.5));
-    const float lowY = centreY - halfY, highY = centreY + halfY;
-    for (int i = 0; i < widthOut; ++i) {
-      const auto centreX = static_cast<float>(stepX * (i + 0.5));
-      const float lowX = centreX - halfX, highX = centreX + halfX;
-      float totals[4] = {0.0f, 0.0f, 0.0f, 0.0f};
-      float area = 0.0f;
-      // Unit cells from the box's low corner; the first and last are partly inside.
-      float y = lowY;
-      for (auto row = static_cast<int>(std::floor(y)); y < highY; y = static_cast<float>(++row)) {
-        const float shareY = highY < static_cast<float>(row + 1) ? highY - y : static_cast<float>(row + 1) - y;
-        const int sourceRow = ((row % in.height) + in.height) % in.height;
-        float x = lowX;
-        for (auto column = static_cast<int>(std::floor(x)); x < highX; x = static_cast<float>(++column)) {
-          const float shareX = highX < static_cast<float>(column + 1) ? highX - x : static_cast<float>(column + 1) - x;
-          const int sourceColumn = ((column % in.width) + in.width) % in.width;
-          const float share = shareX * shareY;
-          area += share;
-          for (int c = 0; c < out.components; ++c)
-            totals[c] += static_cast<float>(in.at(sourceColumn, sourceRow, c)) * share;
-        }
-      }
-      for (int c = 0; c < out.components; ++c) out.at(i, j, c) = static_cast<uint16_t>((totals[c] + 0.5) / area);
-    }
-  }
-  return out;
-}
-
 // The 1D mipmaps as GLU builds them (unlike its 2D ones, in gluScaleImage's arithmetic): the
 // client image converted to 16-bit values (sixteenBitOf), each level from `level` to `max`
 // resampled from the one before to `width` halved level by level (scaleSixteenBit), the levels
@@ -457,7 +132,7 @@ void loadOneDimensionalLevels(GLenum target, GLint internalFormat, ClientImage i
                               int width, GLint level, GLint base, GLint max) {
   for (double& value : image.values) value = sixteenBitOf(value, type, isIndexFormat(format));
   for (GLint l = level; l <= max; ++l) {
-    if (image.width != width) image = scaleSixteenBit(image, width, 1);
+    if (image.width != width) image = scaleSixteenBit(image, width, 1, 1);
     if (l >= base) uploadLevel(target, 1, l, internalFormat, image, format, GL_UNSIGNED_SHORT);
     width = std::max(1, width / 2);
   }
@@ -478,7 +153,7 @@ GLint buildMipmaps(GLenum target, int dimensions, GLint internalFormat, GLsizei 
     newHeight = std::max(1, newHeight / 2);
   }
   try {
-    ClientImage image = readClientImage(width, height, format, type, data);
+    ClientImage image = readClientImage(dimensions, width, height, 1, format, type, data);
     const int levels = std::max(log2OfPowerOfTwo(newWidth), log2OfPowerOfTwo(newHeight));
     if (dimensions == 1) {
       loadOneDimensionalLevels(target, internalFormat, std::move(image), format, type, newWidth, 0, 0, levels);
@@ -496,11 +171,6 @@ GLint buildMipmaps(GLenum target, int dimensions, GLint internalFormat, GLsizei 
   return 0;
 }
 
-// log2 of a power of two, -1 for any other size (GLU's computeLog).
-int exactLog2(int value) {
-  return value > 0 && (value & (value - 1)) == 0 ? log2OfPowerOfTwo(value) : -1;
-}
-
 // gluBuild*MipmapLevels (GLU 1.3): the image is level `level`, already of the size the caller
 // wants (no resampling); each further level halves the previous one as above, and the levels
 // from base to max are loaded. Every level down to 1 x 1 counts: level + log2 of the larger
@@ -514,7 +184,7 @@ GLint buildMipmapLevels(GLenum target, int dimensions, GLint internalFormat, GLs
   const int last = std::max(exactLog2(width), dimensions == 2 ? exactLog2(height) : -1) + level;
   if (base < 0 || base < level || max < base || last < max) return GLU_INVALID_VALUE;
   try {
-    ClientImage image = readClientImage(width, height, format, type, data);
+    ClientImage image = readClientImage(dimensions, width, height, 1, format, type, data);
     if (dimensions == 1) {
       loadOneDimensionalLevels(target, internalFormat, std::move(image), format, type, width, level, base, max);
       return 0;
@@ -567,9 +237,12 @@ GLint GLAPIENTRY gluScaleImage(GLenum format, GLsizei widthIn, GLsizei heightIn,
   if (checkMipmapArguments(format, typeIn) != 0 || checkMipmapArguments(format, typeOut) != 0)
     return GLU_INVALID_ENUM;
   try {
-    ClientImage in = readClientImage(widthIn, heightIn, format, typeIn, dataIn);
+    ClientImage in = readClientImage(2, widthIn, heightIn, 1, format, typeIn, dataIn);
     for (double& v : in.values) v = sixteenBitOf(v, typeIn, isIndexFormat(format));
-    ClientImage out = scaleSixteenBit(in, widthOut, heightOut);
+    // GLU halves an image exactly twice the output size each way by 2 x 2 means (sum + 2) / 4.
+    ClientImage out = in.width == 2 * widthOut && in.height == 2 * heightOut
+                          ? halveImage(in, GL_UNSIGNED_SHORT)
+                          : scaleSixteenBit(in, widthOut, heightOut, 1);
     for (double& v : out.values) v = fromSixteenBit(static_cast<uint16_t>(v), typeOut, isIndexFormat(format));
     // The result is written with the GL_PACK_* layout.
     GLint alignment = 4, rowLength = 0, skipRows = 0, skipPixels = 0;
