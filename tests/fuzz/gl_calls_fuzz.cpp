@@ -656,18 +656,30 @@ void gluAndGlutCall(ByteReader &in) {
   case 2: CALL(gluLookAt, in.real(), in.real(), in.real(), in.real(), in.real(), in.real(), in.real(), in.real(), in.real());
     break;
   case 3: {
-    // gluBuild2DMipmaps and gluScaleImage read width x height client pixels; gluScaleImage
-    // writes its result into the read-back buffer with the pack settings.
+    // The GLU mipmap builders and gluScaleImage read width x height (x depth, at most 4) client
+    // pixels; gluScaleImage writes its result into the read-back buffer with the pack settings.
     for (int i = 0; i < 256; ++i) memory->pixels[i] = in.byte();
-    if (in.byte() & 1) {
+    const int which = in.byte();
+    if (which & 1) {
       CALL(gluScaleImage, in.enumFrom(kEnums, kEnumCount), clientImageSide(in), clientImageSide(in),
            in.enumFrom(kEnums, kEnumCount), memory->pixels.data(), clientImageSide(in), clientImageSide(in),
            in.enumFrom(kEnums, kEnumCount), memory->readback.data());
       break;
     }
-    CALL(gluBuild2DMipmaps, in.enumFrom(kEnums, kEnumCount), static_cast<GLint>(in.enumFrom(kEnums, kEnumCount)),
-                      clientImageSide(in), clientImageSide(in), in.enumFrom(kEnums, kEnumCount),
-                      in.enumFrom(kEnums, kEnumCount), memory->pixels.data());
+    const GLenum target = in.enumFrom(kEnums, kEnumCount);
+    const auto internalFormat = static_cast<GLint>(in.enumFrom(kEnums, kEnumCount));
+    if ((which & 6) == 2) {
+      CALL(gluBuild1DMipmaps, target, internalFormat, clientImageSide(in), in.enumFrom(kEnums, kEnumCount),
+           in.enumFrom(kEnums, kEnumCount), memory->pixels.data());
+    } else if ((which & 6) == 4) {
+      const GLsizei w = clientImageSide(in), h = clientImageSide(in);
+      const int depth = in.size();
+      CALL(gluBuild3DMipmaps, target, internalFormat, w, h, depth > 4 ? 4 : depth, in.enumFrom(kEnums, kEnumCount),
+           in.enumFrom(kEnums, kEnumCount), memory->pixels.data());
+    } else {
+      CALL(gluBuild2DMipmaps, target, internalFormat, clientImageSide(in), clientImageSide(in),
+           in.enumFrom(kEnums, kEnumCount), in.enumFrom(kEnums, kEnumCount), memory->pixels.data());
+    }
     break;
   }
   case 4: {
