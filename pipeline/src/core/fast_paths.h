@@ -5,7 +5,7 @@
 // so there is one switch.
 #pragma once
 
-#include <string>
+#include "glass/raster/simd_target.h"
 
 namespace glass::gl {
 
@@ -26,17 +26,9 @@ class ScopedFastPaths {
   int previous_;
 };
 
-// The SIMD kernels are compiled for several instruction sets (Highway targets) and run with the
-// best one the processor has, unless GLASS_SIMD_TARGET names another: "scalar" (portable code on
-// emulated 128-bit vectors, the baseline x86-64 binary's own), "ssse3", "sse4", "avx2" or "avx3"
-// (AVX-512). A name the processor cannot run, or an unknown one, is ignored. Every target gives
-// the same bytes (the test image_simd_targets compares them). GLASS_SIMD_TARGET is read once,
-// at the first draw that uses a kernel (core/simd_dispatch.h).
-//
-// The target the SIMD kernels run with, by the names above, for GL_RENDERER and the benchmark.
-const char* simdTargetName();
-
-// The targets this processor can run, by the names above, separated by spaces, "scalar" first.
-std::string availableSimdTargetNames();
+// The SIMD target the kernels run with and the ones this processor can run, by the names
+// GLASS_SIMD_TARGET takes (glass/raster/simd_target.h).
+using raster::availableSimdTargetNames;
+using raster::simdTargetName;
 
 }  // namespace glass::gl
