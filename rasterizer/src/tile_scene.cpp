@@ -260,6 +260,7 @@ void TileScene::runTile(int activeIndex) const {
         setup.perspectiveCorrect = r.perspectiveCorrect;
         setup.frontFacing = r.frontFacing;
         setup.earlyDepth = r.earlyDepth;
+        setup.privateRect = rect;  // this thread owns the tile
         setup.signedArea = r.signedArea;
         rasterizeTriangle(setup, *r.sink);
         break;

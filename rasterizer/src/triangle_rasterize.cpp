@@ -42,10 +42,11 @@
 // the block is dropped before any per-pixel work; when the farthest corner passes against the
 // nearest stored value, every pixel passes and none is compared.
 //
-// Rows. Each row of a block is worked as lanes without branches (the depths of all its columns,
-// the coverage of their centres as a bit mask, the early depth test of the columns in the
-// triangle's box), which the compiler turns into vector code. Loops over the covered pixels
-// alone were slower: their branches follow the triangle's shape and are mispredicted.
+// Rows. Each row of a block is worked as vector lanes without branches (block_rows.h): the
+// coverage of its eight centres as a bit mask, the depths of all its columns, and the early depth
+// test, in SIMD code compiled for every target (glass/raster/simd_target.h), each lane the same
+// integer or IEEE operations as evaluating one pixel alone. Loops over the covered pixels alone
+// were slower: their branches follow the triangle's shape and are mispredicted.
 //
 // The walk ends at a CoveredBlock (triangle_block.h): which pixels of the block are covered and
 // passed the early test, and their depths. The sink decides what happens next; by default it is
@@ -53,6 +54,7 @@
 #include <algorithm>
 #include <cstring>
 
+#include "block_rows.h"
 #include "glass/raster/depth_value.h"
 #include "edge_functions.h"
 #include "glass/raster/framebuffer.h"
@@ -67,9 +69,8 @@ constexpr int kBlockSize = CoveredBlock::kSize;
 // The depth plane at the block's pixel centres, split as described at the top of the file.
 // Made with the corner columns and rows of the box's part of the block only (i0 and i1 - 1, j0
 // and j1 - 1: all the hidden-block test reads); fillInterior() sets all eight columns and the rows
-// [j0, j1) for the pixels: a row's depths are computed whole, a fixed loop without branches,
-// whichever of its pixels are covered (the others are never read). Every entry is the same
-// expression either way.
+// [j0, j1) for the block rows, which compute a row's depths whole, whichever of its pixels are
+// covered (the others are never read). Every entry is the same expression either way.
 struct BlockDepth {
   const TriangleSetup& setup;
   int bx, by, j0, j1;
@@ -87,13 +88,6 @@ struct BlockDepth {
     for (int j = j0 + 1; j < j1 - 1; ++j) setRow(j);
   }
   uint32_t at(int i, int j) const { return depthValue(column[i] + row[j]); }
-  // at(i, j) for every column of row j (all columns set), two columns at a time.
-  void wholeRow(int j, uint32_t z[kBlockSize]) const {
-    for (int i = 0; i < kBlockSize; i += 2) {
-      const double pair[2] = {column[i] + row[j], column[i + 1] + row[j]};
-      depthValuePair(pair, z + i);
-    }
-  }
 
  private:
   void setColumn(int i) { column[i] = setup.z0 + setup.zdx * (bx + i + 0.5); }
@@ -103,58 +97,13 @@ struct BlockDepth {
 // Bits i0 <= i < i1.
 unsigned columnMask(int i0, int i1) { return (0xFFu << i0) & (0xFFu >> (kBlockSize - i1)); }
 
-// Bit i, for i0 <= i < i1: the centre of pixel (bx + i, y) is inside the three edges
-// (edge_functions.h). Stepping from column to column is exact (64-bit integers).
-unsigned rowCoverage(const PixelEdgeFunctions& edges, int bx, int y, int i0, int i1) {
-  int64_t e0 = edges.at(0, bx + i0, y), e1 = edges.at(1, bx + i0, y), e2 = edges.at(2, bx + i0, y);
-  unsigned mask = 0;
-  for (int i = i0; i < i1; ++i) {
-    mask |= static_cast<unsigned>((static_cast<uint64_t>(e0 | e1 | e2) >> 63) ^ 1u) << i;
-    e0 += edges.stepX[0];
-    e1 += edges.stepX[1];
-    e2 += edges.stepX[2];
-  }
-  return mask;
-}
-
-// The smallest and largest stored depth over columns [x0, x1) of rows [y0, y1).
+// The smallest and largest stored depth over columns [x0, x1) of rows [y0, y1): whole block rows
+// in vector lanes (block_rows.h), others pixel by pixel.
 void storedDepthRange(const Framebuffer& fb, int x0, int x1, int y0, int y1, uint32_t& lowest,
                       uint32_t& highest) {
   lowest = kDepthMax;
   highest = 0;
-  if (x1 - x0 == kBlockSize) {
-    // A whole block row: the minimum and maximum per column over the rows, in two vectors of
-    // four lanes each (GCC and Clang vector extensions), and one reduction across the lanes at
-    // the end instead of one per row. The lanes are floats: stored depths are below 2^24
-    // (depth_value.h), so they convert exactly and keep their order, and float minimum and
-    // maximum are single instructions on every x86-64, where 32-bit integer ones are not.
-    using IntLanes = int32_t __attribute__((vector_size(16)));
-    using FloatLanes = float __attribute__((vector_size(16)));
-    FloatLanes low[2], high[2];
-    for (int half = 0; half < 2; ++half) {
-      low[half] = FloatLanes{} + static_cast<float>(kDepthMax);
-      high[half] = FloatLanes{};
-    }
-    for (int y = y0; y < y1; ++y) {
-      const uint32_t* stored = fb.depthAt(x0, y);
-      for (int half = 0; half < 2; ++half) {
-        IntLanes ints;
-        std::memcpy(&ints, stored + 4 * half, sizeof ints);
-        const FloatLanes values = __builtin_convertvector(ints, FloatLanes);
-        low[half] = values < low[half] ? values : low[half];
-        high[half] = values > high[half] ? values : high[half];
-      }
-    }
-    float lowValue = static_cast<float>(kDepthMax), highValue = 0.0f;
-    for (int lane = 0; lane < 4; ++lane)
-      for (int half = 0; half < 2; ++half) {
-        lowValue = std::min(lowValue, low[half][lane]);
-        highValue = std::max(highValue, high[half][lane]);
-      }
-    lowest = static_cast<uint32_t>(lowValue);
-    highest = static_cast<uint32_t>(highValue);
-    return;
-  }
+  if (x1 - x0 == kBlockSize) return blockDepthRange(fb.depthAt(x0, y0), fb.width(), y1 - y0, lowest, highest);
   for (int y = y0; y < y1; ++y) {
     const uint32_t* stored = fb.depthAt(0, y);
     for (int x = x0; x < x1; ++x) {
@@ -202,6 +151,11 @@ void walkTriangle(const TriangleSetup& setup, FragmentSink& sink) {
   const Framebuffer* earlyDepth = setup.earlyDepth.buffer;
   const bool largeTriangle = box.x1 - box.x0 >= 4 * kBlockSize && box.y1 - box.y0 >= 4 * kBlockSize;
 
+  // Edge k's step from column 0 of a block to column i, for the block rows (block_rows.h).
+  alignas(64) int64_t columnSteps[3][kBlockSize];
+  for (int k = 0; k < 3; ++k)
+    for (int i = 0; i < kBlockSize; ++i) columnSteps[k][i] = edges.stepX[k] * i;
+
   CoveredBlock block;
   const int firstBlockX = box.x0 & ~1, firstBlockY = box.y0;
   for (int by = firstBlockY; by < box.y1; by += kBlockSize) {
@@ -230,28 +184,25 @@ void walkTriangle(const TriangleSetup& setup, FragmentSink& sink) {
 
       // Coverage and depth, row by row; a fragment that fails the early depth test goes no
       // further.
+      BlockRows rows;
+      for (int k = 0; k < 3; ++k) {
+        rows.rowStart[k] = edges.at(k, bx, y0);
+        rows.stepY[k] = edges.stepY[k];
+      }
+      rows.columnStep = columnSteps;
+      rows.accepted = accepted;
+      rows.columns = columnMask(i0, i1);
+      rows.firstRow = y0 - by;
+      rows.endRow = y1 - by;
+      rows.depthColumn = depth.column;
+      rows.depthRow = depth.row;
+      rows.stored = test ? earlyDepth->depthAt(bx, by) : nullptr;
+      rows.storedStride = earlyDepth != nullptr ? earlyDepth->width() : 0;
+      rows.storedWhole = bx >= setup.privateRect.x0 && bx + kBlockSize <= setup.privateRect.x1;
+      rows.compare = kCompare;
       block.bx = bx;
       block.by = by;
-      const unsigned columns = columnMask(i0, i1);
-      bool any = false;
-      std::memset(block.rowMask, 0, sizeof block.rowMask);  // rows outside the box stay empty
-      for (int j = y0 - by; j < y1 - by; ++j) {
-        const int y = by + j;
-        unsigned mask = accepted ? columns : rowCoverage(edges, bx, y, i0, i1);
-        uint32_t* z = block.depth[j];
-        if (mask != 0) depth.wholeRow(j, z);
-        if constexpr (kEarly) {
-          if (test && mask != 0) {
-            const uint32_t* stored = earlyDepth->depthAt(bx, y);
-            unsigned passing = 0;
-            for (int i = i0; i < i1; ++i)
-              passing |= static_cast<unsigned>(passesDepthCompare(kCompare, z[i], stored[i])) << i;
-            mask &= passing;
-          }
-        }
-        block.rowMask[j] = static_cast<uint8_t>(mask);
-        any |= mask != 0;
-      }
+      const bool any = coverBlockRows(rows, block);
       if (any) sink.processTriangleBlock(setup, block);
     }
   }

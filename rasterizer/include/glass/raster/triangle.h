@@ -40,6 +40,10 @@ struct TriangleSetup {
   bool perspectiveCorrect;
   bool frontFacing;
   EarlyDepthTest earlyDepth;
+  // The pixels of the framebuffer that nothing else reads or writes while the triangle is drawn
+  // (the tiled rasterizer's tile): the early depth test may read a whole block row of stored
+  // depths inside it, beyond the box. Empty: only the box's pixels are read.
+  PixelRect privateRect;
   // Signed area in window coordinates (positive: counter-clockwise), for facing and culling.
   double signedArea;
 };

@@ -1,0 +1,183 @@
+// coverBlockRows (block_rows.h), one template compiled for each SIMD target
+// (hwy/foreach_target.h re-includes this file per target).
+//
+// What each lane computes, and why every target gives the same bits:
+//   coverage   the three edge values at the pixel centre, as 64-bit integers: the row's start
+//              plus the column's step (both exact), OR-ed; the centre is inside when the sign
+//              bit is clear (edge_functions.h: "E + bias - 1 >= 0" for all three).
+//   depth      depthValue(column + row) of depth_value.h: one double addition, the clamps to
+//              [0, 1] as comparisons and selections (NaN compares false and becomes 0), one
+//              multiplication, one addition and the truncation to a 32-bit integer.
+//   early test the fragment's depth against the stored one, as 32-bit signed integers (depths
+//              are below 2^24, so signed order is unsigned order).
+// A row's depths are computed for all eight columns (the uncovered ones are never read); the
+// stored depths are read for the box's columns only, since the columns beyond belong to other
+// tiles, which other threads may be drawing.
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "block_rows.cpp"
+#include <hwy/foreach_target.h>  // IWYU pragma: keep
+#include <hwy/highway.h>
+
+#include <bit>
+#include <cstring>
+
+#include "block_rows.h"
+#include "glass/raster/depth_value.h"
+#include "glass/raster/simd_target.h"
+
+HWY_BEFORE_NAMESPACE();
+namespace glass::raster {
+namespace HWY_NAMESPACE {
+namespace {
+
+namespace hn = hwy::HWY_NAMESPACE;
+
+constexpr int kSize = BlockRows::kSize;
+
+// Bit i: column i's centre of the current row is inside the three edges.
+unsigned rowCoverage(const BlockRows& rows, const int64_t rowStart[3]) {
+  const hn::CappedTag<int64_t, kSize> d;
+  const int lanes = static_cast<int>(hn::Lanes(d));
+  unsigned outside = 0;
+  for (int i = 0; i < kSize; i += lanes) {
+    auto any = hn::Zero(d);
+    for (int k = 0; k < 3; ++k)
+      any = hn::Or(any, hn::Add(hn::Set(d, rowStart[k]), hn::LoadU(d, rows.columnStep[k] + i)));
+    uint8_t bits[8] = {};
+    hn::StoreMaskBits(d, hn::Lt(any, hn::Zero(d)), bits);
+    outside |= static_cast<unsigned>(bits[0]) << i;
+  }
+  return ~outside & 0xFFu;
+}
+
+// Row j's depths, all eight columns, into z.
+void rowDepths(const BlockRows& rows, int j, uint32_t z[kSize]) {
+  const hn::CappedTag<double, kSize> d;
+  const hn::Rebind<int32_t, decltype(d)> d32;
+  const int lanes = static_cast<int>(hn::Lanes(d));
+  const auto zero = hn::Zero(d), one = hn::Set(d, 1.0);
+  const auto scale = hn::Set(d, double(kDepthMax)), half = hn::Set(d, 0.5);
+  const auto row = hn::Set(d, rows.depthRow[j]);
+  for (int i = 0; i < kSize; i += lanes) {
+    auto value = hn::Add(hn::LoadU(d, rows.depthColumn + i), row);
+    value = hn::IfThenElse(hn::Gt(value, zero), value, zero);
+    value = hn::IfThenElse(hn::Lt(value, one), value, one);
+    const auto depth = hn::DemoteTo(d32, hn::Add(hn::Mul(value, scale), half));
+    int32_t out[kSize];
+    hn::StoreU(depth, d32, out);
+    std::memcpy(z + i, out, lanes * sizeof(int32_t));
+  }
+}
+
+// Bit i: column i's depth z[i] passes the early test against the stored row (columns in
+// rows.columns only; the others give 0).
+unsigned rowDepthPasses(const BlockRows& rows, int j, const uint32_t z[kSize]) {
+  const hn::CappedTag<int32_t, kSize> d;
+  const int lanes = static_cast<int>(hn::Lanes(d));
+  const uint32_t* stored = rows.stored + j * rows.storedStride;
+  int32_t storedRow[kSize] = {}, fragmentRow[kSize];
+  std::memcpy(fragmentRow, z, sizeof fragmentRow);
+  if (rows.storedWhole) {
+    std::memcpy(storedRow, stored, sizeof storedRow);
+  } else {
+    for (int i = std::countr_zero(rows.columns), end = static_cast<int>(std::bit_width(rows.columns)); i < end; ++i)
+      storedRow[i] = static_cast<int32_t>(stored[i]);
+  }
+  const DepthCompare c = rows.compare;
+  const unsigned passLess = c == DepthCompare::Less || c == DepthCompare::LessEqual ||
+                                    c == DepthCompare::NotEqual || c == DepthCompare::Always
+                                ? 0xFFu : 0u;
+  const unsigned passEqual = c == DepthCompare::Equal || c == DepthCompare::LessEqual ||
+                                     c == DepthCompare::GreaterEqual || c == DepthCompare::Always
+                                 ? 0xFFu : 0u;
+  const unsigned passGreater = c == DepthCompare::Greater || c == DepthCompare::GreaterEqual ||
+                                       c == DepthCompare::NotEqual || c == DepthCompare::Always
+                                   ? 0xFFu : 0u;
+  unsigned less = 0, equal = 0, greater = 0;
+  for (int i = 0; i < kSize; i += lanes) {
+    const auto fragment = hn::LoadU(d, fragmentRow + i), held = hn::LoadU(d, storedRow + i);
+    uint8_t bits[8] = {};
+    hn::StoreMaskBits(d, hn::Lt(fragment, held), bits);
+    less |= static_cast<unsigned>(bits[0]) << i;
+    hn::StoreMaskBits(d, hn::Eq(fragment, held), bits);
+    equal |= static_cast<unsigned>(bits[0]) << i;
+    hn::StoreMaskBits(d, hn::Gt(fragment, held), bits);
+    greater |= static_cast<unsigned>(bits[0]) << i;
+  }
+  return ((less & passLess) | (equal & passEqual) | (greater & passGreater)) & rows.columns;
+}
+
+}  // namespace
+
+bool CoverBlockRows(const BlockRows& rows, CoveredBlock& block) {
+  std::memset(block.rowMask, 0, sizeof block.rowMask);
+  int64_t rowStart[3] = {rows.rowStart[0], rows.rowStart[1], rows.rowStart[2]};
+  bool any = false;
+  for (int j = rows.firstRow; j < rows.endRow; ++j) {
+    unsigned mask = rows.columns;
+    if (!rows.accepted) {
+      mask &= rowCoverage(rows, rowStart);
+      for (int k = 0; k < 3; ++k) rowStart[k] += rows.stepY[k];
+    }
+    if (mask == 0) continue;
+    rowDepths(rows, j, block.depth[j]);
+    if (rows.stored != nullptr) mask &= rowDepthPasses(rows, j, block.depth[j]);
+    block.rowMask[j] = static_cast<uint8_t>(mask);
+    any |= mask != 0;
+  }
+  return any;
+}
+
+void BlockDepthRange(const uint32_t* stored, ptrdiff_t stride, int rowCount, uint32_t& lowest,
+                     uint32_t& highest) {
+  // As signed integers: stored depths are below 2^24.
+  const hn::CappedTag<int32_t, kSize> d;
+  const int lanes = static_cast<int>(hn::Lanes(d));
+  auto low = hn::Set(d, static_cast<int32_t>(kDepthMax)), high = hn::Zero(d);
+  for (int r = 0; r < rowCount; ++r) {
+    const auto* row = reinterpret_cast<const int32_t*>(stored + r * stride);
+    for (int i = 0; i < kSize; i += lanes) {
+      const auto values = hn::LoadU(d, row + i);
+      low = hn::Min(low, values);
+      high = hn::Max(high, values);
+    }
+  }
+  lowest = static_cast<uint32_t>(hn::GetLane(hn::MinOfLanes(d, low)));
+  highest = static_cast<uint32_t>(hn::GetLane(hn::MaxOfLanes(d, high)));
+}
+
+}  // namespace HWY_NAMESPACE
+}  // namespace glass::raster
+HWY_AFTER_NAMESPACE();
+
+#if HWY_ONCE
+namespace glass::raster {
+namespace {
+
+constexpr SimdFunctions<decltype(&HWY_STATIC_DISPATCH(CoverBlockRows))> kCoverBlockRows =
+    GLASS_SIMD_FUNCTIONS(CoverBlockRows);
+constexpr SimdFunctions<decltype(&HWY_STATIC_DISPATCH(BlockDepthRange))> kBlockDepthRange =
+    GLASS_SIMD_FUNCTIONS(BlockDepthRange);
+
+}  // namespace
+
+bool coverBlockRows(const BlockRows& rows, CoveredBlock& block) {
+  return chosenSimdFunction(kCoverBlockRows)(rows, block);
+}
+
+void blockDepthRange(const uint32_t* stored, ptrdiff_t stride, int rowCount, uint32_t& lowest,
+                     uint32_t& highest) {
+  chosenSimdFunction(kBlockDepthRange)(stored, stride, rowCount, lowest, highest);
+}
+
+bool coverBlockRowsWith(SimdTarget target, const BlockRows& rows, CoveredBlock& block) {
+  return kCoverBlockRows[static_cast<int>(target)](rows, block);
+}
+
+void blockDepthRangeWith(SimdTarget target, const uint32_t* stored, ptrdiff_t stride, int rowCount,
+                         uint32_t& lowest, uint32_t& highest) {
+  kBlockDepthRange[static_cast<int>(target)](stored, stride, rowCount, lowest, highest);
+}
+
+}  // namespace glass::raster
+#endif
