@@ -137,6 +137,16 @@ void loadOneDimensionalLevels(GLenum target, GLint internalFormat, ClientImage i
   }
 }
 
+// The 2D mipmaps from `image`, which is level `level`: each level to `max` halves the one before
+// (halveImage, in GLU's arithmetic for `type`), and the levels from `base` on are loaded.
+void loadTwoDimensionalLevels(GLenum target, GLint internalFormat, ClientImage image, GLenum format, GLenum type,
+                              GLint level, GLint base, GLint max) {
+  for (GLint l = level; l <= max; ++l) {
+    if (l > level) image = halveImage(image, type);
+    if (l >= base) uploadLevel(target, 2, l, internalFormat, image, format, type);
+  }
+}
+
 GLint buildMipmaps(GLenum target, int dimensions, GLint internalFormat, GLsizei width, GLsizei height,
                    GLenum format, GLenum type, const void* data) {
   if (isPackedOrBitmapType(type)) return GLU_INVALID_ENUM;
@@ -160,10 +170,7 @@ GLint buildMipmaps(GLenum target, int dimensions, GLint internalFormat, GLsizei 
     }
     if (image.width != newWidth || image.height != newHeight)
       image = scaleImage(image, newWidth, newHeight, type);
-    for (int level = 0; level <= levels; ++level) {
-      if (level > 0) image = halveImage(image, type);
-      uploadLevel(target, dimensions, level, internalFormat, image, format, type);
-    }
+    loadTwoDimensionalLevels(target, internalFormat, std::move(image), format, type, 0, 0, levels);
   } catch (const std::bad_alloc&) {
     return GLU_OUT_OF_MEMORY;
   }
@@ -188,10 +195,7 @@ GLint buildMipmapLevels(GLenum target, int dimensions, GLint internalFormat, GLs
       loadOneDimensionalLevels(target, internalFormat, std::move(image), format, type, width, level, base, max);
       return 0;
     }
-    for (int l = level; l <= max; ++l) {
-      if (l > level) image = halveImage(image, type);
-      if (l >= base) uploadLevel(target, dimensions, l, internalFormat, image, format, type);
-    }
+    loadTwoDimensionalLevels(target, internalFormat, std::move(image), format, type, level, base, max);
   } catch (const std::bad_alloc&) {
     return GLU_OUT_OF_MEMORY;
   }
