@@ -10,9 +10,10 @@
 //              multiplication, one addition and the truncation to a 32-bit integer.
 //   early test the fragment's depth against the stored one, as 32-bit signed integers (depths
 //              are below 2^24, so signed order is unsigned order).
-// A row's depths are computed for all eight columns (the uncovered ones are never read); the
-// stored depths are read for the box's columns only, since the columns beyond belong to other
-// tiles, which other threads may be drawing.
+// A row's depths are computed for all eight columns (the uncovered ones are never read). The
+// stored depths are read for all eight columns only inside the thread's own tile (storedWhole);
+// elsewhere for the box's columns only, since the columns beyond may belong to another tile,
+// which another thread may be drawing.
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "block_rows.cpp"
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
@@ -58,53 +59,50 @@ void rowDepths(const BlockRows& rows, int j, uint32_t z[kSize]) {
   const auto zero = hn::Zero(d), one = hn::Set(d, 1.0);
   const auto scale = hn::Set(d, double(kDepthMax)), half = hn::Set(d, 0.5);
   const auto row = hn::Set(d, rows.depthRow[j]);
+  auto* out = reinterpret_cast<int32_t*>(z);  // depths are below 2^24: the same bits either way
   for (int i = 0; i < kSize; i += lanes) {
     auto value = hn::Add(hn::LoadU(d, rows.depthColumn + i), row);
     value = hn::IfThenElse(hn::Gt(value, zero), value, zero);
     value = hn::IfThenElse(hn::Lt(value, one), value, one);
-    const auto depth = hn::DemoteTo(d32, hn::Add(hn::Mul(value, scale), half));
-    int32_t out[kSize];
-    hn::StoreU(depth, d32, out);
-    std::memcpy(z + i, out, lanes * sizeof(int32_t));
+    hn::StoreU(hn::DemoteTo(d32, hn::Add(hn::Mul(value, scale), half)), d32, out + i);
   }
 }
 
+// Which orderings of a fragment's depth against the stored one pass rows.compare, each as the
+// mask of a whole row (all ones or none), from passesDepthCompare itself.
+struct PassingOrders {
+  unsigned less, equal, greater;
+  explicit PassingOrders(DepthCompare compare)
+      : less(passesDepthCompare(compare, 0, 1) ? 0xFFu : 0u),
+        equal(passesDepthCompare(compare, 1, 1) ? 0xFFu : 0u),
+        greater(passesDepthCompare(compare, 1, 0) ? 0xFFu : 0u) {}
+};
+
 // Bit i: column i's depth z[i] passes the early test against the stored row (columns in
 // rows.columns only; the others give 0).
-unsigned rowDepthPasses(const BlockRows& rows, int j, const uint32_t z[kSize]) {
+unsigned rowDepthPasses(const BlockRows& rows, const PassingOrders& passing, int j, const uint32_t z[kSize]) {
   const hn::CappedTag<int32_t, kSize> d;
   const int lanes = static_cast<int>(hn::Lanes(d));
   const uint32_t* stored = rows.stored + j * rows.storedStride;
-  int32_t storedRow[kSize] = {}, fragmentRow[kSize];
-  std::memcpy(fragmentRow, z, sizeof fragmentRow);
+  int32_t storedRow[kSize] = {};
   if (rows.storedWhole) {
     std::memcpy(storedRow, stored, sizeof storedRow);
   } else {
     for (int i = std::countr_zero(rows.columns), end = static_cast<int>(std::bit_width(rows.columns)); i < end; ++i)
       storedRow[i] = static_cast<int32_t>(stored[i]);
   }
-  const DepthCompare c = rows.compare;
-  const unsigned passLess = c == DepthCompare::Less || c == DepthCompare::LessEqual ||
-                                    c == DepthCompare::NotEqual || c == DepthCompare::Always
-                                ? 0xFFu : 0u;
-  const unsigned passEqual = c == DepthCompare::Equal || c == DepthCompare::LessEqual ||
-                                     c == DepthCompare::GreaterEqual || c == DepthCompare::Always
-                                 ? 0xFFu : 0u;
-  const unsigned passGreater = c == DepthCompare::Greater || c == DepthCompare::GreaterEqual ||
-                                       c == DepthCompare::NotEqual || c == DepthCompare::Always
-                                   ? 0xFFu : 0u;
-  unsigned less = 0, equal = 0, greater = 0;
+  const auto* fragments = reinterpret_cast<const int32_t*>(z);
+  unsigned less = 0, equal = 0;
   for (int i = 0; i < kSize; i += lanes) {
-    const auto fragment = hn::LoadU(d, fragmentRow + i), held = hn::LoadU(d, storedRow + i);
+    const auto fragment = hn::LoadU(d, fragments + i), held = hn::LoadU(d, storedRow + i);
     uint8_t bits[8] = {};
     hn::StoreMaskBits(d, hn::Lt(fragment, held), bits);
     less |= static_cast<unsigned>(bits[0]) << i;
     hn::StoreMaskBits(d, hn::Eq(fragment, held), bits);
     equal |= static_cast<unsigned>(bits[0]) << i;
-    hn::StoreMaskBits(d, hn::Gt(fragment, held), bits);
-    greater |= static_cast<unsigned>(bits[0]) << i;
   }
-  return ((less & passLess) | (equal & passEqual) | (greater & passGreater)) & rows.columns;
+  const unsigned greater = ~(less | equal);
+  return ((less & passing.less) | (equal & passing.equal) | (greater & passing.greater)) & rows.columns;
 }
 
 }  // namespace
@@ -112,6 +110,7 @@ unsigned rowDepthPasses(const BlockRows& rows, int j, const uint32_t z[kSize]) {
 bool CoverBlockRows(const BlockRows& rows, CoveredBlock& block) {
   std::memset(block.rowMask, 0, sizeof block.rowMask);
   int64_t rowStart[3] = {rows.rowStart[0], rows.rowStart[1], rows.rowStart[2]};
+  const PassingOrders passing(rows.compare);
   bool any = false;
   for (int j = rows.firstRow; j < rows.endRow; ++j) {
     unsigned mask = rows.columns;
@@ -121,7 +120,7 @@ bool CoverBlockRows(const BlockRows& rows, CoveredBlock& block) {
     }
     if (mask == 0) continue;
     rowDepths(rows, j, block.depth[j]);
-    if (rows.stored != nullptr) mask &= rowDepthPasses(rows, j, block.depth[j]);
+    if (rows.stored != nullptr) mask &= rowDepthPasses(rows, passing, j, block.depth[j]);
     block.rowMask[j] = static_cast<uint8_t>(mask);
     any |= mask != 0;
   }

@@ -52,7 +52,6 @@
 // passed the early test, and their depths. The sink decides what happens next; by default it is
 // the reference path below (emitBlockFragments), which interpolates every varying.
 #include <algorithm>
-#include <cstring>
 
 #include "block_rows.h"
 #include "glass/raster/depth_value.h"
@@ -151,10 +150,16 @@ void walkTriangle(const TriangleSetup& setup, FragmentSink& sink) {
   const Framebuffer* earlyDepth = setup.earlyDepth.buffer;
   const bool largeTriangle = box.x1 - box.x0 >= 4 * kBlockSize && box.y1 - box.y0 >= 4 * kBlockSize;
 
-  // Edge k's step from column 0 of a block to column i, for the block rows (block_rows.h).
+  // What the block rows (block_rows.h) take from the triangle, the same for every block; each
+  // block sets the rest. Edge k's step from column 0 of a block to column i is i * stepX[k].
   alignas(64) int64_t columnSteps[3][kBlockSize];
   for (int k = 0; k < 3; ++k)
     for (int i = 0; i < kBlockSize; ++i) columnSteps[k][i] = edges.stepX[k] * i;
+  BlockRows rows;
+  for (int k = 0; k < 3; ++k) rows.stepY[k] = edges.stepY[k];
+  rows.columnStep = columnSteps;
+  rows.storedStride = earlyDepth != nullptr ? earlyDepth->width() : 0;
+  rows.compare = kCompare;
 
   CoveredBlock block;
   const int firstBlockX = box.x0 & ~1, firstBlockY = box.y0;
@@ -184,12 +189,7 @@ void walkTriangle(const TriangleSetup& setup, FragmentSink& sink) {
 
       // Coverage and depth, row by row; a fragment that fails the early depth test goes no
       // further.
-      BlockRows rows;
-      for (int k = 0; k < 3; ++k) {
-        rows.rowStart[k] = edges.at(k, bx, y0);
-        rows.stepY[k] = edges.stepY[k];
-      }
-      rows.columnStep = columnSteps;
+      for (int k = 0; k < 3; ++k) rows.rowStart[k] = edges.at(k, bx, y0);
       rows.accepted = accepted;
       rows.columns = columnMask(i0, i1);
       rows.firstRow = y0 - by;
@@ -197,9 +197,7 @@ void walkTriangle(const TriangleSetup& setup, FragmentSink& sink) {
       rows.depthColumn = depth.column;
       rows.depthRow = depth.row;
       rows.stored = test ? earlyDepth->depthAt(bx, by) : nullptr;
-      rows.storedStride = earlyDepth != nullptr ? earlyDepth->width() : 0;
       rows.storedWhole = bx >= setup.privateRect.x0 && bx + kBlockSize <= setup.privateRect.x1;
-      rows.compare = kCompare;
       block.bx = bx;
       block.by = by;
       const bool any = coverBlockRows(rows, block);
