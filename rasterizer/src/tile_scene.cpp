@@ -48,7 +48,6 @@ void TileScene::Bin::reset() {
   lines.reset();
   points.reset();
   clears.reset();
-  planes.reset();
   varyings.reset();
 }
 
@@ -83,52 +82,43 @@ void TileScene::forTilesIn(int64_t x0, int64_t y0, int64_t x1, int64_t y1, AddTo
       add(binOf(static_cast<int>(ty * tilesX_ + tx)));
 }
 
-void TileScene::addTriangle(const TriangleSetup& setup, FragmentSink& sink) {
-  const PixelRect& box = setup.box;
-  if (box.empty()) return;
+void TileScene::addTriangle(const WindowVertex& a, const WindowVertex& b, const WindowVertex& c,
+                            const TriangleSettings& settings, FragmentSink& sink) {
+  TriangleSetup edges;  // the edge functions and the box alone
+  if (!setupTriangleEdges(a, b, c, settings.bounds, edges)) return;
   hasPrimitives_ = true;
 
   TriangleRecord r;
   r.sink = &sink;
+  const WindowVertex* const vertices[3] = {&a, &b, &c};
   for (int i = 0; i < 3; ++i) {
-    r.edgeA[i] = setup.edgeA[i];
-    r.edgeB[i] = setup.edgeB[i];
-    r.edgeC[i] = setup.edgeC[i];
+    const WindowVertex& v = *vertices[i];
+    const float position[4] = {v.x, v.y, v.z, v.invW};
+    std::copy(position, position + 4, r.position[i]);
   }
-  r.box = box;
-  r.z0 = setup.z0;
-  r.zdx = setup.zdx;
-  r.zdy = setup.zdy;
-  r.invW0 = setup.planes.invW0;
-  r.invWdx = setup.planes.invWdx;
-  r.invWdy = setup.planes.invWdy;
-  r.signedArea = setup.signedArea;
-  r.varyingCount = std::clamp(setup.varyingCount, 0, kMaxVaryings);
-  r.perspectiveCorrect = setup.perspectiveCorrect;
-  r.frontFacing = setup.frontFacing;
-  r.earlyDepth = setup.earlyDepth;
-  // Each varying's plane as a0, dx, dy, in the order runTile reads them back.
-  const AttributePlanes& planes = setup.planes;
-  double planeValues[3 * kMaxVaryings];
-  for (int k = 0; k < r.varyingCount; ++k) {
-    planeValues[3 * k] = planes.a0[k];
-    planeValues[3 * k + 1] = planes.dx[k];
-    planeValues[3 * k + 2] = planes.dy[k];
-  }
+  r.bounds = settings.bounds;
+  r.depthBias = settings.depthBias;
+  r.varyingCount = std::clamp(settings.varyingCount, 0, kMaxVaryings);
+  r.perspectiveCorrect = settings.perspectiveCorrect;
+  r.frontFacing = settings.frontFacing;
+  r.earlyDepth = settings.earlyDepth;
+  const size_t n = static_cast<size_t>(r.varyingCount);
 
   const auto addToBin = [&](int tile) {
     Bin& bin = binOf(tile);
-    const size_t planeCount = 3 * static_cast<size_t>(r.varyingCount);
     bin.order.push(*arena_, Kind::Triangle);
     bin.triangles.push(*arena_, r);
-    bin.planes.append(*arena_, planeValues, planeCount);
+    // The three vertices' varyings in one run, as runTile takes them.
+    float* varyings = bin.varyings.extend(*arena_, 3 * n);
+    for (int i = 0; i < 3; ++i) std::copy(vertices[i]->varyings, vertices[i]->varyings + n, varyings + i * n);
     // A new record lands on cache lines nobody has touched yet, and with hundreds of bins filled
     // in turn each write would otherwise wait for its line; by the time the bin's next
     // primitive arrives, the lines are there.
     bin.triangles.prefetchNext(1);
-    bin.planes.prefetchNext(planeCount);
-    bytes_ += 1 + sizeof(TriangleRecord) + 3 * sizeof(double) * static_cast<size_t>(r.varyingCount);
+    bin.varyings.prefetchNext(3 * n);
+    bytes_ += 1 + sizeof(TriangleRecord) + 3 * sizeof(float) * n;
   };
+  const PixelRect& box = edges.box;
   const int firstTileX = box.x0 / kTileSize, lastTileX = (box.x1 - 1) / kTileSize;
   const int firstTileY = box.y0 / kTileSize, lastTileY = (box.y1 - 1) / kTileSize;
   // A box within one tile goes to that tile's bin as it is (most small triangles).
@@ -136,10 +126,10 @@ void TileScene::addTriangle(const TriangleSetup& setup, FragmentSink& sink) {
   // Otherwise to the tiles its box overlaps, except those no pixel centre of which is inside:
   // the coverage walk would reject every block of such a tile anyway. This matters for large
   // triangles, whose box holds many tiles the triangle misses.
-  const PixelEdgeFunctions edges(setup);
+  const PixelEdgeFunctions edgeFunctions(edges);
   for (int ty = firstTileY; ty <= lastTileY; ++ty)
     for (int tx = firstTileX; tx <= lastTileX; ++tx)
-      if (!edges.rejects(tx * kTileSize, ty * kTileSize, kTileSize, kTileSize)) addToBin(ty * tilesX_ + tx);
+      if (!edgeFunctions.rejects(tx * kTileSize, ty * kTileSize, kTileSize, kTileSize)) addToBin(ty * tilesX_ + tx);
 }
 
 void TileScene::addLine(const WindowVertex& a, const WindowVertex& b, const LineSettings& settings,
@@ -231,37 +221,28 @@ void TileScene::runTile(int activeIndex) const {
   BinList<LineRecord>::Reader lines(bin.lines);
   BinList<PointRecord>::Reader points(bin.points);
   BinList<ClearRequest>::Reader clears(bin.clears);
-  BinList<double>::Reader planes(bin.planes);
   BinList<float>::Reader varyingRuns(bin.varyings);
   for (size_t k = 0; k < bin.order.size(); ++k) {
     switch (*order.take(1)) {
       case Kind::Triangle: {
         const TriangleRecord& r = *triangles.take(1);
+        const int n = r.varyingCount;
+        const float* varyings = varyingRuns.take(3 * static_cast<size_t>(n));
+        const WindowVertex a = rebuildVertex(r.position[0], varyings, n);
+        const WindowVertex b = rebuildVertex(r.position[1], varyings + n, n);
+        const WindowVertex c = rebuildVertex(r.position[2], varyings + 2 * n, n);
+        TriangleSettings settings;
+        settings.bounds = intersect(r.bounds, rect);
+        settings.varyingCount = n;
+        settings.perspectiveCorrect = r.perspectiveCorrect;
+        settings.depthBias = r.depthBias;
+        settings.frontFacing = r.frontFacing;
+        settings.earlyDepth = r.earlyDepth;
+        // The same setup as the whole triangle's, its box cut to the tile (the edges and planes
+        // depend on the vertices alone).
         TriangleSetup setup;
-        for (int i = 0; i < 3; ++i) {
-          setup.edgeA[i] = r.edgeA[i];
-          setup.edgeB[i] = r.edgeB[i];
-          setup.edgeC[i] = r.edgeC[i];
-        }
-        setup.box = intersect(r.box, rect);
-        setup.z0 = r.z0;
-        setup.zdx = r.zdx;
-        setup.zdy = r.zdy;
-        setup.planes.invW0 = r.invW0;
-        setup.planes.invWdx = r.invWdx;
-        setup.planes.invWdy = r.invWdy;
-        const double* plane = planes.take(3 * static_cast<size_t>(r.varyingCount));
-        for (int v = 0; v < r.varyingCount; ++v, plane += 3) {
-          setup.planes.a0[v] = plane[0];
-          setup.planes.dx[v] = plane[1];
-          setup.planes.dy[v] = plane[2];
-        }
-        setup.varyingCount = r.varyingCount;
-        setup.perspectiveCorrect = r.perspectiveCorrect;
-        setup.frontFacing = r.frontFacing;
-        setup.earlyDepth = r.earlyDepth;
+        if (!setupTriangle(a, b, c, settings, setup)) break;
         setup.privateRect = rect;  // this thread owns the tile
-        setup.signedArea = r.signedArea;
         rasterizeTriangle(setup, *r.sink);
         break;
       }

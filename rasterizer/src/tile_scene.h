@@ -5,9 +5,8 @@
 // A bin holds its own copy of each of its primitives, so that rasterizing a tile reads one bin
 // front to back instead of gathering records from all over the scene: a small triangle touches
 // one or two tiles, and reading its record from a cold, scattered place cost about as much as
-// rasterizing it. Copies are compact: a triangle keeps its setup with the attribute planes of
-// only as many varyings as it has, a line or point its vertices' varyings likewise, and runTile
-// rebuilds the full setup or vertex on its stack. The lists' memory comes from the scene's arena
+// rasterizing it. Copies are compact: a primitive keeps its vertices with only as many varyings
+// as it has, and runTile rebuilds the full vertices (and a triangle's setup) on its stack. The lists' memory comes from the scene's arena
 // (bin_arena.h), which clear() takes back whole and keeps, so once the first frames have grown it,
 // drawing allocates no memory.
 #pragma once
@@ -30,7 +29,11 @@ class TileScene {
  public:
   TileScene(int width, int height);
 
-  void addTriangle(const TriangleSetup& setup, FragmentSink& sink);
+  // The triangle is set up here only as far as binning needs (its edges and box); each tile it
+  // touches sets it up in full when it runs (setupTriangle), so that the planes' divisions are
+  // shared by the threads instead of all falling to the submitting one.
+  void addTriangle(const WindowVertex& a, const WindowVertex& b, const WindowVertex& c,
+                   const TriangleSettings& settings, FragmentSink& sink);
   // stippleStart: the line stipple counter at the line's first fragment.
   void addLine(const WindowVertex& a, const WindowVertex& b, const LineSettings& settings,
                int stippleStart, FragmentSink& sink);
@@ -62,14 +65,13 @@ class TileScene {
   void clear();
 
  private:
-  // A triangle setup without its attribute planes, which follow in the bin's planes.
+  // A triangle as it was given, for setupTriangle: its vertices without their varyings, which
+  // follow in the bin's varyings (a's, b's, c's), and its settings.
   struct TriangleRecord {
     FragmentSink* sink;
-    int64_t edgeA[3], edgeB[3], edgeC[3];
-    PixelRect box;
-    double z0, zdx, zdy;
-    double invW0, invWdx, invWdy;
-    double signedArea;
+    float position[3][4];  // x, y, z, invW of a, b and c
+    PixelRect bounds;
+    double depthBias;
     int varyingCount;
     bool perspectiveCorrect, frontFacing;
     EarlyDepthTest earlyDepth;
@@ -94,8 +96,7 @@ class TileScene {
     BinList<LineRecord> lines;
     BinList<PointRecord> points;
     BinList<ClearRequest> clears;
-    BinList<double> planes;   // a0, dx, dy of each varying of each triangle, in order
-    BinList<float> varyings;  // the varyings of each line's and point's vertices, in order
+    BinList<float> varyings;  // the varyings of each primitive's vertices, in order
     bool empty() const { return order.empty(); }
     void reset();
   };

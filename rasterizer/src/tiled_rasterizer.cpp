@@ -216,8 +216,9 @@ TiledRasterizer::~TiledRasterizer() = default;
 
 int TiledRasterizer::threadCount() const { return impl_->threadCount; }
 
-void TiledRasterizer::triangle(const TriangleSetup& setup, FragmentSink& sink) {
-  impl_->filling().addTriangle(setup, sink);
+void TiledRasterizer::triangle(const WindowVertex& a, const WindowVertex& b, const WindowVertex& c,
+                               const TriangleSettings& settings, FragmentSink& sink) {
+  impl_->filling().addTriangle(a, b, c, settings, sink);
   impl_->afterSubmit();
 }
 

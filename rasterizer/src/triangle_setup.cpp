@@ -40,41 +40,51 @@ Plane fitPlane(const double x[3], const double y[3], double v0, double v1, doubl
   return p;
 }
 
-}  // namespace
 
-double windowSignedArea(const WindowVertex& a, const WindowVertex& b, const WindowVertex& c) {
-  return (static_cast<double>(b.x) - a.x) * (static_cast<double>(c.y) - a.y) -
-         (static_cast<double>(c.x) - a.x) * (static_cast<double>(b.y) - a.y);
+// A triangle's vertices snapped to the subpixel grid and put in counter-clockwise order: what
+// both steps of setup start from.
+struct SnappedTriangle {
+  int64_t X[3], Y[3];
+  const WindowVertex* v[3];  // the vertices in that order
+  bool reversed;             // given clockwise
+};
+
+// False for a position that cannot be rasterized or a triangle of no area.
+bool snapTriangle(const WindowVertex& a, const WindowVertex& b, const WindowVertex& c, SnappedTriangle& t) {
+  t.v[0] = &a;
+  t.v[1] = &b;
+  t.v[2] = &c;
+  for (const WindowVertex* p : t.v)
+    if (!isRasterizableCoordinate(p->x) || !isRasterizableCoordinate(p->y)) return false;
+  for (int i = 0; i < 3; ++i) {
+    t.X[i] = snapToSubpixel(t.v[i]->x);
+    t.Y[i] = snapToSubpixel(t.v[i]->y);
+  }
+  const int64_t area = (t.X[1] - t.X[0]) * (t.Y[2] - t.Y[0]) - (t.X[2] - t.X[0]) * (t.Y[1] - t.Y[0]);
+  if (area == 0) return false;
+  t.reversed = area < 0;
+  if (t.reversed) {  // clockwise: walk it the other way round
+    std::swap(t.X[1], t.X[2]);
+    std::swap(t.Y[1], t.Y[2]);
+    std::swap(t.v[1], t.v[2]);
+  }
+  return true;
 }
 
-bool setupTriangle(const WindowVertex& a, const WindowVertex& b, const WindowVertex& c,
-                   const TriangleSettings& settings, TriangleSetup& setup) {
-  const WindowVertex* v[3] = {&a, &b, &c};
-  for (const WindowVertex* p : v)
-    if (!isRasterizableCoordinate(p->x) || !isRasterizableCoordinate(p->y)) return false;
-
-  int64_t X[3], Y[3];
-  for (int i = 0; i < 3; ++i) {
-    X[i] = snapToSubpixel(v[i]->x);
-    Y[i] = snapToSubpixel(v[i]->y);
-  }
-  const int64_t area = (X[1] - X[0]) * (Y[2] - Y[0]) - (X[2] - X[0]) * (Y[1] - Y[0]);
-  if (area == 0) return false;
-  if (area < 0) {  // clockwise: walk it the other way round
-    std::swap(X[1], X[2]);
-    std::swap(Y[1], Y[2]);
-    std::swap(v[1], v[2]);
-  }
-
+// The box, clipped to the bounds, and the edge functions: integer arithmetic only. False when
+// the box is empty.
+bool setEdges(const SnappedTriangle& t, const PixelRect& bounds, TriangleSetup& setup) {
+  const int64_t* X = t.X;
+  const int64_t* Y = t.Y;
   // Pixels whose centre 256 i + 128 lies within [min X, max X] (and the same in y); arithmetic
   // shifts are floor divisions, also for negative coordinates.
   const int64_t minX = std::min({X[0], X[1], X[2]}), maxX = std::max({X[0], X[1], X[2]});
   const int64_t minY = std::min({Y[0], Y[1], Y[2]}), maxY = std::max({Y[0], Y[1], Y[2]});
   PixelRect box;
-  box.x0 = std::max<int64_t>(settings.bounds.x0, (minX - kSubpixelHalf + kSubpixelOne - 1) >> kSubpixelBits);
-  box.y0 = std::max<int64_t>(settings.bounds.y0, (minY - kSubpixelHalf + kSubpixelOne - 1) >> kSubpixelBits);
-  box.x1 = std::min<int64_t>(settings.bounds.x1, ((maxX - kSubpixelHalf) >> kSubpixelBits) + 1);
-  box.y1 = std::min<int64_t>(settings.bounds.y1, ((maxY - kSubpixelHalf) >> kSubpixelBits) + 1);
+  box.x0 = std::max<int64_t>(bounds.x0, (minX - kSubpixelHalf + kSubpixelOne - 1) >> kSubpixelBits);
+  box.y0 = std::max<int64_t>(bounds.y0, (minY - kSubpixelHalf + kSubpixelOne - 1) >> kSubpixelBits);
+  box.x1 = std::min<int64_t>(bounds.x1, ((maxX - kSubpixelHalf) >> kSubpixelBits) + 1);
+  box.y1 = std::min<int64_t>(bounds.y1, ((maxY - kSubpixelHalf) >> kSubpixelBits) + 1);
   if (box.empty()) return false;
   setup.box = box;
 
@@ -84,15 +94,21 @@ bool setupTriangle(const WindowVertex& a, const WindowVertex& b, const WindowVer
     setup.edgeB[i] = X[j] - X[i];
     setup.edgeC[i] = X[i] * Y[j] - Y[i] * X[j];
   }
+  return true;
+}
 
+// The depth and attribute planes (the divisions of setup), the signed area, and the settings the
+// rasterizer passes on.
+void setPlanes(const SnappedTriangle& t, const TriangleSettings& settings, TriangleSetup& setup) {
+  const WindowVertex* const* v = t.v;
   // Planes in pixel units, through the snapped positions (exact in double).
   double x[3], y[3];
   for (int i = 0; i < 3; ++i) {
-    x[i] = static_cast<double>(X[i]) / double(kSubpixelOne);
-    y[i] = static_cast<double>(Y[i]) / double(kSubpixelOne);
+    x[i] = static_cast<double>(t.X[i]) / double(kSubpixelOne);
+    y[i] = static_cast<double>(t.Y[i]) / double(kSubpixelOne);
   }
   const double planeArea = (x[1] - x[0]) * (y[2] - y[0]) - (x[2] - x[0]) * (y[1] - y[0]);
-  setup.signedArea = (area > 0) ? planeArea : -planeArea;
+  setup.signedArea = t.reversed ? -planeArea : planeArea;
 
   const Plane z = fitPlane(x, y, v[0]->z, v[1]->z, v[2]->z, planeArea);
   setup.z0 = z.v0 + settings.depthBias;
@@ -119,6 +135,26 @@ bool setupTriangle(const WindowVertex& a, const WindowVertex& b, const WindowVer
   setup.perspectiveCorrect = settings.perspectiveCorrect;
   setup.frontFacing = settings.frontFacing;
   setup.earlyDepth = settings.earlyDepth;
+}
+
+}  // namespace
+
+double windowSignedArea(const WindowVertex& a, const WindowVertex& b, const WindowVertex& c) {
+  return (static_cast<double>(b.x) - a.x) * (static_cast<double>(c.y) - a.y) -
+         (static_cast<double>(c.x) - a.x) * (static_cast<double>(b.y) - a.y);
+}
+
+bool setupTriangleEdges(const WindowVertex& a, const WindowVertex& b, const WindowVertex& c,
+                        const PixelRect& bounds, TriangleSetup& setup) {
+  SnappedTriangle t;
+  return snapTriangle(a, b, c, t) && setEdges(t, bounds, setup);
+}
+
+bool setupTriangle(const WindowVertex& a, const WindowVertex& b, const WindowVertex& c,
+                   const TriangleSettings& settings, TriangleSetup& setup) {
+  SnappedTriangle t;
+  if (!snapTriangle(a, b, c, t) || !setEdges(t, settings.bounds, setup)) return false;
+  setPlanes(t, settings, setup);
   return true;
 }
 

@@ -53,6 +53,7 @@ struct Step {
 WindowVertex coloured(float x, float y, std::mt19937& random) {
   std::uniform_real_distribution<float> unit(0.0f, 1.0f);
   WindowVertex v = windowVertex(x, y, unit(random));
+  v.invW = 0.25f + unit(random);  // perspective-correct varyings: each tile's setup must give the planes of the whole
   for (int c = 0; c < 4; ++c) v.varyings[c] = unit(random);
   return v;
 }
@@ -164,12 +165,7 @@ std::vector<uint8_t> drawnInTiles(const std::vector<Step>& steps, int threads) {
   TiledRasterizer tiles(fb, threads);
   for (Step s : steps) {
     switch (s.kind) {
-      case Step::Triangle: {
-        TriangleSetup setup;
-        if (setupTriangle(s.v[0], s.v[1], s.v[2], triangleSettings(), setup))
-          tiles.triangle(setup, sink);
-        break;
-      }
+      case Step::Triangle: tiles.triangle(s.v[0], s.v[1], s.v[2], triangleSettings(), sink); break;
       case Step::Line: tiles.line(s.v[0], s.v[1], lineSettings(), sink); break;
       case Step::Point: tiles.point(s.v[0], pointSettings(), sink); break;
       case Step::Clear:
@@ -208,10 +204,7 @@ TEST_CASE("a tiled rasterizer with only clears queued holds no primitive") {
   tiles.clear(clear);
   CHECK_FALSE(tiles.idle());
   CHECK_FALSE(tiles.primitivesQueued());
-  TriangleSetup setup;
-  REQUIRE(setupTriangle(windowVertex(10, 10), windowVertex(200, 20), windowVertex(50, 150),
-                        triangleSettings(), setup));
-  tiles.triangle(setup, sink);
+  tiles.triangle(windowVertex(10, 10), windowVertex(200, 20), windowVertex(50, 150), triangleSettings(), sink);
   CHECK(tiles.primitivesQueued());
   tiles.finish();
   CHECK(tiles.idle());

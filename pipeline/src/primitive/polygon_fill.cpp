@@ -1,5 +1,5 @@
 // GL_FILL polygons: clipping, perspective division and viewport, polygon offset, then the
-// rasterizer's triangle setup and coverage for each triangle of the clipped polygon's fan.
+// tiled rasterizer's triangle setup and coverage for each triangle of the clipped polygon's fan.
 #include "core/context.h"
 #include "primitive/draw_pipeline.h"
 #include "primitive/polygon_offset.h"
@@ -53,12 +53,9 @@ void DrawPipeline::fillTriangle(const ClipCorners& corners, bool frontFacing) {
           ? polygonOffset(r.polygonOffsetFactor, r.polygonOffsetUnits, window_, count)
           : 0.0;
 
-  raster::TriangleSetup setup;
   for (int i = 1; i + 1 < count; ++i) {
     if (teaching_) markTriangleEdges(*teaching_, window_[0], window_[i], window_[i + 1]);
-    if (raster::setupTriangle(window_[0], window_[i], window_[i + 1], triangleSettings_, setup)) {
-      tiles_.triangle(setup, *polygonSink_);
-    }
+    tiles_.triangle(window_[0], window_[i], window_[i + 1], triangleSettings_, *polygonSink_);
   }
 }
 

@@ -57,8 +57,11 @@ class TiledRasterizer {
 
   int threadCount() const;
 
-  // Queue a primitive (copied; the setup, vertices and settings may change after the call).
-  void triangle(const TriangleSetup& setup, FragmentSink& sink);
+  // Queue a primitive (copied; the vertices and settings may change after the call). A triangle
+  // is drawn as setupTriangle(a, b, c, settings) and rasterizeTriangle would draw it (nothing when
+  // setupTriangle refuses it); each tile it touches sets it up when it runs.
+  void triangle(const WindowVertex& a, const WindowVertex& b, const WindowVertex& c,
+                const TriangleSettings& settings, FragmentSink& sink);
   // settings.stippleCounter, when set, is advanced now, as rasterizeLine would advance it.
   void line(const WindowVertex& a, const WindowVertex& b, const LineSettings& settings,
             FragmentSink& sink);

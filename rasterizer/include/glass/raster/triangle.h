@@ -6,7 +6,7 @@
 // is stated for rows that run downwards, as in raster memory; in GL's bottom-up window coordinates
 // it means left and bottom edges own their centres, which is also what Mesa draws.
 // Setup (edge equations, bounding box, attribute planes) is separate from coverage, which walks
-// 8x8 blocks with trivial accept and reject; a later step can bin setups into tiles.
+// 8x8 blocks with trivial accept and reject.
 #pragma once
 
 #include <cstdint>
@@ -51,6 +51,11 @@ struct TriangleSetup {
 // Returns false (and draws nothing) for a degenerate triangle or one outside the bounds.
 bool setupTriangle(const WindowVertex& a, const WindowVertex& b, const WindowVertex& c,
                    const TriangleSettings& settings, TriangleSetup& setup);
+// The first, cheap step of setupTriangle alone: sets the edge functions and the box (clipped to
+// the bounds) exactly as it does, and returns what it returns, without the planes (the
+// divisions): what the tiled rasterizer needs to bin a triangle, whose planes its tiles compute.
+bool setupTriangleEdges(const WindowVertex& a, const WindowVertex& b, const WindowVertex& c,
+                        const PixelRect& bounds, TriangleSetup& setup);
 
 // Emits every covered pixel of the setup to the sink, one batch per 8x8 block.
 void rasterizeTriangle(const TriangleSetup& setup, FragmentSink& sink);
