@@ -96,13 +96,9 @@ void TileScene::addTriangle(const WindowVertex& a, const WindowVertex& b, const 
     const float position[4] = {v.x, v.y, v.z, v.invW};
     std::copy(position, position + 4, r.position[i]);
   }
-  r.bounds = settings.bounds;
-  r.depthBias = settings.depthBias;
-  r.varyingCount = std::clamp(settings.varyingCount, 0, kMaxVaryings);
-  r.perspectiveCorrect = settings.perspectiveCorrect;
-  r.frontFacing = settings.frontFacing;
-  r.earlyDepth = settings.earlyDepth;
-  const size_t n = static_cast<size_t>(r.varyingCount);
+  r.settings = settings;
+  r.settings.varyingCount = std::clamp(settings.varyingCount, 0, kMaxVaryings);
+  const size_t n = static_cast<size_t>(r.settings.varyingCount);
 
   const auto addToBin = [&](int tile) {
     Bin& bin = binOf(tile);
@@ -226,18 +222,13 @@ void TileScene::runTile(int activeIndex) const {
     switch (*order.take(1)) {
       case Kind::Triangle: {
         const TriangleRecord& r = *triangles.take(1);
-        const int n = r.varyingCount;
+        const int n = r.settings.varyingCount;
         const float* varyings = varyingRuns.take(3 * static_cast<size_t>(n));
         const WindowVertex a = rebuildVertex(r.position[0], varyings, n);
         const WindowVertex b = rebuildVertex(r.position[1], varyings + n, n);
         const WindowVertex c = rebuildVertex(r.position[2], varyings + 2 * n, n);
-        TriangleSettings settings;
-        settings.bounds = intersect(r.bounds, rect);
-        settings.varyingCount = n;
-        settings.perspectiveCorrect = r.perspectiveCorrect;
-        settings.depthBias = r.depthBias;
-        settings.frontFacing = r.frontFacing;
-        settings.earlyDepth = r.earlyDepth;
+        TriangleSettings settings = r.settings;
+        settings.bounds = intersect(settings.bounds, rect);
         // The same setup as the whole triangle's, its box cut to the tile (the edges and planes
         // depend on the vertices alone).
         TriangleSetup setup;

@@ -70,11 +70,7 @@ class TileScene {
   struct TriangleRecord {
     FragmentSink* sink;
     float position[3][4];  // x, y, z, invW of a, b and c
-    PixelRect bounds;
-    double depthBias;
-    int varyingCount;
-    bool perspectiveCorrect, frontFacing;
-    EarlyDepthTest earlyDepth;
+    TriangleSettings settings;
   };
   // A line's vertices without their varyings, which follow in the bin's varyings (a's, b's).
   struct LineRecord {

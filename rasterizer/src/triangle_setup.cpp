@@ -40,7 +40,6 @@ Plane fitPlane(const double x[3], const double y[3], double v0, double v1, doubl
   return p;
 }
 
-
 // A triangle's vertices snapped to the subpixel grid and put in counter-clockwise order: what
 // both steps of setup start from.
 struct SnappedTriangle {
