@@ -160,18 +160,6 @@ static int corner_rounded(int k, enum rim_level level)
  * top, for one layer), the rims' arcs running on beyond the walls by their length. */
 static float side_t(double y) { return (float)((y - block_min[1]) / texture_height); }
 
-/* The point of the rational patch net[v][u] (3 x 3 or 2 rows of 3, homogeneous) at (u, v). */
-static void patch_point(const float net[][3][4], int rows, double u, double v, double out[3])
-{
-  double h[4] = {0, 0, 0, 0};
-  const double bu[3] = {(1 - u) * (1 - u), 2 * u * (1 - u), u * u};
-  const double bv3[3] = {(1 - v) * (1 - v), 2 * v * (1 - v), v * v}, bv2[2] = {1 - v, v};
-  for (int j = 0; j < rows; ++j)
-    for (int i = 0; i < 3; ++i)
-      for (int k = 0; k < 4; ++k) h[k] += (rows == 3 ? bv3[j] : bv2[j]) * bu[i] * net[j][i][k];
-  for (int k = 0; k < 3; ++k) out[k] = h[k] / h[3];
-}
-
 /* Turns the order of `rows` rows of `row_size` bytes each round. */
 static void reverse_rows(void *data, int rows, size_t row_size)
 {
@@ -184,28 +172,33 @@ static void reverse_rows(void *data, int rows, size_t row_size)
     }
 }
 
-/* Draws the rim's patch net[v][u] (rows = 2 or 3 rows of 3 homogeneous points) with texture
- * coordinates tex[v][u] and its normals from the centres centre[v][u] (draw_rim_net), its rows
- * turned round when dP/du x dP/dv points into the solid at its middle (so every patch of the
- * top's rim faces up and out, of the bottom's down and out, for its winding). */
+/* Draws the rim's patch net[v][u] (rows = 2 or 3 rows of 3 homogeneous points) with its normals
+ * from the centres centre[v][u], and texture coordinates from the map tex[v][u] (draw_rim_net) or,
+ * when `texture` is not NULL, from that chart (draw_rim_net_charted); its rows turned round when
+ * dP/du x dP/dv points into the solid at its middle (so every patch of the top's rim faces up and
+ * out, of the bottom's down and out, for its winding). */
 static void draw_rim_patch(float net[][3][4], float tex[][3][2], const double centre[][3][3], int rows,
-                           enum rim_level level)
+                           enum rim_level level, point_texture texture, const void *chart)
 {
   double centres[3][3][3];
   memcpy(centres, centre, (size_t)rows * sizeof centres[0]);
   double a[3], b[3], c[3], d[3];
-  patch_point((const float (*)[3][4])net, rows, 0.4, 0.5, a);
-  patch_point((const float (*)[3][4])net, rows, 0.6, 0.5, b);
-  patch_point((const float (*)[3][4])net, rows, 0.5, 0.4, c);
-  patch_point((const float (*)[3][4])net, rows, 0.5, 0.6, d);
+  rational_patch_point((const float (*)[3][4])net, rows, 0.4, 0.5, a);
+  rational_patch_point((const float (*)[3][4])net, rows, 0.6, 0.5, b);
+  rational_patch_point((const float (*)[3][4])net, rows, 0.5, 0.4, c);
+  rational_patch_point((const float (*)[3][4])net, rows, 0.5, 0.6, d);
   const double du[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, dv[3] = {d[0] - c[0], d[1] - c[1], d[2] - c[2]};
   if ((du[2] * dv[0] - du[0] * dv[2]) * rim_outward(level) < 0) {
     reverse_rows(net, rows, sizeof net[0]);
-    reverse_rows(tex, rows, sizeof tex[0]);
+    if (!texture) reverse_rows(tex, rows, sizeof tex[0]);
     reverse_rows(centres, rows, sizeof centres[0]);
   }
-  draw_rim_net((const float (*)[3][4])net, (const float (*)[3][2])tex, (const double (*)[3][3])centres, rows,
-               rows == 3 ? ARC_STEPS : 4);
+  const int v_steps = rows == 3 ? ARC_STEPS : 4;
+  if (texture)
+    draw_rim_net_charted((const float (*)[3][4])net, texture, chart, (const double (*)[3][3])centres, rows, v_steps);
+  else
+    draw_rim_net((const float (*)[3][4])net, (const float (*)[3][2])tex, (const double (*)[3][3])centres, rows,
+                 v_steps);
 }
 
 /* A quarter cylinder of the current radius around the upright edge at corner k, from the point
@@ -313,18 +306,58 @@ static void rim_end_piece(const double e[2], const double c[2], enum rim_level l
   glEnd();
 }
 
+/* The top's (or the bottom's) texture run on over the half of a rim next to it, by the rim's arc
+ * length: a point R phi along the rim's quarter circle from the top's edge (phi, the angle from
+ * the top, measured about the circle's centre) takes the top's (x, z) R phi beyond the edge. Over
+ * a side's strip the edge is a line and "beyond" is `outward`, across the side; over a corner's
+ * piece it is the arc top_distance from the upright's axis (0 at a convex corner, where the
+ * piece is a sphere closing in the axis; 2 R above a fillet, the torus's inner rim) and
+ * "beyond" is away from the axis at a convex corner and towards it above a fillet. Computed per
+ * point drawn (draw_rim_net_charted), since the patches' parameters do not run with arc length. */
+struct rim_chart {
+  int corner;         /* a corner's piece (else a side's strip) */
+  double axis[2];     /* x, z: a point of the strip's axis, or the corner's upright axis */
+  double outward[2];  /* a strip's direction across its side, out of the solid */
+  double top_distance, away;
+  double below, out, r;  /* the rim circle's centre height, the rim's outward sign (up 1, down -1), R */
+};
+
+static void rim_top_texture(const double p[3], const void *data, float st[2])
+{
+  const struct rim_chart *chart = data;
+  const double from_axis[2] = {p[0] - chart->axis[0], p[2] - chart->axis[1]};
+  const double height = chart->out * (p[1] - chart->below);
+  if (!chart->corner) {
+    const double across = from_axis[0] * chart->outward[0] + from_axis[1] * chart->outward[1];
+    const double beyond = chart->r * atan2(across, height) - across;
+    st[0] = (float)(p[0] + beyond * chart->outward[0]);
+    st[1] = (float)(p[2] + beyond * chart->outward[1]);
+    return;
+  }
+  const double distance = hypot(from_axis[0], from_axis[1]);
+  const double reach = chart->top_distance + chart->away * chart->r *
+                                                 atan2(chart->away * (distance - chart->top_distance), height);
+  const double scale = distance > 0 ? reach / distance : 0.0;
+  st[0] = (float)(chart->axis[0] + scale * from_axis[0]);
+  st[1] = (float)(chart->axis[1] + scale * from_axis[1]);
+}
+
 /* The rounded rim along side i: the rim's quarter circle (from the side at R below the top, over
  * the top edge weighted sqrt(2)/2, to the top R in from the side) swept from the side's start to
  * its end. Above a rounded upright it ends where the upright's strip does, R along the side from
  * the corner; above a sharp one it ends in the corner's bisecting plane (the mitre the
- * neighbouring side's strip ends in too), its top point moved along the side by R. The texture's
- * s runs along the side as the wall's does; t on up from the wall's top by the arc's length. */
+ * neighbouring side's strip ends in too), its top point moved along the side by R. It is drawn
+ * in its two halves (halve_rim_arc), each with the texture of the face it touches: the half next
+ * to the wall with the wall's (s along the side, t on up from the wall's top by the arc's
+ * length), the half next to the top with the top's (x, z) run on beyond the top's edge; the
+ * checkerboard changes from one to the other along the arc's middle, as the scene language's
+ * rounding does (glass/geometry/edge_rounding.h). */
 static void rim_strip(int i, enum rim_level level, float s0, float s1)
 {
   const int n = plan.corners;
   const double r = side_radius(i, level), w = sqrt(2.0) / 2.0;
   const double top = rim_height(level), out = rim_outward(level), height = texture_height;
-  float net[2][3][4], tex[2][3][2];
+  float net[2][3][4];
   double centre[2][3][3];
   /* The strip's axis: R in from side i and R below the top. */
   double in_i[2], along[2];
@@ -336,13 +369,12 @@ static void rim_strip(int i, enum rim_level level, float s0, float s1)
     const int k = (i + end) % n;
     float from[2], to[2];
     corner_ends(k, from, to);
-    double edge[2], on_top[2], in[2];
-    inward(i, in);
+    double edge[2], on_top[2];
     if (plan.rounded[k] && radius > 0) {
       const float *at = end ? from : to;
       for (int c = 0; c < 2; ++c) {
         edge[c] = at[c];
-        on_top[c] = at[c] + r * in[c];
+        on_top[c] = at[c] + r * in_i[c];
       }
     } else {
       for (int c = 0; c < 2; ++c) edge[c] = plan.xz[k][c];
@@ -351,9 +383,6 @@ static void rim_strip(int i, enum rim_level level, float s0, float s1)
     control_point(net[end][0], edge[0], top - out * r, edge[1], 1.0);
     control_point(net[end][1], edge[0], top, edge[1], w);
     control_point(net[end][2], on_top[0], top, on_top[1], 1.0);
-    const float s = end ? s1 : s0;
-    const float t0 = side_t(top - out * r), t2 = (float)(t0 + out * PI / 2 * r / height);
-    strip_column_texture(tex[end], s, t0, t2);
     for (int u = 0; u < 3; ++u) {
       const double x = net[end][u][0] / net[end][u][3], z = net[end][u][2] / net[end][u][3];
       const double on_axis = (x - axis[0]) * along[0] + (z - axis[1]) * along[1];
@@ -362,12 +391,29 @@ static void rim_strip(int i, enum rim_level level, float s0, float s1)
       centre[end][u][2] = axis[1] + on_axis * along[1];
     }
   }
-  draw_rim_patch(net, tex, (const double (*)[3][3])centre, 2, level);
+  const float t0 = side_t(top - out * r), t_middle = (float)(t0 + out * PI / 4 * r / height);
+  const struct rim_chart chart = {0, {axis[0], axis[1]}, {-in_i[0], -in_i[1]}, 0.0, 1.0, top - out * r, out, r};
+  for (int half = 0; half < 2; ++half) {
+    float half_net[2][3][4], tex[2][3][2];
+    double half_centre[2][3][3];
+    for (int end = 0; end < 2; ++end) {
+      halve_rim_arc((const float (*)[4])net[end], (const double (*)[3])centre[end], half, half_net[end],
+                    half_centre[end]);
+      strip_column_texture(tex[end], end ? s1 : s0, t0, t_middle);
+    }
+    draw_rim_patch(half_net, tex, (const double (*)[3][3])half_centre, 2, level, half ? rim_top_texture : NULL,
+                   &chart);
+  }
 }
 
 /* Above the rounded upright at corner i, where the rim's strips of its two sides end: the rim's
  * quarter circle turned around the upright's axis by the upright's quarter circle, an eighth of a
- * sphere at a convex corner and a quarter of a torus above a fillet (rim_corner_net). */
+ * sphere at a convex corner and a quarter of a torus above a fillet (rim_corner_net). Like the
+ * strips, it is drawn in the two halves of the rim's quarter circle: the half next to the walls
+ * with their texture (s on round the upright's arc, t on up), the half next to the top with the
+ * top's (x, z) run on beyond the top's edge by the rim's arc length, away from the axis at a convex
+ * corner (where the top's edge is the sphere's pole, the axis) and towards it above a fillet
+ * (where the top's edge is the torus's inner rim, 2 R from the axis). */
 static void rim_corner(int i, enum rim_level level, float s0)
 {
   const double r = radius;
@@ -380,9 +426,30 @@ static void rim_corner(int i, enum rim_level level, float s0)
   float net[3][3][4], tex[3][3][2];
   double centre[3][3][3];
   const float length = (float)(PI / 2) * radius;
-  const float t0 = side_t(top - out * r), t2 = (float)(t0 + out * PI / 2 * r / height);
-  rim_corner_net(arc, axis, plan.convex[i], top - out * r, top, s0, length, t0, t2, net, tex, centre);
-  draw_rim_patch(net, tex, (const double (*)[3][3])centre, 3, level);
+  const float t0 = side_t(top - out * r), t_middle = (float)(t0 + out * PI / 4 * r / height);
+  rim_corner_net(arc, axis, plan.convex[i], top - out * r, top, s0, length, t0, t_middle, net, tex, centre);
+  const struct rim_chart chart = {1, {axis[0], axis[1]}, {0.0, 0.0}, plan.convex[i] ? 0.0 : 2 * r,
+                                   plan.convex[i] ? 1.0 : -1.0, top - out * r, out, r};
+  for (int half = 0; half < 2; ++half) {
+    float half_net[3][3][4];
+    double half_centre[3][3][3];
+    for (int u = 0; u < 3; ++u) {
+      float column[3][4], half_column[3][4];
+      double column_centre[3][3], half_column_centre[3][3];
+      for (int v = 0; v < 3; ++v) {
+        memcpy(column[v], net[v][u], sizeof column[v]);
+        memcpy(column_centre[v], centre[v][u], sizeof column_centre[v]);
+      }
+      halve_rim_arc((const float (*)[4])column, (const double (*)[3])column_centre, half, half_column,
+                    half_column_centre);
+      for (int v = 0; v < 3; ++v) {
+        memcpy(half_net[v][u], half_column[v], sizeof half_column[v]);
+        memcpy(half_centre[v][u], half_column_centre[v], sizeof half_column_centre[v]);
+      }
+    }
+    draw_rim_patch(half_net, tex, (const double (*)[3][3])half_centre, 3, level, half ? rim_top_texture : NULL,
+                   &chart);
+  }
 }
 
 static void GLAPIENTRY top_vertex(void *data)

@@ -14,34 +14,88 @@ void control_point(float out[4], double x, double y, double z, double w)
   out[3] = (float)w;
 }
 
-void draw_rational_patch(const float net[][3][4], const float tex[][3][2], const float normals[][3][3], int rows,
-                         int v_steps)
+/* Sets the maps of a patch's points and normals and the grid of its mesh, ARC_STEPS steps along u
+ * and v_steps along v; end_patch_maps undoes it. */
+static void begin_patch_maps(const float net[][3][4], const float normals[][3][3], int rows, int v_steps)
 {
   glMap2f(GL_MAP2_VERTEX_4, 0, 1, 4, 3, 0, 1, 12, rows, &net[0][0][0]);
-  glMap2f(GL_MAP2_TEXTURE_COORD_2, 0, 1, 2, 3, 0, 1, 6, rows, &tex[0][0][0]);
   glMap2f(GL_MAP2_NORMAL, 0, 1, 3, 3, 0, 1, 9, rows, &normals[0][0][0]);
   glEnable(GL_MAP2_VERTEX_4);
-  glEnable(GL_MAP2_TEXTURE_COORD_2);
   glEnable(GL_MAP2_NORMAL);
   glDisable(GL_AUTO_NORMAL);
   glMapGrid2f(ARC_STEPS, 0, 1, v_steps, 0, 1);
-  glEvalMesh2(GL_FILL, 0, ARC_STEPS, 0, v_steps);
+}
+
+static void end_patch_maps(void)
+{
   glEnable(GL_AUTO_NORMAL);
   glDisable(GL_MAP2_NORMAL);
   glDisable(GL_MAP2_VERTEX_4);
-  glDisable(GL_MAP2_TEXTURE_COORD_2);
 }
 
-/* Draws a patch whose normals, times w, are `side` (1 or -1) times w (P - centre), a
- * polynomial net: side 1 for a rim (the solid inside its tube), -1 for a fillet (outside). */
+void draw_rational_patch(const float net[][3][4], const float tex[][3][2], const float normals[][3][3], int rows,
+                         int v_steps)
+{
+  begin_patch_maps(net, normals, rows, v_steps);
+  glMap2f(GL_MAP2_TEXTURE_COORD_2, 0, 1, 2, 3, 0, 1, 6, rows, &tex[0][0][0]);
+  glEnable(GL_MAP2_TEXTURE_COORD_2);
+  glEvalMesh2(GL_FILL, 0, ARC_STEPS, 0, v_steps);
+  glDisable(GL_MAP2_TEXTURE_COORD_2);
+  end_patch_maps();
+}
+
+/* The net of a patch's normals about its centres, times w: side * w (P - centre), side 1 for a
+ * rim (the solid inside its tube), -1 for a fillet (outside). */
+static void normals_about_centres(const float net[][3][4], const double centre[][3][3], float side, int rows,
+                                  float normals[3][3][3])
+{
+  for (int v = 0; v < rows; ++v)
+    for (int u = 0; u < 3; ++u)
+      for (int k = 0; k < 3; ++k) normals[v][u][k] = side * (net[v][u][k] - net[v][u][3] * (float)centre[v][u][k]);
+}
+
+/* Draws a patch whose normals, times w, are `side` (1 or -1) times w (P - centre). */
 static void draw_net_about_centres(const float net[][3][4], const float tex[][3][2], const double centre[][3][3],
                                    float side, int rows, int v_steps)
 {
   float normals[3][3][3];
-  for (int v = 0; v < rows; ++v)
-    for (int u = 0; u < 3; ++u)
-      for (int k = 0; k < 3; ++k) normals[v][u][k] = side * (net[v][u][k] - net[v][u][3] * (float)centre[v][u][k]);
+  normals_about_centres(net, centre, side, rows, normals);
   draw_rational_patch(net, tex, (const float (*)[3][3])normals, rows, v_steps);
+}
+
+void rational_patch_point(const float net[][3][4], int rows, double u, double v, double out[3])
+{
+  double h[4] = {0, 0, 0, 0};
+  const double bu[3] = {(1 - u) * (1 - u), 2 * u * (1 - u), u * u};
+  const double bv3[3] = {(1 - v) * (1 - v), 2 * v * (1 - v), v * v}, bv2[2] = {1 - v, v};
+  for (int j = 0; j < rows; ++j)
+    for (int i = 0; i < 3; ++i)
+      for (int k = 0; k < 4; ++k) h[k] += (rows == 3 ? bv3[j] : bv2[j]) * bu[i] * net[j][i][k];
+  for (int k = 0; k < 3; ++k) out[k] = h[k] / h[3];
+}
+
+void draw_rim_net_charted(const float net[][3][4], point_texture texture, const void *chart,
+                          const double centre[][3][3], int rows, int v_steps)
+{
+  float normals[3][3][3];
+  normals_about_centres(net, centre, 1.0f, rows, normals);
+  begin_patch_maps(net, (const float (*)[3][3])normals, rows, v_steps);
+  /* glEvalMesh2's rows, as the triangle strips it draws them in, each vertex with its chart's
+   * texture coordinates (the texture's map is off, so glEvalPoint2 takes the current ones). */
+  for (int j = 0; j < v_steps; ++j) {
+    glBegin(GL_TRIANGLE_STRIP);
+    for (int i = 0; i <= ARC_STEPS; ++i)
+      for (int k = 0; k < 2; ++k) {
+        double point[3];
+        float st[2];
+        rational_patch_point(net, rows, (double)i / ARC_STEPS, (double)(j + k) / v_steps, point);
+        texture(point, chart, st);
+        glTexCoord2fv(st);
+        glEvalPoint2(i, j + k);
+      }
+    glEnd();
+  }
+  end_patch_maps();
 }
 
 void draw_rim_net(const float net[][3][4], const float tex[][3][2], const double centre[][3][3], int rows,
@@ -54,6 +108,36 @@ void draw_fillet_net(const float net[][3][4], const float tex[][3][2], const dou
                      int v_steps)
 {
   draw_net_about_centres(net, tex, centre, -1.0f, rows, v_steps);
+}
+
+void halve_rim_arc(const float p[3][4], const double centre[3][3], int half, float out[3][4],
+                   double out_centre[3][3])
+{
+  /* Homogeneous points (x w, y w, z w, w) and centres weighted alike (c w, w). */
+  double point[3][4], weighted_centre[3][4];
+  for (int i = 0; i < 3; ++i)
+    for (int k = 0; k < 4; ++k) {
+      point[i][k] = p[i][k];
+      weighted_centre[i][k] = k < 3 ? centre[i][k] * p[i][3] : p[i][3];
+    }
+  /* The middle point, then the half's three: its end, the midpoint of its side of the net, the middle. */
+  const int end = half ? 2 : 0;
+  double half_point[3][4], half_centre[3][4];
+  for (int k = 0; k < 4; ++k) {
+    const double (*net[2])[4] = {point, weighted_centre};
+    double (*halves[2])[4] = {half_point, half_centre};
+    for (int n = 0; n < 2; ++n) {
+      const double middle = (net[n][0][k] + 2 * net[n][1][k] + net[n][2][k]) / 4;
+      const double side = (net[n][end][k] + net[n][1][k]) / 2;
+      halves[n][half ? 2 : 0][k] = net[n][end][k];
+      halves[n][1][k] = side;
+      halves[n][half ? 0 : 2][k] = middle;
+    }
+  }
+  for (int i = 0; i < 3; ++i) {
+    for (int k = 0; k < 4; ++k) out[i][k] = (float)half_point[i][k];
+    for (int k = 0; k < 3; ++k) out_centre[i][k] = half_centre[i][k] / half_centre[i][3];
+  }
 }
 
 /* The point (x, y, z) of `frame` (NULL: the object's own axes) into out. */

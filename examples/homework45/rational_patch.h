@@ -19,6 +19,17 @@ void draw_rational_patch(const float net[][3][4], const float tex[][3][2], const
  * across it): s along the strip, t from t0 through their midpoint to t2. */
 void strip_column_texture(float tex[3][2], float s, float t0, float t2);
 
+/* Half of a rim's arc as an arc of its own: p[0..2] are the arc's homogeneous control points and
+ * centre[0..2] their centres (as draw_rim_net takes them); half 0 is the arc from its start to its
+ * middle, half 1 from its middle to its end. De Casteljau's construction at 1/2 on the homogeneous
+ * points gives the half exactly (its parameter runs twice as fast), and on the centres weighted
+ * like their points, so that the half's w (P - centre) is the whole arc's normal polynomial on
+ * that half. The middle point is computed the same way for both halves, so they share it bit for
+ * bit. Used to give the two halves of a rim different texture charts: the half next to a wall
+ * runs on from the wall, the half next to the top (or the bottom) from the top. */
+void halve_rim_arc(const float p[3][4], const double centre[3][3], int half, float out[3][4],
+                   double out_centre[3][3]);
+
 /* Draws a rim's patch (a strip or a corner piece, as draw_rational_patch) with its normals from
  * the centres of the rim's curvature: the rim lies at distance R from centre[v][u] (the centre
  * nearest each control point, on the strip's axis or the corner piece's tube centre circle), so
@@ -26,6 +37,21 @@ void strip_column_texture(float tex[3][2], float s, float t0, float t2);
  * whose value, normalized, is the exact unit normal, also at a sphere's pole. */
 void draw_rim_net(const float net[][3][4], const float tex[][3][2], const double centre[][3][3], int rows,
                   int v_steps);
+
+/* The point of the rational patch net[v][u] (rows = 2 or 3 rows of 3 homogeneous points) at
+ * (u, v), in double precision. */
+void rational_patch_point(const float net[][3][4], int rows, double u, double v, double out[3]);
+
+/* A texture chart: the texture coordinates of a point of a patch, from the point itself and what
+ * `chart` holds. */
+typedef void (*point_texture)(const double point[3], const void *chart, float out[2]);
+
+/* Draws a rim's patch as draw_rim_net does (the same grid of points, in the triangles glEvalMesh2
+ * draws), but with each point's texture coordinates given by `texture` (with `chart`) instead of
+ * a polynomial map: for a texture that must follow the surface's own arc length, which a
+ * polynomial of the patch's parameters does not. */
+void draw_rim_net_charted(const float net[][3][4], point_texture texture, const void *chart,
+                          const double centre[][3][3], int rows, int v_steps);
 
 /* Draws a fillet's patch (a concave edge filled by a quarter cylinder or its corner piece, as
  * draw_rim_net) with its normals towards the centres of its curvature, w(u, v) (centre - P(u, v)):

@@ -189,6 +189,8 @@ void glEnd(void)
       add_triangle(v[i], v[i + 1], v[i + 2]);
       add_triangle(v[i], v[i + 2], v[i + 3]);
     }
+  else if (primitive_mode == GL_TRIANGLE_STRIP)
+    for (int i = 0; i + 2 < primitive_count; ++i) add_triangle(v[i], v[i + 1], v[i + 2]);
   else if (primitive_mode == GL_TRIANGLE_FAN)
     for (int i = 1; i + 1 < primitive_count; ++i) add_triangle(v[0], v[i], v[i + 1]);
   else {
@@ -214,6 +216,7 @@ void glTexCoord2d(GLdouble s, GLdouble t)
   current_texture[1] = t;
 }
 void glTexCoord2f(GLfloat s, GLfloat t) { glTexCoord2d(s, t); }
+void glTexCoord2fv(const GLfloat *st) { glTexCoord2d(st[0], st[1]); }
 void glNormal3f(GLfloat x, GLfloat y, GLfloat z)
 {
   current_normal[0] = x;
@@ -253,11 +256,16 @@ void glMap2f(GLenum target, GLfloat u1, GLfloat u2, GLint ustride, GLint uorder,
   memcpy(cylinder_net, points, (size_t)vorder * sizeof cylinder_net[0]);
 }
 
+/* Set by glMapGrid2f, which the program calls once per patch: the patch's sides are still to be
+ * recorded by the first glEvalMesh2 or glEvalPoint2 that draws it. */
+static int sides_pending;
+
 void glMapGrid2f(GLint un, GLfloat u1, GLfloat u2, GLint vn, GLfloat v1, GLfloat v2)
 {
   (void)u1, (void)u2, (void)v1, (void)v2;
   grid_steps_u = un;
   grid_steps_v = vn;
+  sides_pending = 1;
 }
 
 /* The rational patch (quadratic in u; linear in v for 2 rows, quadratic for 3) at (u, v). */
@@ -297,10 +305,11 @@ static int row_closes(int row)
   return 1;
 }
 
-/* The vertex the evaluator draws at (u, v), with its normal and texture coordinates. */
-static void record_grid_vertex(double u, double v)
+/* The vertex the evaluator draws at (u, v), with its normal, and `texture` for its texture
+ * coordinates (NULL: the texture map's). */
+static void record_grid_vertex(double u, double v, const double *texture)
 {
-  double point[3], normal[3], texture[2];
+  double point[3], normal[3], mapped_texture[2];
   cylinder_point(u, v, point);
   if (normal_map_on) {
     polynomial_point(3, u, v, normal);
@@ -317,7 +326,10 @@ static void record_grid_vertex(double u, double v)
     normal[1] = du[2] * dv[0] - du[0] * dv[2];
     normal[2] = du[0] * dv[1] - du[1] * dv[0];
   }
-  polynomial_point(2, u, v, texture);
+  if (!texture) {
+    polynomial_point(2, u, v, mapped_texture);
+    texture = mapped_texture;
+  }
   add_drawn(point, normal, texture);
   drawn[drawn_count - 1].horn_tip = v == 0 && net_rows == 3 && row_closes(0);
 }
@@ -325,9 +337,10 @@ static void record_grid_vertex(double u, double v)
 void glEvalMesh2(GLenum mode, GLint i1, GLint i2, GLint j1, GLint j2)
 {
   (void)mode;
-  add_patch_sides();
+  if (sides_pending) add_patch_sides();
+  sides_pending = 0;
   for (int j = j1; j <= j2; ++j)
-    for (int i = i1; i <= i2; ++i) record_grid_vertex((double)i / grid_steps_u, (double)j / grid_steps_v);
+    for (int i = i1; i <= i2; ++i) record_grid_vertex((double)i / grid_steps_u, (double)j / grid_steps_v, NULL);
   for (int j = j1; j < j2; ++j)
     for (int i = i1; i < i2; ++i) {
       double a[3], b[3], c[3], d[3];
@@ -338,6 +351,19 @@ void glEvalMesh2(GLenum mode, GLint i1, GLint i2, GLint j1, GLint j2)
       add_triangle(a, b, c);
       add_triangle(a, c, d);
     }
+}
+
+/* One grid point inside glBegin/glEnd, with the current texture coordinates (the program draws
+ * this way with the texture's map off). */
+void glEvalPoint2(GLint i, GLint j)
+{
+  if (sides_pending) add_patch_sides();
+  sides_pending = 0;
+  if (primitive_count == 4096) exit(2);
+  const double u = (double)i / grid_steps_u, v = (double)j / grid_steps_v;
+  cylinder_point(u, v, primitive[primitive_count]);
+  ++primitive_count;
+  record_grid_vertex(u, v, current_texture);
 }
 
 /* An edge's end points rounded to 1e-5, the smaller first. */
