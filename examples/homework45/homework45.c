@@ -306,48 +306,12 @@ static void rim_end_piece(const double e[2], const double c[2], enum rim_level l
   glEnd();
 }
 
-/* The top's (or the bottom's) texture run on over the half of a rim next to it, by the rim's arc
- * length: a point R phi along the rim's quarter circle from the top's edge (phi, the angle from
- * the top, measured about the circle's centre) takes the top's (x, z) R phi beyond the edge. Over
- * a side's strip the edge is a line and "beyond" is `outward`, across the side; over a corner's
- * piece it is the arc top_distance from the upright's axis (0 at a convex corner, where the
- * piece is a sphere closing in the axis; 2 R above a fillet, the torus's inner rim) and
- * "beyond" is away from the axis at a convex corner and towards it above a fillet. Computed per
- * point drawn (draw_rim_net_charted), since the patches' parameters do not run with arc length. */
-struct rim_chart {
-  int corner;         /* a corner's piece (else a side's strip) */
-  double axis[2];     /* x, z: a point of the strip's axis, or the corner's upright axis */
-  double outward[2];  /* a strip's direction across its side, out of the solid */
-  double top_distance, away;
-  double below, out, r;  /* the rim circle's centre height, the rim's outward sign (up 1, down -1), R */
-};
-
-static void rim_top_texture(const double p[3], const void *data, float st[2])
-{
-  const struct rim_chart *chart = data;
-  const double from_axis[2] = {p[0] - chart->axis[0], p[2] - chart->axis[1]};
-  const double height = chart->out * (p[1] - chart->below);
-  if (!chart->corner) {
-    const double across = from_axis[0] * chart->outward[0] + from_axis[1] * chart->outward[1];
-    const double beyond = chart->r * atan2(across, height) - across;
-    st[0] = (float)(p[0] + beyond * chart->outward[0]);
-    st[1] = (float)(p[2] + beyond * chart->outward[1]);
-    return;
-  }
-  const double distance = hypot(from_axis[0], from_axis[1]);
-  const double reach = chart->top_distance + chart->away * chart->r *
-                                                 atan2(chart->away * (distance - chart->top_distance), height);
-  const double scale = distance > 0 ? reach / distance : 0.0;
-  st[0] = (float)(chart->axis[0] + scale * from_axis[0]);
-  st[1] = (float)(chart->axis[1] + scale * from_axis[1]);
-}
-
 /* The rounded rim along side i: the rim's quarter circle (from the side at R below the top, over
  * the top edge weighted sqrt(2)/2, to the top R in from the side) swept from the side's start to
  * its end. Above a rounded upright it ends where the upright's strip does, R along the side from
  * the corner; above a sharp one it ends in the corner's bisecting plane (the mitre the
  * neighbouring side's strip ends in too), its top point moved along the side by R. It is drawn
- * in its two halves (halve_rim_arc), each with the texture of the face it touches: the half next
+ * in its two halves (halve_rim_net), each with the texture of the face it touches: the half next
  * to the wall with the wall's (s along the side, t on up from the wall's top by the arc's
  * length), the half next to the top with the top's (x, z) run on beyond the top's edge; the
  * checkerboard changes from one to the other along the arc's middle, as the scene language's
@@ -392,15 +356,13 @@ static void rim_strip(int i, enum rim_level level, float s0, float s1)
     }
   }
   const float t0 = side_t(top - out * r), t_middle = (float)(t0 + out * PI / 4 * r / height);
-  const struct rim_chart chart = {0, {axis[0], axis[1]}, {-in_i[0], -in_i[1]}, 0.0, 1.0, top - out * r, out, r};
+  const double outward[2] = {-in_i[0], -in_i[1]};
+  const struct rim_chart chart = strip_rim_chart(axis, outward, top - out * r, out, r);
   for (int half = 0; half < 2; ++half) {
     float half_net[2][3][4], tex[2][3][2];
     double half_centre[2][3][3];
-    for (int end = 0; end < 2; ++end) {
-      halve_rim_arc((const float (*)[4])net[end], (const double (*)[3])centre[end], half, half_net[end],
-                    half_centre[end]);
-      strip_column_texture(tex[end], end ? s1 : s0, t0, t_middle);
-    }
+    halve_rim_net((const float (*)[3][4])net, (const double (*)[3][3])centre, 2, half, half_net, half_centre);
+    for (int end = 0; end < 2; ++end) strip_column_texture(tex[end], end ? s1 : s0, t0, t_middle);
     draw_rim_patch(half_net, tex, (const double (*)[3][3])half_centre, 2, level, half ? rim_top_texture : NULL,
                    &chart);
   }
@@ -428,25 +390,11 @@ static void rim_corner(int i, enum rim_level level, float s0)
   const float length = (float)(PI / 2) * radius;
   const float t0 = side_t(top - out * r), t_middle = (float)(t0 + out * PI / 4 * r / height);
   rim_corner_net(arc, axis, plan.convex[i], top - out * r, top, s0, length, t0, t_middle, net, tex, centre);
-  const struct rim_chart chart = {1, {axis[0], axis[1]}, {0.0, 0.0}, plan.convex[i] ? 0.0 : 2 * r,
-                                   plan.convex[i] ? 1.0 : -1.0, top - out * r, out, r};
+  const struct rim_chart chart = corner_rim_chart(axis, plan.convex[i], top - out * r, out, r);
   for (int half = 0; half < 2; ++half) {
     float half_net[3][3][4];
     double half_centre[3][3][3];
-    for (int u = 0; u < 3; ++u) {
-      float column[3][4], half_column[3][4];
-      double column_centre[3][3], half_column_centre[3][3];
-      for (int v = 0; v < 3; ++v) {
-        memcpy(column[v], net[v][u], sizeof column[v]);
-        memcpy(column_centre[v], centre[v][u], sizeof column_centre[v]);
-      }
-      halve_rim_arc((const float (*)[4])column, (const double (*)[3])column_centre, half, half_column,
-                    half_column_centre);
-      for (int v = 0; v < 3; ++v) {
-        memcpy(half_net[v][u], half_column[v], sizeof half_column[v]);
-        memcpy(half_centre[v][u], half_column_centre[v], sizeof half_column_centre[v]);
-      }
-    }
+    halve_rim_net((const float (*)[3][4])net, (const double (*)[3][3])centre, 3, half, half_net, half_centre);
     draw_rim_patch(half_net, tex, (const double (*)[3][3])half_centre, 3, level, half ? rim_top_texture : NULL,
                    &chart);
   }

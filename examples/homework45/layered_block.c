@@ -306,6 +306,47 @@ static enum strip_end strip_end_at(const struct cube_layers *layers, int layer, 
   return cells_around(layers, layer, i, j) == 1 ? ENDS_IN_MITRE : RUNS_ON;
 }
 
+/* Whether the pieces of the rim `rim` of `layer` (its strips and corner pieces) are drawn as the
+ * one-layer program draws them, in two halves, the half next to the wall textured from the wall
+ * and the half next to the top (bottom) from the top's (x, z) (halve_rim_net, rim_top_texture),
+ * so that the checkerboard crosses from the top onto the rim without a jump. Not for a top rim a
+ * piece of the layer above stands on at a standing corner, whose torus piece takes the rim's
+ * texture as a whole across its end, nor for fillets: they run the wall's texture on over their
+ * whole arc, and the top jumps where they meet it. */
+static int rim_halved(const struct cube_layers *layers, int layer, float radius, int rim)
+{
+  if (rim == FILLETED_FOOT) return 0;
+  if (rim == CAPPED_TOP && layer + 1 < layers->layer_count)
+    for (int i = 0; i < layers->x_count; ++i)
+      for (int j = 0; j < layers->z_count; ++j)
+        if (standing_corner_at(layers, layer + 1, i, j, radius)) return 0;
+  return 1;
+}
+
+/* Draws a rim's patch (a strip, rows 2, or a corner's piece, rows 3, as draw_rim_net takes it)
+ * whole with the texture net tex, whose arc's t runs from the wall's over the whole quarter
+ * circle, or (halved) in its two halves: tex's columns (a strip's) or rows (a piece's) cover the
+ * wall's half only, and the top's half is charted by `chart`. */
+static void draw_rim_piece(const float net[][3][4], const float tex[][3][2], const double centre[][3][3], int rows,
+                           int halved, const struct rim_chart *chart)
+{
+  const int v_steps = rows == 3 ? ARC_STEPS : 1;
+  if (!halved) {
+    draw_rim_net(net, tex, centre, rows, v_steps);
+    return;
+  }
+  for (int half = 0; half < 2; ++half) {
+    float half_net[3][3][4];
+    double half_centre[3][3][3];
+    halve_rim_net(net, centre, rows, half, half_net, half_centre);
+    if (half)
+      draw_rim_net_charted((const float (*)[3][4])half_net, rim_top_texture, chart,
+                           (const double (*)[3][3])half_centre, rows, v_steps);
+    else
+      draw_rim_net((const float (*)[3][4])half_net, tex, (const double (*)[3][3])half_centre, rows, v_steps);
+  }
+}
+
 /* Whether a strip keeps the column at its end (not where a corner's piece takes over). */
 static int keeps_end_column(enum strip_end end) { return end != ENDS_AT_CORNER_PIECE && end != ENDS_AT_STANDING_CORNER; }
 
@@ -380,8 +421,12 @@ static void rim_strip(const struct cube_layers *layers, int layer, int along_x, 
   const int count = wall_columns(a, b, keeps_end_column(end_a), keeps_end_column(end_b), radius, columns);
   const float out = rim == CAPPED_TOP ? 1.0f : -1.0f;
   const float top = (float)layers->height[rim == CAPPED_TOP ? layer + 1 : layer], below = top - out * radius;
-  const float t0 = texture_t(layers, below), t2 = t0 + out * (float)(PI / 2.0) * radius;
+  const int halved = rim_halved(layers, layer, radius, rim);
+  const float t0 = texture_t(layers, below), t2 = t0 + out * (float)((halved ? PI / 4.0 : PI / 2.0) * radius);
   const int in_x = -normal_x, in_z = -normal_z;
+  const double axis[2] = {along_x ? a : fixed + (float)in_x * radius, along_x ? fixed + (float)in_z * radius : a};
+  const double outward[2] = {normal_x, normal_z};
+  const struct rim_chart chart = strip_rim_chart(axis, outward, below, out, radius);
   for (int c = 0; c + 1 < count; ++c) {
     float net[2][3][4], tex[2][3][2];
     double centre[2][3][3];
@@ -415,7 +460,8 @@ static void rim_strip(const struct cube_layers *layers, int layer, int along_x, 
         centre[v][u][2] = !along_x && u == 2 ? inner_z : z + (float)in_z * radius;
       }
     }
-    draw_rim_net((const float (*)[3][4])net, (const float (*)[3][2])tex, (const double (*)[3][3])centre, 2, 1);
+    draw_rim_piece((const float (*)[3][4])net, (const float (*)[3][2])tex, (const double (*)[3][3])centre, 2, halved,
+                   &chart);
   }
 }
 
@@ -510,13 +556,16 @@ static void rim_corner(const struct cube_layers *layers, int layer, int i, int j
   const double axis_xz[2] = {axis[0], axis[1]};
   const float out = rim == CAPPED_TOP ? 1.0f : -1.0f;
   const float top = (float)layers->height[rim == CAPPED_TOP ? layer + 1 : layer], below = top - out * radius;
-  const float t0 = texture_t(layers, below), t2 = t0 + out * (float)(PI / 2.0) * radius;
+  const int halved = rim_halved(layers, layer, radius, rim);
+  const float t0 = texture_t(layers, below), t2 = t0 + out * (float)((halved ? PI / 4.0 : PI / 2.0) * radius);
   float net[3][3][4], tex[3][3][2];
   double centre[3][3][3];
   rim_corner_net(arc, axis_xz, convex, below, top, s0, s_length, t0, t2, net, tex, centre);
   for (int end = 0; rim == CAPPED_TOP && end < 2; ++end)
     meet_standing_corner(layers, layer + 1, end ? to : from, corner, radius, top, 1, tex, 2 * end);
-  draw_rim_net((const float (*)[3][4])net, (const float (*)[3][2])tex, (const double (*)[3][3])centre, 3, ARC_STEPS);
+  const struct rim_chart chart = corner_rim_chart(axis_xz, convex, below, out, radius);
+  draw_rim_piece((const float (*)[3][4])net, (const float (*)[3][2])tex, (const double (*)[3][3])centre, 3, halved,
+                 &chart);
 }
 
 /* Whether fillets turn round the foot of the corner at grid point (i, j) of `layer`: a convex

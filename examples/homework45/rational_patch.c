@@ -2,6 +2,7 @@
 
 #include <math.h>
 #include <stddef.h>
+#include <string.h>
 #include <GL/glut.h>
 
 #include "rounded_upright.h"
@@ -110,8 +111,10 @@ void draw_fillet_net(const float net[][3][4], const float tex[][3][2], const dou
   draw_net_about_centres(net, tex, centre, -1.0f, rows, v_steps);
 }
 
-void halve_rim_arc(const float p[3][4], const double centre[3][3], int half, float out[3][4],
-                   double out_centre[3][3])
+/* Half `half` of the rational quadratic arc p[0..2] (homogeneous) whose points have the centres
+ * centre[0..2] (halve_rim_net). */
+static void halve_rim_arc(const float p[3][4], const double centre[3][3], int half, float out[3][4],
+                          double out_centre[3][3])
 {
   /* Homogeneous points (x w, y w, z w, w) and centres weighted alike (c w, w). */
   double point[3][4], weighted_centre[3][4];
@@ -187,4 +190,62 @@ void strip_column_texture(float tex[3][2], float s, float t0, float t2)
     tex[u][0] = s;
     tex[u][1] = ts[u];
   }
+}
+
+void halve_rim_net(const float net[][3][4], const double centre[][3][3], int rows, int half, float out[][3][4],
+                   double out_centre[][3][3])
+{
+  if (rows == 2) {
+    for (int v = 0; v < 2; ++v) halve_rim_arc(net[v], centre[v], half, out[v], out_centre[v]);
+    return;
+  }
+  for (int u = 0; u < 3; ++u) {
+    float column[3][4], half_column[3][4];
+    double column_centre[3][3], half_column_centre[3][3];
+    for (int v = 0; v < 3; ++v) {
+      memcpy(column[v], net[v][u], sizeof column[v]);
+      memcpy(column_centre[v], centre[v][u], sizeof column_centre[v]);
+    }
+    halve_rim_arc((const float (*)[4])column, (const double (*)[3])column_centre, half, half_column,
+                  half_column_centre);
+    for (int v = 0; v < 3; ++v) {
+      memcpy(out[v][u], half_column[v], sizeof half_column[v]);
+      memcpy(out_centre[v][u], half_column_centre[v], sizeof half_column_centre[v]);
+    }
+  }
+}
+
+struct rim_chart strip_rim_chart(const double axis[2], const double outward[2], double below, double out, double r)
+{
+  const struct rim_chart chart = {0, {axis[0], axis[1]}, {outward[0], outward[1]}, 0.0, 1.0, below, out, r};
+  return chart;
+}
+
+struct rim_chart corner_rim_chart(const double axis[2], int convex, double below, double out, double r)
+{
+  const struct rim_chart chart = {1, {axis[0], axis[1]}, {0.0, 0.0}, convex ? 0.0 : 2 * r, convex ? 1.0 : -1.0,
+                                  below, out, r};
+  return chart;
+}
+
+void rim_top_texture(const double p[3], const void *data, float st[2])
+{
+  const struct rim_chart *chart = data;
+  const double from_axis[2] = {p[0] - chart->axis[0], p[2] - chart->axis[1]};
+  const double height = chart->out * (p[1] - chart->below);
+  if (!chart->corner) {
+    /* phi from the point's offset across the axis: beyond the edge by R phi, the point's own
+     * offset taken back. */
+    const double across = from_axis[0] * chart->outward[0] + from_axis[1] * chart->outward[1];
+    const double beyond = chart->r * atan2(across, height) - across;
+    st[0] = (float)(p[0] + beyond * chart->outward[0]);
+    st[1] = (float)(p[2] + beyond * chart->outward[1]);
+    return;
+  }
+  const double distance = hypot(from_axis[0], from_axis[1]);
+  const double reach =
+      chart->top_distance + chart->away * chart->r * atan2(chart->away * (distance - chart->top_distance), height);
+  const double scale = distance > 0 ? reach / distance : 0.0;
+  st[0] = (float)(chart->axis[0] + scale * from_axis[0]);
+  st[1] = (float)(chart->axis[1] + scale * from_axis[1]);
 }

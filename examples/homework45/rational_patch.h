@@ -19,16 +19,16 @@ void draw_rational_patch(const float net[][3][4], const float tex[][3][2], const
  * across it): s along the strip, t from t0 through their midpoint to t2. */
 void strip_column_texture(float tex[3][2], float s, float t0, float t2);
 
-/* Half of a rim's arc as an arc of its own: p[0..2] are the arc's homogeneous control points and
- * centre[0..2] their centres (as draw_rim_net takes them); half 0 is the arc from its start to its
- * middle, half 1 from its middle to its end. De Casteljau's construction at 1/2 on the homogeneous
- * points gives the half exactly (its parameter runs twice as fast), and on the centres weighted
- * like their points, so that the half's w (P - centre) is the whole arc's normal polynomial on
- * that half. The middle point is computed the same way for both halves, so they share it bit for
- * bit. Used to give the two halves of a rim different texture charts: the half next to a wall
- * runs on from the wall, the half next to the top (or the bottom) from the top. */
-void halve_rim_arc(const float p[3][4], const double centre[3][3], int half, float out[3][4],
-                   double out_centre[3][3]);
+/* Half of a rim's patch as a patch of its own, cut across its quarter circle at the arc's middle:
+ * net and centre as draw_rim_net takes them, with `rows` rows; a strip (2 rows) has its arc along
+ * u, a corner's piece (3 rows) along v. Half 0 is the half at the arc's start (the wall's side),
+ * half 1 the half at its end (the top's, or the bottom's). De Casteljau's construction at 1/2 on
+ * the homogeneous control points gives each half exactly (its parameter runs twice as fast), and
+ * on the centres weighted like their points, so that the half's w (P - centre) is the whole
+ * patch's normal polynomial there; the middle is computed alike for both halves, so they share it
+ * bit for bit. Used to give the two halves different texture charts (rim_top_texture). */
+void halve_rim_net(const float net[][3][4], const double centre[][3][3], int rows, int half, float out[][3][4],
+                   double out_centre[][3][3]);
 
 /* Draws a rim's patch (a strip or a corner piece, as draw_rational_patch) with its normals from
  * the centres of the rim's curvature: the rim lies at distance R from centre[v][u] (the centre
@@ -45,13 +45,6 @@ void rational_patch_point(const float net[][3][4], int rows, double u, double v,
 /* A texture chart: the texture coordinates of a point of a patch, from the point itself and what
  * `chart` holds. */
 typedef void (*point_texture)(const double point[3], const void *chart, float out[2]);
-
-/* Draws a rim's patch as draw_rim_net does (the same grid of points, in the triangles glEvalMesh2
- * draws), but with each point's texture coordinates given by `texture` (with `chart`) instead of
- * a polynomial map: for a texture that must follow the surface's own arc length, which a
- * polynomial of the patch's parameters does not. */
-void draw_rim_net_charted(const float net[][3][4], point_texture texture, const void *chart,
-                          const double centre[][3][3], int rows, int v_steps);
 
 /* Draws a fillet's patch (a concave edge filled by a quarter cylinder or its corner piece, as
  * draw_rim_net) with its normals towards the centres of its curvature, w(u, v) (centre - P(u, v)):
@@ -88,5 +81,37 @@ void turned_profile_net_in_frame(const double arc[3][2], const double axis[2], c
 void rim_corner_net(const double arc[3][2], const double axis[2], int convex, double below, double rim, float s0,
                     float s_length, float t0, float t2, float net[3][3][4], float tex[3][3][2],
                     double centre[3][3][3]);
+
+/* Draws a rim's patch as draw_rim_net does (the same grid of points, in the triangles glEvalMesh2
+ * draws), but with each point's texture coordinates given by `texture` (with `chart`) instead of
+ * a polynomial map: for a texture that must follow the surface's own arc length, which a
+ * polynomial of the patch's parameters does not. */
+void draw_rim_net_charted(const float net[][3][4], point_texture texture, const void *chart,
+                          const double centre[][3][3], int rows, int v_steps);
+
+/* The top's (or the bottom's) texture run on over the half of a rim next to it, by the rim's arc
+ * length: a point R phi along the rim's quarter circle from the top's edge (phi, the angle from
+ * the top, measured about the circle's centre) takes the top's (x, z) R phi beyond the edge. Over
+ * a strip along a wall the edge is a line and "beyond" is `outward`, out of the solid across the
+ * wall; over a corner's piece the edge is the arc top_distance from the upright's axis (0 at a
+ * convex corner, where the piece is a sphere closing in the axis; 2 R above a fillet, the torus's
+ * inner rim) and "beyond" is away from the axis at a convex corner, towards it above a fillet. */
+struct rim_chart {
+  int corner;            /* a corner's piece (else a strip) */
+  double axis[2];        /* x, z: a point of the strip's axis, or the corner's upright axis */
+  double outward[2];     /* a strip's direction across its wall, out of the solid (x, z, unit) */
+  double top_distance;   /* a corner's: 0 convex, 2 R concave */
+  double away;           /* a corner's: 1 convex, -1 concave */
+  double below, out, r;  /* the rim circle's centre height, the rim's outward sign (1 up, -1 down), R */
+};
+
+/* The chart of a strip whose axis passes through (x, z) = axis, its wall facing `outward`. */
+struct rim_chart strip_rim_chart(const double axis[2], const double outward[2], double below, double out, double r);
+
+/* The chart of a corner's piece about the upright axis (x, z) = axis, convex or not. */
+struct rim_chart corner_rim_chart(const double axis[2], int convex, double below, double out, double r);
+
+/* The point_texture of a rim_chart (passed as `chart`). */
+void rim_top_texture(const double point[3], const void *chart, float out[2]);
 
 #endif

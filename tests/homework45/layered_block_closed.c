@@ -7,7 +7,9 @@
  * and texture coordinates are recorded too: where two vertices at one point have normals less
  * than 30 degrees apart (a seam, not a sharp crease), they must agree to 1e-3 radians, and their
  * texture coordinates must agree but for whole repeats of the checkerboard (0.25 in s, 1 in t),
- * except on the flat tops and bottoms (normal straight up or down), whose texture is (x, z),
+ * except on the flat tops and bottoms (normal straight up or down), whose texture is (x, z) and
+ * must equal that of a rim's half drawn with the top's chart (glEvalPoint2) where they meet,
+ * except where a rim's two halves meet (one drawn with its own texture, one by glEvalMesh2),
  * along a mitre's crease (two rims' strips ending in a sharp corner's diagonal plane) and at a
  * horn piece's tip (two fillets meeting round a sharp upright's foot). Every point drawn within
  * a filleted foot's reach must lie R from the fillet's axis, and round a standing corner (a
@@ -41,6 +43,10 @@
 /* How far a fillet's drawn point may lie off R from its axis: glMap2f takes single-precision
  * control points, whose rounding moves the evaluated points by a few 1e-8 (1e-9 is out of reach). */
 #define FILLET_TOLERANCE 1e-7
+/* How far a rim's top half's texture may lie from the top's (x, z) run on by arc length: the
+ * texture coordinates are single precision, the points and normals evaluated from single-precision
+ * control points. */
+#define CHART_TOLERANCE 1e-5
 struct triangle {
   double corner[3][3];
 };
@@ -59,6 +65,8 @@ static double current_normal[3], current_texture[2];
 struct drawn_vertex {
   double point[3], normal[3], texture[2];
   int horn_tip; /* the tip of a horn piece (below) */
+  int charted;  /* drawn by glEvalPoint2 with its own texture coordinates: a rim's half next to the top */
+  int mapped;   /* its texture coordinates from the evaluator's texture map */
 };
 static struct drawn_vertex *drawn;
 static size_t drawn_count, drawn_capacity;
@@ -74,6 +82,8 @@ static void add_drawn(const double point[3], const double normal[3], const doubl
   memcpy(drawn[drawn_count].normal, normal, sizeof(double[3]));
   memcpy(drawn[drawn_count].texture, texture, sizeof(double[2]));
   drawn[drawn_count].horn_tip = 0;
+  drawn[drawn_count].charted = 0;
+  drawn[drawn_count].mapped = 0;
   ++drawn_count;
 }
 static int grid_steps_u, grid_steps_v;
@@ -330,7 +340,9 @@ static void record_grid_vertex(double u, double v, const double *texture)
     polynomial_point(2, u, v, mapped_texture);
     texture = mapped_texture;
   }
+  const int mapped = texture == mapped_texture;
   add_drawn(point, normal, texture);
+  drawn[drawn_count - 1].mapped = mapped;
   drawn[drawn_count - 1].horn_tip = v == 0 && net_rows == 3 && row_closes(0);
 }
 
@@ -364,6 +376,7 @@ void glEvalPoint2(GLint i, GLint j)
   cylinder_point(u, v, primitive[primitive_count]);
   ++primitive_count;
   record_grid_vertex(u, v, current_texture);
+  drawn[drawn_count - 1].charted = 1;
 }
 
 /* An edge's end points rounded to 1e-5, the smaller first. */
@@ -489,7 +502,15 @@ static size_t rough_seams(void)
         const double angle = acos(fmin(1.0, fmax(-1.0, na[0] * nb[0] + na[1] * nb[1] + na[2] * nb[2])));
         if (angle > 30 * 3.14159265358979323846 / 180 || mitre_crease(na, nb)) continue;
         int bad = angle > 1e-3;
-        if (fabs(na[1]) < 0.999 && fabs(nb[1]) < 0.999)
+        const int flat = fabs(na[1]) >= 0.999 || fabs(nb[1]) >= 0.999;
+        const int charted = drawn[a].charted + drawn[b].charted;
+        if (flat && charted && !drawn[a].mapped && !drawn[b].mapped)
+          /* A rim's top half meets the top (or another top half): the top's (x, z) itself, not a
+           * repeat of it. (Where a fillet, which keeps the wall's texture, meets a rim's top half
+           * at the largest radius, with no top left between them, they differ.) */
+          bad |= fabs(drawn[a].texture[0] - drawn[b].texture[0]) > 1e-4 ||
+                 fabs(drawn[a].texture[1] - drawn[b].texture[1]) > 1e-4;
+        else if (!flat && charted != 1)  /* one charted: the rim's middle, where the charts change */
           bad |= off_period(drawn[a].texture[0] - drawn[b].texture[0], 0.25) > 1e-4 ||
                  off_period(drawn[a].texture[1] - drawn[b].texture[1], 1.0) > 1e-4;
         if (bad && rough < 3)
@@ -501,6 +522,31 @@ static size_t rough_seams(void)
     i = j;
   }
   return rough;
+}
+
+/* How far the texture of a rim's half drawn with the top's chart lies from the top's (x, z) run on
+ * by arc length, at most, over every such vertex: at angle phi = acos |n_y| from the top (n its
+ * unit normal) a point of the rim's quarter circle is R sin phi from the top's edge along the
+ * normal's horizontal direction h, and its texture must be the top's (x, z) R phi from the edge:
+ * (x, z) + h R (phi - sin phi). This holds alike on strips, on a sphere's eighth (from its pole)
+ * and on a torus piece above a fillet (from its inner rim, where h points towards the axis). It
+ * also says how many vertices were drawn so (*count). */
+static double charted_texture_error(float radius, size_t *count)
+{
+  double worst = 0;
+  *count = 0;
+  for (size_t i = 0; i < drawn_count; ++i) {
+    if (!drawn[i].charted) continue;
+    ++*count;
+    const double *n = drawn[i].normal;
+    const double length = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    const double horizontal = hypot(n[0], n[2]);
+    const double phi = acos(fmin(1.0, fabs(n[1]) / length));
+    const double beyond = horizontal > 0 ? radius * (phi - sin(phi)) / horizontal : 0.0;
+    const double expected[2] = {drawn[i].point[0] + beyond * n[0], drawn[i].point[2] + beyond * n[2]};
+    worst = fmax(worst, fmax(fabs(drawn[i].texture[0] - expected[0]), fabs(drawn[i].texture[1] - expected[1])));
+  }
+  return worst;
 }
 
 /* How many of the four cells around grid point (i, j) `layer` fills. */
@@ -640,18 +686,24 @@ int main(int argc, char **argv)
       const double off_axis = fillet_axis_error(&layers, radius);
       double standing_normal;
       const double off_circle = standing_corner_error(&layers, radius, &standing_normal);
+      size_t charted;
+      const double chart_error = charted_texture_error(radius, &charted);
       printf("%s at radius %g: %zu triangles, %zu edges without a twin, %zu rough seams, %zu shared patch sides "
              "not exact to 1e-12 (largest gap %.3g), fillet points off R from the axis by %.3g, standing corners' "
-             "points off R from their circle by %.3g, their normals off by %.3g\n", argv[a], radius, triangle_count,
-             lonely, rough, inexact, gap, off_axis, off_circle, standing_normal);
+             "points off R from their circle by %.3g, their normals off by %.3g, %zu vertices of rims' top halves "
+             "off their texture by %.3g\n", argv[a], radius, triangle_count, lonely, rough, inexact, gap, off_axis,
+             off_circle, standing_normal, charted, chart_error);
       if (gap > 1e-5) fprintf(stderr, "homework45_layered_closed: %s: patches %g apart\n", argv[a], gap);
       if (off_axis > FILLET_TOLERANCE)
         fprintf(stderr, "homework45_layered_closed: %s: a fillet's point %g off R from its axis\n", argv[a], off_axis);
       if (off_circle > FILLET_TOLERANCE || standing_normal > 1e-3)
         fprintf(stderr, "homework45_layered_closed: %s: a standing corner's point %g off R from its circle, a normal "
                 "%g off\n", argv[a], off_circle, standing_normal);
+      if (chart_error > CHART_TOLERANCE)
+        fprintf(stderr, "homework45_layered_closed: %s: a rim's top half's texture %g off the top's run on\n", argv[a],
+                chart_error);
       failed |= lonely > 0 || rough > 0 || gap > 1e-5 || off_axis > FILLET_TOLERANCE || off_circle > FILLET_TOLERANCE ||
-                standing_normal > 1e-3;
+                standing_normal > 1e-3 || chart_error > CHART_TOLERANCE;
     }
     cube_layers_free(&layers);
   }
