@@ -390,7 +390,8 @@ static void rim_corner(int i, enum rim_level level, float s0)
   const float length = (float)(PI / 2) * radius;
   const float t0 = side_t(top - out * r), t_middle = (float)(t0 + out * PI / 4 * r / height);
   rim_corner_net(arc, axis, plan.convex[i], top - out * r, top, s0, length, t0, t_middle, net, tex, centre);
-  const struct rim_chart chart = corner_rim_chart(axis, plan.convex[i], top - out * r, out, r);
+  const struct rim_chart chart =
+      corner_rim_chart(axis, plan.convex[i] ? 0.0 : 2 * r, top - out * r, out, r);
   for (int half = 0; half < 2; ++half) {
     float half_net[3][3][4];
     double half_centre[3][3][3];

@@ -306,44 +306,49 @@ static enum strip_end strip_end_at(const struct cube_layers *layers, int layer, 
   return cells_around(layers, layer, i, j) == 1 ? ENDS_IN_MITRE : RUNS_ON;
 }
 
-/* Whether the pieces of the rim `rim` of `layer` (its strips and corner pieces) are drawn as the
- * one-layer program draws them, in two halves, the half next to the wall textured from the wall
- * and the half next to the top (bottom) from the top's (x, z) (halve_rim_net, rim_top_texture),
- * so that the checkerboard crosses from the top onto the rim without a jump. Not for a top rim a
- * piece of the layer above stands on at a standing corner, whose torus piece takes the rim's
- * texture as a whole across its end, nor for fillets: they run the wall's texture on over their
- * whole arc, and the top jumps where they meet it. */
+/* Whether the pieces of the rim `rim` of `layer` (its strips and corner pieces, or its fillets and
+ * their corner pieces) are drawn as the one-layer program draws its rims, in two halves, the half
+ * next to the wall textured from the wall and the half next to the top (bottom, or the top below
+ * a fillet) from that top's (x, z) (halve_rim_net, rim_top_texture), so that the checkerboard
+ * crosses from the top onto them without a jump. Not where a standing corner meets them (a top rim
+ * a piece of the layer above stands on, or the fillets of a layer with a standing corner): its
+ * torus piece takes their texture as a whole across their ends. */
 static int rim_halved(const struct cube_layers *layers, int layer, float radius, int rim)
 {
-  if (rim == FILLETED_FOOT) return 0;
-  if (rim == CAPPED_TOP && layer + 1 < layers->layer_count)
-    for (int i = 0; i < layers->x_count; ++i)
-      for (int j = 0; j < layers->z_count; ++j)
-        if (standing_corner_at(layers, layer + 1, i, j, radius)) return 0;
+  const int standing_layer = rim == CAPPED_TOP ? layer + 1 : rim == FILLETED_FOOT ? layer : -1;
+  if (standing_layer < 0 || standing_layer >= layers->layer_count) return 1;
+  for (int i = 0; i < layers->x_count; ++i)
+    for (int j = 0; j < layers->z_count; ++j)
+      if (standing_corner_at(layers, standing_layer, i, j, radius)) return 0;
   return 1;
 }
 
-/* Draws a rim's patch (a strip, rows 2, or a corner's piece, rows 3, as draw_rim_net takes it)
- * whole with the texture net tex, whose arc's t runs from the wall's over the whole quarter
- * circle, or (halved) in its two halves: tex's columns (a strip's) or rows (a piece's) cover the
- * wall's half only, and the top's half is charted by `chart`. */
+/* Draws a rim's or a fillet's patch (a strip, rows 2, or a corner's piece, rows 3, as draw_rim_net
+ * and draw_fillet_net take it) whole with the texture net tex, whose arc's t runs from the wall's
+ * over the whole quarter circle, or (halved) in its two halves: tex's columns (a strip's) or rows
+ * (a piece's) cover the wall's half only, and the top's half is charted by `chart`. */
 static void draw_rim_piece(const float net[][3][4], const float tex[][3][2], const double centre[][3][3], int rows,
-                           int halved, const struct rim_chart *chart)
+                           int fillet, int halved, const struct rim_chart *chart)
 {
   const int v_steps = rows == 3 ? ARC_STEPS : 1;
+  void (*const draw)(const float[][3][4], const float[][3][2], const double[][3][3], int, int) =
+      fillet ? draw_fillet_net : draw_rim_net;
   if (!halved) {
-    draw_rim_net(net, tex, centre, rows, v_steps);
+    draw(net, tex, centre, rows, v_steps);
     return;
   }
   for (int half = 0; half < 2; ++half) {
     float half_net[3][3][4];
     double half_centre[3][3][3];
     halve_rim_net(net, centre, rows, half, half_net, half_centre);
-    if (half)
+    if (!half)
+      draw((const float (*)[3][4])half_net, tex, (const double (*)[3][3])half_centre, rows, v_steps);
+    else if (fillet)
+      draw_fillet_net_charted((const float (*)[3][4])half_net, rim_top_texture, chart,
+                              (const double (*)[3][3])half_centre, rows, v_steps);
+    else
       draw_rim_net_charted((const float (*)[3][4])half_net, rim_top_texture, chart,
                            (const double (*)[3][3])half_centre, rows, v_steps);
-    else
-      draw_rim_net((const float (*)[3][4])half_net, tex, (const double (*)[3][3])half_centre, rows, v_steps);
   }
 }
 
@@ -460,8 +465,8 @@ static void rim_strip(const struct cube_layers *layers, int layer, int along_x, 
         centre[v][u][2] = !along_x && u == 2 ? inner_z : z + (float)in_z * radius;
       }
     }
-    draw_rim_piece((const float (*)[3][4])net, (const float (*)[3][2])tex, (const double (*)[3][3])centre, 2, halved,
-                   &chart);
+    draw_rim_piece((const float (*)[3][4])net, (const float (*)[3][2])tex, (const double (*)[3][3])centre, 2, 0,
+                   halved, &chart);
   }
 }
 
@@ -479,7 +484,11 @@ static void fillet_strip(const struct cube_layers *layers, int layer, int along_
   float columns[4];
   const int count = wall_columns(a, b, keeps_end_column(end_a), keeps_end_column(end_b), radius, columns);
   const float foot = (float)layers->height[layer], above = foot + radius;
-  const float t0 = texture_t(layers, above), t2 = t0 - (float)(PI / 2.0) * radius;
+  const int halved = rim_halved(layers, layer, radius, FILLETED_FOOT);
+  const float t0 = texture_t(layers, above), t2 = t0 - (float)((halved ? PI / 4.0 : PI / 2.0) * radius);
+  const double axis[2] = {along_x ? a : fixed + (float)normal_x * radius, along_x ? fixed + (float)normal_z * radius : a};
+  const double across[2] = {normal_x, normal_z};
+  const struct rim_chart chart = strip_rim_chart(axis, across, above, -1.0, radius);
   for (int c = 0; c + 1 < count; ++c) {
     float net[2][3][4], tex[2][3][2];
     double centre[2][3][3];
@@ -499,7 +508,8 @@ static void fillet_strip(const struct cube_layers *layers, int layer, int along_
         centre[v][u][2] = out_z;
       }
     }
-    draw_fillet_net((const float (*)[3][4])net, (const float (*)[3][2])tex, (const double (*)[3][3])centre, 2, 1);
+    draw_rim_piece((const float (*)[3][4])net, (const float (*)[3][2])tex, (const double (*)[3][3])centre, 2, 1,
+                   halved, &chart);
   }
 }
 
@@ -563,8 +573,9 @@ static void rim_corner(const struct cube_layers *layers, int layer, int i, int j
   rim_corner_net(arc, axis_xz, convex, below, top, s0, s_length, t0, t2, net, tex, centre);
   for (int end = 0; rim == CAPPED_TOP && end < 2; ++end)
     meet_standing_corner(layers, layer + 1, end ? to : from, corner, radius, top, 1, tex, 2 * end);
-  const struct rim_chart chart = corner_rim_chart(axis_xz, convex, below, out, radius);
-  draw_rim_piece((const float (*)[3][4])net, (const float (*)[3][2])tex, (const double (*)[3][3])centre, 3, halved,
+  const struct rim_chart chart =
+      corner_rim_chart(axis_xz, convex ? 0.0 : 2.0 * radius, below, out, radius);
+  draw_rim_piece((const float (*)[3][4])net, (const float (*)[3][2])tex, (const double (*)[3][3])centre, 3, 0, halved,
                  &chart);
 }
 
@@ -607,14 +618,18 @@ static void fillet_corner(const struct cube_layers *layers, int layer, int i, in
   }
   const float foot = (float)layers->height[layer], above = foot + radius;
   const double y[3] = {above, foot, foot};
-  const float t0 = texture_t(layers, above), t2 = t0 - (float)(PI / 2.0) * radius;
+  const int halved = rim_halved(layers, layer, radius, FILLETED_FOOT);
+  const float t0 = texture_t(layers, above), t2 = t0 - (float)((halved ? PI / 4.0 : PI / 2.0) * radius);
   float net[3][3][4], tex[3][3][2];
   double centre[3][3][3];
   turned_profile_net(arc, axis, scale, y, s0, s_length, t0, t2, net, tex, centre);
   for (int end = 0; rounded && end < 2; ++end)
     meet_standing_corner(layers, layer, end ? to : from, corner, radius, foot, 0, tex, 2 * end);
-  draw_fillet_net((const float (*)[3][4])net, (const float (*)[3][2])tex, (const double (*)[3][3])centre, 3,
-                  ARC_STEPS);
+  /* On the top below the piece's edge is scale[2] R from the axis: 2 R round a rounded upright, R
+   * round a sharp one. */
+  const struct rim_chart chart = corner_rim_chart(axis, scale[2] * radius, above, -1.0, radius);
+  draw_rim_piece((const float (*)[3][4])net, (const float (*)[3][2])tex, (const double (*)[3][3])centre, 3, 1, halved,
+                 &chart);
 }
 
 /* What `layer` covers of the R x R square of cell (i, j) at its grid point (gi, gj). */

@@ -75,11 +75,13 @@ void rational_patch_point(const float net[][3][4], int rows, double u, double v,
   for (int k = 0; k < 3; ++k) out[k] = h[k] / h[3];
 }
 
-void draw_rim_net_charted(const float net[][3][4], point_texture texture, const void *chart,
-                          const double centre[][3][3], int rows, int v_steps)
+/* Draws a patch whose normals, times w, are `side` times w (P - centre), with its texture from a
+ * chart (draw_rim_net_charted). */
+static void draw_net_charted(const float net[][3][4], point_texture texture, const void *chart,
+                             const double centre[][3][3], float side, int rows, int v_steps)
 {
   float normals[3][3][3];
-  normals_about_centres(net, centre, 1.0f, rows, normals);
+  normals_about_centres(net, centre, side, rows, normals);
   begin_patch_maps(net, (const float (*)[3][3])normals, rows, v_steps);
   /* glEvalMesh2's rows, as the triangle strips it draws them in, each vertex with its chart's
    * texture coordinates (the texture's map is off, so glEvalPoint2 takes the current ones). */
@@ -97,6 +99,18 @@ void draw_rim_net_charted(const float net[][3][4], point_texture texture, const 
     glEnd();
   }
   end_patch_maps();
+}
+
+void draw_rim_net_charted(const float net[][3][4], point_texture texture, const void *chart,
+                          const double centre[][3][3], int rows, int v_steps)
+{
+  draw_net_charted(net, texture, chart, centre, 1.0f, rows, v_steps);
+}
+
+void draw_fillet_net_charted(const float net[][3][4], point_texture texture, const void *chart,
+                             const double centre[][3][3], int rows, int v_steps)
+{
+  draw_net_charted(net, texture, chart, centre, -1.0f, rows, v_steps);
 }
 
 void draw_rim_net(const float net[][3][4], const float tex[][3][2], const double centre[][3][3], int rows,
@@ -215,16 +229,15 @@ void halve_rim_net(const float net[][3][4], const double centre[][3][3], int row
   }
 }
 
-struct rim_chart strip_rim_chart(const double axis[2], const double outward[2], double below, double out, double r)
+struct rim_chart strip_rim_chart(const double axis[2], const double across[2], double below, double out, double r)
 {
-  const struct rim_chart chart = {0, {axis[0], axis[1]}, {outward[0], outward[1]}, 0.0, 1.0, below, out, r};
+  const struct rim_chart chart = {0, {axis[0], axis[1]}, {across[0], across[1]}, 0.0, below, out, r};
   return chart;
 }
 
-struct rim_chart corner_rim_chart(const double axis[2], int convex, double below, double out, double r)
+struct rim_chart corner_rim_chart(const double axis[2], double top_distance, double below, double out, double r)
 {
-  const struct rim_chart chart = {1, {axis[0], axis[1]}, {0.0, 0.0}, convex ? 0.0 : 2 * r, convex ? 1.0 : -1.0,
-                                  below, out, r};
+  const struct rim_chart chart = {1, {axis[0], axis[1]}, {0.0, 0.0}, top_distance, below, out, r};
   return chart;
 }
 
@@ -234,17 +247,18 @@ void rim_top_texture(const double p[3], const void *data, float st[2])
   const double from_axis[2] = {p[0] - chart->axis[0], p[2] - chart->axis[1]};
   const double height = chart->out * (p[1] - chart->below);
   if (!chart->corner) {
-    /* phi from the point's offset across the axis: beyond the edge by R phi, the point's own
-     * offset taken back. */
-    const double across = from_axis[0] * chart->outward[0] + from_axis[1] * chart->outward[1];
-    const double beyond = chart->r * atan2(across, height) - across;
-    st[0] = (float)(p[0] + beyond * chart->outward[0]);
-    st[1] = (float)(p[2] + beyond * chart->outward[1]);
+    /* phi (with its sign) from the point's offset across the axis: beyond the edge by R phi, the
+     * point's own offset taken back. */
+    const double offset = from_axis[0] * chart->across[0] + from_axis[1] * chart->across[1];
+    const double beyond = chart->r * atan2(offset, height) - offset;
+    st[0] = (float)(p[0] + beyond * chart->across[0]);
+    st[1] = (float)(p[2] + beyond * chart->across[1]);
     return;
   }
+  /* phi with its sign: positive away from the axis (a sphere's eighth, from its pole), negative
+   * towards it (a torus piece, from its inner rim). */
   const double distance = hypot(from_axis[0], from_axis[1]);
-  const double reach =
-      chart->top_distance + chart->away * chart->r * atan2(chart->away * (distance - chart->top_distance), height);
+  const double reach = chart->top_distance + chart->r * atan2(distance - chart->top_distance, height);
   const double scale = distance > 0 ? reach / distance : 0.0;
   st[0] = (float)(chart->axis[0] + scale * from_axis[0]);
   st[1] = (float)(chart->axis[1] + scale * from_axis[1]);

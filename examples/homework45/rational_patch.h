@@ -89,27 +89,36 @@ void rim_corner_net(const double arc[3][2], const double axis[2], int convex, do
 void draw_rim_net_charted(const float net[][3][4], point_texture texture, const void *chart,
                           const double centre[][3][3], int rows, int v_steps);
 
-/* The top's (or the bottom's) texture run on over the half of a rim next to it, by the rim's arc
- * length: a point R phi along the rim's quarter circle from the top's edge (phi, the angle from
- * the top, measured about the circle's centre) takes the top's (x, z) R phi beyond the edge. Over
- * a strip along a wall the edge is a line and "beyond" is `outward`, out of the solid across the
- * wall; over a corner's piece the edge is the arc top_distance from the upright's axis (0 at a
- * convex corner, where the piece is a sphere closing in the axis; 2 R above a fillet, the torus's
- * inner rim) and "beyond" is away from the axis at a convex corner, towards it above a fillet. */
+/* draw_rim_net_charted for a fillet's patch (normals as draw_fillet_net's). */
+void draw_fillet_net_charted(const float net[][3][4], point_texture texture, const void *chart,
+                             const double centre[][3][3], int rows, int v_steps);
+
+/* The texture of a top (or a bottom) run on over the half of a rim next to it, by the rim's arc
+ * length: a point R phi along the rim's quarter circle from the top's edge (phi the angle from
+ * the top's side, measured about the circle's centre) takes the top's (x, z) R phi beyond the
+ * edge. Over a strip along a wall the edge is a line (on the top, above or below the strip's axis)
+ * and "beyond" runs across the wall; over a corner's piece the edge is the arc top_distance from
+ * the upright's axis (0 at a convex corner, where the piece is a sphere closing in the axis; 2 R
+ * above a fillet, the torus's inner rim) and "beyond" runs along the radius from the axis. A
+ * fillet along a foot is charted alike from the top it stands on: its circle's centre lies above
+ * that top (out -1: the top's edge is straight below it), and round a corner's foot its edge is
+ * 2 R from the axis (R round a sharp upright). phi is taken with its sign (positive on the side
+ * of the edge where the point lies), so "beyond" needs no direction: the chart follows the
+ * surface whichever way it leaves the top. */
 struct rim_chart {
   int corner;            /* a corner's piece (else a strip) */
   double axis[2];        /* x, z: a point of the strip's axis, or the corner's upright axis */
-  double outward[2];     /* a strip's direction across its wall, out of the solid (x, z, unit) */
-  double top_distance;   /* a corner's: 0 convex, 2 R concave */
-  double away;           /* a corner's: 1 convex, -1 concave */
-  double below, out, r;  /* the rim circle's centre height, the rim's outward sign (1 up, -1 down), R */
+  double across[2];      /* a strip's: the unit direction (x, z) across its wall, either way */
+  double top_distance;   /* a corner's: its edge's distance from the axis */
+  double below, out, r;  /* the circle's centre height; the top's side of it (1 above, -1 below); R */
 };
 
-/* The chart of a strip whose axis passes through (x, z) = axis, its wall facing `outward`. */
-struct rim_chart strip_rim_chart(const double axis[2], const double outward[2], double below, double out, double r);
+/* The chart of a strip whose axis passes through (x, z) = axis, its wall across `across`. */
+struct rim_chart strip_rim_chart(const double axis[2], const double across[2], double below, double out, double r);
 
-/* The chart of a corner's piece about the upright axis (x, z) = axis, convex or not. */
-struct rim_chart corner_rim_chart(const double axis[2], int convex, double below, double out, double r);
+/* The chart of a corner's piece about the upright axis (x, z) = axis, its edge on the top
+ * top_distance from the axis. */
+struct rim_chart corner_rim_chart(const double axis[2], double top_distance, double below, double out, double r);
 
 /* The point_texture of a rim_chart (passed as `chart`). */
 void rim_top_texture(const double point[3], const void *chart, float out[2]);
