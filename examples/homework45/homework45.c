@@ -173,12 +173,12 @@ static void reverse_rows(void *data, int rows, size_t row_size)
 }
 
 /* Draws the rim's patch net[v][u] (rows = 2 or 3 rows of 3 homogeneous points) with its normals
- * from the centres centre[v][u], and texture coordinates from the map tex[v][u] (draw_rim_net) or,
- * when `texture` is not NULL, from that chart (draw_rim_net_charted); its rows turned round when
- * dP/du x dP/dv points into the solid at its middle (so every patch of the top's rim faces up and
- * out, of the bottom's down and out, for its winding). */
+ * from the centres centre[v][u], in its two halves (draw_net_in_halves): the wall's with the
+ * texture net tex[v][u], the top's with `chart`; its rows turned round when dP/du x dP/dv points
+ * into the solid at its middle (so every patch of the top's rim faces up and out, of the bottom's
+ * down and out, for its winding). */
 static void draw_rim_patch(float net[][3][4], float tex[][3][2], const double centre[][3][3], int rows,
-                           enum rim_level level, point_texture texture, const void *chart)
+                           enum rim_level level, const struct rim_chart *chart)
 {
   double centres[3][3][3];
   memcpy(centres, centre, (size_t)rows * sizeof centres[0]);
@@ -188,17 +188,17 @@ static void draw_rim_patch(float net[][3][4], float tex[][3][2], const double ce
   rational_patch_point((const float (*)[3][4])net, rows, 0.5, 0.4, c);
   rational_patch_point((const float (*)[3][4])net, rows, 0.5, 0.6, d);
   const double du[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, dv[3] = {d[0] - c[0], d[1] - c[1], d[2] - c[2]};
-  if ((du[2] * dv[0] - du[0] * dv[2]) * rim_outward(level) < 0) {
+  const int turned = (du[2] * dv[0] - du[0] * dv[2]) * rim_outward(level) < 0;
+  if (turned) {
     reverse_rows(net, rows, sizeof net[0]);
-    if (!texture) reverse_rows(tex, rows, sizeof tex[0]);
+    reverse_rows(tex, rows, sizeof tex[0]);
     reverse_rows(centres, rows, sizeof centres[0]);
   }
-  const int v_steps = rows == 3 ? ARC_STEPS : 4;
-  if (texture)
-    draw_rim_net_charted((const float (*)[3][4])net, texture, chart, (const double (*)[3][3])centres, rows, v_steps);
-  else
-    draw_rim_net((const float (*)[3][4])net, (const float (*)[3][2])tex, (const double (*)[3][3])centres, rows,
-                 v_steps);
+  /* A strip's arc runs along u (its rows run along the side); a corner piece's along v, from the
+   * wall to the top unless its rows were turned round. */
+  const int corner = rows == 3;
+  draw_net_in_halves((const float (*)[3][4])net, (const float (*)[3][2])tex, (const double (*)[3][3])centres, 1.0f,
+                     rows, corner ? ARC_STEPS : 4, corner, corner && turned, chart);
 }
 
 /* A quarter cylinder of the current radius around the upright edge at corner k, from the point
@@ -311,7 +311,7 @@ static void rim_end_piece(const double e[2], const double c[2], enum rim_level l
  * its end. Above a rounded upright it ends where the upright's strip does, R along the side from
  * the corner; above a sharp one it ends in the corner's bisecting plane (the mitre the
  * neighbouring side's strip ends in too), its top point moved along the side by R. It is drawn
- * in its two halves (halve_rim_net), each with the texture of the face it touches: the half next
+ * in its two halves (draw_net_in_halves), each with the texture of the face it touches: the half next
  * to the wall with the wall's (s along the side, t on up from the wall's top by the arc's
  * length), the half next to the top with the top's (x, z) run on beyond the top's edge; the
  * checkerboard changes from one to the other along the arc's middle, as the scene language's
@@ -355,17 +355,12 @@ static void rim_strip(int i, enum rim_level level, float s0, float s1)
       centre[end][u][2] = axis[1] + on_axis * along[1];
     }
   }
-  const float t0 = side_t(top - out * r), t_middle = (float)(t0 + out * PI / 4 * r / height);
+  const float t0 = side_t(top - out * r), t2 = (float)(t0 + out * PI / 2 * r / height);
+  float tex[2][3][2];
+  for (int end = 0; end < 2; ++end) strip_column_texture(tex[end], end ? s1 : s0, t0, t2);
   const double outward[2] = {-in_i[0], -in_i[1]};
   const struct rim_chart chart = strip_rim_chart(axis, outward, top - out * r, out, r);
-  for (int half = 0; half < 2; ++half) {
-    float half_net[2][3][4], tex[2][3][2];
-    double half_centre[2][3][3];
-    halve_rim_net((const float (*)[3][4])net, (const double (*)[3][3])centre, 2, half, half_net, half_centre);
-    for (int end = 0; end < 2; ++end) strip_column_texture(tex[end], end ? s1 : s0, t0, t_middle);
-    draw_rim_patch(half_net, tex, (const double (*)[3][3])half_centre, 2, level, half ? rim_top_texture : NULL,
-                   &chart);
-  }
+  draw_rim_patch(net, tex, (const double (*)[3][3])centre, 2, level, &chart);
 }
 
 /* Above the rounded upright at corner i, where the rim's strips of its two sides end: the rim's
@@ -388,17 +383,10 @@ static void rim_corner(int i, enum rim_level level, float s0)
   float net[3][3][4], tex[3][3][2];
   double centre[3][3][3];
   const float length = (float)(PI / 2) * radius;
-  const float t0 = side_t(top - out * r), t_middle = (float)(t0 + out * PI / 4 * r / height);
-  rim_corner_net(arc, axis, plan.convex[i], top - out * r, top, s0, length, t0, t_middle, net, tex, centre);
-  const struct rim_chart chart =
-      corner_rim_chart(axis, plan.convex[i] ? 0.0 : 2 * r, top - out * r, out, r);
-  for (int half = 0; half < 2; ++half) {
-    float half_net[3][3][4];
-    double half_centre[3][3][3];
-    halve_rim_net((const float (*)[3][4])net, (const double (*)[3][3])centre, 3, half, half_net, half_centre);
-    draw_rim_patch(half_net, tex, (const double (*)[3][3])half_centre, 3, level, half ? rim_top_texture : NULL,
-                   &chart);
-  }
+  const float t0 = side_t(top - out * r), t2 = (float)(t0 + out * PI / 2 * r / height);
+  rim_corner_net(arc, axis, plan.convex[i], top - out * r, top, s0, length, t0, t2, net, tex, centre);
+  const struct rim_chart chart = corner_rim_chart(axis, plan.convex[i] ? 0.0 : 2 * r, top - out * r, out, r);
+  draw_rim_patch(net, tex, (const double (*)[3][3])centre, 3, level, &chart);
 }
 
 static void GLAPIENTRY top_vertex(void *data)

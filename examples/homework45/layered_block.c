@@ -309,7 +309,7 @@ static enum strip_end strip_end_at(const struct cube_layers *layers, int layer, 
 /* Whether the pieces of the rim `rim` of `layer` (its strips and corner pieces, or its fillets and
  * their corner pieces) are drawn as the one-layer program draws its rims, in two halves, the half
  * next to the wall textured from the wall and the half next to the top (bottom, or the top below
- * a fillet) from that top's (x, z) (halve_rim_net, rim_top_texture), so that the checkerboard
+ * a fillet) from that top's (x, z) (draw_net_in_halves, rim_top_texture), so that the checkerboard
  * crosses from the top onto them without a jump. Not where a standing corner meets them (a top rim
  * a piece of the layer above stands on, or the fillets of a layer with a standing corner): its
  * torus piece takes their texture as a whole across their ends. */
@@ -324,32 +324,16 @@ static int rim_halved(const struct cube_layers *layers, int layer, float radius,
 }
 
 /* Draws a rim's or a fillet's patch (a strip, rows 2, or a corner's piece, rows 3, as draw_rim_net
- * and draw_fillet_net take it) whole with the texture net tex, whose arc's t runs from the wall's
- * over the whole quarter circle, or (halved) in its two halves: tex's columns (a strip's) or rows
- * (a piece's) cover the wall's half only, and the top's half is charted by `chart`. */
+ * and draw_fillet_net take it, its quarter circle from the wall to the top) with the texture net
+ * tex, whose t runs on from the wall over the whole quarter circle: whole, or (halved) in its two
+ * halves, the top's charted by `chart` (draw_net_in_halves). */
 static void draw_rim_piece(const float net[][3][4], const float tex[][3][2], const double centre[][3][3], int rows,
                            int fillet, int halved, const struct rim_chart *chart)
 {
   const int v_steps = rows == 3 ? ARC_STEPS : 1;
-  void (*const draw)(const float[][3][4], const float[][3][2], const double[][3][3], int, int) =
-      fillet ? draw_fillet_net : draw_rim_net;
-  if (!halved) {
-    draw(net, tex, centre, rows, v_steps);
-    return;
-  }
-  for (int half = 0; half < 2; ++half) {
-    float half_net[3][3][4];
-    double half_centre[3][3][3];
-    halve_rim_net(net, centre, rows, half, half_net, half_centre);
-    if (!half)
-      draw((const float (*)[3][4])half_net, tex, (const double (*)[3][3])half_centre, rows, v_steps);
-    else if (fillet)
-      draw_fillet_net_charted((const float (*)[3][4])half_net, rim_top_texture, chart,
-                              (const double (*)[3][3])half_centre, rows, v_steps);
-    else
-      draw_rim_net_charted((const float (*)[3][4])half_net, rim_top_texture, chart,
-                           (const double (*)[3][3])half_centre, rows, v_steps);
-  }
+  if (halved) draw_net_in_halves(net, tex, centre, fillet ? -1.0f : 1.0f, rows, v_steps, rows == 3, 0, chart);
+  else if (fillet) draw_fillet_net(net, tex, centre, rows, v_steps);
+  else draw_rim_net(net, tex, centre, rows, v_steps);
 }
 
 /* Whether a strip keeps the column at its end (not where a corner's piece takes over). */
@@ -427,7 +411,7 @@ static void rim_strip(const struct cube_layers *layers, int layer, int along_x, 
   const float out = rim == CAPPED_TOP ? 1.0f : -1.0f;
   const float top = (float)layers->height[rim == CAPPED_TOP ? layer + 1 : layer], below = top - out * radius;
   const int halved = rim_halved(layers, layer, radius, rim);
-  const float t0 = texture_t(layers, below), t2 = t0 + out * (float)((halved ? PI / 4.0 : PI / 2.0) * radius);
+  const float t0 = texture_t(layers, below), t2 = t0 + out * (float)((PI / 2.0) * radius);
   const int in_x = -normal_x, in_z = -normal_z;
   const double axis[2] = {along_x ? a : fixed + (float)in_x * radius, along_x ? fixed + (float)in_z * radius : a};
   const double outward[2] = {normal_x, normal_z};
@@ -485,7 +469,7 @@ static void fillet_strip(const struct cube_layers *layers, int layer, int along_
   const int count = wall_columns(a, b, keeps_end_column(end_a), keeps_end_column(end_b), radius, columns);
   const float foot = (float)layers->height[layer], above = foot + radius;
   const int halved = rim_halved(layers, layer, radius, FILLETED_FOOT);
-  const float t0 = texture_t(layers, above), t2 = t0 - (float)((halved ? PI / 4.0 : PI / 2.0) * radius);
+  const float t0 = texture_t(layers, above), t2 = t0 - (float)((PI / 2.0) * radius);
   const double axis[2] = {along_x ? a : fixed + (float)normal_x * radius, along_x ? fixed + (float)normal_z * radius : a};
   const double across[2] = {normal_x, normal_z};
   const struct rim_chart chart = strip_rim_chart(axis, across, above, -1.0, radius);
@@ -567,7 +551,7 @@ static void rim_corner(const struct cube_layers *layers, int layer, int i, int j
   const float out = rim == CAPPED_TOP ? 1.0f : -1.0f;
   const float top = (float)layers->height[rim == CAPPED_TOP ? layer + 1 : layer], below = top - out * radius;
   const int halved = rim_halved(layers, layer, radius, rim);
-  const float t0 = texture_t(layers, below), t2 = t0 + out * (float)((halved ? PI / 4.0 : PI / 2.0) * radius);
+  const float t0 = texture_t(layers, below), t2 = t0 + out * (float)((PI / 2.0) * radius);
   float net[3][3][4], tex[3][3][2];
   double centre[3][3][3];
   rim_corner_net(arc, axis_xz, convex, below, top, s0, s_length, t0, t2, net, tex, centre);
@@ -619,7 +603,7 @@ static void fillet_corner(const struct cube_layers *layers, int layer, int i, in
   const float foot = (float)layers->height[layer], above = foot + radius;
   const double y[3] = {above, foot, foot};
   const int halved = rim_halved(layers, layer, radius, FILLETED_FOOT);
-  const float t0 = texture_t(layers, above), t2 = t0 - (float)((halved ? PI / 4.0 : PI / 2.0) * radius);
+  const float t0 = texture_t(layers, above), t2 = t0 - (float)((PI / 2.0) * radius);
   float net[3][3][4], tex[3][3][2];
   double centre[3][3][3];
   turned_profile_net(arc, axis, scale, y, s0, s_length, t0, t2, net, tex, centre);

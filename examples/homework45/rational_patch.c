@@ -75,19 +75,16 @@ void rational_patch_point(const float net[][3][4], int rows, double u, double v,
   for (int k = 0; k < 3; ++k) out[k] = h[k] / h[3];
 }
 
-/* Draws a patch whose normals, times w, are `side` times w (P - centre), with its texture from a
- * chart (draw_rim_net_charted). */
-static void draw_net_charted(const float net[][3][4], point_texture texture, const void *chart,
-                             const double centre[][3][3], float side, int rows, int v_steps)
+/* Draws the grid points of columns [i0, i1] and rows [j0, j1] of the patch whose maps are set
+ * (begin_patch_maps) in the triangle strips glEvalMesh2 draws them in, each point with the
+ * texture coordinates its chart gives (the texture's map is off, so glEvalPoint2 takes the
+ * current ones). */
+static void draw_charted_part(const float net[][3][4], int rows, int v_steps, int i0, int i1, int j0, int j1,
+                              point_texture texture, const void *chart)
 {
-  float normals[3][3][3];
-  normals_about_centres(net, centre, side, rows, normals);
-  begin_patch_maps(net, (const float (*)[3][3])normals, rows, v_steps);
-  /* glEvalMesh2's rows, as the triangle strips it draws them in, each vertex with its chart's
-   * texture coordinates (the texture's map is off, so glEvalPoint2 takes the current ones). */
-  for (int j = 0; j < v_steps; ++j) {
+  for (int j = j0; j < j1; ++j) {
     glBegin(GL_TRIANGLE_STRIP);
-    for (int i = 0; i <= ARC_STEPS; ++i)
+    for (int i = i0; i <= i1; ++i)
       for (int k = 0; k < 2; ++k) {
         double point[3];
         float st[2];
@@ -98,19 +95,26 @@ static void draw_net_charted(const float net[][3][4], point_texture texture, con
       }
     glEnd();
   }
+}
+
+void draw_net_in_halves(const float net[][3][4], const float tex[][3][2], const double centre[][3][3], float side,
+                        int rows, int v_steps, int arc_along_v, int top_first, const struct rim_chart *chart)
+{
+  float normals[3][3][3];
+  normals_about_centres(net, centre, side, rows, normals);
+  begin_patch_maps(net, (const float (*)[3][3])normals, rows, v_steps);
+  /* The halves' grid ranges across the arc: the wall's first, unless the arc starts at the top. */
+  const int steps = arc_along_v ? v_steps : ARC_STEPS, middle = steps / 2;
+  const int wall[2] = {top_first ? middle : 0, top_first ? steps : middle};
+  const int top[2] = {top_first ? 0 : middle, top_first ? middle : steps};
+  glMap2f(GL_MAP2_TEXTURE_COORD_2, 0, 1, 2, 3, 0, 1, 6, rows, &tex[0][0][0]);
+  glEnable(GL_MAP2_TEXTURE_COORD_2);
+  if (arc_along_v) glEvalMesh2(GL_FILL, 0, ARC_STEPS, wall[0], wall[1]);
+  else glEvalMesh2(GL_FILL, wall[0], wall[1], 0, v_steps);
+  glDisable(GL_MAP2_TEXTURE_COORD_2);
+  if (arc_along_v) draw_charted_part(net, rows, v_steps, 0, ARC_STEPS, top[0], top[1], rim_top_texture, chart);
+  else draw_charted_part(net, rows, v_steps, top[0], top[1], 0, v_steps, rim_top_texture, chart);
   end_patch_maps();
-}
-
-void draw_rim_net_charted(const float net[][3][4], point_texture texture, const void *chart,
-                          const double centre[][3][3], int rows, int v_steps)
-{
-  draw_net_charted(net, texture, chart, centre, 1.0f, rows, v_steps);
-}
-
-void draw_fillet_net_charted(const float net[][3][4], point_texture texture, const void *chart,
-                             const double centre[][3][3], int rows, int v_steps)
-{
-  draw_net_charted(net, texture, chart, centre, -1.0f, rows, v_steps);
 }
 
 void draw_rim_net(const float net[][3][4], const float tex[][3][2], const double centre[][3][3], int rows,
@@ -123,38 +127,6 @@ void draw_fillet_net(const float net[][3][4], const float tex[][3][2], const dou
                      int v_steps)
 {
   draw_net_about_centres(net, tex, centre, -1.0f, rows, v_steps);
-}
-
-/* Half `half` of the rational quadratic arc p[0..2] (homogeneous) whose points have the centres
- * centre[0..2] (halve_rim_net). */
-static void halve_rim_arc(const float p[3][4], const double centre[3][3], int half, float out[3][4],
-                          double out_centre[3][3])
-{
-  /* Homogeneous points (x w, y w, z w, w) and centres weighted alike (c w, w). */
-  double point[3][4], weighted_centre[3][4];
-  for (int i = 0; i < 3; ++i)
-    for (int k = 0; k < 4; ++k) {
-      point[i][k] = p[i][k];
-      weighted_centre[i][k] = k < 3 ? centre[i][k] * p[i][3] : p[i][3];
-    }
-  /* The middle point, then the half's three: its end, the midpoint of its side of the net, the middle. */
-  const int end = half ? 2 : 0;
-  double half_point[3][4], half_centre[3][4];
-  for (int k = 0; k < 4; ++k) {
-    const double (*net[2])[4] = {point, weighted_centre};
-    double (*halves[2])[4] = {half_point, half_centre};
-    for (int n = 0; n < 2; ++n) {
-      const double middle = (net[n][0][k] + 2 * net[n][1][k] + net[n][2][k]) / 4;
-      const double side = (net[n][end][k] + net[n][1][k]) / 2;
-      halves[n][half ? 2 : 0][k] = net[n][end][k];
-      halves[n][1][k] = side;
-      halves[n][half ? 0 : 2][k] = middle;
-    }
-  }
-  for (int i = 0; i < 3; ++i) {
-    for (int k = 0; k < 4; ++k) out[i][k] = (float)half_point[i][k];
-    for (int k = 0; k < 3; ++k) out_centre[i][k] = half_centre[i][k] / half_centre[i][3];
-  }
 }
 
 /* The point (x, y, z) of `frame` (NULL: the object's own axes) into out. */
@@ -203,29 +175,6 @@ void strip_column_texture(float tex[3][2], float s, float t0, float t2)
   for (int u = 0; u < 3; ++u) {
     tex[u][0] = s;
     tex[u][1] = ts[u];
-  }
-}
-
-void halve_rim_net(const float net[][3][4], const double centre[][3][3], int rows, int half, float out[][3][4],
-                   double out_centre[][3][3])
-{
-  if (rows == 2) {
-    for (int v = 0; v < 2; ++v) halve_rim_arc(net[v], centre[v], half, out[v], out_centre[v]);
-    return;
-  }
-  for (int u = 0; u < 3; ++u) {
-    float column[3][4], half_column[3][4];
-    double column_centre[3][3], half_column_centre[3][3];
-    for (int v = 0; v < 3; ++v) {
-      memcpy(column[v], net[v][u], sizeof column[v]);
-      memcpy(column_centre[v], centre[v][u], sizeof column_centre[v]);
-    }
-    halve_rim_arc((const float (*)[4])column, (const double (*)[3])column_centre, half, half_column,
-                  half_column_centre);
-    for (int v = 0; v < 3; ++v) {
-      memcpy(out[v][u], half_column[v], sizeof half_column[v]);
-      memcpy(out_centre[v][u], half_column_centre[v], sizeof half_column_centre[v]);
-    }
   }
 }
 

@@ -19,17 +19,6 @@ void draw_rational_patch(const float net[][3][4], const float tex[][3][2], const
  * across it): s along the strip, t from t0 through their midpoint to t2. */
 void strip_column_texture(float tex[3][2], float s, float t0, float t2);
 
-/* Half of a rim's patch as a patch of its own, cut across its quarter circle at the arc's middle:
- * net and centre as draw_rim_net takes them, with `rows` rows; a strip (2 rows) has its arc along
- * u, a corner's piece (3 rows) along v. Half 0 is the half at the arc's start (the wall's side),
- * half 1 the half at its end (the top's, or the bottom's). De Casteljau's construction at 1/2 on
- * the homogeneous control points gives each half exactly (its parameter runs twice as fast), and
- * on the centres weighted like their points, so that the half's w (P - centre) is the whole
- * patch's normal polynomial there; the middle is computed alike for both halves, so they share it
- * bit for bit. Used to give the two halves different texture charts (rim_top_texture). */
-void halve_rim_net(const float net[][3][4], const double centre[][3][3], int rows, int half, float out[][3][4],
-                   double out_centre[][3][3]);
-
 /* Draws a rim's patch (a strip or a corner piece, as draw_rational_patch) with its normals from
  * the centres of the rim's curvature: the rim lies at distance R from centre[v][u] (the centre
  * nearest each control point, on the strip's axis or the corner piece's tube centre circle), so
@@ -41,10 +30,6 @@ void draw_rim_net(const float net[][3][4], const float tex[][3][2], const double
 /* The point of the rational patch net[v][u] (rows = 2 or 3 rows of 3 homogeneous points) at
  * (u, v), in double precision. */
 void rational_patch_point(const float net[][3][4], int rows, double u, double v, double out[3]);
-
-/* A texture chart: the texture coordinates of a point of a patch, from the point itself and what
- * `chart` holds. */
-typedef void (*point_texture)(const double point[3], const void *chart, float out[2]);
 
 /* Draws a fillet's patch (a concave edge filled by a quarter cylinder or its corner piece, as
  * draw_rim_net) with its normals towards the centres of its curvature, w(u, v) (centre - P(u, v)):
@@ -82,16 +67,9 @@ void rim_corner_net(const double arc[3][2], const double axis[2], int convex, do
                     float s_length, float t0, float t2, float net[3][3][4], float tex[3][3][2],
                     double centre[3][3][3]);
 
-/* Draws a rim's patch as draw_rim_net does (the same grid of points, in the triangles glEvalMesh2
- * draws), but with each point's texture coordinates given by `texture` (with `chart`) instead of
- * a polynomial map: for a texture that must follow the surface's own arc length, which a
- * polynomial of the patch's parameters does not. */
-void draw_rim_net_charted(const float net[][3][4], point_texture texture, const void *chart,
-                          const double centre[][3][3], int rows, int v_steps);
-
-/* draw_rim_net_charted for a fillet's patch (normals as draw_fillet_net's). */
-void draw_fillet_net_charted(const float net[][3][4], point_texture texture, const void *chart,
-                             const double centre[][3][3], int rows, int v_steps);
+/* A texture chart: the texture coordinates of a point of a patch, from the point itself and what
+ * `chart` holds. */
+typedef void (*point_texture)(const double point[3], const void *chart, float out[2]);
 
 /* The texture of a top (or a bottom) run on over the half of a rim next to it, by the rim's arc
  * length: a point R phi along the rim's quarter circle from the top's edge (phi the angle from
@@ -120,7 +98,20 @@ struct rim_chart strip_rim_chart(const double axis[2], const double across[2], d
  * top_distance from the axis. */
 struct rim_chart corner_rim_chart(const double axis[2], double top_distance, double below, double out, double r);
 
-/* The point_texture of a rim_chart (passed as `chart`). */
+/* The texture coordinates the chart (a struct rim_chart) gives to a point of the top's half. */
 void rim_top_texture(const double point[3], const void *chart, float out[2]);
+
+/* Draws a rim's (side 1, as draw_rim_net) or a fillet's (side -1, as draw_fillet_net) patch in the
+ * two halves of its quarter circle, which runs along u (a strip) or, with arc_along_v, along v (a
+ * corner's piece), from the wall to the top, or from the top to the wall with top_first: the
+ * wall's half with the texture net tex (whose t runs on from the wall over the whole arc; its
+ * wall half is drawn), the top's half with the top's texture run on by arc length (`chart`,
+ * rim_top_texture), point by point, since that is not a polynomial of the patch's parameters.
+ * The halves are the two halves of the same grid of points (ARC_STEPS and v_steps are even), so
+ * they meet each other and the patch's neighbours where the whole patch would. The checkerboard
+ * then crosses from each face onto the piece without a jump, changing from the wall's to the
+ * top's along the arc's middle, as the scene language's rounding does. */
+void draw_net_in_halves(const float net[][3][4], const float tex[][3][2], const double centre[][3][3], float side,
+                        int rows, int v_steps, int arc_along_v, int top_first, const struct rim_chart *chart);
 
 #endif

@@ -41,11 +41,8 @@
 #include "layered_block.h"
 
 /* How far a fillet's drawn point may lie off R from its axis: glMap2f takes single-precision
- * control points, whose rounding moves the evaluated points by a few 1e-8 (1e-9 is out of reach);
- * a fillet drawn in its two halves (halve_rim_net) has its halves' new control points (de
- * Casteljau's midpoints) rounded to single precision as well, up to half a unit in the last place
- * of each coordinate (6e-8 at 1, 1.2e-7 at 2), which gives up to 1.4e-7 on the test objects. */
-#define FILLET_TOLERANCE 2e-7
+ * control points, whose rounding moves the evaluated points by a few 1e-8 (1e-9 is out of reach). */
+#define FILLET_TOLERANCE 1e-7
 /* How far a rim's top half's texture may lie from the top's (x, z) run on by arc length: the
  * texture coordinates are single precision, the points and normals evaluated from single-precision
  * control points. */
