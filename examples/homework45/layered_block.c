@@ -306,52 +306,19 @@ static enum strip_end strip_end_at(const struct cube_layers *layers, int layer, 
   return cells_around(layers, layer, i, j) == 1 ? ENDS_IN_MITRE : RUNS_ON;
 }
 
-/* Whether the pieces of the rim `rim` of `layer` (its strips and corner pieces, or its fillets and
- * their corner pieces) are drawn as the one-layer program draws its rims, in two halves, the half
- * next to the wall textured from the wall and the half next to the top (bottom, or the top below
- * a fillet) from that top's (x, z) (draw_net_in_halves, rim_top_texture), so that the checkerboard
- * crosses from the top onto them without a jump. Not where a standing corner meets them (a top rim
- * a piece of the layer above stands on, or the fillets of a layer with a standing corner): its
- * torus piece takes their texture as a whole across their ends. */
-static int rim_halved(const struct cube_layers *layers, int layer, float radius, int rim)
-{
-  const int standing_layer = rim == CAPPED_TOP ? layer + 1 : rim == FILLETED_FOOT ? layer : -1;
-  if (standing_layer < 0 || standing_layer >= layers->layer_count) return 1;
-  for (int i = 0; i < layers->x_count; ++i)
-    for (int j = 0; j < layers->z_count; ++j)
-      if (standing_corner_at(layers, standing_layer, i, j, radius)) return 0;
-  return 1;
-}
-
 /* Draws a rim's or a fillet's patch (a strip, rows 2, or a corner's piece, rows 3, as draw_rim_net
- * and draw_fillet_net take it, its quarter circle from the wall to the top) with the texture net
- * tex, whose t runs on from the wall over the whole quarter circle: whole, or (halved) in its two
- * halves, the top's charted by `chart` (draw_net_in_halves). */
+ * and draw_fillet_net take it, its quarter circle from the wall to the top) in its two halves
+ * (draw_net_in_halves): the wall's with the texture net tex, whose t runs on from the wall over
+ * the whole quarter circle, the top's (the top below, for a fillet) with `chart`, so that the
+ * checkerboard crosses from either face onto the piece without a jump. */
 static void draw_rim_piece(const float net[][3][4], const float tex[][3][2], const double centre[][3][3], int rows,
-                           int fillet, int halved, const struct rim_chart *chart)
+                           int fillet, const struct rim_chart *chart)
 {
-  const int v_steps = rows == 3 ? ARC_STEPS : 1;
-  if (halved) draw_net_in_halves(net, tex, centre, fillet ? -1.0f : 1.0f, rows, v_steps, rows == 3, 0, chart);
-  else if (fillet) draw_fillet_net(net, tex, centre, rows, v_steps);
-  else draw_rim_net(net, tex, centre, rows, v_steps);
+  draw_net_in_halves(net, tex, centre, fillet ? -1.0f : 1.0f, rows, rows == 3 ? ARC_STEPS : 1, rows == 3, 0, chart);
 }
 
 /* Whether a strip keeps the column at its end (not where a corner's piece takes over). */
 static int keeps_end_column(enum strip_end end) { return end != ENDS_AT_CORNER_PIECE && end != ENDS_AT_STANDING_CORNER; }
-
-/* The texture's s where a fillet along the wall facing n_w (x, z) ends against the rim along the
- * flush wall facing n_f at the standing corner `corner`: the fillet's s (its wall's, R in from
- * the corner) into *fillet_s, and how far the rim's (its wall's, R out from the corner) is from
- * it beyond whole repeats of the checkerboard into *delta (0 on a grid of whole units); the rim's
- * s moves by -delta and the torus piece's by delta across the rim's end, so that the two meet at
- * the point where the fillet and the rim touch on the top below. */
-static void standing_corner_s(const float corner[2], const int n_f[2], const int n_w[2], float radius, float *fillet_s,
-                              float *delta)
-{
-  *fillet_s = wall_s(corner[0] - (float)n_f[0] * radius, corner[1] - (float)n_f[1] * radius, n_w[0], n_w[1]);
-  const float rim_s = wall_s(corner[0] + (float)n_w[0] * radius, corner[1] + (float)n_w[1] * radius, n_f[0], n_f[1]);
-  *delta = (float)remainder((double)rim_s - *fillet_s, CHECKER_PERIOD);
-}
 
 /* The outward normals (x, z) of the walls meeting at the standing corner at grid point (i, j) of
  * `layer`: n_w of the one with the fillet at its foot, n_f of the one flush with the layer below. */
@@ -365,31 +332,6 @@ static void standing_corner_walls(const struct cube_layers *layers, int layer, i
   const int past_x = cube_layers_filled(layers, layer - 1, qx > 0 ? i - 1 : i, qz > 0 ? j : j - 1);
   n_w[0] = past_x ? -qx : 0, n_w[1] = past_x ? 0 : -qz;
   n_f[0] = past_x ? 0 : -qx, n_f[1] = past_x ? -qz : 0;
-}
-
-/* Where the strip from the corner piece at `corner` to a standing corner of `layer` 2 R away is
- * left out, so that the corner piece's end column u_end, at `at` (R from `corner` along a wall),
- * meets the standing corner's torus piece: that column takes the strip's texture at a standing
- * corner (rim_strip, fillet_strip), t reaching the height `level` (the standing piece's foot) on
- * the top below and, for a rim's piece (`rim`), s moving as standing_corner_s says. */
-static void meet_standing_corner(const struct cube_layers *layers, int layer, const float at[2], const float corner[2],
-                                 float radius, float level, int rim, float tex[3][3][2], int u_end)
-{
-  const float standing[2] = {2 * at[0] - corner[0], 2 * at[1] - corner[1]};
-  for (int i = 0; i < layers->x_count; ++i)
-    for (int j = 0; j < layers->z_count; ++j)
-      /* The point is found to within the float rounding of `standing`. */
-      if (fabs(layers->x[i] - standing[0]) < 1e-3 * radius && fabs(layers->z[j] - standing[1]) < 1e-3 * radius &&
-          standing_corner_at(layers, layer, i, j, radius)) {
-        int n_w[2], n_f[2];
-        float fillet_s, delta;
-        standing_corner_walls(layers, layer, i, j, n_w, n_f);
-        standing_corner_s(standing, n_f, n_w, radius, &fillet_s, &delta);
-        tex[1][u_end][0] -= rim ? delta / 2 : 0;
-        tex[2][u_end][0] -= rim ? delta : 0;
-        tex[1][u_end][1] = (tex[0][u_end][1] + texture_t(layers, level)) / 2;
-        tex[2][u_end][1] = texture_t(layers, level);
-      }
 }
 
 /* The rounded top (rim CAPPED_TOP) or bottom rim of `layer` along its wall on grid line `fixed`
@@ -410,7 +352,6 @@ static void rim_strip(const struct cube_layers *layers, int layer, int along_x, 
   const int count = wall_columns(a, b, keeps_end_column(end_a), keeps_end_column(end_b), radius, columns);
   const float out = rim == CAPPED_TOP ? 1.0f : -1.0f;
   const float top = (float)layers->height[rim == CAPPED_TOP ? layer + 1 : layer], below = top - out * radius;
-  const int halved = rim_halved(layers, layer, radius, rim);
   const float t0 = texture_t(layers, below), t2 = t0 + out * (float)((PI / 2.0) * radius);
   const int in_x = -normal_x, in_z = -normal_z;
   const double axis[2] = {along_x ? a : fixed + (float)in_x * radius, along_x ? fixed + (float)in_z * radius : a};
@@ -429,20 +370,7 @@ static void rim_strip(const struct cube_layers *layers, int layer, int along_x, 
       control_point(net[v][0], x, below, z, 1.0);
       control_point(net[v][1], x, top, z, w);
       control_point(net[v][2], inner_x, top, inner_z, 1.0);
-      /* At a standing corner t reaches the top's height on the top (where the fillet's does), and
-       * s moves to the fillet's there (standing_corner_s). */
-      const int standing = (c + v == 0 && end_a == ENDS_AT_STANDING_CORNER) ||
-                           (c + v == count - 1 && end_b == ENDS_AT_STANDING_CORNER);
-      strip_column_texture(tex[v], wall_s(x, z, normal_x, normal_z), t0, standing ? texture_t(layers, top) : t2);
-      if (standing) {
-        const int away = c + v == 0 ? 1 : -1;
-        const float corner[2] = {along_x ? x - (float)away * radius : x, along_x ? z : z - (float)away * radius};
-        const int n_f[2] = {normal_x, normal_z}, n_w[2] = {along_x ? away : 0, along_x ? 0 : away};
-        float fillet_s, delta;
-        standing_corner_s(corner, n_f, n_w, radius, &fillet_s, &delta);
-        tex[v][1][0] -= delta / 2;
-        tex[v][2][0] -= delta;
-      }
+      strip_column_texture(tex[v], wall_s(x, z, normal_x, normal_z), t0, t2);
       for (int u = 0; u < 3; ++u) {
         centre[v][u][0] = along_x && u == 2 ? inner_x : x + (float)in_x * radius;
         centre[v][u][1] = below;
@@ -450,7 +378,7 @@ static void rim_strip(const struct cube_layers *layers, int layer, int along_x, 
       }
     }
     draw_rim_piece((const float (*)[3][4])net, (const float (*)[3][2])tex, (const double (*)[3][3])centre, 2, 0,
-                   halved, &chart);
+                   &chart);
   }
 }
 
@@ -468,7 +396,6 @@ static void fillet_strip(const struct cube_layers *layers, int layer, int along_
   float columns[4];
   const int count = wall_columns(a, b, keeps_end_column(end_a), keeps_end_column(end_b), radius, columns);
   const float foot = (float)layers->height[layer], above = foot + radius;
-  const int halved = rim_halved(layers, layer, radius, FILLETED_FOOT);
   const float t0 = texture_t(layers, above), t2 = t0 - (float)((PI / 2.0) * radius);
   const double axis[2] = {along_x ? a : fixed + (float)normal_x * radius, along_x ? fixed + (float)normal_z * radius : a};
   const double across[2] = {normal_x, normal_z};
@@ -482,10 +409,7 @@ static void fillet_strip(const struct cube_layers *layers, int layer, int along_
       control_point(net[v][0], x, above, z, 1.0);
       control_point(net[v][1], x, foot, z, w);
       control_point(net[v][2], out_x, foot, out_z, 1.0);
-      /* At a standing corner t reaches the foot's height on the top below, as the rim's does. */
-      const int standing = (c + v == 0 && end_a == ENDS_AT_STANDING_CORNER) ||
-                           (c + v == count - 1 && end_b == ENDS_AT_STANDING_CORNER);
-      strip_column_texture(tex[v], wall_s(x, z, normal_x, normal_z), t0, standing ? texture_t(layers, foot) : t2);
+      strip_column_texture(tex[v], wall_s(x, z, normal_x, normal_z), t0, t2);
       for (int u = 0; u < 3; ++u) {
         centre[v][u][0] = out_x;
         centre[v][u][1] = above;
@@ -493,7 +417,7 @@ static void fillet_strip(const struct cube_layers *layers, int layer, int along_
       }
     }
     draw_rim_piece((const float (*)[3][4])net, (const float (*)[3][2])tex, (const double (*)[3][3])centre, 2, 1,
-                   halved, &chart);
+                   &chart);
   }
 }
 
@@ -550,17 +474,13 @@ static void rim_corner(const struct cube_layers *layers, int layer, int i, int j
   const double axis_xz[2] = {axis[0], axis[1]};
   const float out = rim == CAPPED_TOP ? 1.0f : -1.0f;
   const float top = (float)layers->height[rim == CAPPED_TOP ? layer + 1 : layer], below = top - out * radius;
-  const int halved = rim_halved(layers, layer, radius, rim);
   const float t0 = texture_t(layers, below), t2 = t0 + out * (float)((PI / 2.0) * radius);
   float net[3][3][4], tex[3][3][2];
   double centre[3][3][3];
   rim_corner_net(arc, axis_xz, convex, below, top, s0, s_length, t0, t2, net, tex, centre);
-  for (int end = 0; rim == CAPPED_TOP && end < 2; ++end)
-    meet_standing_corner(layers, layer + 1, end ? to : from, corner, radius, top, 1, tex, 2 * end);
   const struct rim_chart chart =
       corner_rim_chart(axis_xz, convex ? 0.0 : 2.0 * radius, below, out, radius);
-  draw_rim_piece((const float (*)[3][4])net, (const float (*)[3][2])tex, (const double (*)[3][3])centre, 3, 0, halved,
-                 &chart);
+  draw_rim_piece((const float (*)[3][4])net, (const float (*)[3][2])tex, (const double (*)[3][3])centre, 3, 0, &chart);
 }
 
 /* Whether fillets turn round the foot of the corner at grid point (i, j) of `layer`: a convex
@@ -602,18 +522,14 @@ static void fillet_corner(const struct cube_layers *layers, int layer, int i, in
   }
   const float foot = (float)layers->height[layer], above = foot + radius;
   const double y[3] = {above, foot, foot};
-  const int halved = rim_halved(layers, layer, radius, FILLETED_FOOT);
   const float t0 = texture_t(layers, above), t2 = t0 - (float)((PI / 2.0) * radius);
   float net[3][3][4], tex[3][3][2];
   double centre[3][3][3];
   turned_profile_net(arc, axis, scale, y, s0, s_length, t0, t2, net, tex, centre);
-  for (int end = 0; rounded && end < 2; ++end)
-    meet_standing_corner(layers, layer, end ? to : from, corner, radius, foot, 0, tex, 2 * end);
   /* On the top below the piece's edge is scale[2] R from the axis: 2 R round a rounded upright, R
    * round a sharp one. */
   const struct rim_chart chart = corner_rim_chart(axis, scale[2] * radius, above, -1.0, radius);
-  draw_rim_piece((const float (*)[3][4])net, (const float (*)[3][2])tex, (const double (*)[3][3])centre, 3, 1, halved,
-                 &chart);
+  draw_rim_piece((const float (*)[3][4])net, (const float (*)[3][2])tex, (const double (*)[3][3])centre, 3, 1, &chart);
 }
 
 /* What `layer` covers of the R x R square of cell (i, j) at its grid point (gi, gj). */
@@ -687,6 +603,84 @@ static void fan_apex(const float end[2], const float corner[2], const float axis
   for (int k = 0; k < 2; ++k) apex[k] = (end[k] > corner[k]) == (axis[k] > corner[k]) ? corner[k] : end[k];
 }
 
+/* The texture of a standing corner's torus piece (standing_corner), which meets five neighbours:
+ * the fillet's end (its row 0, from the fillet's wall at u = 0 to the top below at u = 1), the
+ * upright's foot (column 0), the rim's end (column 2, from the top below at v = 0 to the flush
+ * wall at v = 1) and the flush plane (row 2). The fillet and the rim are drawn in halves, the
+ * half next to a wall with the wall's texture and the half next to the top below with its (x, z)
+ * (draw_net_in_halves), so the piece is drawn in three parts of its grid, each continuing the
+ * neighbours it touches:
+ * - u up to 1/2 (the fillet's wall half, the upright's foot, the flush plane's first half): the
+ *   walls' texture, s from the fillet's round the upright's arc (fillet_s + upright_turn v), t from
+ *   the height R above the foot down the fillet by its arc's length (standing_wall_texture);
+ * - u from 1/2, v up to 1/2 (the fillet's and the rim's halves next to the top below): the top
+ *   below's (x, z), run on by arc length round both the fillet's and the rim's quarter circles
+ *   (standing_top_texture);
+ * - u and v from 1/2 (the rim's wall half and the flush plane's second half): from the first
+ *   part's values along u = 1/2 to the rim's wall texture along its end (s the flush wall's, t
+ *   from R below the foot up the rim by its arc's length), linearly in u.
+ * The flush plane takes the piece's values on its inner rim, so the two agree there. */
+struct standing_texture {
+  float fillet_s, upright_turn, rim_s; /* rim_s moved by whole repeats close to fillet_s + upright_turn */
+  float t_above, t_below;              /* t R above and R below the foot */
+  double corner[2], n_w[2], n_f[2];    /* x, z: the corner; its fillet's wall's and the flush wall's normals */
+  double foot, radius;
+};
+
+/* The walls' texture of part `part` of the piece (0: u up to 1/2; 1: u and v from 1/2) by its
+ * formula, bilinear in the grid parameters (u, v), taken at any (u, v). */
+static void standing_part_texture(const struct standing_texture *st, int part, double u, double v, double out[2])
+{
+  const double quarter = PI / 2.0 * st->radius;
+  const double s_round = st->fillet_s + st->upright_turn * v;  /* the first part's s */
+  if (part == 0) {
+    out[0] = s_round;
+    out[1] = st->t_above - quarter * u;
+    return;
+  }
+  const double to_rim = 2 * u - 1;  /* 0 along u = 1/2, 1 along the rim's end */
+  out[0] = s_round + (st->rim_s - s_round) * to_rim;
+  out[1] = (st->t_above - quarter / 2) * (1 - to_rim) + (st->t_below + quarter * (1 - v)) * to_rim;
+}
+
+/* The walls' texture at grid parameters (u, v) of the piece away from the top below. */
+static void standing_wall_texture(const struct standing_texture *st, double u, double v, double out[2])
+{
+  standing_part_texture(st, u > 0.5, u, v, out);
+}
+
+/* Part `part`'s texture as a net for glMap2f: bilinear, so its quadratic net holds its values at
+ * u, v = 0, 1/2 and 1. */
+static void standing_wall_net(const struct standing_texture *st, int part, float tex[3][3][2])
+{
+  for (int v = 0; v < 3; ++v)
+    for (int u = 0; u < 3; ++u) {
+      double value[2];
+      standing_part_texture(st, part, u / 2.0, v / 2.0, value);
+      tex[v][u][0] = (float)value[0];
+      tex[v][u][1] = (float)value[1];
+    }
+}
+
+/* The top below's (x, z) run on over the part of the piece next to it: a point of the piece at
+ * angle turn about the fillet's axis from straight down (towards the fillet's wall) and at angle
+ * tube round the piece's tube from the fillet's side (towards the flush plane) takes the top's
+ * (x, z) R - R turn out along n_w and R tube - R along n_f from the corner: the fillet's chart
+ * where tube is 0, the rim's where turn is 0. */
+static void standing_top_texture(const double p[3], const void *data, float out[2])
+{
+  const struct standing_texture *st = data;
+  const double r = st->radius;
+  const double from_corner[2] = {p[0] - st->corner[0], p[2] - st->corner[1]};
+  const double a = from_corner[0] * st->n_w[0] + from_corner[1] * st->n_w[1];
+  const double d = from_corner[0] * st->n_f[0] + from_corner[1] * st->n_f[1];
+  const double ra = a - r, rb = p[1] - (st->foot + r);
+  const double turn = atan2(-ra, -rb), tube = atan2(d + r, 2 * r - hypot(ra, rb));
+  const double along_w = r - r * turn, along_f = r * tube - r;
+  out[0] = (float)(st->corner[0] + along_w * st->n_w[0] + along_f * st->n_f[0]);
+  out[1] = (float)(st->corner[1] + along_w * st->n_w[1] + along_f * st->n_f[1]);
+}
+
 /* A plane in which concave_corner_fans draws: `vertex` draws the point (a, b) of the plane, at
  * parameter u of the torus's inner rim when on_rim. */
 struct fan_plane {
@@ -695,8 +689,8 @@ struct fan_plane {
   float y;                      /* a top or bottom: its height */
   float origin[2];              /* a wall: (a, b) is the point origin + a along[] at height b */
   int along[2], normal[2];      /* (x, z) */
-  float s_shift, rim_tex[3][2]; /* its texture: the wall's s moved by whole repeats, and the
-                                   torus piece's on the rim (its texture net's last row) */
+  float s_shift;                /* a wall's texture: the wall's s moved by whole repeats */
+  const struct standing_texture *standing; /* a wall's: the torus piece's texture on the rim */
 };
 
 /* Round the concave point `corner` of a plane (a, b) whose torus piece's fillet arc runs from
@@ -753,14 +747,14 @@ static void torus_corner_flat(const struct cube_layers *layers, int layer, int i
 }
 
 /* A point (a, b) of a wall, its texture the wall's moved by the plane's s_shift, on the torus's
- * inner rim the torus piece's texture there (its net's last row at u), so that the two agree. */
+ * inner rim the torus piece's texture there (its last row at u), so that the two agree. */
 static void wall_vertex(const struct fan_plane *plane, double a, double b, int on_rim, double u)
 {
   const double x = plane->origin[0] + a * plane->along[0], z = plane->origin[1] + a * plane->along[1];
   if (on_rim) {
-    const double bu[3] = {(1 - u) * (1 - u), 2 * u * (1 - u), u * u};
-    glTexCoord2d(bu[0] * plane->rim_tex[0][0] + bu[1] * plane->rim_tex[1][0] + bu[2] * plane->rim_tex[2][0],
-                 bu[0] * plane->rim_tex[0][1] + bu[1] * plane->rim_tex[1][1] + bu[2] * plane->rim_tex[2][1]);
+    double st[2];
+    standing_wall_texture(plane->standing, u, 1.0, st);
+    glTexCoord2d(st[0], st[1]);
   } else {
     glTexCoord2d(x * plane->normal[1] - z * plane->normal[0] + plane->s_shift, b - plane->layers->height[0]);
   }
@@ -797,43 +791,39 @@ static void standing_corner(const struct cube_layers *layers, int layer, int i, 
   float net[3][3][4], tex[3][3][2];
   double centre[3][3][3];
   turned_profile_net_in_frame(arc, axis, scale, depth, frame, 0, 0, 0, 0, net, tex, centre);
-  float fillet_s, delta;
-  standing_corner_s(corner, n_f, n_w, radius, &fillet_s, &delta);
   /* Which end of the upright's arc lies on the fillet's wall (R in from the flush wall). */
   const float on_fillet_wall[2] = {corner[0] - (float)n_f[0] * radius, corner[1] - (float)n_f[1] * radius};
   const int from_fillet = fabsf(from[0] - on_fillet_wall[0]) + fabsf(from[1] - on_fillet_wall[1]) < radius / 2;
-  const float upright_turn = from_fillet ? s_length : -s_length;
-  const float t_above = texture_t(layers, foot + radius), t_foot = texture_t(layers, foot);
-  const float t_below = texture_t(layers, foot - radius);
-  for (int k = 0; k < 3; ++k) {
-    tex[0][k][0] = fillet_s;
-    tex[0][k][1] = t_above + (t_foot - t_above) * (float)k / 2;
-    tex[k][0][0] = fillet_s + upright_turn * (float)k / 2;
-    tex[k][0][1] = t_above;
-    tex[k][2][0] = fillet_s + delta * (float)k / 2;
-    tex[k][2][1] = t_foot + (t_below - t_foot) * (float)k / 2;
-  }
-  /* In the flush plane the texture runs on as the plane's (t the height, s along a from the
-   * row's one end to its other, by 2 R on cells of whole units): the last row's middle value
-   * makes it so at the arc's middle, (a, b) = (1 - sqrt(2)) R (1, 1) from (0, foot), and the
-   * net's middle is the blend of its four sides (a Coons net). */
-  const double middle = (1 - sqrt(2.0)) * radius;
-  const double plane_middle[2] = {tex[2][0][0] + (tex[2][2][0] - tex[2][0][0]) * (middle + radius) / (2 * radius),
-                                  texture_t(layers, foot + middle)};
-  for (int k = 0; k < 2; ++k) {
-    tex[2][1][k] = (float)((4 * plane_middle[k] - tex[2][0][k] - tex[2][2][k]) / 2);
-    tex[1][1][k] = (tex[0][1][k] + tex[2][1][k] + tex[1][0][k] + tex[1][2][k]) / 2 -
-                   (tex[0][0][k] + tex[0][2][k] + tex[2][0][k] + tex[2][2][k]) / 4;
-  }
-  draw_rim_net((const float (*)[3][4])net, (const float (*)[3][2])tex, (const double (*)[3][3])centre, 3, ARC_STEPS);
+  struct standing_texture st = {
+      .fillet_s = wall_s(on_fillet_wall[0], on_fillet_wall[1], n_w[0], n_w[1]),
+      .upright_turn = from_fillet ? s_length : -s_length,
+      .t_above = texture_t(layers, foot + radius),
+      .t_below = texture_t(layers, foot - radius),
+      .corner = {corner[0], corner[1]},
+      .n_w = {n_w[0], n_w[1]},
+      .n_f = {n_f[0], n_f[1]},
+      .foot = foot,
+      .radius = radius};
+  /* The rim's s at its end (its wall's, R out from the corner), moved by whole repeats. */
+  const float rim_s = wall_s(corner[0] + (float)n_w[0] * radius, corner[1] + (float)n_w[1] * radius, n_f[0], n_f[1]);
+  st.rim_s = (float)(rim_s - CHECKER_PERIOD * nearbyint((rim_s - st.fillet_s - st.upright_turn) / CHECKER_PERIOD));
+  float wall_net[3][3][2], rim_net[3][3][2];
+  standing_wall_net(&st, 0, wall_net);
+  standing_wall_net(&st, 1, rim_net);
+  const int half = ARC_STEPS / 2;
+  begin_net_parts((const float (*)[3][4])net, (const double (*)[3][3])centre, 1.0f, 3, ARC_STEPS);
+  draw_part_mapped((const float (*)[3][2])wall_net, (struct grid_part){0, half, 0, ARC_STEPS});
+  draw_part_charted(standing_top_texture, &st, (struct grid_part){half, ARC_STEPS, 0, half});
+  draw_part_mapped((const float (*)[3][2])rim_net, (struct grid_part){half, ARC_STEPS, half, ARC_STEPS});
+  end_net_parts();
 
   struct fan_plane plane = {.vertex = wall_vertex, .layers = layers, .origin = {corner[0], corner[1]},
-                            .along = {n_w[0], n_w[1]}, .normal = {n_f[0], n_f[1]}};
-  for (int u = 0; u < 3; ++u)
-    for (int k = 0; k < 2; ++k) plane.rim_tex[u][k] = tex[2][u][k];
+                            .along = {n_w[0], n_w[1]}, .normal = {n_f[0], n_f[1]}, .standing = &st};
   /* The wall's s at the rim's start, (a, b) = (-R, foot + R), moved by whole repeats to the torus's there. */
   const float wall_start_s = wall_s(corner[0] - (float)n_w[0] * radius, corner[1] - (float)n_w[1] * radius, n_f[0], n_f[1]);
-  plane.s_shift = (float)(CHECKER_PERIOD * nearbyint((tex[2][0][0] - wall_start_s) / CHECKER_PERIOD));
+  double start[2];
+  standing_wall_texture(&st, 0.0, 1.0, start);
+  plane.s_shift = (float)(CHECKER_PERIOD * nearbyint((start[0] - wall_start_s) / CHECKER_PERIOD));
   const float fan_from[2] = {0, (float)foot + radius}, fan_corner[2] = {0, (float)foot}, fan_to[2] = {radius, (float)foot};
   glNormal3f((float)n_f[0], 0, (float)n_f[1]);
   concave_corner_fans(fan_from, fan_corner, fan_to, &plane);

@@ -75,20 +75,39 @@ void rational_patch_point(const float net[][3][4], int rows, double u, double v,
   for (int k = 0; k < 3; ++k) out[k] = h[k] / h[3];
 }
 
-/* Draws the grid points of columns [i0, i1] and rows [j0, j1] of the patch whose maps are set
- * (begin_patch_maps) in the triangle strips glEvalMesh2 draws them in, each point with the
- * texture coordinates its chart gives (the texture's map is off, so glEvalPoint2 takes the
- * current ones). */
-static void draw_charted_part(const float net[][3][4], int rows, int v_steps, int i0, int i1, int j0, int j1,
-                              point_texture texture, const void *chart)
+/* The patch begin_net_parts set up, for draw_part_mapped and draw_part_charted. */
+static const float (*part_net)[3][4];
+static int part_rows, part_v_steps;
+
+void begin_net_parts(const float net[][3][4], const double centre[][3][3], float side, int rows, int v_steps)
 {
-  for (int j = j0; j < j1; ++j) {
+  float normals[3][3][3];
+  normals_about_centres(net, centre, side, rows, normals);
+  begin_patch_maps(net, (const float (*)[3][3])normals, rows, v_steps);
+  part_net = net;
+  part_rows = rows;
+  part_v_steps = v_steps;
+}
+
+void draw_part_mapped(const float tex[][3][2], struct grid_part part)
+{
+  glMap2f(GL_MAP2_TEXTURE_COORD_2, 0, 1, 2, 3, 0, 1, 6, part_rows, &tex[0][0][0]);
+  glEnable(GL_MAP2_TEXTURE_COORD_2);
+  glEvalMesh2(GL_FILL, part.i0, part.i1, part.j0, part.j1);
+  glDisable(GL_MAP2_TEXTURE_COORD_2);
+}
+
+void draw_part_charted(point_texture texture, const void *chart, struct grid_part part)
+{
+  /* glEvalMesh2's rows, as the triangle strips it draws them in; the texture's map is off, so
+   * glEvalPoint2 takes the current texture coordinates. */
+  for (int j = part.j0; j < part.j1; ++j) {
     glBegin(GL_TRIANGLE_STRIP);
-    for (int i = i0; i <= i1; ++i)
+    for (int i = part.i0; i <= part.i1; ++i)
       for (int k = 0; k < 2; ++k) {
         double point[3];
         float st[2];
-        rational_patch_point(net, rows, (double)i / ARC_STEPS, (double)(j + k) / v_steps, point);
+        rational_patch_point(part_net, part_rows, (double)i / ARC_STEPS, (double)(j + k) / part_v_steps, point);
         texture(point, chart, st);
         glTexCoord2fv(st);
         glEvalPoint2(i, j + k);
@@ -97,24 +116,27 @@ static void draw_charted_part(const float net[][3][4], int rows, int v_steps, in
   }
 }
 
+void end_net_parts(void)
+{
+  end_patch_maps();
+  part_net = NULL;
+}
+
 void draw_net_in_halves(const float net[][3][4], const float tex[][3][2], const double centre[][3][3], float side,
                         int rows, int v_steps, int arc_along_v, int top_first, const struct rim_chart *chart)
 {
-  float normals[3][3][3];
-  normals_about_centres(net, centre, side, rows, normals);
-  begin_patch_maps(net, (const float (*)[3][3])normals, rows, v_steps);
-  /* The halves' grid ranges across the arc: the wall's first, unless the arc starts at the top. */
+  begin_net_parts(net, centre, side, rows, v_steps);
+  /* The halves across the arc: the wall's first, unless the arc starts at the top. */
   const int steps = arc_along_v ? v_steps : ARC_STEPS, middle = steps / 2;
   const int wall[2] = {top_first ? middle : 0, top_first ? steps : middle};
   const int top[2] = {top_first ? 0 : middle, top_first ? middle : steps};
-  glMap2f(GL_MAP2_TEXTURE_COORD_2, 0, 1, 2, 3, 0, 1, 6, rows, &tex[0][0][0]);
-  glEnable(GL_MAP2_TEXTURE_COORD_2);
-  if (arc_along_v) glEvalMesh2(GL_FILL, 0, ARC_STEPS, wall[0], wall[1]);
-  else glEvalMesh2(GL_FILL, wall[0], wall[1], 0, v_steps);
-  glDisable(GL_MAP2_TEXTURE_COORD_2);
-  if (arc_along_v) draw_charted_part(net, rows, v_steps, 0, ARC_STEPS, top[0], top[1], rim_top_texture, chart);
-  else draw_charted_part(net, rows, v_steps, top[0], top[1], 0, v_steps, rim_top_texture, chart);
-  end_patch_maps();
+  const struct grid_part wall_half = arc_along_v ? (struct grid_part){0, ARC_STEPS, wall[0], wall[1]}
+                                                 : (struct grid_part){wall[0], wall[1], 0, v_steps};
+  const struct grid_part top_half = arc_along_v ? (struct grid_part){0, ARC_STEPS, top[0], top[1]}
+                                                : (struct grid_part){top[0], top[1], 0, v_steps};
+  draw_part_mapped(tex, wall_half);
+  draw_part_charted(rim_top_texture, chart, top_half);
+  end_net_parts();
 }
 
 void draw_rim_net(const float net[][3][4], const float tex[][3][2], const double centre[][3][3], int rows,

@@ -101,6 +101,21 @@ struct rim_chart corner_rim_chart(const double axis[2], double top_distance, dou
 /* The texture coordinates the chart (a struct rim_chart) gives to a point of the top's half. */
 void rim_top_texture(const double point[3], const void *chart, float out[2]);
 
+/* Drawing a patch in parts, each with its own texture: begin_net_parts sets the maps of a rim's
+ * (side 1, as draw_rim_net) or a fillet's (side -1, as draw_fillet_net) patch and its grid
+ * (ARC_STEPS steps along u, v_steps along v); draw_part_mapped draws a part of the grid with the
+ * texture net tex (glEvalMesh2 on the part), draw_part_charted with the chart's texture point
+ * by point (the same grid points by glEvalPoint2, in the triangle strips glEvalMesh2 draws);
+ * end_net_parts ends. The parts share the points of their common sides, as the whole patch's
+ * mesh would, with its neighbours too. */
+struct grid_part {
+  int i0, i1, j0, j1;  /* columns [i0, i1] of the grid along u, rows [j0, j1] along v */
+};
+void begin_net_parts(const float net[][3][4], const double centre[][3][3], float side, int rows, int v_steps);
+void draw_part_mapped(const float tex[][3][2], struct grid_part part);
+void draw_part_charted(point_texture texture, const void *chart, struct grid_part part);
+void end_net_parts(void);
+
 /* Draws a rim's (side 1, as draw_rim_net) or a fillet's (side -1, as draw_fillet_net) patch in the
  * two halves of its quarter circle, which runs along u (a strip) or, with arc_along_v, along v (a
  * corner's piece), from the wall to the top, or from the top to the wall with top_first: the

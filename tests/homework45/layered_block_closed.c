@@ -524,37 +524,6 @@ static size_t rough_seams(void)
   return rough;
 }
 
-/* How far the texture of a rim's or a fillet's half drawn with a top's chart lies from that top's
- * (x, z) run on by arc length, at most, over every such vertex: at angle phi = acos |n_y| from the
- * vertical (n its unit normal) a point of the quarter circle is R sin phi from the top's edge
- * along the normal's horizontal direction h, and its texture must be the top's (x, z) R phi from
- * the edge: (x, z) + h R (phi - sin phi) on a rim, whose circle bulges out of the solid (on
- * strips, on a sphere's eighth from its pole, on a torus piece above a fillet from its inner
- * rim), (x, z) - h R (phi - sin phi) on a fillet, whose circle is hollow: there the point lies on
- * the side of the top (the nearest of the layers' heights) that its normal faces. It also says
- * how many vertices were drawn so (*count). */
-static double charted_texture_error(const struct cube_layers *layers, float radius, size_t *count)
-{
-  double worst = 0;
-  *count = 0;
-  for (size_t i = 0; i < drawn_count; ++i) {
-    if (!drawn[i].charted) continue;
-    ++*count;
-    const double *p = drawn[i].point, *n = drawn[i].normal;
-    double level = layers->height[0];
-    for (int k = 1; k <= layers->layer_count; ++k)
-      if (fabs(layers->height[k] - p[1]) < fabs(level - p[1])) level = layers->height[k];
-    const double sign = (p[1] - level) * n[1] > 0 ? -1.0 : 1.0;
-    const double length = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-    const double horizontal = hypot(n[0], n[2]);
-    const double phi = acos(fmin(1.0, fabs(n[1]) / length));
-    const double beyond = horizontal > 0 ? sign * radius * (phi - sin(phi)) / horizontal : 0.0;
-    const double expected[2] = {p[0] + beyond * n[0], p[2] + beyond * n[2]};
-    worst = fmax(worst, fmax(fabs(drawn[i].texture[0] - expected[0]), fabs(drawn[i].texture[1] - expected[1])));
-  }
-  return worst;
-}
-
 /* How many of the four cells around grid point (i, j) `layer` fills. */
 static int cells_around(const struct cube_layers *layers, int layer, int i, int j)
 {
@@ -612,19 +581,16 @@ static double fillet_axis_error(const struct cube_layers *layers, double radius)
   return worst;
 }
 
-/* How far the drawn points round each standing corner (a filleted foot's corner between a
- * fillet's side, facing n_w, and a side flush with the layer below, facing n_f) lie off R from
- * the torus piece's centre circle, at most, and how far their normals turn from the direction
- * away from it (radians, into *normal_error): the points R deep behind the flush plane, within
- * R of the corner along n_w and of the foot in height, are the torus piece's and its seams' with
- * the fillet's end, the upright's foot and the rim's end. In the flush plane, with a along n_w
- * from the corner, the circle lies R deep, about the fillet's axis (a, y) = (R, foot + R), of
- * radius 2 R. */
-static double standing_corner_error(const struct cube_layers *layers, double radius, double *normal_error)
+/* A standing corner (a filleted foot's corner between a fillet's side, facing n_w, and a side
+ * flush with the layer below, facing n_f): its grid point (x, z) and the foot's height. */
+struct standing {
+  double g[2], n_w[2], n_f[2], foot;
+};
+
+/* The standing corners of the object, into out (at most `capacity`); returns how many. */
+static int standing_corners(const struct cube_layers *layers, struct standing *out, int capacity)
 {
-  double worst = 0;
-  *normal_error = 0;
-  if (radius <= 0) return 0;
+  int count = 0;
   for (int k = 1; k < layers->layer_count; ++k)
     for (int j = 0; j < layers->z_count; ++j)
       for (int i = 0; i < layers->x_count; ++i) {
@@ -634,30 +600,123 @@ static double standing_corner_error(const struct cube_layers *layers, double rad
           for (int dj = -1; dj <= 0; ++dj)
             if (cube_layers_filled(layers, k, i + di, j + dj)) qi = di, qj = dj;
         if (!(cube_layers_capped(layers, k, i + qi, j + qj) & FILLETED_FOOT)) continue;
+        if (count == capacity) exit(2);
         const int qx = qi ? -1 : 1, qz = qj ? -1 : 1;
         const int past_x = cube_layers_filled(layers, k - 1, qx > 0 ? i - 1 : i, qz > 0 ? j : j - 1);
-        const double n_w[2] = {past_x ? -qx : 0, past_x ? 0 : -qz}, n_f[2] = {past_x ? 0 : -qx, past_x ? -qz : 0};
-        const double gx = layers->x[i], gz = layers->z[j], foot = layers->height[k], e = 1e-9;
-        for (size_t v = 0; v < drawn_count; ++v) {
-          const double *p = drawn[v].point;
-          const double a = (p[0] - gx) * n_w[0] + (p[2] - gz) * n_w[1];
-          const double depth = -((p[0] - gx) * n_f[0] + (p[2] - gz) * n_f[1]);
-          if (depth < e || depth > radius + e || a < -radius - e || a > radius + e || fabs(p[1] - foot) > radius + e)
-            continue;
-          const double in_plane = hypot(a - radius, p[1] - foot - radius);
-          worst = fmax(worst, fabs(hypot(in_plane - 2 * radius, depth - radius) - radius));
-          /* The nearest point of the circle, and the direction from it to the point. */
-          const double c_a = radius + 2 * radius * (a - radius) / in_plane;
-          const double c_y = foot + radius + 2 * radius * (p[1] - foot - radius) / in_plane;
-          const double out_a = a - c_a, out_depth = depth - radius, out_y = p[1] - c_y;
-          const double away[3] = {out_a * n_w[0] - out_depth * n_f[0], out_y, out_a * n_w[1] - out_depth * n_f[1]};
-          const double *n = drawn[v].normal;
-          const double dot = (away[0] * n[0] + away[1] * n[1] + away[2] * n[2]) /
-                             (sqrt(away[0] * away[0] + away[1] * away[1] + away[2] * away[2]) *
-                              sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]));
-          *normal_error = fmax(*normal_error, acos(fmin(1.0, fmax(-1.0, dot))));
-        }
+        const struct standing corner = {{layers->x[i], layers->z[j]},
+                                        {past_x ? -qx : 0, past_x ? 0 : -qz},
+                                        {past_x ? 0 : -qx, past_x ? -qz : 0},
+                                        layers->height[k]};
+        out[count++] = corner;
       }
+  return count;
+}
+
+/* Point p in a standing corner's frame, a along n_w from the corner and depth behind the flush
+ * plane (along -n_f); whether it lies where the torus piece and its seams do (R deep behind the
+ * flush plane, within R of the corner along n_w and of the foot in height). */
+static int in_standing_corner(const struct standing *c, const double p[3], double radius, double *a, double *depth)
+{
+  const double e = 1e-9;
+  *a = (p[0] - c->g[0]) * c->n_w[0] + (p[2] - c->g[1]) * c->n_w[1];
+  *depth = -((p[0] - c->g[0]) * c->n_f[0] + (p[2] - c->g[1]) * c->n_f[1]);
+  return !(*depth < e || *depth > radius + e || *a < -radius - e || *a > radius + e ||
+           fabs(p[1] - c->foot) > radius + e);
+}
+
+#define MAX_STANDING 64
+
+/* How far the drawn points round each standing corner lie off R from the torus piece's centre
+ * circle, at most, and how far their normals turn from the direction away from it (radians, into
+ * *normal_error): the points in_standing_corner are the torus piece's and its seams' with the
+ * fillet's end, the upright's foot and the rim's end. In the flush plane, with a along n_w from
+ * the corner, the circle lies R deep, about the fillet's axis (a, y) = (R, foot + R), of radius
+ * 2 R. */
+static double standing_corner_error(const struct cube_layers *layers, double radius, double *normal_error)
+{
+  double worst = 0;
+  *normal_error = 0;
+  if (radius <= 0) return 0;
+  struct standing corners[MAX_STANDING];
+  const int count = standing_corners(layers, corners, MAX_STANDING);
+  for (int c = 0; c < count; ++c) {
+    const double *n_w = corners[c].n_w, *n_f = corners[c].n_f, foot = corners[c].foot;
+    for (size_t v = 0; v < drawn_count; ++v) {
+      const double *p = drawn[v].point;
+      double a, depth;
+      if (!in_standing_corner(&corners[c], p, radius, &a, &depth)) continue;
+      const double in_plane = hypot(a - radius, p[1] - foot - radius);
+      worst = fmax(worst, fabs(hypot(in_plane - 2 * radius, depth - radius) - radius));
+      /* The nearest point of the circle, and the direction from it to the point. */
+      const double c_a = radius + 2 * radius * (a - radius) / in_plane;
+      const double c_y = foot + radius + 2 * radius * (p[1] - foot - radius) / in_plane;
+      const double out_a = a - c_a, out_depth = depth - radius, out_y = p[1] - c_y;
+      const double away[3] = {out_a * n_w[0] - out_depth * n_f[0], out_y, out_a * n_w[1] - out_depth * n_f[1]};
+      const double *n = drawn[v].normal;
+      const double dot = (away[0] * n[0] + away[1] * n[1] + away[2] * n[2]) /
+                         (sqrt(away[0] * away[0] + away[1] * away[1] + away[2] * away[2]) *
+                          sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]));
+      *normal_error = fmax(*normal_error, acos(fmin(1.0, fmax(-1.0, dot))));
+    }
+  }
+  return worst;
+}
+
+/* The texture a point p of a standing corner's torus piece takes from the top below, the corner
+ * in_standing_corner (a, depth): at angle turn about the fillet's axis from straight down and
+ * angle tube round the piece's tube from the fillet's side, the top's (x, z) R - R turn out along
+ * n_w and R tube - R along n_f from the corner (the fillet's unrolling, and the rim's). */
+static void standing_top_texture(const struct standing *c, const double p[3], double a, double depth, double radius,
+                                 double out[2])
+{
+  const double ra = a - radius, rb = p[1] - c->foot - radius;
+  const double turn = atan2(-ra, -rb), tube = atan2(radius - depth, 2 * radius - hypot(ra, rb));
+  const double along_w = radius - radius * turn, along_f = radius * tube - radius;
+  for (int k = 0; k < 2; ++k) out[k] = c->g[k] + along_w * c->n_w[k] + along_f * c->n_f[k];
+}
+
+/* How far the texture of a rim's or a fillet's half drawn with a top's chart lies from that top's
+ * (x, z) run on by arc length, at most, over every such vertex: at angle phi = acos |n_y| from the
+ * vertical (n its unit normal) a point of the quarter circle is R sin phi from the top's edge
+ * along the normal's horizontal direction h, and its texture must be the top's (x, z) R phi from
+ * the edge: (x, z) + h R (phi - sin phi) on a rim, whose circle bulges out of the solid (on
+ * strips, on a sphere's eighth from its pole, on a torus piece above a fillet from its inner
+ * rim), (x, z) - h R (phi - sin phi) on a fillet, whose circle is hollow: there the point lies on
+ * the side of the top (the nearest of the layers' heights) that its normal faces. Round a
+ * standing corner, where the torus piece's part next to the top below unrolls along both its
+ * quarter circles, standing_top_texture. It also says how many vertices were drawn so (*count). */
+static double charted_texture_error(const struct cube_layers *layers, float radius, size_t *count)
+{
+  double worst = 0;
+  *count = 0;
+  struct standing corners[MAX_STANDING];
+  const int standing_count = radius > 0 ? standing_corners(layers, corners, MAX_STANDING) : 0;
+  for (size_t i = 0; i < drawn_count; ++i) {
+    if (!drawn[i].charted) continue;
+    ++*count;
+    const double *p = drawn[i].point, *n = drawn[i].normal;
+    double expected[2];
+    int standing = 0;
+    for (int c = 0; c < standing_count && !standing; ++c) {
+      double a, depth;
+      if (!in_standing_corner(&corners[c], p, radius, &a, &depth)) continue;
+      standing_top_texture(&corners[c], p, a, depth, radius, expected);
+      standing = 1;
+    }
+    if (!standing) {
+      double level = layers->height[0];
+      for (int k = 1; k <= layers->layer_count; ++k)
+        if (fabs(layers->height[k] - p[1]) < fabs(level - p[1])) level = layers->height[k];
+      const double sign = (p[1] - level) * n[1] > 0 ? -1.0 : 1.0;
+      const double length = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+      const double horizontal = hypot(n[0], n[2]);
+      const double phi = acos(fmin(1.0, fabs(n[1]) / length));
+      const double beyond = horizontal > 0 ? sign * radius * (phi - sin(phi)) / horizontal : 0.0;
+      expected[0] = p[0] + beyond * n[0];
+      expected[1] = p[2] + beyond * n[2];
+    }
+    worst = fmax(worst, fmax(fabs(drawn[i].texture[0] - expected[0]), fabs(drawn[i].texture[1] - expected[1])));
+  }
   return worst;
 }
 
