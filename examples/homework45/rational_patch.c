@@ -2,7 +2,6 @@
 
 #include <math.h>
 #include <stddef.h>
-#include <string.h>
 #include <GL/glut.h>
 
 #include "rounded_upright.h"
@@ -74,6 +73,9 @@ void rational_patch_point(const float net[][3][4], int rows, double u, double v,
       for (int k = 0; k < 4; ++k) h[k] += (rows == 3 ? bv3[j] : bv2[j]) * bu[i] * net[j][i][k];
   for (int k = 0; k < 3; ++k) out[k] = h[k] / h[3];
 }
+
+/* draw_net_in_halves cuts an arc's grid at its middle step. */
+_Static_assert(ARC_STEPS % 2 == 0, "ARC_STEPS must be even");
 
 /* The patch begin_net_parts set up, for draw_part_mapped and draw_part_charted. */
 static const float (*part_net)[3][4];
