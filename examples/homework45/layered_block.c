@@ -306,8 +306,8 @@ static enum strip_end strip_end_at(const struct cube_layers *layers, int layer, 
   return cells_around(layers, layer, i, j) == 1 ? ENDS_IN_MITRE : RUNS_ON;
 }
 
-/* Draws a rim's or a fillet's patch (a strip, rows 2, or a corner's piece, rows 3, as draw_rim_net
- * and draw_fillet_net take it, its quarter circle from the wall to the top) in its two halves
+/* Draws a rim's or a fillet's patch (a strip, rows 2, or a corner's piece, rows 3, as
+ * begin_net_parts takes it, its quarter circle from the wall to the top) in its two halves
  * (draw_net_in_halves): the wall's with the texture net tex, whose t runs on from the wall over
  * the whole quarter circle, the top's (the top below, for a fillet) with `chart`, so that the
  * checkerboard crosses from either face onto the piece without a jump. */
@@ -772,7 +772,7 @@ static void wall_vertex(const struct fan_plane *plane, double a, double b, int o
  * the fillet's quarter circle R inside the flush plane, in the plane and scaled by 2 from its
  * axis), radii 2 R and R about the fillet's axis, between the fillet's end, the upright's
  * quarter cylinder R above the foot and the rim's end, its normals from its tube's centre circle
- * (draw_rim_net); the flush plane keeps what lies outside its arc of radius 2 R
+ * (begin_net_parts); the flush plane keeps what lies outside its arc of radius 2 R
  * (concave_corner_fans). Its texture takes each neighbour's along their seams: the fillet's end
  * (s the fillet's, t from the foot + R to the foot's height), the upright's foot (s as on the
  * upright, moved by whole repeats to start at the fillet's, t at the foot + R) and the rim's end

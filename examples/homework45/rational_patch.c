@@ -33,17 +33,6 @@ static void end_patch_maps(void)
   glDisable(GL_MAP2_VERTEX_4);
 }
 
-void draw_rational_patch(const float net[][3][4], const float tex[][3][2], const float normals[][3][3], int rows,
-                         int v_steps)
-{
-  begin_patch_maps(net, normals, rows, v_steps);
-  glMap2f(GL_MAP2_TEXTURE_COORD_2, 0, 1, 2, 3, 0, 1, 6, rows, &tex[0][0][0]);
-  glEnable(GL_MAP2_TEXTURE_COORD_2);
-  glEvalMesh2(GL_FILL, 0, ARC_STEPS, 0, v_steps);
-  glDisable(GL_MAP2_TEXTURE_COORD_2);
-  end_patch_maps();
-}
-
 /* The net of a patch's normals about its centres, times w: side * w (P - centre), side 1 for a
  * rim (the solid inside its tube), -1 for a fillet (outside). */
 static void normals_about_centres(const float net[][3][4], const double centre[][3][3], float side, int rows,
@@ -52,15 +41,6 @@ static void normals_about_centres(const float net[][3][4], const double centre[]
   for (int v = 0; v < rows; ++v)
     for (int u = 0; u < 3; ++u)
       for (int k = 0; k < 3; ++k) normals[v][u][k] = side * (net[v][u][k] - net[v][u][3] * (float)centre[v][u][k]);
-}
-
-/* Draws a patch whose normals, times w, are `side` (1 or -1) times w (P - centre). */
-static void draw_net_about_centres(const float net[][3][4], const float tex[][3][2], const double centre[][3][3],
-                                   float side, int rows, int v_steps)
-{
-  float normals[3][3][3];
-  normals_about_centres(net, centre, side, rows, normals);
-  draw_rational_patch(net, tex, (const float (*)[3][3])normals, rows, v_steps);
 }
 
 void rational_patch_point(const float net[][3][4], int rows, double u, double v, double out[3])
@@ -139,18 +119,6 @@ void draw_net_in_halves(const float net[][3][4], const float tex[][3][2], const 
   draw_part_mapped(tex, wall_half);
   draw_part_charted(rim_top_texture, chart, top_half);
   end_net_parts();
-}
-
-void draw_rim_net(const float net[][3][4], const float tex[][3][2], const double centre[][3][3], int rows,
-                  int v_steps)
-{
-  draw_net_about_centres(net, tex, centre, 1.0f, rows, v_steps);
-}
-
-void draw_fillet_net(const float net[][3][4], const float tex[][3][2], const double centre[][3][3], int rows,
-                     int v_steps)
-{
-  draw_net_about_centres(net, tex, centre, -1.0f, rows, v_steps);
 }
 
 /* The point (x, y, z) of `frame` (NULL: the object's own axes) into out. */

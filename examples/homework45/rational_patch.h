@@ -8,41 +8,20 @@
 /* One homogeneous control point: (x, y, z) weighted by w, i.e. (x w, y w, z w, w). */
 void control_point(float out[4], double x, double y, double z, double w);
 
-/* Draws the patch net[v][u] (rows = 2 or 3 rows of 3 homogeneous points) with texture coordinates
- * tex[v][u] and normals from the polynomial net normals[v][u] (GL_AUTO_NORMAL is off while it
- * draws, since its dP/du x dP/dv vanishes where a sphere's net closes in a pole; GL_NORMALIZE
- * makes them unit length), ARC_STEPS steps along u and v_steps along v. */
-void draw_rational_patch(const float net[][3][4], const float tex[][3][2], const float normals[][3][3], int rows,
-                         int v_steps);
-
 /* The texture coordinates of one column of a strip's 3-point net (a rim or a fillet, u = 0, 1, 2
  * across it): s along the strip, t from t0 through their midpoint to t2. */
 void strip_column_texture(float tex[3][2], float s, float t0, float t2);
 
-/* Draws a rim's patch (a strip or a corner piece, as draw_rational_patch) with its normals from
- * the centres of the rim's curvature: the rim lies at distance R from centre[v][u] (the centre
- * nearest each control point, on the strip's axis or the corner piece's tube centre circle), so
- * w(u, v) (P(u, v) - centre) is a polynomial patch with control points w_ij (P_ij - centre_ij),
- * whose value, normalized, is the exact unit normal, also at a sphere's pole. */
-void draw_rim_net(const float net[][3][4], const float tex[][3][2], const double centre[][3][3], int rows,
-                  int v_steps);
-
 /* The point of the rational patch net[v][u] (rows = 2 or 3 rows of 3 homogeneous points) at
  * (u, v), in double precision. */
 void rational_patch_point(const float net[][3][4], int rows, double u, double v, double out[3]);
-
-/* Draws a fillet's patch (a concave edge filled by a quarter cylinder or its corner piece, as
- * draw_rim_net) with its normals towards the centres of its curvature, w(u, v) (centre - P(u, v)):
- * the solid lies outside the fillet's tube. */
-void draw_fillet_net(const float net[][3][4], const float tex[][3][2], const double centre[][3][3], int rows,
-                     int v_steps);
 
 /* The net of a profile (rows: the quarter circle from the upright at y[0] through y[1] to y[2])
  * turned about an upright axis (x, z) by a quarter arc arc[0..2] (x, z: from, corner, to): its rows
  * are the arc's control points scaled from the axis by scale[v] at height y[v], weighted by the
  * products of the two arcs' weights (exact for a surface of revolution). The texture's s runs from
  * s0 over s_length round the arc, t from t0 on row 0 to t2 on row 2; centre[v][u] is the tube's
- * centre circle, the arc scaled by scale[2] at height y[0], for draw_rim_net or draw_fillet_net. */
+ * centre circle, the arc scaled by scale[2] at height y[0], for begin_net_parts. */
 void turned_profile_net(const double arc[3][2], const double axis[2], const double scale[3], const double y[3],
                         float s0, float s_length, float t0, float t2, float net[3][3][4], float tex[3][3][2],
                         double centre[3][3][3]);
@@ -62,7 +41,7 @@ void turned_profile_net_in_frame(const double arc[3][2], const double axis[2], c
  * concave one: a quarter of the inner half of a torus of radii 2 R and R about the fillet's
  * axis), weighted by the products of the two arcs' weights. The texture's s runs from s0 over
  * s_length round the arc, t from t0 at `below` to t2 on the rim; centre[v][u] is the tube's
- * centre circle at `below` (the sphere's centre), for draw_rim_net. */
+ * centre circle at `below` (the sphere's centre), for begin_net_parts. */
 void rim_corner_net(const double arc[3][2], const double axis[2], int convex, double below, double rim, float s0,
                     float s_length, float t0, float t2, float net[3][3][4], float tex[3][3][2],
                     double centre[3][3][3]);
@@ -101,9 +80,15 @@ struct rim_chart corner_rim_chart(const double axis[2], double top_distance, dou
 /* The texture coordinates the chart (a struct rim_chart) gives to a point of the top's half. */
 void rim_top_texture(const double point[3], const void *chart, float out[2]);
 
-/* Drawing a patch in parts, each with its own texture: begin_net_parts sets the maps of a rim's
- * (side 1, as draw_rim_net) or a fillet's (side -1, as draw_fillet_net) patch and its grid
- * (ARC_STEPS steps along u, v_steps along v); draw_part_mapped draws a part of the grid with the
+/* Drawing a patch net[v][u] (rows = 2 or 3 rows of 3 homogeneous points) in parts, each with its
+ * own texture. begin_net_parts sets the maps of its points and normals and its grid (ARC_STEPS
+ * steps along u, v_steps along v). The normals come from the centres of the surface's curvature:
+ * it lies at distance R from centre[v][u] (the centre nearest each control point, on a strip's
+ * axis or a corner piece's tube centre circle), so side w(u, v) (P(u, v) - centre) is a
+ * polynomial patch with control points side w_ij (P_ij - centre_ij), whose value, normalized, is
+ * the exact unit normal, also at a sphere's pole (GL_AUTO_NORMAL's dP/du x dP/dv vanishes there,
+ * so it is off while the parts are drawn; GL_NORMALIZE makes them unit length): side 1 for a rim
+ * (the solid inside its tube), -1 for a fillet (outside it). draw_part_mapped draws a part of the grid with the
  * texture net tex (glEvalMesh2 on the part), draw_part_charted with the chart's texture point
  * by point (the same grid points by glEvalPoint2, in the triangle strips glEvalMesh2 draws);
  * end_net_parts ends. The parts share the points of their common sides, as the whole patch's
@@ -116,8 +101,8 @@ void draw_part_mapped(const float tex[][3][2], struct grid_part part);
 void draw_part_charted(point_texture texture, const void *chart, struct grid_part part);
 void end_net_parts(void);
 
-/* Draws a rim's (side 1, as draw_rim_net) or a fillet's (side -1, as draw_fillet_net) patch in the
- * two halves of its quarter circle, which runs along u (a strip) or, with arc_along_v, along v (a
+/* Draws a rim's (side 1) or a fillet's (side -1) patch (as begin_net_parts takes it) in the two
+ * halves of its quarter circle, which runs along u (a strip) or, with arc_along_v, along v (a
  * corner's piece), from the wall to the top, or from the top to the wall with top_first: the
  * wall's half with the texture net tex (whose t runs on from the wall over the whole arc; its
  * wall half is drawn), the top's half with the top's texture run on by arc length (`chart`,
