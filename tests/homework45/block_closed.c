@@ -1,8 +1,12 @@
-/* Whether the surface layered_block.c draws is closed: the drawing is recorded by stand-ins for
- * the GL calls it makes (the evaluator's quarter cylinders evaluated here, as glEvalMesh2 would),
- * cut into triangles, and every triangle edge must have a twin, an edge of another triangle with
- * the same end points (to 1e-5): a crack, a hole or a T-junction leaves an edge without one. Each
- * object named on the command line is checked at nine radii from 0 to its largest.
+/* Whether the surface homework45 draws is closed: the drawing of layered_block.c (an object of
+ * several layers) or, after --plan, of plan_block.c (one floor plan raised) is recorded by
+ * stand-ins for the GL and GLU calls it makes (the evaluator's quarter cylinders evaluated here,
+ * as glEvalMesh2 would; the tessellated top and bottom as a fan from a point off their outline's
+ * centroid, whose inner edges pair up among themselves, so that every edge of the outline must
+ * meet the walls' and rims' edges), cut into triangles, and every triangle edge must have a twin, an edge
+ * of another triangle with the same end points (to 1e-5): a crack, a hole or a T-junction leaves
+ * an edge without one. Each object named on the command line is checked at nine radii from 0 to
+ * its largest.
  * The vertices' normals (glNormal, the evaluator's normal map or GL_AUTO_NORMAL's dP/du x dP/dv)
  * and texture coordinates are recorded too: where two vertices at one point have normals less
  * than 30 degrees apart (a seam, not a sharp crease), they must agree to 1e-3 radians, and their
@@ -25,9 +29,10 @@
  * is not a power of two, the strips' columns a + R and b - R, rounded apart, leave 1e-6. So the
  * count of sides not exact to 1e-12 and the largest gap are printed, and a gap beyond 1e-5 (the
  * twin test's tolerance) fails.
- *   homework45_layered_closed [--scale=SX,SY,SZ] OBJECT.wings...
+ *   homework45_block_closed [--scale=SX,SY,SZ] [--plan] OBJECT.wings...
  * (--scale stretches the objects after it along x, y and z: cells of other sizes than the test
- * files' unit cubes, layers lower than their cells are wide.)
+ * files' unit cubes, layers lower than their cells are wide; --plan draws the objects after it as
+ * their floor plans raised, which they must be, as homework45 does with one layer of cubes.)
  * Prints a line per object and radius, and exits 1 when an edge has no twin, a seam is not
  * smooth, two patches that share a side are apart along it, a fillet's point is off its axis or
  * a standing corner's point is off its circle or its normal turned from it by more than 1e-3. */
@@ -39,6 +44,8 @@
 
 #include "cube_layers.h"
 #include "layered_block.h"
+#include "plan_block.h"
+#include "wings_plan.h"
 
 /* How far a fillet's drawn point may lie off R from its axis: glMap2f takes single-precision
  * control points, whose rounding moves the evaluated points by a few 1e-8 (1e-9 is out of reach). */
@@ -204,7 +211,7 @@ void glEnd(void)
   else if (primitive_mode == GL_TRIANGLE_FAN)
     for (int i = 1; i + 1 < primitive_count; ++i) add_triangle(v[0], v[i], v[i + 1]);
   else {
-    fprintf(stderr, "homework45_layered_closed: primitive mode %u not recorded\n", primitive_mode);
+    fprintf(stderr, "homework45_block_closed: primitive mode %u not recorded\n", primitive_mode);
     exit(2);
   }
 }
@@ -227,11 +234,63 @@ void glTexCoord2d(GLdouble s, GLdouble t)
 }
 void glTexCoord2f(GLfloat s, GLfloat t) { glTexCoord2d(s, t); }
 void glTexCoord2fv(const GLfloat *st) { glTexCoord2d(st[0], st[1]); }
-void glNormal3f(GLfloat x, GLfloat y, GLfloat z)
+void glVertex3dv(const GLdouble *p) { glVertex3d(p[0], p[1], p[2]); }
+void glNormal3d(GLdouble x, GLdouble y, GLdouble z)
 {
   current_normal[0] = x;
   current_normal[1] = y;
   current_normal[2] = z;
+}
+void glNormal3f(GLfloat x, GLfloat y, GLfloat z) { glNormal3d(x, y, z); }
+void glNormal3fv(const GLfloat *n) { glNormal3d(n[0], n[1], n[2]); }
+
+/* GLU's tessellator, as the top and the bottom use it: one contour, whose vertices go to the
+ * vertex callback as a fan about an apex half a unit off its centroid along the normal (the
+ * centroid may be a vertex of a concave outline; the apex gets the texture (x, z) the program
+ * gives the top's points). */
+struct GLUtesselator {
+  void (GLAPIENTRY *begin)(GLenum);
+  void (GLAPIENTRY *vertex)(void *);
+  void (GLAPIENTRY *end)(void);
+  void *data[4096];
+  double point[4096][3], normal[3];
+  int count;
+};
+static GLUtesselator the_tessellator;
+GLUtesselator *GLAPIENTRY gluNewTess(void) { return &the_tessellator; }
+void GLAPIENTRY gluTessCallback(GLUtesselator *tess, GLenum which, _GLUfuncptr callback)
+{
+  if (which == GLU_TESS_BEGIN) tess->begin = (void (GLAPIENTRY *)(GLenum))callback;
+  else if (which == GLU_TESS_VERTEX) tess->vertex = (void (GLAPIENTRY *)(void *))callback;
+  else if (which == GLU_TESS_END) tess->end = (void (GLAPIENTRY *)(void))callback;
+  else exit(2);
+}
+void GLAPIENTRY gluTessNormal(GLUtesselator *tess, GLdouble x, GLdouble y, GLdouble z)
+{
+  tess->normal[0] = x;
+  tess->normal[1] = y;
+  tess->normal[2] = z;
+}
+void GLAPIENTRY gluTessBeginPolygon(GLUtesselator *tess, GLvoid *data) { (void)data, tess->count = 0; }
+void GLAPIENTRY gluTessBeginContour(GLUtesselator *tess) { (void)tess; }
+void GLAPIENTRY gluTessVertex(GLUtesselator *tess, GLdouble *location, GLvoid *data)
+{
+  if (tess->count == 4096) exit(2);
+  memcpy(tess->point[tess->count], location, sizeof(double[3]));
+  tess->data[tess->count++] = data;
+}
+void GLAPIENTRY gluTessEndContour(GLUtesselator *tess) { (void)tess; }
+void GLAPIENTRY gluTessEndPolygon(GLUtesselator *tess)
+{
+  double apex[3] = {0, 0, 0};
+  for (int i = 0; i < tess->count; ++i)
+    for (int k = 0; k < 3; ++k) apex[k] += tess->point[i][k] / tess->count;
+  for (int k = 0; k < 3; ++k) apex[k] += 0.5 * tess->normal[k];
+  tess->begin(GL_TRIANGLE_FAN);
+  glTexCoord2d(apex[0], apex[2]);
+  glVertex3d(apex[0], apex[1], apex[2]);
+  for (int i = 0; i <= tess->count; ++i) tess->vertex(tess->data[i % tess->count]);
+  tess->end();
 }
 void glEnable(GLenum capability)
 {
@@ -447,6 +506,10 @@ static size_t edges_without_twin(void)
   for (size_t i = 0; i < count;) {
     size_t j = i;
     while (j < count && compare_edges(&edges[i], &edges[j]) == 0) ++j;
+    if ((j - i) % 2 && lonely < 3)
+      fprintf(stderr, "edge without a twin: (%g, %g, %g) to (%g, %g, %g)\n", edges[i].end[0][0] * 1e-5,
+              edges[i].end[0][1] * 1e-5, edges[i].end[0][2] * 1e-5, edges[i].end[1][0] * 1e-5,
+              edges[i].end[1][1] * 1e-5, edges[i].end[1][2] * 1e-5);
     lonely += (j - i) % 2;
     i = j;
   }
@@ -542,7 +605,7 @@ static int cells_around(const struct cube_layers *layers, int layer, int i, int 
 static double fillet_axis_error(const struct cube_layers *layers, double radius)
 {
   double worst = 0;
-  if (radius <= 0) return 0;
+  if (radius <= 0 || !layers) return 0;
   for (int k = 1; k < layers->layer_count; ++k)
     for (int j = 0; j + 1 < layers->z_count; ++j)
       for (int i = 0; i + 1 < layers->x_count; ++i) {
@@ -636,7 +699,7 @@ static double standing_corner_error(const struct cube_layers *layers, double rad
 {
   double worst = 0;
   *normal_error = 0;
-  if (radius <= 0) return 0;
+  if (radius <= 0 || !layers) return 0;
   struct standing corners[MAX_STANDING];
   const int count = standing_corners(layers, corners, MAX_STANDING);
   for (int c = 0; c < count; ++c) {
@@ -684,13 +747,16 @@ static void standing_top_texture(const struct standing *c, const double p[3], do
  * rim), (x, z) - h R (phi - sin phi) on a fillet, whose circle is hollow: there the point lies on
  * the side of the top (the nearest of the layers' heights) that its normal faces. Round a
  * standing corner, where the torus piece's part next to the top below unrolls along both its
- * quarter circles, standing_top_texture. It also says how many vertices were drawn so (*count). */
-static double charted_texture_error(const struct cube_layers *layers, float radius, size_t *count)
+ * quarter circles, standing_top_texture. The tops lie at the heights height[0 .. height_count - 1];
+ * layers is NULL for an object drawn from its plan (no standing corners). It also says how many
+ * vertices were drawn so (*count). */
+static double charted_texture_error(const double *height, int height_count, const struct cube_layers *layers,
+                                    float radius, size_t *count)
 {
   double worst = 0;
   *count = 0;
   struct standing corners[MAX_STANDING];
-  const int standing_count = radius > 0 ? standing_corners(layers, corners, MAX_STANDING) : 0;
+  const int standing_count = radius > 0 && layers ? standing_corners(layers, corners, MAX_STANDING) : 0;
   for (size_t i = 0; i < drawn_count; ++i) {
     if (!drawn[i].charted) continue;
     ++*count;
@@ -704,9 +770,9 @@ static double charted_texture_error(const struct cube_layers *layers, float radi
       standing = 1;
     }
     if (!standing) {
-      double level = layers->height[0];
-      for (int k = 1; k <= layers->layer_count; ++k)
-        if (fabs(layers->height[k] - p[1]) < fabs(level - p[1])) level = layers->height[k];
+      double level = height[0];
+      for (int k = 1; k < height_count; ++k)
+        if (fabs(height[k] - p[1]) < fabs(level - p[1])) level = height[k];
       const double sign = (p[1] - level) * n[1] > 0 ? -1.0 : 1.0;
       const double length = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
       const double horizontal = hypot(n[0], n[2]);
@@ -720,57 +786,95 @@ static double charted_texture_error(const struct cube_layers *layers, float radi
   return worst;
 }
 
+/* Checks what was recorded of one drawing of the object `name` at `radius` (layers NULL for an
+ * object drawn from its plan, its tops at the heights height[0 .. height_count - 1]), prints a
+ * line and returns whether it failed. */
+static int check_drawing(const char *name, float radius, const struct cube_layers *layers, const double *height,
+                         int height_count)
+{
+  double gap;
+  const size_t lonely = edges_without_twin(), rough = rough_seams(), inexact = inexact_seams(&gap);
+  const double off_axis = fillet_axis_error(layers, radius);
+  double standing_normal;
+  const double off_circle = standing_corner_error(layers, radius, &standing_normal);
+  size_t charted;
+  const double chart_error = charted_texture_error(height, height_count, layers, radius, &charted);
+  printf("%s at radius %g: %zu triangles, %zu edges without a twin, %zu rough seams, %zu shared patch sides "
+         "not exact to 1e-12 (largest gap %.3g), fillet points off R from the axis by %.3g, standing corners' "
+         "points off R from their circle by %.3g, their normals off by %.3g, %zu vertices of rims' top halves "
+         "off their texture by %.3g\n", name, radius, triangle_count, lonely, rough, inexact, gap, off_axis,
+         off_circle, standing_normal, charted, chart_error);
+  if (gap > 1e-5) fprintf(stderr, "homework45_block_closed: %s: patches %g apart\n", name, gap);
+  if (off_axis > FILLET_TOLERANCE)
+    fprintf(stderr, "homework45_block_closed: %s: a fillet's point %g off R from its axis\n", name, off_axis);
+  if (off_circle > FILLET_TOLERANCE || standing_normal > 1e-3)
+    fprintf(stderr, "homework45_block_closed: %s: a standing corner's point %g off R from its circle, a normal "
+            "%g off\n", name, off_circle, standing_normal);
+  if (chart_error > CHART_TOLERANCE)
+    fprintf(stderr, "homework45_block_closed: %s: a rim's top half's texture %g off the top's run on\n", name,
+            chart_error);
+  return lonely > 0 || rough > 0 || gap > 1e-5 || off_axis > FILLET_TOLERANCE || off_circle > FILLET_TOLERANCE ||
+         standing_normal > 1e-3 || chart_error > CHART_TOLERANCE;
+}
+
+static void forget_drawing(void)
+{
+  triangle_count = 0;
+  drawn_count = 0;
+  side_count = 0;
+}
+
 int main(int argc, char **argv)
 {
-  int failed = 0;
+  int failed = 0, as_plan = 0;
   double scale[3] = {1, 1, 1};
   for (int a = 1; a < argc; ++a) {
     struct wings_mesh mesh;
     struct cube_layers layers;
     char error[300];
     if (sscanf(argv[a], "--scale=%lf,%lf,%lf", &scale[0], &scale[1], &scale[2]) == 3) continue;
+    if (strcmp(argv[a], "--plan") == 0) {
+      as_plan = 1;
+      continue;
+    }
     if (!wings_read_mesh(argv[a], &mesh, error, sizeof error)) {
-      fprintf(stderr, "homework45_layered_closed: %s: %s\n", argv[a], error);
+      fprintf(stderr, "homework45_block_closed: %s: %s\n", argv[a], error);
       return 1;
     }
     for (long v = 0; v < mesh.vertex_count; ++v)
       for (int k = 0; k < 3; ++k) mesh.position[v][k] *= scale[k];
-    if (!cube_layers_from_mesh(&mesh, &layers, error, sizeof error)) {
-      fprintf(stderr, "homework45_layered_closed: %s: %s\n", argv[a], error);
+    const int has_cells = cube_layers_from_mesh(&mesh, &layers, error, sizeof error);
+    if (!has_cells && !as_plan) {
+      fprintf(stderr, "homework45_block_closed: %s: %s\n", argv[a], error);
       return 1;
     }
-    wings_mesh_free(&mesh);
-    for (int step = 0; step <= 8; ++step) {
-      const float radius = (float)(layers.max_radius * step / 8);
-      triangle_count = 0;
-      drawn_count = 0;
-      side_count = 0;
-      draw_layered_block(&layers, radius);
-      double gap;
-      const size_t lonely = edges_without_twin(), rough = rough_seams(), inexact = inexact_seams(&gap);
-      const double off_axis = fillet_axis_error(&layers, radius);
-      double standing_normal;
-      const double off_circle = standing_corner_error(&layers, radius, &standing_normal);
-      size_t charted;
-      const double chart_error = charted_texture_error(&layers, radius, &charted);
-      printf("%s at radius %g: %zu triangles, %zu edges without a twin, %zu rough seams, %zu shared patch sides "
-             "not exact to 1e-12 (largest gap %.3g), fillet points off R from the axis by %.3g, standing corners' "
-             "points off R from their circle by %.3g, their normals off by %.3g, %zu vertices of rims' top halves "
-             "off their texture by %.3g\n", argv[a], radius, triangle_count, lonely, rough, inexact, gap, off_axis,
-             off_circle, standing_normal, charted, chart_error);
-      if (gap > 1e-5) fprintf(stderr, "homework45_layered_closed: %s: patches %g apart\n", argv[a], gap);
-      if (off_axis > FILLET_TOLERANCE)
-        fprintf(stderr, "homework45_layered_closed: %s: a fillet's point %g off R from its axis\n", argv[a], off_axis);
-      if (off_circle > FILLET_TOLERANCE || standing_normal > 1e-3)
-        fprintf(stderr, "homework45_layered_closed: %s: a standing corner's point %g off R from its circle, a normal "
-                "%g off\n", argv[a], off_circle, standing_normal);
-      if (chart_error > CHART_TOLERANCE)
-        fprintf(stderr, "homework45_layered_closed: %s: a rim's top half's texture %g off the top's run on\n", argv[a],
-                chart_error);
-      failed |= lonely > 0 || rough > 0 || gap > 1e-5 || off_axis > FILLET_TOLERANCE || off_circle > FILLET_TOLERANCE ||
-                standing_normal > 1e-3 || chart_error > CHART_TOLERANCE;
+    if (as_plan) {
+      /* As homework45 draws it: the texture's t over the object's height, or over one unit when
+       * it is several layers alike. */
+      struct floor_plan plan;
+      if (!floor_plan_from_mesh(&mesh, has_cells && cube_layers_alike(&layers), &plan, error, sizeof error)) {
+        fprintf(stderr, "homework45_block_closed: %s: %s\n", argv[a], error);
+        return 1;
+      }
+      const float texture_height = has_cells && layers.layer_count > 1 ? 1.0f : (float)(plan.top - plan.bottom);
+      const double height[2] = {plan.bottom, plan.top};
+      for (int step = 0; step <= 8; ++step) {
+        const float radius = (float)(plan.max_radius * step / 8);
+        forget_drawing();
+        draw_plan_block(&plan, radius, texture_height, 0.25f);  /* homework45's checkerboard */
+        failed |= check_drawing(argv[a], radius, NULL, height, 2);
+      }
+      floor_plan_free(&plan);
+    } else {
+      for (int step = 0; step <= 8; ++step) {
+        const float radius = (float)(layers.max_radius * step / 8);
+        forget_drawing();
+        draw_layered_block(&layers, radius);
+        failed |= check_drawing(argv[a], radius, &layers, layers.height, layers.layer_count + 1);
+      }
     }
-    cube_layers_free(&layers);
+    wings_mesh_free(&mesh);
+    if (has_cells) cube_layers_free(&layers);
   }
   free(triangles);
   free(drawn);

@@ -1,0 +1,537 @@
+/* Drawing the object of one floor plan raised (wings_plan.h) with its marked edges rounded
+ * (plan_block.h): quarter cylinders at the uprights, the rims' strips, the sphere and torus
+ * pieces where they meet, mitres, caps and cut faces where a rounded rim meets a sharp one, the
+ * flat walls, and the top and the bottom cut into triangles by GLU's tessellator. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include <GL/glu.h>
+
+#include "plan_block.h"
+#include "rational_patch.h"
+#include "rounded_upright.h"
+#include "textured_grid.h"
+
+#define PI 3.14159265358979323846
+/* The steps a side's wall and its rim's strip are drawn in along the side; the outline of the top
+ * and the bottom takes their points, so that no edge of theirs ends in the middle of one of its
+ * (a T-junction, which leaves pixels uncovered along the seam). */
+#define SIDE_STEPS 4
+
+/* What draw_plan_block was given, for the functions below: the plan (its arrays are the
+ * caller's), the rounding radius, the height the sides' texture t runs from 0 to 1 over, and the
+ * bottom's and the top's heights in single precision; and the texture's s per unit of length
+ * walked round the outline (about 1, so that the outline's length is whole repeats). */
+static struct floor_plan plan;
+static float radius, texture_height, block_bottom, block_top, s_per_length;
+
+/* The rims: the top's (TOP) and the bottom's (BOTTOM), each with its height and the direction
+ * out of the solid through it (+1 up, -1 down). */
+enum rim_level { BOTTOM, TOP };
+static double rim_height(enum rim_level level) { return level == TOP ? block_top : block_bottom; }
+static double rim_outward(enum rim_level level) { return level == TOP ? 1.0 : -1.0; }
+
+/* Whether the rim along side i (from corner i to corner i + 1, any i taken round the outline)
+ * at `level` is rounded: its edges there are marked hard and the radius is not 0. */
+static int side_rounded(int i, enum rim_level level)
+{
+  const int n = plan.corners;
+  i = (i % n + n) % n;
+  return radius > 0 && (level == TOP ? plan.top_hard[i] : plan.bottom_hard[i]);
+}
+
+/* The radius the rim along side i at `level` is rounded with (0: sharp). */
+static double side_radius(int i, enum rim_level level) { return side_rounded(i, level) ? radius : 0.0; }
+
+/* Whether the rim is rounded on either side of corner k at `level`. */
+static int corner_rounded(int k, enum rim_level level)
+{
+  return side_rounded(k - 1, level) || side_rounded(k, level);
+}
+
+/* The texture's t on the sides at height y: 0 at the bottom, 1 at texture_height above it (the
+ * top, for one layer), the rims' arcs running on beyond the walls by their length. */
+static float side_t(double y) { return (float)((y - block_bottom) / texture_height); }
+
+/* The texture's s along a rounded upright's quarter circle: its length, in s. */
+static float upright_arc_s(void) { return (float)(PI / 2) * radius * s_per_length; }
+
+/* Turns the order of `rows` rows of `row_size` bytes each round. */
+static void reverse_rows(void *data, int rows, size_t row_size)
+{
+  unsigned char *bytes = data;
+  for (int j = 0; j < rows / 2; ++j)
+    for (size_t k = 0; k < row_size; ++k) {
+      const unsigned char swap = bytes[(size_t)j * row_size + k];
+      bytes[(size_t)j * row_size + k] = bytes[(size_t)(rows - 1 - j) * row_size + k];
+      bytes[(size_t)(rows - 1 - j) * row_size + k] = swap;
+    }
+}
+
+/* Draws the rim's patch net[v][u] (rows = 2 or 3 rows of 3 homogeneous points) with its normals
+ * from the centres centre[v][u], in its two halves (draw_net_in_halves): the wall's with the
+ * texture net tex[v][u], the top's with `chart`; its rows turned round when dP/du x dP/dv points
+ * into the solid at its middle (so every patch of the top's rim faces up and out, of the bottom's
+ * down and out, for its winding). */
+static void draw_rim_patch(float net[][3][4], float tex[][3][2], const double centre[][3][3], int rows,
+                           enum rim_level level, const struct rim_chart *chart)
+{
+  double centres[3][3][3];
+  memcpy(centres, centre, (size_t)rows * sizeof centres[0]);
+  double a[3], b[3], c[3], d[3];
+  rational_patch_point((const float (*)[3][4])net, rows, 0.4, 0.5, a);
+  rational_patch_point((const float (*)[3][4])net, rows, 0.6, 0.5, b);
+  rational_patch_point((const float (*)[3][4])net, rows, 0.5, 0.4, c);
+  rational_patch_point((const float (*)[3][4])net, rows, 0.5, 0.6, d);
+  const double du[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, dv[3] = {d[0] - c[0], d[1] - c[1], d[2] - c[2]};
+  const int turned = (du[2] * dv[0] - du[0] * dv[2]) * rim_outward(level) < 0;
+  if (turned) {
+    reverse_rows(net, rows, sizeof net[0]);
+    reverse_rows(tex, rows, sizeof tex[0]);
+    reverse_rows(centres, rows, sizeof centres[0]);
+  }
+  /* A strip's arc runs along u (its rows run along the side); a corner piece's along v, from the
+   * wall to the top unless its rows were turned round. */
+  const int corner = rows == 3;
+  draw_net_in_halves((const float (*)[3][4])net, (const float (*)[3][2])tex, (const double (*)[3][3])centres, 1.0f,
+                     rows, corner ? ARC_STEPS : SIDE_STEPS, corner, corner && turned, chart);
+}
+
+/* A quarter cylinder of the current radius around the upright edge at corner k, from the point
+ * `from` on one side to `to` on the next, walked counter-clockwise seen from above so that
+ * GL_AUTO_NORMAL's dP/du x dP/dv points out of the solid, between the rims (R in from a rounded
+ * one). The texture s runs from s0 to s0 + the arc's length, so the checkerboard continues from
+ * the face. */
+static void rounded_edge(int k, const float from[2], const float corner[2], const float to[2], float s0)
+{
+  const float y0 = block_bottom + (corner_rounded(k, BOTTOM) ? radius : 0.0f);
+  const float y1 = block_top - (corner_rounded(k, TOP) ? radius : 0.0f);
+  quarter_cylinder(from, corner, to, y0, y1, s0, upright_arc_s(), side_t(y0), side_t(y1), 4);
+}
+
+/* Where the outline leaves and reaches corner i: R along its sides from the corner when the
+ * upright there is rounded, the corner itself otherwise. */
+static void corner_ends(int i, float from[2], float to[2])
+{
+  const int n = plan.corners;
+  const double *here = plan.xz[i], *before = plan.xz[(i + n - 1) % n], *after = plan.xz[(i + 1) % n];
+  const double r = plan.rounded[i] ? radius : 0.0;
+  const double to_before = hypot(before[0] - here[0], before[1] - here[1]);
+  const double to_after = hypot(after[0] - here[0], after[1] - here[1]);
+  for (int k = 0; k < 2; ++k) {
+    from[k] = (float)(here[k] + r * (before[k] - here[k]) / to_before);
+    to[k] = (float)(here[k] + r * (after[k] - here[k]) / to_after);
+  }
+}
+
+/* The unit vector into the solid across side i (from corner i to corner i + 1): to the left of
+ * the walk, the sides' outward normals being to its right. */
+static void inward(int i, double out[2])
+{
+  const double *a = plan.xz[i], *b = plan.xz[(i + 1) % plan.corners];
+  const double length = hypot(b[0] - a[0], b[1] - a[1]);
+  out[0] = (b[1] - a[1]) / length;
+  out[1] = -(b[0] - a[0]) / length;
+}
+
+/* The axis of the rounded upright at corner i (x, z): inside the solid at a convex corner,
+ * outside it at a concave one; R from both sides' planes. */
+static void upright_axis(int i, double out[2])
+{
+  float from[2], to[2];
+  corner_ends(i, from, to);
+  for (int k = 0; k < 2; ++k) out[k] = (double)from[k] + (double)to[k] - plan.xz[i][k];
+}
+
+/* Where the top (or the bottom) meets its rim at corner k, in (x, z): above a rounded upright,
+ * its axis (a convex corner, where the sphere closes) or the arc twice as far from it (a concave
+ * one, the torus's inner rim, drawn by the caller); above a sharp upright, R in from each side
+ * whose rim is rounded: the mitre's top when both are, else where the one rounded strip ends, in
+ * the plane of the sharp side. */
+static void rim_top_corner(int k, enum rim_level level, double out[2])
+{
+  const int n = plan.corners;
+  if (plan.rounded[k] && radius > 0) {
+    upright_axis(k, out);
+    return;
+  }
+  double before[2], after[2];
+  inward((k + n - 1) % n, before);
+  inward(k, after);
+  const double r_before = side_radius(k - 1, level), r_after = side_radius(k, level);
+  for (int c = 0; c < 2; ++c) out[c] = plan.xz[k][c] + r_before * before[c] + r_after * after[c];
+}
+
+/* The unit vector along side i, in the direction of the walk. */
+static void along_side(int i, double out[2])
+{
+  double in[2];
+  inward(i, in);
+  out[0] = -in[1];
+  out[1] = in[0];
+}
+
+static void piece_vertex(const double p[3], const double e[2], float s_e, const double s_direction[2])
+{
+  const float along = (float)((p[0] - e[0]) * s_direction[0] + (p[2] - e[1]) * s_direction[1]);
+  glTexCoord2f(s_e + along * s_per_length, side_t(p[1]));
+  glVertex3dv(p);
+}
+
+/* A flat piece where a rounded rim's strip ends against a sharp edge, in the vertical plane
+ * through e and c (x, z, R apart): the strip's end is the rim's quarter circle around c at R in
+ * from the rim's height, from e (R in) to c (at the rim's height), the same rational quadratic as
+ * the strip's patch (control points e R in, e at the rim weighted sqrt(2)/2, c at the rim), so
+ * they share their points. With `disk` the piece is the quarter disk inside the arc (fanned from
+ * its centre), else the quarter moon between the arc and the square's corner e at the rim (fanned
+ * from that corner). Its texture: t as on the sides, s from s_e at e along `s_direction`. */
+static void rim_end_piece(const double e[2], const double c[2], enum rim_level level, const double normal[2],
+                          float s_e, const double s_direction[2], int disk)
+{
+  const double rim = rim_height(level), inner = rim - rim_outward(level) * radius, w = sqrt(2.0) / 2.0;
+  const double centre[3] = {disk ? c[0] : e[0], disk ? inner : rim, disk ? c[1] : e[1]};
+  glNormal3d(normal[0], 0, normal[1]);
+  glBegin(GL_TRIANGLE_FAN);
+  piece_vertex(centre, e, s_e, s_direction);
+  for (int step = 0; step <= ARC_STEPS; ++step) {
+    const double u = (double)step / ARC_STEPS;
+    const double b0 = (1 - u) * (1 - u), b1 = 2 * u * (1 - u) * w, b2 = u * u, sum = b0 + b1 + b2;
+    const double p[3] = {((b0 + b1) * e[0] + b2 * c[0]) / sum, (b0 * inner + (b1 + b2) * rim) / sum,
+                         ((b0 + b1) * e[1] + b2 * c[1]) / sum};
+    piece_vertex(p, e, s_e, s_direction);
+  }
+  glEnd();
+}
+
+/* The rounded rim along side i: the rim's quarter circle (from the side at R below the top, over
+ * the top edge weighted sqrt(2)/2, to the top R in from the side) swept from the side's start to
+ * its end. Above a rounded upright it ends where the upright's strip does, R along the side from
+ * the corner; above a sharp one it ends in the corner's bisecting plane (the mitre the
+ * neighbouring side's strip ends in too), its top point moved along the side by R. It is drawn
+ * in its two halves (draw_net_in_halves), each with the texture of the face it touches: the half next
+ * to the wall with the wall's (s along the side, t on up from the wall's top by the arc's
+ * length), the half next to the top with the top's (x, z) run on beyond the top's edge; the
+ * checkerboard changes from one to the other along the arc's middle, as the scene language's
+ * rounding does (glass/geometry/edge_rounding.h). */
+static void rim_strip(int i, enum rim_level level, float s0, float s1)
+{
+  const int n = plan.corners;
+  const double r = side_radius(i, level), w = sqrt(2.0) / 2.0;
+  const double top = rim_height(level), out = rim_outward(level), height = texture_height;
+  float net[2][3][4];
+  double centre[2][3][3];
+  /* The strip's axis: R in from side i and R below the top. */
+  double in_i[2], along[2];
+  inward(i, in_i);
+  along[0] = -in_i[1];
+  along[1] = in_i[0];
+  const double axis[2] = {plan.xz[i][0] + r * in_i[0], plan.xz[i][1] + r * in_i[1]};
+  for (int end = 0; end < 2; ++end) {
+    const int k = (i + end) % n;
+    float from[2], to[2];
+    corner_ends(k, from, to);
+    double edge[2], on_top[2];
+    if (plan.rounded[k] && radius > 0) {
+      const float *at = end ? from : to;
+      for (int c = 0; c < 2; ++c) {
+        edge[c] = at[c];
+        on_top[c] = at[c] + r * in_i[c];
+      }
+    } else {
+      for (int c = 0; c < 2; ++c) edge[c] = plan.xz[k][c];
+      rim_top_corner(k, level, on_top);
+    }
+    control_point(net[end][0], edge[0], top - out * r, edge[1], 1.0);
+    control_point(net[end][1], edge[0], top, edge[1], w);
+    control_point(net[end][2], on_top[0], top, on_top[1], 1.0);
+    for (int u = 0; u < 3; ++u) {
+      const double x = net[end][u][0] / net[end][u][3], z = net[end][u][2] / net[end][u][3];
+      const double on_axis = (x - axis[0]) * along[0] + (z - axis[1]) * along[1];
+      centre[end][u][0] = axis[0] + on_axis * along[0];
+      centre[end][u][1] = top - out * r;
+      centre[end][u][2] = axis[1] + on_axis * along[1];
+    }
+  }
+  const float t0 = side_t(top - out * r), t2 = (float)(t0 + out * PI / 2 * r / height);
+  float tex[2][3][2];
+  for (int end = 0; end < 2; ++end) strip_column_texture(tex[end], end ? s1 : s0, t0, t2);
+  const double outward[2] = {-in_i[0], -in_i[1]};
+  const struct rim_chart chart = strip_rim_chart(axis, outward, top - out * r, out, r);
+  draw_rim_patch(net, tex, (const double (*)[3][3])centre, 2, level, &chart);
+}
+
+/* Above the rounded upright at corner i, where the rim's strips of its two sides end: the rim's
+ * quarter circle turned around the upright's axis by the upright's quarter circle, an eighth of a
+ * sphere at a convex corner and a quarter of a torus above a fillet (rim_corner_net). Like the
+ * strips, it is drawn in the two halves of the rim's quarter circle: the half next to the walls
+ * with their texture (s on round the upright's arc, t on up), the half next to the top with the
+ * top's (x, z) run on beyond the top's edge by the rim's arc length, away from the axis at a convex
+ * corner (where the top's edge is the sphere's pole, the axis) and towards it above a fillet
+ * (where the top's edge is the torus's inner rim, 2 R from the axis). */
+static void rim_corner(int i, enum rim_level level, float s0)
+{
+  const double r = radius;
+  const double top = rim_height(level), out = rim_outward(level), height = texture_height;
+  float from[2], to[2];
+  corner_ends(i, from, to);
+  double axis[2];
+  upright_axis(i, axis);
+  const double arc[3][2] = {{from[0], from[1]}, {plan.xz[i][0], plan.xz[i][1]}, {to[0], to[1]}};
+  float net[3][3][4], tex[3][3][2];
+  double centre[3][3][3];
+  const float length = upright_arc_s();
+  const float t0 = side_t(top - out * r), t2 = (float)(t0 + out * PI / 2 * r / height);
+  rim_corner_net(arc, axis, plan.convex[i], top - out * r, top, s0, length, t0, t2, net, tex, centre);
+  const struct rim_chart chart = corner_rim_chart(axis, plan.convex[i] ? 0.0 : 2 * r, top - out * r, out, r);
+  draw_rim_patch(net, tex, (const double (*)[3][3])centre, 3, level, &chart);
+}
+
+static void GLAPIENTRY top_vertex(void *data)
+{
+  const GLdouble *p = data;
+  glTexCoord2d(p[0], p[2]);
+  glVertex3dv(p);
+}
+
+/* One point of the top's (or the bottom's) outline, at height y. */
+static void outline_point(GLdouble (*outline)[3], int *count, double x, double y, double z)
+{
+  outline[*count][0] = x;
+  outline[*count][1] = y;
+  outline[*count][2] = z;
+  ++*count;
+}
+
+/* The top or the bottom: the outline with its rounded corners, which may be concave, so GLU's
+ * tessellator cuts it into triangles (facing up or down: the normal is given). Along a side whose
+ * rim is rounded the outline runs R in from the side, along a sharp one on the side's edge, in
+ * SIDE_STEPS steps. */
+static void block_end(enum rim_level level)
+{
+  static GLUtesselator *tess;
+  static GLdouble (*outline)[3], (*contour)[3];
+  static int *first_of_corner;
+  static int capacity;
+  const double y = rim_height(level), out = rim_outward(level);
+  const int needed = plan.corners * (ARC_STEPS + 3 + SIDE_STEPS);
+  if (!tess) {
+    tess = gluNewTess();
+    gluTessCallback(tess, GLU_TESS_BEGIN, (void (GLAPIENTRY *)(void))glBegin);
+    gluTessCallback(tess, GLU_TESS_VERTEX, (void (GLAPIENTRY *)(void))top_vertex);
+    gluTessCallback(tess, GLU_TESS_END, (void (GLAPIENTRY *)(void))glEnd);
+  }
+  gluTessNormal(tess, 0, out, 0);
+  if (capacity < needed) {
+    free(outline);
+    free(contour);
+    free(first_of_corner);
+    outline = malloc((size_t)needed * sizeof *outline);
+    contour = malloc((size_t)needed * sizeof *contour);
+    first_of_corner = malloc(((size_t)plan.corners + 1) * sizeof *first_of_corner);
+    if (!outline || !contour || !first_of_corner) exit(1);
+    capacity = needed;
+  }
+  int count = 0;
+  for (int i = 0; i < plan.corners; ++i) {
+    first_of_corner[i] = count;
+    float from[2], to[2], corner[2] = {(float)plan.xz[i][0], (float)plan.xz[i][1]};
+    corner_ends(i, from, to);
+    const int before = side_rounded(i - 1, level), after = side_rounded(i, level);
+    const int upright = plan.rounded[i] && radius > 0;
+    double arc[2];
+    if (!before && !after) {
+      /* A sharp rim on both sides: the corner, or the upright's arc. */
+      const int steps = upright ? ARC_STEPS : 0;
+      for (int step = 0; step <= steps; ++step) {
+        quarter_arc_point(from, corner, to, (double)step / ARC_STEPS, arc);
+        outline_point(outline, &count, arc[0], y, arc[1]);
+      }
+      continue;
+    }
+    double at[2];
+    rim_top_corner(i, level, at);
+    if (!upright) {
+      /* The mitre's top, or where the one rounded strip ends in the sharp side's plane; at a
+       * concave corner that end's cap reaches from the corner to it. */
+      if (!plan.convex[i] && after && !before) outline_point(outline, &count, corner[0], y, corner[1]);
+      outline_point(outline, &count, at[0], y, at[1]);
+      if (!plan.convex[i] && before && !after) outline_point(outline, &count, corner[0], y, corner[1]);
+      continue;
+    }
+    /* Above a rounded upright: a sharp side's edge runs on to where the upright's arc begins (or
+     * ends), and the cap of the sphere or torus piece's end from there. */
+    if (!before) outline_point(outline, &count, from[0], y, from[1]);
+    if (plan.convex[i]) {
+      /* The sphere's pole. */
+      outline_point(outline, &count, at[0], y, at[1]);
+    } else {
+      /* Above a fillet: the torus's inner rim, the fillet's arc scaled by 2 from its axis. */
+      float far_from[2], far_corner[2], far_to[2];
+      for (int c = 0; c < 2; ++c) {
+        far_from[c] = (float)(at[c] + 2 * (from[c] - at[c]));
+        far_corner[c] = (float)(at[c] + 2 * (corner[c] - at[c]));
+        far_to[c] = (float)(at[c] + 2 * (to[c] - at[c]));
+      }
+      for (int step = 0; step <= ARC_STEPS; ++step) {
+        quarter_arc_point(far_from, far_corner, far_to, (double)step / ARC_STEPS, arc);
+        outline_point(outline, &count, arc[0], y, arc[1]);
+      }
+    }
+    if (!after) outline_point(outline, &count, to[0], y, to[1]);
+  }
+  first_of_corner[plan.corners] = count;
+  /* Each corner's points, then the side's steps to the next corner's first point. */
+  int contour_count = 0;
+  for (int i = 0; i < plan.corners; ++i) {
+    for (int k = first_of_corner[i]; k < first_of_corner[i + 1]; ++k)
+      outline_point(contour, &contour_count, outline[k][0], y, outline[k][2]);
+    const double *a = outline[first_of_corner[i + 1] - 1], *b = outline[first_of_corner[(i + 1) % plan.corners]];
+    for (int step = 1; step < SIDE_STEPS; ++step) {
+      const double f = (double)step / SIDE_STEPS;
+      outline_point(contour, &contour_count, a[0] + f * (b[0] - a[0]), y, a[2] + f * (b[2] - a[2]));
+    }
+  }
+  glNormal3f(0, (float)out, 0);
+  gluTessBeginPolygon(tess, NULL);
+  gluTessBeginContour(tess);
+  for (int k = 0; k < contour_count; ++k) gluTessVertex(tess, contour[k], contour[k]);
+  gluTessEndContour(tess);
+  gluTessEndPolygon(tess);
+}
+
+/* At corner k, where the rim at `level` is rounded on one side of it or on both: above a rounded
+ * upright the sphere or torus piece, and where one side's rim is sharp a flat cap ending it, in
+ * the plane normal to that side through the upright's arc's end (the torus or sphere is kept
+ * whole and steps down to the sharp edge, as the library's rounding does); above a sharp concave
+ * corner with one side rounded, the quarter moon that ends that side's strip, in the sharp side's
+ * plane past the corner. (Above a sharp convex corner the sharp side's face is cut instead:
+ * side_face.) s is the texture's s where the corner's arc begins. */
+static void corner_pieces(int k, enum rim_level level, float s)
+{
+  const int n = plan.corners;
+  const int before = side_rounded(k - 1, level), after = side_rounded(k, level);
+  if (!before && !after) return;
+  if (plan.rounded[k]) {
+    rim_corner(k, level, s);
+    if (before && after) return;
+    float from[2], to[2];
+    corner_ends(k, from, to);
+    double axis[2], e[2], c[2], normal[2], direction[2];
+    upright_axis(k, axis);
+    const double scale = plan.convex[k] ? 0.0 : 2.0;
+    for (int m = 0; m < 2; ++m) {
+      e[m] = after ? from[m] : to[m];
+      c[m] = axis[m] + scale * (e[m] - axis[m]);
+      normal[m] = (plan.xz[k][m] - e[m]) / radius;
+      direction[m] = (c[m] - e[m]) / radius;
+    }
+    rim_end_piece(e, c, level, normal, after ? s : s + upright_arc_s(), direction, 0);
+    return;
+  }
+  if (plan.convex[k] || (before && after)) return;
+  const int sharp = after ? (k + n - 1) % n : k, rounded = after ? k : (k + n - 1) % n;
+  double in_rounded[2], in_sharp[2], direction[2], c[2];
+  inward(rounded, in_rounded);
+  inward(sharp, in_sharp);
+  along_side(sharp, direction);
+  for (int m = 0; m < 2; ++m) c[m] = plan.xz[k][m] + radius * in_rounded[m];
+  const double normal[2] = {-in_sharp[0], -in_sharp[1]};
+  rim_end_piece(plan.xz[k], c, level, normal, s, direction, 0);
+}
+
+/* Whether the rim of side i at `level` is cut at its end `end` (0: corner i, 1: corner i + 1):
+ * its own rim sharp there, the corner convex with a sharp upright and the next side's rim
+ * rounded. That side's strip ends in this side's plane, and of the corner's R x R square below
+ * the rim this side keeps only the quarter disk under the strip's arc. */
+static int side_cut(int i, int end, enum rim_level level)
+{
+  const int k = (i + end) % plan.corners;
+  return !side_rounded(i, level) && side_rounded(end ? i + 1 : i - 1, level) && plan.convex[k] &&
+         !(plan.rounded[k] && radius > 0);
+}
+
+/* The flat face of side i from `start` to `end` (x, z), between its rims (R in from a rounded
+ * one), with the texture's s from s0 to s1 along it; outwards is to the right of the walk. */
+static void side_face(int i, const float start[2], const float end[2], float s0, float s1)
+{
+  const float along[3] = {end[0] - start[0], 0, end[1] - start[1]};
+  const float length = sqrtf(along[0] * along[0] + along[2] * along[2]);
+  if (length <= 0) return;
+  const float normal[3] = {-along[2] / length, 0, along[0] / length};
+  const double low = block_bottom + side_radius(i, BOTTOM), high = block_top - side_radius(i, TOP);
+  const int cut[2][2] = {{side_cut(i, 0, BOTTOM), side_cut(i, 1, BOTTOM)}, {side_cut(i, 0, TOP), side_cut(i, 1, TOP)}};
+  const double inner_low = low + (cut[BOTTOM][0] || cut[BOTTOM][1] ? radius : 0);
+  const double inner_high = high - (cut[TOP][0] || cut[TOP][1] ? radius : 0);
+  const float base[3] = {start[0], (float)inner_low, start[1]}, up[3] = {0, (float)(inner_high - inner_low), 0};
+  textured_grid(base, along, up, normal, SIDE_STEPS, s0, s1, side_t(inner_low), side_t(inner_high));
+  for (int level = BOTTOM; level <= TOP; ++level) {
+    if (!cut[level][0] && !cut[level][1]) continue;
+    /* The band between the rim and R in from it, short of the cut squares, then the quarter
+     * disks in them. */
+    const double y0 = level == TOP ? inner_high : low, y1 = level == TOP ? high : inner_low;
+    const float r0 = cut[level][0] ? radius : 0.0f, r1 = cut[level][1] ? radius : 0.0f;
+    const float band_base[3] = {start[0] + along[0] / length * r0, (float)y0, start[1] + along[2] / length * r0};
+    const float band_along[3] = {along[0] / length * (length - r0 - r1), 0, along[2] / length * (length - r0 - r1)};
+    const float band_up[3] = {0, (float)(y1 - y0), 0};
+    textured_grid(band_base, band_along, band_up, normal, SIDE_STEPS, s0 + r0 * s_per_length,
+                  s1 - r1 * s_per_length, side_t(y0), side_t(y1));
+    for (int at = 0; at < 2; ++at) {
+      if (!cut[level][at]) continue;
+      const int k = (i + at) % plan.corners;
+      double in_other[2], c[2], direction[2];
+      inward(at ? (i + 1) % plan.corners : (i + plan.corners - 1) % plan.corners, in_other);
+      along_side(i, direction);
+      for (int m = 0; m < 2; ++m) c[m] = plan.xz[k][m] + radius * in_other[m];
+      const double face_normal[2] = {normal[0], normal[2]};
+      rim_end_piece(plan.xz[k], c, (enum rim_level)level, face_normal, at ? s1 : s0, direction, 1);
+    }
+  }
+}
+
+/* The length of the walk round the outline at the current radius: the sides between the
+ * uprights' quarter circles, and those. */
+static float outline_length(void)
+{
+  float length = 0;
+  for (int i = 0; i < plan.corners; ++i) {
+    float from[2], to[2], next_from[2], unused[2];
+    corner_ends(i, from, to);
+    corner_ends((i + 1) % plan.corners, next_from, unused);
+    if (plan.rounded[i] && radius > 0) length += (float)(PI / 2) * radius;
+    length += hypotf(next_from[0] - to[0], next_from[1] - to[1]);
+  }
+  return length;
+}
+
+void draw_plan_block(const struct floor_plan *object, float rounding_radius, float texture_rise, float s_repeat)
+{
+  plan = *object;
+  radius = rounding_radius;
+  texture_height = texture_rise;
+  block_bottom = (float)plan.bottom;
+  block_top = (float)plan.top;
+  const float walked = outline_length();
+  s_per_length = fmaxf(1.0f, roundf(walked / s_repeat)) * s_repeat / walked;
+  /* Its sides and rounded edges, in order around it so that the texture's s is the length
+   * walked around it (times s_per_length); then the top and the bottom. */
+  float s = 0;
+  for (int i = 0; i < plan.corners; ++i) {
+    const int next = (i + 1) % plan.corners;
+    float from[2], to[2], next_from[2], unused[2];
+    float corner[2] = {(float)plan.xz[i][0], (float)plan.xz[i][1]};
+    corner_ends(i, from, to);
+    corner_ends(next, next_from, unused);
+    if (plan.rounded[i] && radius > 0) rounded_edge(i, from, corner, to, s);
+    corner_pieces(i, TOP, s);
+    corner_pieces(i, BOTTOM, s);
+    if (plan.rounded[i] && radius > 0) s += upright_arc_s();
+    /* The side from this corner to the next. */
+    const float length = hypotf(next_from[0] - to[0], next_from[1] - to[1]) * s_per_length;
+    side_face(i, to, next_from, s, s + length);
+    if (side_rounded(i, TOP)) rim_strip(i, TOP, s, s + length);
+    if (side_rounded(i, BOTTOM)) rim_strip(i, BOTTOM, s, s + length);
+    s += length;
+  }
+  block_end(TOP);
+  block_end(BOTTOM);
+}
