@@ -31,6 +31,19 @@ enum rim_level { BOTTOM, TOP };
 static double rim_height(enum rim_level level) { return level == TOP ? block_top : block_bottom; }
 static double rim_outward(enum rim_level level) { return level == TOP ? 1.0 : -1.0; }
 
+/* Whether the walls and uprights stop R short of the rim at `level` (index BOTTOM or TOP): some
+ * side's rim there is rounded (its wall stops there). A sharp side's wall and a sharp corner's
+ * upright then end in a band R high of their own, so that every wall's and upright's edges meet
+ * at the same heights (and the caps, quarter moons and cut faces, R high, meet them without a
+ * T-junction). */
+static int level_split[2];
+
+/* Where the walls' and uprights' grids end at `level`: R short of its rim, or at the rim. */
+static double grid_end(enum rim_level level)
+{
+  return rim_height(level) - rim_outward(level) * (level_split[level] ? radius : 0.0);
+}
+
 /* Whether the rim along side i (from corner i to corner i + 1, any i taken round the outline)
  * at `level` is rounded: its edges there are marked hard and the radius is not 0. */
 static int side_rounded(int i, enum rim_level level)
@@ -99,14 +112,21 @@ static void draw_rim_patch(float net[][3][4], float tex[][3][2], const double ce
 
 /* A quarter cylinder of the current radius around the upright edge at corner k, from the point
  * `from` on one side to `to` on the next, walked counter-clockwise seen from above so that
- * GL_AUTO_NORMAL's dP/du x dP/dv points out of the solid, between the rims (R in from a rounded
- * one). The texture s runs from s0 to s0 + the arc's length, so the checkerboard continues from
- * the face. */
+ * GL_AUTO_NORMAL's dP/du x dP/dv points out of the solid: between the grids' ends in SIDE_STEPS
+ * steps, as the walls beside it, and on to a rim that is sharp on both sides of the corner where
+ * the grids stop short of it, in one step, as the walls' bands (a rim rounded on either side has
+ * its sphere or torus piece there). The texture s runs from s0 to s0 + the arc's length, so the
+ * checkerboard continues from the face. */
 static void rounded_edge(int k, const float from[2], const float corner[2], const float to[2], float s0)
 {
-  const float y0 = block_bottom + (corner_rounded(k, BOTTOM) ? radius : 0.0f);
-  const float y1 = block_top - (corner_rounded(k, TOP) ? radius : 0.0f);
-  quarter_cylinder(from, corner, to, y0, y1, s0, upright_arc_s(), side_t(y0), side_t(y1), 4);
+  const float y0 = (float)grid_end(BOTTOM), y1 = (float)grid_end(TOP);
+  quarter_cylinder(from, corner, to, y0, y1, s0, upright_arc_s(), side_t(y0), side_t(y1), SIDE_STEPS);
+  for (int level = BOTTOM; level <= TOP; ++level) {
+    if (!level_split[level] || corner_rounded(k, (enum rim_level)level)) continue;
+    const float band_start = level == TOP ? y1 : block_bottom, band_end = level == TOP ? block_top : y0;
+    quarter_cylinder(from, corner, to, band_start, band_end, s0, upright_arc_s(), side_t(band_start),
+                     side_t(band_end), 1);
+  }
 }
 
 /* Where the outline leaves and reaches corner i: R along its sides from the corner when the
@@ -178,26 +198,34 @@ static void piece_vertex(const double p[3], const double e[2], float s_e, const 
   glVertex3dv(p);
 }
 
-/* A flat piece where a rounded rim's strip ends against a sharp edge, in the vertical plane
- * through e and c (x, z, R apart): the strip's end is the rim's quarter circle around c at R in
- * from the rim's height, from e (R in) to c (at the rim's height), the same rational quadratic as
- * the strip's patch (control points e R in, e at the rim weighted sqrt(2)/2, c at the rim), so
- * they share their points. With `disk` the piece is the quarter disk inside the arc (fanned from
- * its centre), else the quarter moon between the arc and the square's corner e at the rim (fanned
- * from that corner). Its texture: t as on the sides, s from s_e at e along `s_direction`. */
-static void rim_end_piece(const double e[2], const double c[2], enum rim_level level, const double normal[2],
-                          float s_e, const double s_direction[2], int disk)
+/* The point at u (0 to 1) of the quarter circle a rounded rim's strip ends in, in the vertical
+ * plane through e and c (x, z, R apart): the rim's quarter circle around c R in from the rim's
+ * height, from e R in (u = 0) to c at the rim (u = 1), the same rational quadratic as the strip's
+ * patch (control points e R in, e at the rim weighted sqrt(2)/2, c at the rim), so that the flat
+ * pieces along it share the strip's points. */
+static void rim_end_arc_point(const double e[2], const double c[2], enum rim_level level, double u, double out[3])
 {
   const double rim = rim_height(level), inner = rim - rim_outward(level) * radius, w = sqrt(2.0) / 2.0;
-  const double centre[3] = {disk ? c[0] : e[0], disk ? inner : rim, disk ? c[1] : e[1]};
+  const double b0 = (1 - u) * (1 - u), b1 = 2 * u * (1 - u) * w, b2 = u * u, sum = b0 + b1 + b2;
+  out[0] = ((b0 + b1) * e[0] + b2 * c[0]) / sum;
+  out[1] = (b0 * inner + (b1 + b2) * rim) / sum;
+  out[2] = ((b0 + b1) * e[1] + b2 * c[1]) / sum;
+}
+
+/* A flat piece where a rounded rim's strip ends against a sharp edge, in the vertical plane
+ * through e and c (rim_end_arc_point): the quarter moon between the strip's end and the square's
+ * corner e at the rim, fanned from that corner. Its texture: t as on the sides, s from s_e at e
+ * along `s_direction`. */
+static void rim_end_piece(const double e[2], const double c[2], enum rim_level level, const double normal[2],
+                          float s_e, const double s_direction[2])
+{
+  const double corner[3] = {e[0], rim_height(level), e[1]};
   glNormal3d(normal[0], 0, normal[1]);
   glBegin(GL_TRIANGLE_FAN);
-  piece_vertex(centre, e, s_e, s_direction);
+  piece_vertex(corner, e, s_e, s_direction);
   for (int step = 0; step <= ARC_STEPS; ++step) {
-    const double u = (double)step / ARC_STEPS;
-    const double b0 = (1 - u) * (1 - u), b1 = 2 * u * (1 - u) * w, b2 = u * u, sum = b0 + b1 + b2;
-    const double p[3] = {((b0 + b1) * e[0] + b2 * c[0]) / sum, (b0 * inner + (b1 + b2) * rim) / sum,
-                         ((b0 + b1) * e[1] + b2 * c[1]) / sum};
+    double p[3];
+    rim_end_arc_point(e, c, level, (double)step / ARC_STEPS, p);
     piece_vertex(p, e, s_e, s_direction);
   }
   glEnd();
@@ -286,54 +314,104 @@ static void rim_corner(int i, enum rim_level level, float s0)
   draw_rim_patch(net, tex, (const double (*)[3][3])centre, 3, level, &chart);
 }
 
-static void GLAPIENTRY top_vertex(void *data)
+/* A vertex of a flat piece cut into triangles by GLU's tessellator: its point and its texture
+ * coordinates. */
+struct flat_vertex {
+  GLdouble point[3], texture[2];
+};
+
+static int same_point(const GLdouble p[3], const GLdouble q[3]) { return p[0] == q[0] && p[1] == q[1] && p[2] == q[2]; }
+
+static void GLAPIENTRY flat_vertex(void *data)
 {
-  const GLdouble *p = data;
-  glTexCoord2d(p[0], p[2]);
-  glVertex3dv(p);
+  const struct flat_vertex *v = data;
+  glTexCoord2d(v->texture[0], v->texture[1]);
+  glVertex3dv(v->point);
 }
 
-/* One point of the top's (or the bottom's) outline, at height y. */
-static void outline_point(GLdouble (*outline)[3], int *count, double x, double y, double z)
-{
-  outline[*count][0] = x;
-  outline[*count][1] = y;
-  outline[*count][2] = z;
-  ++*count;
-}
-
-/* The top or the bottom: the outline with its rounded corners, which may be concave, so GLU's
- * tessellator cuts it into triangles (facing up or down: the normal is given). Along a side whose
- * rim is rounded the outline runs R in from the side, along a sharp one on the side's edge, in
- * SIDE_STEPS steps. */
-static void block_end(enum rim_level level)
+/* The flat polygon through vertices[0 .. count - 1] (a point equal to the one before it left
+ * out), which may be concave, cut into triangles by GLU's tessellator, facing along `normal`;
+ * nothing when fewer than three points are left (a top shrunk to a point or a line). */
+static void draw_flat_polygon(struct flat_vertex *vertices, int count, const float normal[3])
 {
   static GLUtesselator *tess;
-  static GLdouble (*outline)[3], (*contour)[3];
-  static int *first_of_corner;
-  static int capacity;
-  const double y = rim_height(level), out = rim_outward(level);
-  const int needed = plan.corners * (ARC_STEPS + 3 + SIDE_STEPS);
+  int distinct = 0;
+  for (int k = 0; k < count; ++k) distinct += !same_point(vertices[k].point, vertices[(k + count - 1) % count].point);
+  if (distinct < 3) return;
   if (!tess) {
     tess = gluNewTess();
     gluTessCallback(tess, GLU_TESS_BEGIN, (void (GLAPIENTRY *)(void))glBegin);
-    gluTessCallback(tess, GLU_TESS_VERTEX, (void (GLAPIENTRY *)(void))top_vertex);
+    gluTessCallback(tess, GLU_TESS_VERTEX, (void (GLAPIENTRY *)(void))flat_vertex);
     gluTessCallback(tess, GLU_TESS_END, (void (GLAPIENTRY *)(void))glEnd);
   }
-  gluTessNormal(tess, 0, out, 0);
-  if (capacity < needed) {
-    free(outline);
-    free(contour);
-    free(first_of_corner);
-    outline = malloc((size_t)needed * sizeof *outline);
-    contour = malloc((size_t)needed * sizeof *contour);
-    first_of_corner = malloc(((size_t)plan.corners + 1) * sizeof *first_of_corner);
-    if (!outline || !contour || !first_of_corner) exit(1);
-    capacity = needed;
+  gluTessNormal(tess, normal[0], normal[1], normal[2]);
+  glNormal3fv(normal);
+  gluTessBeginPolygon(tess, NULL);
+  gluTessBeginContour(tess);
+  for (int k = 0; k < count; ++k) {
+    if (same_point(vertices[k].point, vertices[(k + count - 1) % count].point)) continue;
+    gluTessVertex(tess, vertices[k].point, &vertices[k]);
   }
-  int count = 0;
+  gluTessEndContour(tess);
+  gluTessEndPolygon(tess);
+}
+
+/* The outline of the top (or the bottom) at each level: with its rounded corners, R in from a
+ * side whose rim is rounded and on the side's edge along a sharp one, SIDE_STEPS steps along
+ * each side. Side i's points are point[side_first[i]] (where it leaves corner i) to
+ * point[side_first[i] + SIDE_STEPS] (where it reaches corner i + 1; indices taken round). */
+struct outline {
+  double (*point)[2];
+  int count, capacity, *side_first;
+};
+static struct outline outlines[2];
+
+/* Side i's point j (0 to SIDE_STEPS) of the outline at `level`. */
+static const double *outline_side_point(enum rim_level level, int i, int j)
+{
+  const struct outline *o = &outlines[level];
+  return o->point[(o->side_first[i] + j) % o->count];
+}
+
+/* The points trace_outline finds at the corners, before the sides' steps go in between. */
+static double (*corner_points)[2];
+static int corner_count, corner_capacity;
+
+static void corner_point(double x, double z)
+{
+  if (corner_count == corner_capacity) exit(1);
+  corner_points[corner_count][0] = x;
+  corner_points[corner_count][1] = z;
+  ++corner_count;
+}
+
+/* Traces the outline at `level` into outlines[level]: each corner's points (its upright's arc,
+ * a mitre's top, a sphere's pole, a torus's inner rim, where a rounded strip ends), then the
+ * side's steps to the next corner's first point. */
+static void trace_outline(enum rim_level level)
+{
+  static int *first_of_corner;
+  struct outline *o = &outlines[level];
+  const int needed = plan.corners * (ARC_STEPS + 3 + SIDE_STEPS);
+  if (corner_capacity < needed) {
+    free(corner_points);
+    free(first_of_corner);
+    corner_points = malloc((size_t)needed * sizeof *corner_points);
+    first_of_corner = malloc(((size_t)plan.corners + 1) * sizeof *first_of_corner);
+    if (!corner_points || !first_of_corner) exit(1);
+    corner_capacity = needed;
+  }
+  if (o->capacity < needed) {
+    free(o->point);
+    free(o->side_first);
+    o->point = malloc((size_t)needed * sizeof *o->point);
+    o->side_first = malloc((size_t)plan.corners * sizeof *o->side_first);
+    if (!o->point || !o->side_first) exit(1);
+    o->capacity = needed;
+  }
+  corner_count = 0;
   for (int i = 0; i < plan.corners; ++i) {
-    first_of_corner[i] = count;
+    first_of_corner[i] = corner_count;
     float from[2], to[2], corner[2] = {(float)plan.xz[i][0], (float)plan.xz[i][1]};
     corner_ends(i, from, to);
     const int before = side_rounded(i - 1, level), after = side_rounded(i, level);
@@ -344,7 +422,7 @@ static void block_end(enum rim_level level)
       const int steps = upright ? ARC_STEPS : 0;
       for (int step = 0; step <= steps; ++step) {
         quarter_arc_point(from, corner, to, (double)step / ARC_STEPS, arc);
-        outline_point(outline, &count, arc[0], y, arc[1]);
+        corner_point(arc[0], arc[1]);
       }
       continue;
     }
@@ -353,17 +431,17 @@ static void block_end(enum rim_level level)
     if (!upright) {
       /* The mitre's top, or where the one rounded strip ends in the sharp side's plane; at a
        * concave corner that end's cap reaches from the corner to it. */
-      if (!plan.convex[i] && after && !before) outline_point(outline, &count, corner[0], y, corner[1]);
-      outline_point(outline, &count, at[0], y, at[1]);
-      if (!plan.convex[i] && before && !after) outline_point(outline, &count, corner[0], y, corner[1]);
+      if (!plan.convex[i] && after && !before) corner_point(corner[0], corner[1]);
+      corner_point(at[0], at[1]);
+      if (!plan.convex[i] && before && !after) corner_point(corner[0], corner[1]);
       continue;
     }
     /* Above a rounded upright: a sharp side's edge runs on to where the upright's arc begins (or
      * ends), and the cap of the sphere or torus piece's end from there. */
-    if (!before) outline_point(outline, &count, from[0], y, from[1]);
+    if (!before) corner_point(from[0], from[1]);
     if (plan.convex[i]) {
       /* The sphere's pole. */
-      outline_point(outline, &count, at[0], y, at[1]);
+      corner_point(at[0], at[1]);
     } else {
       /* Above a fillet: the torus's inner rim, the fillet's arc scaled by 2 from its axis. */
       float far_from[2], far_corner[2], far_to[2];
@@ -374,29 +452,50 @@ static void block_end(enum rim_level level)
       }
       for (int step = 0; step <= ARC_STEPS; ++step) {
         quarter_arc_point(far_from, far_corner, far_to, (double)step / ARC_STEPS, arc);
-        outline_point(outline, &count, arc[0], y, arc[1]);
+        corner_point(arc[0], arc[1]);
       }
     }
-    if (!after) outline_point(outline, &count, to[0], y, to[1]);
+    if (!after) corner_point(to[0], to[1]);
   }
-  first_of_corner[plan.corners] = count;
-  /* Each corner's points, then the side's steps to the next corner's first point. */
-  int contour_count = 0;
+  first_of_corner[plan.corners] = corner_count;
+  o->count = 0;
   for (int i = 0; i < plan.corners; ++i) {
-    for (int k = first_of_corner[i]; k < first_of_corner[i + 1]; ++k)
-      outline_point(contour, &contour_count, outline[k][0], y, outline[k][2]);
-    const double *a = outline[first_of_corner[i + 1] - 1], *b = outline[first_of_corner[(i + 1) % plan.corners]];
+    for (int k = first_of_corner[i]; k < first_of_corner[i + 1]; ++k) {
+      o->point[o->count][0] = corner_points[k][0];
+      o->point[o->count][1] = corner_points[k][1];
+      ++o->count;
+    }
+    o->side_first[i] = o->count - 1;
+    const double *a = corner_points[first_of_corner[i + 1] - 1];
+    const double *b = corner_points[first_of_corner[(i + 1) % plan.corners]];
     for (int step = 1; step < SIDE_STEPS; ++step) {
       const double f = (double)step / SIDE_STEPS;
-      outline_point(contour, &contour_count, a[0] + f * (b[0] - a[0]), y, a[2] + f * (b[2] - a[2]));
+      o->point[o->count][0] = a[0] + f * (b[0] - a[0]);
+      o->point[o->count][1] = a[1] + f * (b[1] - a[1]);
+      ++o->count;
     }
   }
-  glNormal3f(0, (float)out, 0);
-  gluTessBeginPolygon(tess, NULL);
-  gluTessBeginContour(tess);
-  for (int k = 0; k < contour_count; ++k) gluTessVertex(tess, contour[k], contour[k]);
-  gluTessEndContour(tess);
-  gluTessEndPolygon(tess);
+}
+
+/* The top or the bottom: its outline (trace_outline), which may be concave, cut into triangles,
+ * facing up or down, with the texture's (x, z). */
+static void block_end(enum rim_level level)
+{
+  static struct flat_vertex *vertices;
+  static int capacity;
+  const struct outline *o = &outlines[level];
+  if (capacity < o->count) {
+    free(vertices);
+    vertices = malloc((size_t)o->count * sizeof *vertices);
+    if (!vertices) exit(1);
+    capacity = o->count;
+  }
+  for (int k = 0; k < o->count; ++k) {
+    const struct flat_vertex v = {{o->point[k][0], rim_height(level), o->point[k][1]}, {o->point[k][0], o->point[k][1]}};
+    vertices[k] = v;
+  }
+  const float normal[3] = {0, (float)rim_outward(level), 0};
+  draw_flat_polygon(vertices, o->count, normal);
 }
 
 /* At corner k, where the rim at `level` is rounded on one side of it or on both: above a rounded
@@ -425,7 +524,7 @@ static void corner_pieces(int k, enum rim_level level, float s)
       normal[m] = (plan.xz[k][m] - e[m]) / radius;
       direction[m] = (c[m] - e[m]) / radius;
     }
-    rim_end_piece(e, c, level, normal, after ? s : s + upright_arc_s(), direction, 0);
+    rim_end_piece(e, c, level, normal, after ? s : s + upright_arc_s(), direction);
     return;
   }
   if (plan.convex[k] || (before && after)) return;
@@ -436,7 +535,7 @@ static void corner_pieces(int k, enum rim_level level, float s)
   along_side(sharp, direction);
   for (int m = 0; m < 2; ++m) c[m] = plan.xz[k][m] + radius * in_rounded[m];
   const double normal[2] = {-in_sharp[0], -in_sharp[1]};
-  rim_end_piece(plan.xz[k], c, level, normal, s, direction, 0);
+  rim_end_piece(plan.xz[k], c, level, normal, s, direction);
 }
 
 /* Whether the rim of side i at `level` is cut at its end `end` (0: corner i, 1: corner i + 1):
@@ -450,42 +549,79 @@ static int side_cut(int i, int end, enum rim_level level)
          !(plan.rounded[k] && radius > 0);
 }
 
-/* The flat face of side i from `start` to `end` (x, z), between its rims (R in from a rounded
- * one), with the texture's s from s0 to s1 along it; outwards is to the right of the walk. */
+/* A vertex of side i's face at point p, with its texture: s from s_start at the face's start
+ * along the side, t as on the sides. */
+static struct flat_vertex face_vertex(int i, const float start[2], float s_start, const double p[3])
+{
+  double direction[2];
+  along_side(i, direction);
+  const float along = (float)((p[0] - start[0]) * direction[0] + (p[2] - start[1]) * direction[1]);
+  const struct flat_vertex v = {{p[0], p[1], p[2]}, {s_start + along * s_per_length, side_t(p[1])}};
+  return v;
+}
+
+/* The band of side i's face between its grid's end and its sharp rim at `level` (where the
+ * grids stop R short of the rim): one flat polygon through the grid's points along its edge,
+ * from `start` to `end`, up the quarter circle a rounded neighbour's strip ends in where the side
+ * is cut at its end, back along the outline's points of the side at the rim, and down that
+ * quarter circle where it is cut at its start, so that it shares every point with the grid
+ * below, the strips, the uprights' bands and the top (bottom). */
+static void wall_band(int i, enum rim_level level, const float start[2], const float end[2], float s0,
+                      const float normal[3])
+{
+  struct flat_vertex v[2 * (SIDE_STEPS + 1) + 2 * ARC_STEPS];
+  int n = 0;
+  const double edge = grid_end(level), rim = rim_height(level);
+  for (int j = 0; j <= SIDE_STEPS; ++j) {
+    const float f = (float)j / (float)SIDE_STEPS;
+    const double p[3] = {start[0] + f * (end[0] - start[0]), edge, start[1] + f * (end[1] - start[1])};
+    v[n++] = face_vertex(i, start, s0, p);
+  }
+  double cut_arc[2][2][2]; /* at each end: the arc's e and c (rim_end_arc_point) */
+  for (int at = 0; at < 2; ++at) {
+    const int k = (i + at) % plan.corners;
+    double in_other[2];
+    inward(at ? (i + 1) % plan.corners : (i + plan.corners - 1) % plan.corners, in_other);
+    for (int m = 0; m < 2; ++m) {
+      cut_arc[at][0][m] = plan.xz[k][m];
+      cut_arc[at][1][m] = plan.xz[k][m] + radius * in_other[m];
+    }
+  }
+  if (side_cut(i, 1, level))
+    for (int step = 1; step < ARC_STEPS; ++step) {
+      double p[3];
+      rim_end_arc_point(cut_arc[1][0], cut_arc[1][1], level, (double)step / ARC_STEPS, p);
+      v[n++] = face_vertex(i, start, s0, p);
+    }
+  for (int j = SIDE_STEPS; j >= 0; --j) {
+    const double *q = outline_side_point(level, i, j);
+    const double p[3] = {q[0], rim, q[1]};
+    v[n++] = face_vertex(i, start, s0, p);
+  }
+  if (side_cut(i, 0, level))
+    for (int step = ARC_STEPS - 1; step > 0; --step) {
+      double p[3];
+      rim_end_arc_point(cut_arc[0][0], cut_arc[0][1], level, (double)step / ARC_STEPS, p);
+      v[n++] = face_vertex(i, start, s0, p);
+    }
+  draw_flat_polygon(v, n, normal);
+}
+
+/* The flat face of side i from `start` to `end` (x, z), with the texture's s from s0 to s1 along
+ * it; outwards is to the right of the walk. A grid between the grids' ends (grid_end), and above
+ * (below) it to a sharp rim where the grids stop short of the rim, a band (wall_band). */
 static void side_face(int i, const float start[2], const float end[2], float s0, float s1)
 {
   const float along[3] = {end[0] - start[0], 0, end[1] - start[1]};
   const float length = sqrtf(along[0] * along[0] + along[2] * along[2]);
   if (length <= 0) return;
   const float normal[3] = {-along[2] / length, 0, along[0] / length};
-  const double low = block_bottom + side_radius(i, BOTTOM), high = block_top - side_radius(i, TOP);
-  const int cut[2][2] = {{side_cut(i, 0, BOTTOM), side_cut(i, 1, BOTTOM)}, {side_cut(i, 0, TOP), side_cut(i, 1, TOP)}};
-  const double inner_low = low + (cut[BOTTOM][0] || cut[BOTTOM][1] ? radius : 0);
-  const double inner_high = high - (cut[TOP][0] || cut[TOP][1] ? radius : 0);
-  const float base[3] = {start[0], (float)inner_low, start[1]}, up[3] = {0, (float)(inner_high - inner_low), 0};
-  textured_grid(base, along, up, normal, SIDE_STEPS, s0, s1, side_t(inner_low), side_t(inner_high));
-  for (int level = BOTTOM; level <= TOP; ++level) {
-    if (!cut[level][0] && !cut[level][1]) continue;
-    /* The band between the rim and R in from it, short of the cut squares, then the quarter
-     * disks in them. */
-    const double y0 = level == TOP ? inner_high : low, y1 = level == TOP ? high : inner_low;
-    const float r0 = cut[level][0] ? radius : 0.0f, r1 = cut[level][1] ? radius : 0.0f;
-    const float band_base[3] = {start[0] + along[0] / length * r0, (float)y0, start[1] + along[2] / length * r0};
-    const float band_along[3] = {along[0] / length * (length - r0 - r1), 0, along[2] / length * (length - r0 - r1)};
-    const float band_up[3] = {0, (float)(y1 - y0), 0};
-    textured_grid(band_base, band_along, band_up, normal, SIDE_STEPS, s0 + r0 * s_per_length,
-                  s1 - r1 * s_per_length, side_t(y0), side_t(y1));
-    for (int at = 0; at < 2; ++at) {
-      if (!cut[level][at]) continue;
-      const int k = (i + at) % plan.corners;
-      double in_other[2], c[2], direction[2];
-      inward(at ? (i + 1) % plan.corners : (i + plan.corners - 1) % plan.corners, in_other);
-      along_side(i, direction);
-      for (int m = 0; m < 2; ++m) c[m] = plan.xz[k][m] + radius * in_other[m];
-      const double face_normal[2] = {normal[0], normal[2]};
-      rim_end_piece(plan.xz[k], c, (enum rim_level)level, face_normal, at ? s1 : s0, direction, 1);
-    }
-  }
+  const double low = grid_end(BOTTOM), high = grid_end(TOP);
+  const float base[3] = {start[0], (float)low, start[1]}, up[3] = {0, (float)(high - low), 0};
+  textured_grid(base, along, up, normal, SIDE_STEPS, s0, s1, side_t(low), side_t(high));
+  for (int level = BOTTOM; level <= TOP; ++level)
+    if (level_split[level] && !side_rounded(i, (enum rim_level)level))
+      wall_band(i, (enum rim_level)level, start, end, s0, normal);
 }
 
 /* The length of the walk round the outline at the current radius: the sides between the
@@ -512,6 +648,11 @@ void draw_plan_block(const struct floor_plan *object, float rounding_radius, flo
   block_top = (float)plan.top;
   const float walked = outline_length();
   s_per_length = fmaxf(1.0f, roundf(walked / s_repeat)) * s_repeat / walked;
+  for (int level = BOTTOM; level <= TOP; ++level) {
+    level_split[level] = 0;
+    for (int i = 0; i < plan.corners; ++i) level_split[level] |= side_rounded(i, (enum rim_level)level);
+    trace_outline((enum rim_level)level);
+  }
   /* Its sides and rounded edges, in order around it so that the texture's s is the length
    * walked around it (times s_per_length); then the top and the bottom. */
   float s = 0;

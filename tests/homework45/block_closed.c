@@ -282,6 +282,7 @@ void GLAPIENTRY gluTessVertex(GLUtesselator *tess, GLdouble *location, GLvoid *d
 void GLAPIENTRY gluTessEndContour(GLUtesselator *tess) { (void)tess; }
 void GLAPIENTRY gluTessEndPolygon(GLUtesselator *tess)
 {
+  if (tess->count == 0) return;
   double apex[3] = {0, 0, 0};
   for (int i = 0; i < tess->count; ++i)
     for (int k = 0; k < 3; ++k) apex[k] += tess->point[i][k] / tess->count;
