@@ -420,8 +420,8 @@ static void load_object(int argc, char **argv)
     exit(1);
   }
   if (!layered && plan.sharp_hard_edges > 0)
-    fprintf(stderr, "homework45: %s: %d hard edges stay sharp (this program rounds the upright edges, and "
-            "the top's and the bottom's rims along each side whose edges there are all hard)\n", path,
+    fprintf(stderr, "homework45: %s: %d hard edges stay sharp (this program rounds the upright edges hard "
+            "all the way up, and the top's and the bottom's rims along their hard stretches)\n", path,
             plan.sharp_hard_edges);
   if (layered && layers.sharp_hard_edges > 0)
     fprintf(stderr, "homework45: %s: %d hard edges stay sharp (of an object of more than one layer of cubes "

@@ -167,7 +167,8 @@ static void upright_axis(int i, double out[2])
  * its axis (a convex corner, where the sphere closes) or the arc twice as far from it (a concave
  * one, the torus's inner rim, drawn by the caller); above a sharp upright, R in from each side
  * whose rim is rounded: the mitre's top when both are, else where the one rounded strip ends, in
- * the plane of the sharp side. */
+ * the plane of the sharp side; where the outline goes straight on (plan.straight), R in from the
+ * side when either side's rim is rounded, where the strips end, in the plane across the side. */
 static void rim_top_corner(int k, enum rim_level level, double out[2])
 {
   const int n = plan.corners;
@@ -178,7 +179,8 @@ static void rim_top_corner(int k, enum rim_level level, double out[2])
   double before[2], after[2];
   inward((k + n - 1) % n, before);
   inward(k, after);
-  const double r_before = side_radius(k - 1, level), r_after = side_radius(k, level);
+  double r_before = side_radius(k - 1, level), r_after = side_radius(k, level);
+  if (plan.straight[k]) r_before = 0, r_after = fmax(r_after, side_radius(k - 1, level));
   for (int c = 0; c < 2; ++c) out[c] = plan.xz[k][c] + r_before * before[c] + r_after * after[c];
 }
 
@@ -503,8 +505,10 @@ static void block_end(enum rim_level level)
  * the plane normal to that side through the upright's arc's end (the torus or sphere is kept
  * whole and steps down to the sharp edge, as the library's rounding does); above a sharp concave
  * corner with one side rounded, the quarter moon that ends that side's strip, in the sharp side's
- * plane past the corner. (Above a sharp convex corner the sharp side's face is cut instead:
- * side_face.) s is the texture's s where the corner's arc begins. */
+ * plane past the corner; where the outline goes straight on from a rounded stretch of the rim to
+ * a sharp one, the quarter moon across the side that ends the strip, facing it. (Above a sharp
+ * convex corner the sharp side's face is cut instead: side_face.) s is the texture's s where the
+ * corner's arc begins. */
 static void corner_pieces(int k, enum rim_level level, float s)
 {
   const int n = plan.corners;
@@ -534,7 +538,13 @@ static void corner_pieces(int k, enum rim_level level, float s)
   inward(sharp, in_sharp);
   along_side(sharp, direction);
   for (int m = 0; m < 2; ++m) c[m] = plan.xz[k][m] + radius * in_rounded[m];
-  const double normal[2] = {-in_sharp[0], -in_sharp[1]};
+  double normal[2] = {-in_sharp[0], -in_sharp[1]};
+  if (plan.straight[k]) {
+    /* Across the side: facing the rounded stretch, s running in from the side's edge. */
+    along_side(rounded, normal);
+    if (!after) normal[0] = -normal[0], normal[1] = -normal[1];
+    direction[0] = in_rounded[0], direction[1] = in_rounded[1];
+  }
   rim_end_piece(plan.xz[k], c, level, normal, s, direction);
 }
 

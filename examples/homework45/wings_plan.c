@@ -7,11 +7,10 @@
 #include <string.h>
 
 /* The outline of the top faces (those with every vertex at the top), walked along their edges
- * that border a face which is not on top, into plan->xz; *outline_next gets the vertex after
- * each one of it (-1 elsewhere) and *outline_side the side (corner k to corner k + 1) its edge to
- * that vertex lies on, both for the caller to free. */
+ * that border a face which is not on top: *outline_next gets the vertex after each one of it (-1
+ * elsewhere) and *outline_start one of its vertices, for the caller to free. */
 static int trace_outline(const struct wings_mesh *o, struct floor_plan *plan, char *error, size_t size,
-                         long **outline_next, long **outline_side)
+                         long **outline_next, long *outline_start)
 {
   const double extent = fmax(plan->top - plan->bottom, 1e-300);
   const double tolerance = 1e-9 * extent;
@@ -59,17 +58,35 @@ static int trace_outline(const struct wings_mesh *o, struct floor_plan *plan, ch
     free(next);
     return 0;
   }
-  /* Corners: the outline's vertices where it turns. */
+  *outline_next = next;
+  *outline_start = start;
+  return 1;
+}
+
+/* The outline's corners, into plan->xz: its vertices where it turns, and those where it goes
+ * straight on but the rim's hardness changes (rim_kind[v]: the kind of the rim edges along the
+ * outline edge from v to next[v], at the top and the bottom), so that a side hard only in part is
+ * two sides, one rounded, one not; *outline_side gets the side (corner k to corner k + 1) of
+ * each outline vertex's edge (-1 elsewhere), for the caller to free. */
+static int find_corners(const struct wings_mesh *o, struct floor_plan *plan, const long *next, long start,
+                        const int *rim_kind, char *error, size_t size, long **outline_side)
+{
+  long loop = 0;
+  for (long v = start;;) {
+    ++loop;
+    v = next[v];
+    if (v == start) break;
+  }
   plan->xz = calloc((size_t)loop, sizeof *plan->xz);
   plan->rounded = calloc((size_t)loop, sizeof *plan->rounded);
   plan->convex = calloc((size_t)loop, sizeof *plan->convex);
+  plan->straight = calloc((size_t)loop, sizeof *plan->straight);
   plan->top_hard = calloc((size_t)loop, sizeof *plan->top_hard);
   plan->bottom_hard = calloc((size_t)loop, sizeof *plan->bottom_hard);
   long *corner_vertex = calloc((size_t)loop, sizeof *corner_vertex);
   long *side = malloc((size_t)o->vertex_count * sizeof *side + 1);
-  if (!plan->xz || !plan->rounded || !plan->convex || !plan->top_hard || !plan->bottom_hard ||
+  if (!plan->xz || !plan->rounded || !plan->convex || !plan->straight || !plan->top_hard || !plan->bottom_hard ||
       !corner_vertex || !side) {
-    free(next);
     free(corner_vertex);
     free(side);
     return wings_failed(error, size, "out of memory");
@@ -82,15 +99,17 @@ static int trace_outline(const struct wings_mesh *o, struct floor_plan *plan, ch
     const double bx = o->position[after][0] - o->position[here][0], bz = o->position[after][2] - o->position[here][2];
     const double turn = ax * bz - az * bx, along = ax * bx + az * bz;
     const double scale = hypot(ax, az) * hypot(bx, bz);
-    if (fabs(turn) <= 1e-9 * scale && along > 0) continue; /* straight on */
-    if (fabs(along) > 1e-9 * scale)
-      return free(next), free(corner_vertex), free(side),
+    const int straight = fabs(turn) <= 1e-9 * scale && along > 0;
+    if (straight && rim_kind[before] == rim_kind[here]) continue; /* straight on */
+    if (!straight && fabs(along) > 1e-9 * scale)
+      return free(corner_vertex), free(side),
              wings_failed(error, size, "object 1: its outline turns at vertex %ld by an angle other than 90 degrees",
                           here);
     corner_vertex[plan->corners] = here;
     plan->xz[plan->corners][0] = o->position[here][0];
     plan->xz[plan->corners][1] = o->position[here][2];
-    plan->convex[plan->corners] = turn > 0; /* turning left in (x, z); made "convex" below */
+    plan->convex[plan->corners] = !straight && turn > 0; /* turning left in (x, z); made "convex" below */
+    plan->straight[plan->corners] = straight;
     ++plan->corners;
   }
   /* The side of each outline edge, named by the vertex it leaves: the corners come in the
@@ -103,7 +122,6 @@ static int trace_outline(const struct wings_mesh *o, struct floor_plan *plan, ch
     v = next[v];
   }
   free(corner_vertex);
-  *outline_next = next;
   *outline_side = side;
   return 1;
 }
@@ -144,10 +162,64 @@ int floor_plan_from_mesh(const struct wings_mesh *mesh, int layers_alike, struct
     if (!twin) ok = wings_failed(error, error_size, "object 1, vertex %ld: no vertex above or below it (the object "
                                  "does not stand upright)", v);
   }
-  long *outline_next = NULL, *outline_side = NULL;
-  if (ok) ok = trace_outline(&object, plan, error, error_size, &outline_next, &outline_side);
-  if (ok && plan->corners < 4)
-    ok = wings_failed(error, error_size, "object 1: its outline has %d corners", plan->corners);
+  long *outline_next = NULL, *outline_side = NULL, outline_start = -1;
+  if (ok) ok = trace_outline(&object, plan, error, error_size, &outline_next, &outline_start);
+  /* Per outline vertex v, the rim edges along the outline edge from v to next[v] and the hard
+   * ones among them, at the top ([0], [1]) and at the bottom ([2], [3]); and the kind of that
+   * stretch of rim: bit 0 when its top edges are all hard, bit 1 its bottom's. */
+  long *rim_counts = NULL, *top_twin = NULL;
+  int *rim_kind = NULL, *on_bottom = NULL;
+  if (ok) {
+    rim_counts = calloc(4 * (size_t)object.vertex_count + 1, sizeof *rim_counts);
+    rim_kind = calloc((size_t)object.vertex_count + 1, sizeof *rim_kind);
+    top_twin = malloc((size_t)object.vertex_count * sizeof *top_twin + 1);
+    /* The bottom's rim: edges along the bottom between a bottom face and a side face (one
+     * layer of cubes: a side face has vertices at the top too). */
+    on_bottom = calloc((size_t)object.face_count + 1, sizeof *on_bottom);
+    if (!rim_counts || !rim_kind || !top_twin || !on_bottom) ok = wings_failed(error, error_size, "out of memory");
+  }
+  for (long f = 0; ok && f < object.face_count; ++f) on_bottom[f] = 1;
+  for (long e = 0; ok && e < object.edge_count; ++e) {
+    const struct winged_edge *edge = &object.edges[e];
+    if (fabs(object.position[edge->vs][1] - plan->bottom) > tolerance ||
+        fabs(object.position[edge->ve][1] - plan->bottom) > tolerance)
+      on_bottom[edge->lf] = on_bottom[edge->rf] = 0;
+  }
+  /* The outline vertex above each vertex (itself on the outline), -1 where there is none. */
+  for (long v = 0; ok && v < object.vertex_count; ++v) {
+    top_twin[v] = -1;
+    for (long w = 0; w < object.vertex_count && top_twin[v] < 0; ++w)
+      if (outline_next[w] >= 0 && object.position[w][0] == object.position[v][0] &&
+          object.position[w][2] == object.position[v][2])
+        top_twin[v] = w;
+  }
+  for (long e = 0; ok && e < object.edge_count; ++e) {
+    const struct winged_edge *edge = &object.edges[e];
+    const int rim = outline_next[edge->vs] == edge->ve || outline_next[edge->ve] == edge->vs;
+    const int bottom_rim = !rim && on_bottom[edge->lf] != on_bottom[edge->rf];
+    if (!rim && !bottom_rim) continue;
+    /* The outline edge it is (or lies below), named by the vertex it leaves. */
+    const long a = rim ? edge->vs : top_twin[edge->vs], b = rim ? edge->ve : top_twin[edge->ve];
+    long at = -1;
+    if (a >= 0 && b >= 0) at = outline_next[a] == b ? a : outline_next[b] == a ? b : -1;
+    const int hard = object.hard[e];
+    if (at < 0) {
+      /* (Not below an outline edge: no side to round it along.) */
+      plan->sharp_hard_edges += hard;
+      continue;
+    }
+    rim_counts[4 * at + (bottom_rim ? 2 : 0)] += 1;
+    rim_counts[4 * at + (bottom_rim ? 2 : 0) + 1] += hard;
+  }
+  for (long v = 0; ok && v < object.vertex_count; ++v)
+    for (int level = 0; level < 2; ++level) {
+      const long edges = rim_counts[4 * v + 2 * level], hard = rim_counts[4 * v + 2 * level + 1];
+      rim_kind[v] |= (hard > 0 && hard == edges) << level;
+    }
+  if (ok) ok = find_corners(&object, plan, outline_next, outline_start, rim_kind, error, error_size, &outline_side);
+  int turns = 0;
+  for (int i = 0; ok && i < plan->corners; ++i) turns += !plan->straight[i];
+  if (ok && turns < 4) ok = wings_failed(error, error_size, "object 1: its outline has %d corners", turns);
   if (ok) {
     /* Counter-clockwise seen from above: the signed area in (z, x) is positive. */
     double area = 0;
@@ -161,12 +233,13 @@ int floor_plan_from_mesh(const struct wings_mesh *mesh, int layers_alike, struct
     if (reversed) {
       for (int i = 0, j = plan->corners - 1; i < j; ++i, --j) {
         double x = plan->xz[i][0], z = plan->xz[i][1];
-        int left = plan->convex[i];
+        int left = plan->convex[i], straight = plan->straight[i];
         plan->xz[i][0] = plan->xz[j][0], plan->xz[i][1] = plan->xz[j][1], plan->convex[i] = plan->convex[j];
-        plan->xz[j][0] = x, plan->xz[j][1] = z, plan->convex[j] = left;
+        plan->straight[i] = plan->straight[j];
+        plan->xz[j][0] = x, plan->xz[j][1] = z, plan->convex[j] = left, plan->straight[j] = straight;
       }
     } else {
-      for (int i = 0; i < plan->corners; ++i) plan->convex[i] = !plan->convex[i];
+      for (int i = 0; i < plan->corners; ++i) plan->convex[i] = !plan->straight[i] && !plan->convex[i];
     }
     plan->max_radius = INFINITY;
     for (int i = 0; i < plan->corners; ++i) {
@@ -179,46 +252,10 @@ int floor_plan_from_mesh(const struct wings_mesh *mesh, int layers_alike, struct
     /* Per side in the order of the walk (before any reversal): rim edges and hard ones, at the
      * top ([0]) and at the bottom ([1]). */
     long *counts = calloc(4 * (size_t)n + 1, sizeof *counts);
-    long *top_twin = malloc((size_t)object.vertex_count * sizeof *top_twin + 1);
-    /* The bottom's rim: edges along the bottom between a bottom face and a side face (one
-     * layer of cubes: a side face has vertices at the top too). */
-    int *on_bottom = calloc((size_t)object.face_count + 1, sizeof *on_bottom);
-    if (!on_bottom || !counts || !top_twin) ok = wings_failed(error, error_size, "out of memory");
-    for (long f = 0; ok && f < object.face_count; ++f) on_bottom[f] = 1;
-    for (long e = 0; ok && e < object.edge_count; ++e) {
-      const struct winged_edge *edge = &object.edges[e];
-      if (fabs(object.position[edge->vs][1] - plan->bottom) > tolerance ||
-          fabs(object.position[edge->ve][1] - plan->bottom) > tolerance)
-        on_bottom[edge->lf] = on_bottom[edge->rf] = 0;
-    }
-    /* The outline vertex above each vertex (itself on the outline), -1 where there is none. */
-    for (long v = 0; ok && v < object.vertex_count; ++v) {
-      top_twin[v] = -1;
-      for (long w = 0; w < object.vertex_count && top_twin[v] < 0; ++w)
-        if (outline_side[w] >= 0 && object.position[w][0] == object.position[v][0] &&
-            object.position[w][2] == object.position[v][2])
-          top_twin[v] = w;
-    }
-    for (long e = 0; ok && e < object.edge_count; ++e) {
-      const struct winged_edge *edge = &object.edges[e];
-      const int rim = outline_next[edge->vs] == edge->ve || outline_next[edge->ve] == edge->vs;
-      const int bottom_rim = !rim && on_bottom[edge->lf] != on_bottom[edge->rf];
-      /* The side the edge runs along: that of the outline edge it is (or lies below). */
-      const long a = rim ? edge->vs : top_twin[edge->vs], b = rim ? edge->ve : top_twin[edge->ve];
-      long at = -1;
-      if ((rim || bottom_rim) && a >= 0 && b >= 0)
-        at = outline_next[a] == b ? outline_side[a] : outline_next[b] == a ? outline_side[b] : -1;
-      const int hard = object.hard[e];
-      if ((rim || bottom_rim) && at < 0) {
-        /* (Not below an outline edge: no side to round it along.) */
-        plan->sharp_hard_edges += hard;
-        continue;
-      }
-      if (rim || bottom_rim) {
-        counts[4 * at + (bottom_rim ? 2 : 0)] += 1;
-        counts[4 * at + (bottom_rim ? 2 : 0) + 1] += hard;
-      }
-    }
+    if (!counts) ok = wings_failed(error, error_size, "out of memory");
+    for (long v = 0; ok && v < object.vertex_count; ++v)
+      if (outline_side[v] >= 0)
+        for (int c = 0; c < 4; ++c) counts[4 * outline_side[v] + c] += rim_counts[4 * v + c];
     /* An upright at a corner is rounded when every edge along it is hard (one edge in an object
      * of one layer, one per layer in an object of layers alike); one hard only in part stays
      * sharp. */
@@ -237,6 +274,7 @@ int floor_plan_from_mesh(const struct wings_mesh *mesh, int layers_alike, struct
        * bottom faces, or between two sides' faces one above the other, has nothing to round.) */
     }
     for (int i = 0; ok && i < plan->corners; ++i) {
+      if (plan->straight[i]) continue;  /* where a side's rim changes: an upright there rounds nothing */
       plan->rounded[i] = uprights[2 * i + 1] > 0 && uprights[2 * i + 1] == uprights[2 * i];
       if (!plan->rounded[i]) plan->sharp_hard_edges += uprights[2 * i + 1];
     }
@@ -256,9 +294,11 @@ int floor_plan_from_mesh(const struct wings_mesh *mesh, int layers_alike, struct
     /* Two rounded rims share the height; one takes at most half of it, as on a face's side. */
     if (any_rim) plan->max_radius = fmin(plan->max_radius, (plan->top - plan->bottom) / 2);
     free(counts);
-    free(top_twin);
-    free(on_bottom);
   }
+  free(rim_counts);
+  free(rim_kind);
+  free(top_twin);
+  free(on_bottom);
   free(outline_next);
   free(outline_side);
   if (!ok) floor_plan_free(plan);
@@ -270,9 +310,10 @@ void floor_plan_free(struct floor_plan *plan)
   free(plan->xz);
   free(plan->rounded);
   free(plan->convex);
+  free(plan->straight);
   free(plan->top_hard);
   free(plan->bottom_hard);
   plan->xz = NULL;
-  plan->rounded = plan->convex = plan->top_hard = plan->bottom_hard = NULL;
+  plan->rounded = plan->convex = plan->straight = plan->top_hard = plan->bottom_hard = NULL;
   plan->corners = 0;
 }

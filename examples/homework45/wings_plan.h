@@ -11,11 +11,16 @@
 #include "wings_mesh.h"
 
 struct floor_plan {
-  int corners;        /* corners of the outline, collinear vertices left out */
+  int corners;        /* corners of the outline, collinear vertices left out but where the
+                         rim's hardness changes (straight) */
   double (*xz)[2];    /* x, z of each corner, in the order that makes the outline turn
                          counter-clockwise seen from above (+y) */
   int *rounded;       /* whether the upright edges at each corner are hard */
-  int *convex;        /* whether the solid's angle at the corner is 90 (else 270) degrees */
+  int *convex;        /* whether the solid's angle at the corner is 90 degrees (else 270, or 180
+                         where straight) */
+  int *straight;      /* whether the outline goes straight on at the corner: a vertex in the
+                         middle of a side where its rim's hardness changes, so that the side's
+                         hard stretch is a side of its own, rounded, and the rest another */
   double bottom, top; /* heights */
   double min_x, max_x, min_z, max_z;
   int *top_hard;      /* whether every edge along the top of side i (from corner i to
@@ -23,8 +28,8 @@ struct floor_plan {
   int *bottom_hard;   /* the same along the bottom of side i */
   double max_radius;  /* half the outline's shortest side (and of the height, with a rim
                          rounded) */
-  int sharp_hard_edges; /* hard edges this program leaves sharp: those along the top or the
-                           bottom of a side whose edges there are hard only in part */
+  int sharp_hard_edges; /* hard edges this program leaves sharp: uprights hard only in part, and
+                           rim edges along no side's edge */
 };
 
 /* The plan of a mesh's object. Its vertices must lie at its bottom or its top unless

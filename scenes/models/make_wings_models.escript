@@ -11,7 +11,7 @@
 %% tests/homework45/l_block_partial*.wings, tests/homework45/overhang_*.wings,
 %% tests/homework45/two_layers_uprights.wings, tests/homework45/l_on_slab.wings,
 %% tests/homework45/slab_on_l.wings, tests/homework45/l_on_slab_sharp_corners.wings, tests/homework45/u_on_slab.wings, tests/homework45/ring_on_slab.wings,
-%% tests/homework45/bar_on_slab.wings,
+%% tests/homework45/bar_on_slab.wings, tests/homework45/bar_stretches.wings,
 %% tests/homework45/refused_*.wings (objects the homework program refuses) and tests/unit/data/wings/*.wings and *.term.
 
 main([Root]) ->
@@ -89,11 +89,26 @@ main([Root]) ->
                    end,
     write(filename:join(Root, "tests/homework45/l_block_partial_sharp_uprights.wings"),
           [object("L", HwVs, HwFs, PartialSharp, top_paint, true)], Materials, []),
-    %% The back's top rim (two edges) hard only along x >= 0: a side hard in part stays sharp,
-    %% reported.
+    %% The back's top rim (two edges) hard only along x >= 0: a side hard in part, rounded along
+    %% its hard stretch.
     HalfSide = fun(A, B) -> level_side(A, B, 1.0, z, -1.0, x) end,
     write(filename:join(Root, "tests/homework45/l_block_half_side.wings"),
           [object("L", HwVs, HwFs, HalfSide, top_paint, true)], Materials, []),
+    %% A bar of three cubes whose rims are hard along stretches that end in the middle of its
+    %% sides: the front's top (z = 0) over the middle cube only, the back's bottom (z = 1) from
+    %% x = 1 on, the right end's top (x = 3) and the upright at its back: strips ending in
+    %% quarter moons across the side at both ends, the top's and the bottom's changing at other
+    %% places, and a sphere piece ending in a cap.
+    {BarVs, BarFs} = cubes([{0, 0, 0}, {1, 0, 0}, {2, 0, 0}], 1.0, {0.0, 0.0, 0.0}),
+    Within = fun({AX, _, _}, {BX, _, _}, Low, High) -> min(AX, BX) >= Low andalso max(AX, BX) =< High end,
+    Stretches = fun(A, B) ->
+                    (level_side(A, B, 1.0, z, 0.0, any) andalso Within(A, B, 1.0, 2.0))
+                    orelse (level_side(A, B, 0.0, z, 1.0, any) andalso Within(A, B, 1.0, 3.0))
+                    orelse level_side(A, B, 1.0, x, 3.0, any)
+                    orelse (upright(A, B) andalso {element(1, A), element(3, A)} == {3.0, 1.0})
+                end,
+    write(filename:join(Root, "tests/homework45/bar_stretches.wings"),
+          [object("Bar", BarVs, BarFs, Stretches, top_paint, true)], Materials, []),
     %% Unit test files.
     {CubeVs, CubeFs} = cubes([{0, 0, 0}], 1.0, {0.0, 0.0, 0.0}),
     None = fun(_, _) -> false end,
