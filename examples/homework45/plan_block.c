@@ -18,11 +18,11 @@
  * (a T-junction, which leaves pixels uncovered along the seam). */
 #define SIDE_STEPS 4
 
-/* What draw_plan_block was given, for the functions below: the plan (its arrays are the
- * caller's), the rounding radius, the height the sides' texture t runs from 0 to 1 over, and the
- * bottom's and the top's heights in single precision; and the texture's s per unit of length
- * walked round the outline (about 1, so that the outline's length is whole repeats). */
-static struct floor_plan plan;
+/* What draw_plan_block was given, for the functions below: the loop of the plan's outline being
+ * drawn (its arrays are the caller's), the rounding radius, the height the sides' texture t runs
+ * from 0 to 1 over, and the bottom's and the top's heights in single precision; and the texture's
+ * s per unit of length walked round the loop (about 1, so that its length is whole repeats). */
+static struct plan_loop plan;
 static float radius, texture_height, block_bottom, block_top, s_per_length;
 
 /* The rims: the top's (TOP) and the bottom's (BOTTOM), each with its height and the direction
@@ -324,6 +324,7 @@ struct flat_vertex {
 
 static int same_point(const GLdouble p[3], const GLdouble q[3]) { return p[0] == q[0] && p[1] == q[1] && p[2] == q[2]; }
 
+
 static void GLAPIENTRY flat_vertex(void *data)
 {
   const struct flat_vertex *v = data;
@@ -331,31 +332,43 @@ static void GLAPIENTRY flat_vertex(void *data)
   glVertex3dv(v->point);
 }
 
-/* The flat polygon through vertices[0 .. count - 1] (a point equal to the one before it left
- * out), which may be concave, cut into triangles by GLU's tessellator, facing along `normal`;
- * nothing when fewer than three points are left (a top shrunk to a point or a line). */
-static void draw_flat_polygon(struct flat_vertex *vertices, int count, const float normal[3])
+/* Whether contour `contour` of draw_flat_polygon's keeps its vertex k: not equal to the one
+ * before it. */
+static int keeps_vertex(const struct flat_vertex *contour, int count, int k)
+{
+  return !same_point(contour[k].point, contour[(k + count - 1) % count].point);
+}
+
+/* The flat polygon whose contours are the runs of counts[0], counts[1], ... vertices of
+ * `vertices` (a point equal to the one before it left out; a contour with fewer than three
+ * points left, such as a top shrunk to a point or a line, left out), which may be concave and
+ * hold holes, cut into triangles by GLU's tessellator, facing along `normal`. */
+static void draw_flat_polygon(struct flat_vertex *vertices, const int *counts, int contour_count, const float normal[3])
 {
   static GLUtesselator *tess;
-  int distinct = 0;
-  for (int k = 0; k < count; ++k) distinct += !same_point(vertices[k].point, vertices[(k + count - 1) % count].point);
-  if (distinct < 3) return;
   if (!tess) {
     tess = gluNewTess();
     gluTessCallback(tess, GLU_TESS_BEGIN, (void (GLAPIENTRY *)(void))glBegin);
     gluTessCallback(tess, GLU_TESS_VERTEX, (void (GLAPIENTRY *)(void))flat_vertex);
     gluTessCallback(tess, GLU_TESS_END, (void (GLAPIENTRY *)(void))glEnd);
   }
-  gluTessNormal(tess, normal[0], normal[1], normal[2]);
-  glNormal3fv(normal);
-  gluTessBeginPolygon(tess, NULL);
-  gluTessBeginContour(tess);
-  for (int k = 0; k < count; ++k) {
-    if (same_point(vertices[k].point, vertices[(k + count - 1) % count].point)) continue;
-    gluTessVertex(tess, vertices[k].point, &vertices[k]);
+  int drawn = 0;
+  for (int c = 0, first = 0; c < contour_count; first += counts[c++]) {
+    int distinct = 0;
+    for (int k = 0; k < counts[c]; ++k) distinct += keeps_vertex(vertices + first, counts[c], k);
+    if (distinct < 3) continue;
+    if (!drawn) {
+      gluTessNormal(tess, normal[0], normal[1], normal[2]);
+      glNormal3fv(normal);
+      gluTessBeginPolygon(tess, NULL);
+      drawn = 1;
+    }
+    gluTessBeginContour(tess);
+    for (int k = 0; k < counts[c]; ++k)
+      if (keeps_vertex(vertices + first, counts[c], k)) gluTessVertex(tess, vertices[first + k].point, &vertices[first + k]);
+    gluTessEndContour(tess);
   }
-  gluTessEndContour(tess);
-  gluTessEndPolygon(tess);
+  if (drawn) gluTessEndPolygon(tess);
 }
 
 /* The outline of the top (or the bottom) at each level: with its rounded corners, R in from a
@@ -366,7 +379,10 @@ struct outline {
   double (*point)[2];
   int count, capacity, *side_first;
 };
-static struct outline outlines[2];
+/* The outlines of every loop of the plan, at both levels, and those of the loop being drawn. */
+static struct outline (*loop_outlines)[2];
+static int loop_outline_capacity;
+static struct outline *outlines;
 
 /* Side i's point j (0 to SIDE_STEPS) of the outline at `level`. */
 static const double *outline_side_point(enum rim_level level, int i, int j)
@@ -479,25 +495,38 @@ static void trace_outline(enum rim_level level)
   }
 }
 
-/* The top or the bottom: its outline (trace_outline), which may be concave, cut into triangles,
- * facing up or down, with the texture's (x, z). */
-static void block_end(enum rim_level level)
+/* The top or the bottom: the outlines of the plan's `loop_count` loops (trace_outline), which may
+ * be concave and hold holes, cut into triangles, facing up or down, with the texture's (x, z). */
+static void block_end(enum rim_level level, int loop_count)
 {
   static struct flat_vertex *vertices;
-  static int capacity;
-  const struct outline *o = &outlines[level];
-  if (capacity < o->count) {
+  static int *counts;
+  static int capacity, count_capacity;
+  int total = 0;
+  for (int l = 0; l < loop_count; ++l) total += loop_outlines[l][level].count;
+  if (capacity < total) {
     free(vertices);
-    vertices = malloc((size_t)o->count * sizeof *vertices);
+    vertices = malloc((size_t)total * sizeof *vertices);
     if (!vertices) exit(1);
-    capacity = o->count;
+    capacity = total;
   }
-  for (int k = 0; k < o->count; ++k) {
-    const struct flat_vertex v = {{o->point[k][0], rim_height(level), o->point[k][1]}, {o->point[k][0], o->point[k][1]}};
-    vertices[k] = v;
+  if (count_capacity < loop_count) {
+    free(counts);
+    counts = malloc((size_t)loop_count * sizeof *counts);
+    if (!counts) exit(1);
+    count_capacity = loop_count;
+  }
+  int n = 0;
+  for (int l = 0; l < loop_count; ++l) {
+    const struct outline *o = &loop_outlines[l][level];
+    counts[l] = o->count;
+    for (int k = 0; k < o->count; ++k) {
+      const struct flat_vertex v = {{o->point[k][0], rim_height(level), o->point[k][1]}, {o->point[k][0], o->point[k][1]}};
+      vertices[n++] = v;
+    }
   }
   const float normal[3] = {0, (float)rim_outward(level), 0};
-  draw_flat_polygon(vertices, o->count, normal);
+  draw_flat_polygon(vertices, counts, loop_count, normal);
 }
 
 /* At corner k, where the rim at `level` is rounded on one side of it or on both: above a rounded
@@ -614,7 +643,7 @@ static void wall_band(int i, enum rim_level level, const float start[2], const f
       rim_end_arc_point(cut_arc[0][0], cut_arc[0][1], level, (double)step / ARC_STEPS, p);
       v[n++] = face_vertex(i, start, s0, p);
     }
-  draw_flat_polygon(v, n, normal);
+  draw_flat_polygon(v, &n, 1, normal);
 }
 
 /* The flat face of side i from `start` to `end` (x, z), with the texture's s from s0 to s1 along
@@ -634,8 +663,8 @@ static void side_face(int i, const float start[2], const float end[2], float s0,
       wall_band(i, (enum rim_level)level, start, end, s0, normal);
 }
 
-/* The length of the walk round the outline at the current radius: the sides between the
- * uprights' quarter circles, and those. */
+/* The length of the walk round the loop at the current radius: the sides between the uprights'
+ * quarter circles, and those. */
 static float outline_length(void)
 {
   float length = 0;
@@ -649,13 +678,11 @@ static float outline_length(void)
   return length;
 }
 
-void draw_plan_block(const struct floor_plan *object, float rounding_radius, float texture_rise, float s_repeat)
+/* The walls, uprights, rims' strips and corner pieces of the loop `plan`, and its outlines for the
+ * top and the bottom: in order round it, so that the texture's s is the length walked round it
+ * (times s_per_length, which makes the walk whole repeats of s_repeat). */
+static void draw_loop(float s_repeat)
 {
-  plan = *object;
-  radius = rounding_radius;
-  texture_height = texture_rise;
-  block_bottom = (float)plan.bottom;
-  block_top = (float)plan.top;
   const float walked = outline_length();
   s_per_length = fmaxf(1.0f, roundf(walked / s_repeat)) * s_repeat / walked;
   for (int level = BOTTOM; level <= TOP; ++level) {
@@ -663,8 +690,6 @@ void draw_plan_block(const struct floor_plan *object, float rounding_radius, flo
     for (int i = 0; i < plan.corners; ++i) level_split[level] |= side_rounded(i, (enum rim_level)level);
     trace_outline((enum rim_level)level);
   }
-  /* Its sides and rounded edges, in order around it so that the texture's s is the length
-   * walked around it (times s_per_length); then the top and the bottom. */
   float s = 0;
   for (int i = 0; i < plan.corners; ++i) {
     const int next = (i + 1) % plan.corners;
@@ -683,6 +708,26 @@ void draw_plan_block(const struct floor_plan *object, float rounding_radius, flo
     if (side_rounded(i, BOTTOM)) rim_strip(i, BOTTOM, s, s + length);
     s += length;
   }
-  block_end(TOP);
-  block_end(BOTTOM);
+}
+
+void draw_plan_block(const struct floor_plan *object, float rounding_radius, float texture_rise, float s_repeat)
+{
+  radius = rounding_radius;
+  texture_height = texture_rise;
+  block_bottom = (float)object->bottom;
+  block_top = (float)object->top;
+  if (loop_outline_capacity < object->loop_count) {
+    loop_outlines = realloc(loop_outlines, (size_t)object->loop_count * sizeof *loop_outlines);
+    if (!loop_outlines) exit(1);
+    memset(loop_outlines + loop_outline_capacity, 0,
+           (size_t)(object->loop_count - loop_outline_capacity) * sizeof *loop_outlines);
+    loop_outline_capacity = object->loop_count;
+  }
+  for (int l = 0; l < object->loop_count; ++l) {
+    plan = object->loops[l];
+    outlines = loop_outlines[l];
+    draw_loop(s_repeat);
+  }
+  block_end(TOP, object->loop_count);
+  block_end(BOTTOM, object->loop_count);
 }

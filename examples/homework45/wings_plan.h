@@ -10,22 +10,29 @@
 
 #include "wings_mesh.h"
 
-struct floor_plan {
-  int corners;        /* corners of the outline, collinear vertices left out but where the
-                         rim's hardness changes (straight) */
-  double (*xz)[2];    /* x, z of each corner, in the order that makes the outline turn
-                         counter-clockwise seen from above (+y) */
+/* One loop of the outline of the top: the outer outline, or a hole's. */
+struct plan_loop {
+  int corners;        /* its corners, collinear vertices left out but where the rim's hardness
+                         changes (straight) */
+  double (*xz)[2];    /* x, z of each corner, in the order of a walk with the solid on its left
+                         seen from above (+y): the outer outline counter-clockwise, a hole's
+                         clockwise */
   int *rounded;       /* whether the upright edges at each corner are hard */
   int *convex;        /* whether the solid's angle at the corner is 90 degrees (else 270, or 180
                          where straight) */
   int *straight;      /* whether the outline goes straight on at the corner: a vertex in the
                          middle of a side where its rim's hardness changes, so that the side's
                          hard stretch is a side of its own, rounded, and the rest another */
-  double bottom, top; /* heights */
-  double min_x, max_x, min_z, max_z;
   int *top_hard;      /* whether every edge along the top of side i (from corner i to
                          corner i + 1) is hard: that stretch of the top's rim is rounded */
   int *bottom_hard;   /* the same along the bottom of side i */
+};
+
+struct floor_plan {
+  int loop_count;
+  struct plan_loop *loops; /* the outline's loops: one, or more round holes (a ring of cubes) */
+  double bottom, top; /* heights */
+  double min_x, max_x, min_z, max_z;
   double max_radius;  /* half the outline's shortest side (and of the height, with a rim
                          rounded) */
   int sharp_hard_edges; /* hard edges this program leaves sharp: uprights hard only in part, and

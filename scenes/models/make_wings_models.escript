@@ -11,7 +11,7 @@
 %% tests/homework45/l_block_partial*.wings, tests/homework45/overhang_*.wings,
 %% tests/homework45/two_layers_uprights.wings, tests/homework45/l_on_slab.wings,
 %% tests/homework45/slab_on_l.wings, tests/homework45/l_on_slab_sharp_corners.wings, tests/homework45/u_on_slab.wings, tests/homework45/ring_on_slab.wings,
-%% tests/homework45/bar_on_slab.wings, tests/homework45/bar_stretches.wings,
+%% tests/homework45/bar_on_slab.wings, tests/homework45/bar_stretches.wings, tests/homework45/ring.wings,
 %% tests/homework45/refused_*.wings (objects the homework program refuses) and tests/unit/data/wings/*.wings and *.term.
 
 main([Root]) ->
@@ -109,6 +109,10 @@ main([Root]) ->
                 end,
     write(filename:join(Root, "tests/homework45/bar_stretches.wings"),
           [object("Bar", BarVs, BarFs, Stretches, top_paint, true)], Materials, []),
+    %% A ring of eight cubes round a hole, every edge hard: the outline of its top is two loops.
+    {RingVs, RingFs} = cubes([{X, 0, Z} || X <- [0, 1, 2], Z <- [0, 1, 2], {X, Z} =/= {1, 1}], 1.0, {0.0, 0.0, 0.0}),
+    write(filename:join(Root, "tests/homework45/ring.wings"),
+          [object("Ring", RingVs, RingFs, All, top_paint, true)], Materials, []),
     %% Unit test files.
     {CubeVs, CubeFs} = cubes([{0, 0, 0}], 1.0, {0.0, 0.0, 0.0}),
     None = fun(_, _) -> false end,

@@ -244,10 +244,12 @@ void glNormal3d(GLdouble x, GLdouble y, GLdouble z)
 void glNormal3f(GLfloat x, GLfloat y, GLfloat z) { glNormal3d(x, y, z); }
 void glNormal3fv(const GLfloat *n) { glNormal3d(n[0], n[1], n[2]); }
 
-/* GLU's tessellator, as the top and the bottom use it: one contour, whose vertices go to the
- * vertex callback as a fan about an apex half a unit off its centroid along the normal (the
- * centroid may be a vertex of a concave outline; the apex gets the texture (x, z) the program
- * gives the top's points). */
+/* GLU's tessellator, as the program uses it (the top and the bottom, one contour per loop of the
+ * outline, and the walls' bands): each contour's vertices go to the vertex callback as a fan
+ * about an apex half a unit off the contour's centroid along the normal (the centroid may be a
+ * vertex of a concave outline; the apex gets the texture (x, z) the program gives the top's
+ * points). A hole's fan lies over the outer one's instead of being cut out of it, but the edges
+ * twin as they would: each contour's edges once, the fans' inner edges among themselves. */
 struct GLUtesselator {
   void (GLAPIENTRY *begin)(GLenum);
   void (GLAPIENTRY *vertex)(void *);
@@ -271,16 +273,15 @@ void GLAPIENTRY gluTessNormal(GLUtesselator *tess, GLdouble x, GLdouble y, GLdou
   tess->normal[1] = y;
   tess->normal[2] = z;
 }
-void GLAPIENTRY gluTessBeginPolygon(GLUtesselator *tess, GLvoid *data) { (void)data, tess->count = 0; }
-void GLAPIENTRY gluTessBeginContour(GLUtesselator *tess) { (void)tess; }
+void GLAPIENTRY gluTessBeginPolygon(GLUtesselator *tess, GLvoid *data) { (void)tess, (void)data; }
+void GLAPIENTRY gluTessBeginContour(GLUtesselator *tess) { tess->count = 0; }
 void GLAPIENTRY gluTessVertex(GLUtesselator *tess, GLdouble *location, GLvoid *data)
 {
   if (tess->count == 4096) exit(2);
   memcpy(tess->point[tess->count], location, sizeof(double[3]));
   tess->data[tess->count++] = data;
 }
-void GLAPIENTRY gluTessEndContour(GLUtesselator *tess) { (void)tess; }
-void GLAPIENTRY gluTessEndPolygon(GLUtesselator *tess)
+void GLAPIENTRY gluTessEndContour(GLUtesselator *tess)
 {
   if (tess->count == 0) return;
   double apex[3] = {0, 0, 0};
@@ -293,6 +294,7 @@ void GLAPIENTRY gluTessEndPolygon(GLUtesselator *tess)
   for (int i = 0; i <= tess->count; ++i) tess->vertex(tess->data[i % tess->count]);
   tess->end();
 }
+void GLAPIENTRY gluTessEndPolygon(GLUtesselator *tess) { (void)tess; }
 void glEnable(GLenum capability)
 {
   if (capability == GL_MAP2_NORMAL) normal_map_on = 1;

@@ -34,6 +34,7 @@ overhang_high_model=${15}
 overhang_low_model=${16}
 two_layers_uprights_model=${17}
 l_on_slab_model=${18}
+ring_model=${19}
 . "$(dirname "$0")/../shell_test_support.sh"
 
 # repeat N LINE: the event line N times.
@@ -158,6 +159,10 @@ for kind in partial partial_sharp; do
   done
 done
 "$probe" partial_round5.png differ partial_sharp_round5.png || fail "the partly marked Ls look the same"
+# A ring of cubes round a hole, every edge hard: its outline is two loops, both rounded (the
+# hole's corners filleted); nothing reported as left sharp, a picture of its own.
+five_presses ring "$ring_model"
+"$probe" ring_round5.png differ round5.png || fail "the ring rounded looks like the L"
 # A side whose top edges are hard only in part is rounded along its hard stretch, which ends in
 # a quarter moon across the side: nothing reported as left sharp, a picture of its own rounded,
 # changing with every press.
