@@ -197,11 +197,12 @@ static int in_piece(const struct cube_layers *layers, const int *piece, int star
 }
 
 /* Whether the piece numbered `start` of `layer`'s footprint, whose cells lie from (i0, j0) to
- * (i1, j1), is outlined by one loop with a rounded upright at every concave corner (its rim turns
+ * (i1, j1), is outlined by loops with a rounded upright at every concave corner (its rim turns
  * round the fillet in a piece of torus; at a sharp convex corner the rim's strips meet in a
- * mitre). A loop of right angles turns once, so its convex corners outnumber its concave ones by
- * four; a hole's loop turns the other way and takes four more concave ones. */
-static int one_loop_round_fillets(const struct cube_layers *layers, const int *piece, int start, int layer, int i0,
+ * mitre): one round it and one round each hole, with no two of its cells meeting at a corner
+ * only. A loop of right angles turns once, so the outer loop's convex corners outnumber its
+ * concave ones by four; a hole's loop turns the other way and takes four more concave ones. */
+static int loops_round_fillets(const struct cube_layers *layers, const int *piece, int start, int layer, int i0,
                                   int i1, int j0, int j1)
 {
   int convex = 0, concave = 0;
@@ -210,10 +211,12 @@ static int one_loop_round_fillets(const struct cube_layers *layers, const int *p
       const int around = in_piece(layers, piece, start, gi - 1, gj - 1) + in_piece(layers, piece, start, gi, gj - 1) +
                          in_piece(layers, piece, start, gi - 1, gj) + in_piece(layers, piece, start, gi, gj);
       if (around == 3 && !cube_layers_rounded(layers, layer, gi, gj)) return 0;
+      if (around == 2 && in_piece(layers, piece, start, gi - 1, gj - 1) == in_piece(layers, piece, start, gi, gj))
+        return 0; /* two cells meeting at a corner only */
       convex += around == 1;
       concave += around == 3;
     }
-  return convex - concave == 4;
+  return convex - concave <= 4 && (convex - concave) % 4 == 0;
 }
 
 /* How the foot of the piece of `layer`'s footprint, `count` cells from (i0, j0) to (i1, j1), is
@@ -269,7 +272,7 @@ static int foot_filleted(const struct cube_layers *layers, const unsigned char *
 /* A piece of a layer's footprint (its cells joined side to side), as cap_pieces sees it. */
 struct footprint_piece {
   int layer, first, count; /* its cells: members[first .. first + count - 1] */
-  int top_possible;        /* outlined by one loop with its concave corners' uprights rounded,
+  int top_possible;        /* outlined by loops with its concave corners' uprights rounded,
                               every edge along its top rim (but under a layer standing on it) hard */
   int bottom_capped;       /* the same below, with nothing below it */
   int foot;                /* foot_filleted */
@@ -278,7 +281,7 @@ struct footprint_piece {
 };
 
 /* Which cells have their top or bottom rim rounded or their foot filleted (cube_layers.h): each
- * piece of a layer's footprint outlined by one loop (a rectangle, an L, ...) with every concave
+ * piece of a layer's footprint outlined by loops (a rectangle, an L, a ring, ...) with every concave
  * corner's upright rounded, every edge along its top (bottom) rim hard and nothing below it (for
  * its bottom rim) or, above it, only pieces whose feet are filleted (for its top rim: its rim
  * then runs along its sides where nothing stands, and ends where a flush side of a piece on it
@@ -337,7 +340,7 @@ static int cap_pieces(const struct wings_mesh *mesh, struct cube_layers *layers,
           stack[top++] = nj * cells_x + ni;
         }
       }
-      const int loop = one_loop_round_fillets(layers, layer_piece, piece_count, k, i0, i1, j0, j1);
+      const int loop = loops_round_fillets(layers, layer_piece, piece_count, k, i0, i1, j0, j1);
       for (int side = 0; side < 2; ++side) {
         /* side 0: the top rim, at level k + 1; side 1: the bottom's. Every side of a cell with no
          * cell of the layer beside it is on the rim, but at the top where a cell of the layer

@@ -4,7 +4,7 @@
  * a prism over the cells it fills, its footprint. Its upright edges at the footprint's corners
  * are rounded one layer at a time when they are marked hard in Wings3D; the edges along the
  * layers' tops and bottoms stay sharp, but for the top rim of a piece of a layer's footprint
- * outlined by one loop (a rectangle, an L) with nothing above it (a cube standing on a slab, an L
+ * outlined by loops (a rectangle, an L, a ring) with nothing above it (a cube standing on a slab, an L
  * on a slab) or only rectangles with filleted feet (the slab under a cube), the bottom rim of one
  * with nothing below it (the slab on the floor) and the foot of a rectangle standing on the layer
  * below, each of its sides inside that layer's top or flush with its side (a cube in the middle,

@@ -426,7 +426,8 @@ static void load_object(int argc, char **argv)
   if (layered && layers.sharp_hard_edges > 0)
     fprintf(stderr, "homework45: %s: %d hard edges stay sharp (of an object of more than one layer of cubes "
             "this program rounds the upright edges, layer by layer, and the top (bottom) rim of a piece of a "
-            "layer (cubes joined side to side, outlined by one loop, such as a rectangle or an L, its concave "
+            "layer (cubes joined side to side, outlined by one loop or several round holes, such as a rectangle, an L or "
+            "a ring, its concave "
             "corners' uprights rounded) with nothing above (below) it or, above it, only rectangles of cubes whose "
             "feet it fills with fillets (rectangles standing on the layer below, each side inside its top or flush "
             "with its side); it leaves the other edges along the layers' tops and bottoms sharp)\n",

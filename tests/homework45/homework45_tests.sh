@@ -35,6 +35,7 @@ overhang_low_model=${16}
 two_layers_uprights_model=${17}
 l_on_slab_model=${18}
 ring_model=${19}
+ring_on_slab_model=${20}
 . "$(dirname "$0")/../shell_test_support.sh"
 
 # repeat N LINE: the event line N times.
@@ -163,6 +164,13 @@ done
 # hole's corners filleted); nothing reported as left sharp, a picture of its own.
 five_presses ring "$ring_model"
 "$probe" ring_round5.png differ round5.png || fail "the ring rounded looks like the L"
+# The same ring on a slab of 3 x 3 is drawn by layers: the ring's rims are rounded, round the hole
+# too; only its foot round the hole (4 edges) stays sharp.
+status=0
+GLASS_GLUT_SNAPSHOT=ring_on_slab.png "$program" "$ring_on_slab_model" >out.txt 2>err.txt || status=$?
+[ "$status" -eq 0 ] || fail "the program exited with $status on the ring on a slab: $(cat err.txt)"
+grep -q "^homework45: .*ring_on_slab.wings: 4 hard edges stay sharp (of an object of more than one layer" err.txt ||
+  fail "the ring on a slab leaves other than its foot's 4 edges sharp: $(cat err.txt)"
 # A side whose top edges are hard only in part is rounded along its hard stretch, which ends in
 # a quarter moon across the side: nothing reported as left sharp, a picture of its own rounded,
 # changing with every press.
