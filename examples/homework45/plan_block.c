@@ -325,7 +325,7 @@ struct flat_vertex {
 static int same_point(const GLdouble p[3], const GLdouble q[3]) { return p[0] == q[0] && p[1] == q[1] && p[2] == q[2]; }
 
 
-static void GLAPIENTRY flat_vertex(void *data)
+static void GLAPIENTRY emit_flat_vertex(void *data)
 {
   const struct flat_vertex *v = data;
   glTexCoord2d(v->texture[0], v->texture[1]);
@@ -349,7 +349,7 @@ static void draw_flat_polygon(struct flat_vertex *vertices, const int *counts, i
   if (!tess) {
     tess = gluNewTess();
     gluTessCallback(tess, GLU_TESS_BEGIN, (void (GLAPIENTRY *)(void))glBegin);
-    gluTessCallback(tess, GLU_TESS_VERTEX, (void (GLAPIENTRY *)(void))flat_vertex);
+    gluTessCallback(tess, GLU_TESS_VERTEX, (void (GLAPIENTRY *)(void))emit_flat_vertex);
     gluTessCallback(tess, GLU_TESS_END, (void (GLAPIENTRY *)(void))glEnd);
   }
   int drawn = 0;
