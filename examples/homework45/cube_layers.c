@@ -269,6 +269,43 @@ static int foot_filleted(const struct cube_layers *layers, const unsigned char *
   return 1 + standing_corner;
 }
 
+/* Whether the foot of the piece numbered `start` of `layer`'s footprint (`piece` numbers the
+ * layer's cells), whose cells lie from (i0, j0) to (i1, j1) and which is not a rectangle, is
+ * filleted all round (FILLETED_FOOT in cube_layers.h): the layer below fills the cells under it
+ * and every cell round it (beside it or across a corner), which this layer leaves empty; every
+ * edge along its foot is hard; and every concave corner's upright is rounded, so that the two
+ * fillets meeting there turn round it in an eighth of a sphere (its centre on the upright's axis,
+ * R above the foot). A foot with a side flush with the layer below's side is left sharp. */
+static int outlined_foot_filleted(const struct cube_layers *layers, const unsigned char *covered,
+                                  const unsigned char *soft, const int *piece, int start, int layer, int i0, int i1,
+                                  int j0, int j1)
+{
+  if (layer == 0) return 0;
+  for (int j = j0 - 1; j <= j1 + 1; ++j)
+    for (int i = i0 - 1; i <= i1 + 1; ++i) {
+      if (in_piece(layers, piece, start, i, j)) {
+        if (!cube_layers_filled(layers, layer - 1, i, j)) return 0;
+        /* Its sides on the outline: the foot's edges there hard. */
+        if (!in_piece(layers, piece, start, i - 1, j) && !rim_hard(covered, soft, layers, 0, layer, i, j)) return 0;
+        if (!in_piece(layers, piece, start, i + 1, j) && !rim_hard(covered, soft, layers, 0, layer, i + 1, j)) return 0;
+        if (!in_piece(layers, piece, start, i, j - 1) && !rim_hard(covered, soft, layers, 1, layer, i, j)) return 0;
+        if (!in_piece(layers, piece, start, i, j + 1) && !rim_hard(covered, soft, layers, 1, layer, i, j + 1)) return 0;
+        continue;
+      }
+      int touches = 0;
+      for (int dj = -1; dj <= 1; ++dj)
+        for (int di = -1; di <= 1; ++di) touches |= in_piece(layers, piece, start, i + di, j + dj);
+      if (touches && (cube_layers_filled(layers, layer, i, j) || !cube_layers_filled(layers, layer - 1, i, j))) return 0;
+    }
+  for (int gj = j0; gj <= j1 + 1; ++gj)
+    for (int gi = i0; gi <= i1 + 1; ++gi) {
+      const int around = in_piece(layers, piece, start, gi - 1, gj - 1) + in_piece(layers, piece, start, gi, gj - 1) +
+                         in_piece(layers, piece, start, gi - 1, gj) + in_piece(layers, piece, start, gi, gj);
+      if (around == 3 && !cube_layers_rounded(layers, layer, gi, gj)) return 0;
+    }
+  return 1;
+}
+
 /* A piece of a layer's footprint (its cells joined side to side), as cap_pieces sees it. */
 struct footprint_piece {
   int layer, first, count; /* its cells: members[first .. first + count - 1] */
@@ -359,6 +396,8 @@ static int cap_pieces(const struct wings_mesh *mesh, struct cube_layers *layers,
         else p->top_possible = capped;
       }
       p->foot = foot_filleted(layers, covered, soft, k, p->count, i0, i1, j0, j1);
+      if (!p->foot && p->count != (i1 - i0 + 1) * (j1 - j0 + 1))
+        p->foot = outlined_foot_filleted(layers, covered, soft, layer_piece, piece_count, k, i0, i1, j0, j1);
       p->below = p->foot ? piece[(size_t)(k - 1) * cells + (size_t)(j0 * cells_x + i0)] : -1;
       p->top_capped = p->top_possible;
       p->foot_filleted = p->foot != 0;

@@ -484,19 +484,25 @@ static void rim_corner(const struct cube_layers *layers, int layer, int i, int j
 }
 
 /* Whether fillets turn round the foot of the corner at grid point (i, j) of `layer`: a convex
- * corner (one of the cells around it in the solid) of a piece whose foot is filleted, standing
- * inside the top of the layer below (which fills the four cells around the point). */
+ * corner (one of the cells around it in the solid) or a concave one with a rounded upright (three
+ * of them) of a piece whose foot is filleted, standing inside the top of the layer below (which
+ * fills the four cells around the point). */
 static int fillet_corner_at(const struct cube_layers *layers, int layer, int i, int j, float radius)
 {
-  return cells_around(layers, layer, i, j) == 1 && cells_around(layers, layer - 1, i, j) == 4 &&
-         corner_rim_rounded(layers, layer, i, j, radius, FILLETED_FOOT);
+  const int around = cells_around(layers, layer, i, j);
+  return (around == 1 || (around == 3 && upright_rounded(layers, layer, i, j, radius))) &&
+         cells_around(layers, layer - 1, i, j) == 4 && corner_rim_rounded(layers, layer, i, j, radius, FILLETED_FOOT);
 }
 
 /* Where the fillets along two walls of `layer` meet round the foot of their corner at grid point
  * (i, j): the fillet's profile turned round the upright (turned_profile_net). Round a rounded
- * upright, whose arc runs about an axis R in from both walls, the profile runs from the upright's
- * arc R above the foot to that arc scaled by 2 from the axis on the top below: a quarter of the
- * inner half of a torus of radii 2 R and R. Round a sharp upright the profile runs from the
+ * upright at a convex corner, whose arc runs about an axis R in from both walls, the profile runs
+ * from the upright's arc R above the foot to that arc scaled by 2 from the axis on the top below:
+ * a quarter of the inner half of a torus of radii 2 R and R. At a concave corner the axis lies R
+ * out from both walls, where the profile's end on the top below meets it: the arc scaled by 0, an
+ * eighth of a sphere of radius R about the axis R above the foot (the fillets' ends and the
+ * upright's foot are its sides, its pole the point where the two fillets' edges on the top below
+ * meet). Round a sharp upright the profile runs from the
  * corner's point R above the foot to a quarter circle of radius R about the upright on the top
  * below: a horn piece, its rows 0 and 1 closed in points, whose side curves are the fillets' end
  * profiles. The texture's s runs on from the wall the walk arrives by, as round an upright. */
@@ -514,7 +520,8 @@ static void fillet_corner(const struct cube_layers *layers, int layer, int i, in
                             {corner[0] + shift[0], corner[1] + shift[1]},
                             {to[0] + shift[0], to[1] + shift[1]}};
   const double axis[2] = {upright_axis[0] + shift[0], upright_axis[1] + shift[1]};
-  const double inner = rounded ? 1.0 : 0.0, scale[3] = {inner, inner, inner + 1.0};
+  const int convex = cells_around(layers, layer, i, j) == 1;
+  const double inner = rounded ? 1.0 : 0.0, scale[3] = {inner, inner, convex ? inner + 1.0 : 0.0};
   if (!rounded) {
     const float s1 = s0 + s_length;
     s0 += radius;
@@ -868,7 +875,8 @@ static void flat_face(const struct cube_layers *layers, int level, int up, float
               /* Of the squares round a fillets' corner, the bands' are the fillets', the one under
                * the piece above is covered, and the one across the corner keeps what lies outside
                * the corner piece: outside its quarter circle about a sharp upright, outside the
-               * 2 R arc (torus_corner_flat, with the bands' squares) about a rounded one. */
+               * 2 R arc (torus_corner_flat, with the bands' squares) about a rounded one. At a
+               * concave corner the square outside the piece is the sphere piece's. */
               if (!upright_rounded(layers, outer, gi, gj, radius) && !cube_layers_filled(layers, outer, i, j)) {
                 const float far[2] = {(float)layers->x[gi] + (float)(a ? -1 : 1) * radius,
                                       (float)layers->z[gj] + (float)(b ? -1 : 1) * radius};
@@ -889,7 +897,8 @@ static void flat_face(const struct cube_layers *layers, int level, int up, float
     for (int i = 0; i < layers->x_count; ++i) {
       if (torus_corner(layers, inner, i, j, radius, up ? CAPPED_TOP : CAPPED_BOTTOM))
         torus_corner_flat(layers, inner, i, j, y, radius);
-      if (up && fillet_corner_at(layers, outer, i, j, radius) && upright_rounded(layers, outer, i, j, radius))
+      if (up && fillet_corner_at(layers, outer, i, j, radius) && upright_rounded(layers, outer, i, j, radius) &&
+          cells_around(layers, outer, i, j) == 1)
         torus_corner_flat(layers, outer, i, j, y, radius);
     }
 }

@@ -12,6 +12,7 @@
 %% tests/homework45/two_layers_uprights.wings, tests/homework45/l_on_slab.wings,
 %% tests/homework45/slab_on_l.wings, tests/homework45/l_on_slab_sharp_corners.wings, tests/homework45/u_on_slab.wings, tests/homework45/ring_on_slab.wings,
 %% tests/homework45/bar_on_slab.wings, tests/homework45/bar_stretches.wings, tests/homework45/ring.wings,
+%% tests/homework45/l_inside_slab.wings,
 %% tests/homework45/refused_*.wings (objects the homework program refuses) and tests/unit/data/wings/*.wings and *.term.
 
 main([Root]) ->
@@ -177,9 +178,15 @@ main([Root]) ->
                                        1.0, {0.0, 0.0, 0.0}),
     write(filename:join(Root, "tests/homework45/bar_on_slab.wings"),
           [object("Bar", BarOnSlabVs, BarOnSlabFs, fun(_, _) -> true end, top_paint, true)], Materials, []),
+    %% An L of three cubes standing inside the top of a slab of 4 x 4, every edge marked: the
+    %% fillets round its foot meet in torus pieces at its convex corners and in an eighth of a
+    %% sphere at its concave one.
+    {LInSlabVs, LInSlabFs} = cubes([{X, 0, Z} || X <- [0, 1, 2, 3], Z <- [0, 1, 2, 3]] ++ [{1, 1, 1}, {2, 1, 1}, {1, 1, 2}],
+                                   1.0, {0.0, 0.0, 0.0}),
+    write(filename:join(Root, "tests/homework45/l_inside_slab.wings"),
+          [object("Steps", LInSlabVs, LInSlabFs, All, top_paint, true)], Materials, []),
     %% A U of five cubes on a slab of 3 x 2 (two concave corners on its top), and a ring of eight
-    %% on a slab of 3 x 3 (its top outlined by two loops, round the hole and round the ring: its
-    %% rims stay sharp).
+    %% on a slab of 3 x 3 (its top outlined by two loops, round the hole and round the ring).
     {UOnSlabVs, UOnSlabFs} = cubes([{X, 0, Z} || X <- [0, 1, 2], Z <- [0, 1]] ++
                                        [{0, 1, 0}, {1, 1, 0}, {2, 1, 0}, {0, 1, 1}, {2, 1, 1}], 1.0, {0.0, 0.0, 0.0}),
     write(filename:join(Root, "tests/homework45/u_on_slab.wings"),

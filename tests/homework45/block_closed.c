@@ -597,53 +597,135 @@ static int cells_around(const struct cube_layers *layers, int layer, int i, int 
          cube_layers_filled(layers, layer, i - 1, j) + cube_layers_filled(layers, layer, i, j);
 }
 
-/* How far from R the drawn points in a fillet's reach lie from its axis, at most: each filleted
- * foot (cube_layers.h) is a rectangle of cells, and every point between its foot and R above it,
- * within R of a side along which the layer below runs on (a fillet's side), must lie R from the
- * fillet's axis, the line R out from the wall and R above the foot, or round a corner between two
- * such sides the circle R out from the rounded outline or about the sharp upright. A point of the
- * top below left under the fillet, or of a wall reaching below R, lies off it by R (sqrt(2) - 1)
- * or more. Near a side flush with the layer below there is no fillet; a corner between a
- * fillet's side and a flush one is standing_corner_error's. */
+/* How far from R the drawn points in the reach of a rectangle's filleted foot (cube_layers.h), from
+ * cell (i0, j0) to (i1, j1) of layer k, lie from its fillets' axes, at most: every point between
+ * its foot and R above it, within R of a side along which the layer below runs on (a fillet's
+ * side), must lie R from the fillet's axis, the line R out from the wall and R above the foot, or
+ * round a corner between two such sides the circle R out from the rounded outline or about the
+ * sharp upright. A point of the top below left under the fillet, or of a wall reaching below R,
+ * lies off it by R (sqrt(2) - 1) or more. Near a side flush with the layer below there is no
+ * fillet; a corner between a fillet's side and a flush one is standing_corner_error's. */
+static double rectangle_fillet_error(const struct cube_layers *layers, int k, int i, int i1, int j, int j1,
+                                     double radius)
+{
+  double worst = 0;
+  const double x0 = layers->x[i], x1 = layers->x[i1 + 1], z0 = layers->z[j], z1 = layers->z[j1 + 1];
+  const double foot = layers->height[k], e = 1e-9;
+  /* Whether a fillet runs along the sides x = x0, x1 and z = z0, z1 (the layer below fills the
+   * ring of cells beyond them, or none of it). */
+  const int fillet[4] = {cube_layers_filled(layers, k - 1, i - 1, j), cube_layers_filled(layers, k - 1, i1 + 1, j),
+                         cube_layers_filled(layers, k - 1, i, j - 1), cube_layers_filled(layers, k - 1, i, j1 + 1)};
+  for (size_t v = 0; v < drawn_count; ++v) {
+    const double *p = drawn[v].point;
+    if (p[1] < foot - e || p[1] > foot + radius + e) continue;
+    const int high_x = p[0] > (x0 + x1) / 2, high_z = p[2] > (z0 + z1) / 2;
+    const double r = cube_layers_rounded(layers, k, high_x ? i1 + 1 : i, high_z ? j1 + 1 : j) ? radius : 0;
+    const double cx = high_x ? x1 - r : x0 + r, cz = high_z ? z1 - r : z0 + r;
+    const double out_x = high_x ? p[0] - x1 : x0 - p[0], out_z = high_z ? p[2] - z1 : z0 - p[2];
+    double d;
+    if ((p[0] - cx) * (high_x ? 1 : -1) > 0 && (p[2] - cz) * (high_z ? 1 : -1) > 0) {
+      /* Beyond the corner's arc centre: the fillets turn round it only between two fillets' sides. */
+      if (!fillet[high_x] || !fillet[2 + high_z]) continue;
+      d = hypot(p[0] - cx, p[2] - cz) - r;
+    } else {
+      if (!fillet[out_x > out_z ? high_x : 2 + high_z]) continue;
+      d = fmax(out_x, out_z);
+    }
+    if (d < -e || d > radius + e) continue;
+    worst = fmax(worst, fabs(hypot(radius - d, foot + radius - p[1]) - radius));
+  }
+  return worst;
+}
+
+/* The same for a filleted foot of layer k that is not a rectangle (cells[0 .. count - 1], each
+ * j * cells_x + i), filleted all round: a point's distance d across from the foot's outline, with
+ * its uprights rounded (round a rounded convex corner the arc about its axis R in from both walls;
+ * at a concave corner, whose upright is rounded, the fillet's arc about its axis R out from both
+ * walls), must put it R from the fillets' axes, hypot(R - d, foot + R - y) = R: on a fillet, on a
+ * torus piece round a convex corner, on the sphere piece in a concave one. */
+static double outlined_fillet_error(const struct cube_layers *layers, int k, const int *cells, int count,
+                                    double radius)
+{
+  const int cells_x = layers->x_count - 1;
+  const double foot = layers->height[k], e = 1e-9;
+  double worst = 0;
+  for (size_t v = 0; v < drawn_count; ++v) {
+    const double *p = drawn[v].point;
+    if (p[1] < foot - e || p[1] > foot + radius + e) continue;
+    /* Across from the cells' squares. */
+    double d = INFINITY;
+    for (int c = 0; c < count; ++c) {
+      const int i = cells[c] % cells_x, j = cells[c] / cells_x;
+      const double dx = fmax(fmax(layers->x[i] - p[0], p[0] - layers->x[i + 1]), 0.0);
+      const double dz = fmax(fmax(layers->z[j] - p[2], p[2] - layers->z[j + 1]), 0.0);
+      d = fmin(d, hypot(dx, dz));
+    }
+    /* Round the rounded uprights. */
+    for (int c = 0; c < count; ++c)
+      for (int corner = 0; corner < 4; ++corner) {
+        const int gi = cells[c] % cells_x + (corner & 1), gj = cells[c] / cells_x + (corner >> 1);
+        const int around = cells_around(layers, k, gi, gj);
+        if ((around != 1 && around != 3) || !cube_layers_rounded(layers, k, gi, gj)) continue;
+        /* The one cell round the point that differs from the others, and its direction. */
+        int qx = 0, qz = 0;
+        for (int dj = -1; dj <= 0; ++dj)
+          for (int di = -1; di <= 0; ++di)
+            if (cube_layers_filled(layers, k, gi + di, gj + dj) == (around == 1)) qx = di ? -1 : 1, qz = dj ? -1 : 1;
+        const double g[2] = {layers->x[gi], layers->z[gj]};
+        const double axis[2] = {g[0] + qx * radius, g[1] + qz * radius};
+        const double along = (p[0] - g[0]) * qx, across = (p[2] - g[1]) * qz;
+        if (around == 1) {
+          /* Outside the cell beyond its arc's axis on both sides: from the arc. */
+          if ((p[0] - axis[0]) * qx < 0 && (p[2] - axis[1]) * qz < 0)
+            d = hypot(p[0] - axis[0], p[2] - axis[1]) - radius;
+        } else if (along >= -e && along <= radius + e && across >= -e && across <= radius + e) {
+          /* In the empty cell's R x R square at the corner: from the fillet's arc. */
+          d = fmax(0.0, radius - hypot(p[0] - axis[0], p[2] - axis[1]));
+        }
+      }
+    if (d < -e || d > radius + e) continue;
+    worst = fmax(worst, fabs(hypot(radius - d, foot + radius - p[1]) - radius));
+  }
+  return worst;
+}
+
+/* How far from R the drawn points in the reach of every filleted foot lie from its fillets' axes,
+ * at most (rectangle_fillet_error, outlined_fillet_error). */
 static double fillet_axis_error(const struct cube_layers *layers, double radius)
 {
   double worst = 0;
   if (radius <= 0 || !layers) return 0;
-  for (int k = 1; k < layers->layer_count; ++k)
-    for (int j = 0; j + 1 < layers->z_count; ++j)
-      for (int i = 0; i + 1 < layers->x_count; ++i) {
-        if (!(cube_layers_capped(layers, k, i, j) & FILLETED_FOOT) || cube_layers_filled(layers, k, i - 1, j) ||
-            cube_layers_filled(layers, k, i, j - 1))
-          continue;
-        int i1 = i, j1 = j;
-        while (cube_layers_filled(layers, k, i1 + 1, j)) ++i1;
-        while (cube_layers_filled(layers, k, i, j1 + 1)) ++j1;
-        const double x0 = layers->x[i], x1 = layers->x[i1 + 1], z0 = layers->z[j], z1 = layers->z[j1 + 1];
-        const double foot = layers->height[k], e = 1e-9;
-        /* Whether a fillet runs along the sides x = x0, x1 and z = z0, z1 (the layer below fills the
-         * ring of cells beyond them, or none of it). */
-        const int fillet[4] = {cube_layers_filled(layers, k - 1, i - 1, j), cube_layers_filled(layers, k - 1, i1 + 1, j),
-                               cube_layers_filled(layers, k - 1, i, j - 1), cube_layers_filled(layers, k - 1, i, j1 + 1)};
-        for (size_t v = 0; v < drawn_count; ++v) {
-          const double *p = drawn[v].point;
-          if (p[1] < foot - e || p[1] > foot + radius + e) continue;
-          const int high_x = p[0] > (x0 + x1) / 2, high_z = p[2] > (z0 + z1) / 2;
-          const double r = cube_layers_rounded(layers, k, high_x ? i1 + 1 : i, high_z ? j1 + 1 : j) ? radius : 0;
-          const double cx = high_x ? x1 - r : x0 + r, cz = high_z ? z1 - r : z0 + r;
-          const double out_x = high_x ? p[0] - x1 : x0 - p[0], out_z = high_z ? p[2] - z1 : z0 - p[2];
-          double d;
-          if ((p[0] - cx) * (high_x ? 1 : -1) > 0 && (p[2] - cz) * (high_z ? 1 : -1) > 0) {
-            /* Beyond the corner's arc centre: the fillets turn round it only between two fillets' sides. */
-            if (!fillet[high_x] || !fillet[2 + high_z]) continue;
-            d = hypot(p[0] - cx, p[2] - cz) - r;
-          } else {
-            if (!fillet[out_x > out_z ? high_x : 2 + high_z]) continue;
-            d = fmax(out_x, out_z);
-          }
-          if (d < -e || d > radius + e) continue;
-          worst = fmax(worst, fabs(hypot(radius - d, foot + radius - p[1]) - radius));
+  const int cells_x = layers->x_count - 1, cells_z = layers->z_count - 1;
+  int *piece = malloc((size_t)cells_x * (size_t)cells_z * sizeof *piece + 1);
+  unsigned char *seen = malloc((size_t)cells_x * (size_t)cells_z + 1);
+  if (!piece || !seen) exit(2);
+  for (int k = 1; k < layers->layer_count; ++k) {
+    memset(seen, 0, (size_t)cells_x * (size_t)cells_z);
+    for (int start = 0; start < cells_x * cells_z; ++start) {
+      if (seen[start] || !(cube_layers_capped(layers, k, start % cells_x, start / cells_x) & FILLETED_FOOT)) continue;
+      /* The piece through `start`: its cells joined side to side, and their bounds. */
+      int count = 0, done = 0, i0 = cells_x, i1 = -1, j0 = cells_z, j1 = -1;
+      piece[count++] = start;
+      seen[start] = 1;
+      while (done < count) {
+        const int i = piece[done] % cells_x, j = piece[done] / cells_x;
+        ++done;
+        i0 = i < i0 ? i : i0, i1 = i > i1 ? i : i1, j0 = j < j0 ? j : j0, j1 = j > j1 ? j : j1;
+        const int next[4][2] = {{i - 1, j}, {i + 1, j}, {i, j - 1}, {i, j + 1}};
+        for (int n = 0; n < 4; ++n) {
+          const int ni = next[n][0], nj = next[n][1];
+          if (!cube_layers_filled(layers, k, ni, nj) || seen[nj * cells_x + ni]) continue;
+          seen[nj * cells_x + ni] = 1;
+          piece[count++] = nj * cells_x + ni;
         }
       }
+      worst = fmax(worst, count == (i1 - i0 + 1) * (j1 - j0 + 1)
+                              ? rectangle_fillet_error(layers, k, i0, i1, j0, j1, radius)
+                              : outlined_fillet_error(layers, k, piece, count, radius));
+    }
+  }
+  free(piece);
+  free(seen);
   return worst;
 }
 

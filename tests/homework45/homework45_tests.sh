@@ -36,6 +36,7 @@ two_layers_uprights_model=${17}
 l_on_slab_model=${18}
 ring_model=${19}
 ring_on_slab_model=${20}
+l_inside_slab_model=${21}
 . "$(dirname "$0")/../shell_test_support.sh"
 
 # repeat N LINE: the event line N times.
@@ -171,6 +172,9 @@ GLASS_GLUT_SNAPSHOT=ring_on_slab.png "$program" "$ring_on_slab_model" >out.txt 2
 [ "$status" -eq 0 ] || fail "the program exited with $status on the ring on a slab: $(cat err.txt)"
 grep -q "^homework45: .*ring_on_slab.wings: 4 hard edges stay sharp (of an object of more than one layer" err.txt ||
   fail "the ring on a slab leaves other than its foot's 4 edges sharp: $(cat err.txt)"
+# An L standing inside the top of a slab, every edge hard: its foot is filleted all round (an
+# eighth of a sphere in its inner corner), so nothing is left sharp.
+five_presses l_inside_slab "$l_inside_slab_model"
 # A side whose top edges are hard only in part is rounded along its hard stretch, which ends in
 # a quarter moon across the side: nothing reported as left sharp, a picture of its own rounded,
 # changing with every press.
