@@ -272,10 +272,11 @@ static int foot_filleted(const struct cube_layers *layers, const unsigned char *
 /* Whether the foot of the piece numbered `start` of `layer`'s footprint (`piece` numbers the
  * layer's cells), whose cells lie from (i0, j0) to (i1, j1) and which is not a rectangle, is
  * filleted all round (FILLETED_FOOT in cube_layers.h): the layer below fills the cells under it
- * and every cell round it (beside it or across a corner), which this layer leaves empty; every
- * edge along its foot is hard; and every concave corner's upright is rounded, so that the two
- * fillets meeting there turn round it in an eighth of a sphere (its centre on the upright's axis,
- * R above the foot). A foot with a side flush with the layer below's side is left sharp. */
+ * and every cell round it (beside it or across a corner), which this layer leaves empty, and
+ * every edge along its foot is hard. At a concave corner the two fillets meeting there turn round
+ * a rounded upright in an eighth of a sphere (its centre on the upright's axis, R above the
+ * foot), and meet in a mitre at a sharp one. A foot with a side flush with the layer below's side
+ * is left sharp. */
 static int outlined_foot_filleted(const struct cube_layers *layers, const unsigned char *covered,
                                   const unsigned char *soft, const int *piece, int start, int layer, int i0, int i1,
                                   int j0, int j1)
@@ -296,12 +297,6 @@ static int outlined_foot_filleted(const struct cube_layers *layers, const unsign
       for (int dj = -1; dj <= 1; ++dj)
         for (int di = -1; di <= 1; ++di) touches |= in_piece(layers, piece, start, i + di, j + dj);
       if (touches && (cube_layers_filled(layers, layer, i, j) || !cube_layers_filled(layers, layer - 1, i, j))) return 0;
-    }
-  for (int gj = j0; gj <= j1 + 1; ++gj)
-    for (int gi = i0; gi <= i1 + 1; ++gi) {
-      const int around = in_piece(layers, piece, start, gi - 1, gj - 1) + in_piece(layers, piece, start, gi, gj - 1) +
-                         in_piece(layers, piece, start, gi - 1, gj) + in_piece(layers, piece, start, gi, gj);
-      if (around == 3 && !cube_layers_rounded(layers, layer, gi, gj)) return 0;
     }
   return 1;
 }

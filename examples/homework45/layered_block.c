@@ -303,7 +303,9 @@ static enum strip_end strip_end_at(const struct cube_layers *layers, int layer, 
       (rim == FILLETED_FOOT && standing_corner_at(layers, layer, i, j, radius)))
     return ENDS_AT_STANDING_CORNER;
   if (upright_rounded(layers, layer, i, j, radius)) return ENDS_AT_CORNER_PIECE;
-  return cells_around(layers, layer, i, j) == 1 ? ENDS_IN_MITRE : RUNS_ON;
+  /* A rim's strips meet in a mitre at a sharp convex corner, a fillet's at a sharp concave one
+   * (round a sharp convex one the horn piece takes over at the corner). */
+  return cells_around(layers, layer, i, j) == (rim == FILLETED_FOOT ? 3 : 1) ? ENDS_IN_MITRE : RUNS_ON;
 }
 
 /* Draws a rim's or a fillet's patch (a strip, rows 2, or a corner's piece, rows 3, as
@@ -387,8 +389,11 @@ static void rim_strip(const struct cube_layers *layers, int layer, int along_x, 
  * cylinder whose axis lies R out from the wall and R above the foot, from the wall R up to the
  * top below R out, cut at the wall's columns (the ends at a rounded upright left out, where the
  * corner's piece takes over) so that it meets the wall's bottom row and the bands of the top
- * below at their vertices. The texture's s is the wall's; t runs on down from the wall's bottom
- * by the arc's length. */
+ * below at their vertices. At a mitred end (a sharp concave corner) the end's profile keeps its
+ * points on the wall and its end on the top below moves R along the wall, onto the corner's
+ * diagonal plane, where the other wall's fillet ends in the same curve (its normals stay the
+ * cylinder's, as at a rim's mitre). The texture's s is the wall's; t runs on down from the wall's
+ * bottom by the arc's length. */
 static void fillet_strip(const struct cube_layers *layers, int layer, int along_x, float fixed, float a, float b,
                          enum strip_end end_a, enum strip_end end_b, int normal_x, int normal_z, float radius)
 {
@@ -406,14 +411,18 @@ static void fillet_strip(const struct cube_layers *layers, int layer, int along_
     for (int v = 0; v < 2; ++v) {
       const float x = along_x ? columns[c + v] : fixed, z = along_x ? fixed : columns[c + v];
       const float out_x = x + (float)normal_x * radius, out_z = z + (float)normal_z * radius;
+      const float mitre = c + v == 0 && end_a == ENDS_IN_MITRE            ? radius
+                          : c + v == count - 1 && end_b == ENDS_IN_MITRE ? -radius
+                                                                          : 0.0f;
+      const float end_x = out_x + (along_x ? mitre : 0.0f), end_z = out_z + (along_x ? 0.0f : mitre);
       control_point(net[v][0], x, above, z, 1.0);
       control_point(net[v][1], x, foot, z, w);
-      control_point(net[v][2], out_x, foot, out_z, 1.0);
+      control_point(net[v][2], end_x, foot, end_z, 1.0);
       strip_column_texture(tex[v], wall_s(x, z, normal_x, normal_z), t0, t2);
       for (int u = 0; u < 3; ++u) {
-        centre[v][u][0] = out_x;
+        centre[v][u][0] = u == 2 ? end_x : out_x;
         centre[v][u][1] = above;
-        centre[v][u][2] = out_z;
+        centre[v][u][2] = u == 2 ? end_z : out_z;
       }
     }
     draw_rim_piece((const float (*)[3][4])net, (const float (*)[3][2])tex, (const double (*)[3][3])centre, 2, 1,
@@ -483,15 +492,23 @@ static void rim_corner(const struct cube_layers *layers, int layer, int i, int j
   draw_rim_piece((const float (*)[3][4])net, (const float (*)[3][2])tex, (const double (*)[3][3])centre, 3, 0, &chart);
 }
 
-/* Whether fillets turn round the foot of the corner at grid point (i, j) of `layer`: a convex
- * corner (one of the cells around it in the solid) or a concave one with a rounded upright (three
- * of them) of a piece whose foot is filleted, standing inside the top of the layer below (which
- * fills the four cells around the point). */
-static int fillet_corner_at(const struct cube_layers *layers, int layer, int i, int j, float radius)
+/* Whether fillets meet round the foot of the corner at grid point (i, j) of `layer`: a convex
+ * corner (one of the cells around it in the solid) or a concave one (three of them) of a piece
+ * whose foot is filleted, standing inside the top of the layer below (which fills the four cells
+ * around the point). */
+static int fillets_meet_at(const struct cube_layers *layers, int layer, int i, int j, float radius)
 {
   const int around = cells_around(layers, layer, i, j);
-  return (around == 1 || (around == 3 && upright_rounded(layers, layer, i, j, radius))) &&
-         cells_around(layers, layer - 1, i, j) == 4 && corner_rim_rounded(layers, layer, i, j, radius, FILLETED_FOOT);
+  return (around == 1 || around == 3) && cells_around(layers, layer - 1, i, j) == 4 &&
+         corner_rim_rounded(layers, layer, i, j, radius, FILLETED_FOOT);
+}
+
+/* Whether fillets_meet_at (i, j) in a corner piece (fillet_corner): round any convex corner, and
+ * round a concave one with a rounded upright (at a sharp concave one they meet in a mitre). */
+static int fillet_corner_at(const struct cube_layers *layers, int layer, int i, int j, float radius)
+{
+  return fillets_meet_at(layers, layer, i, j, radius) &&
+         (cells_around(layers, layer, i, j) == 1 || upright_rounded(layers, layer, i, j, radius));
 }
 
 /* Where the fillets along two walls of `layer` meet round the foot of their corner at grid point
@@ -871,13 +888,15 @@ static void flat_face(const struct cube_layers *layers, int level, int up, float
             /* Round a standing corner the torus piece stands on the top below at one point only. */
             if (torus_corner(layers, inner, gi, gj, radius, rim_bit) || (up && standing_corner_at(layers, outer, gi, gj, radius)))
               continue;
-            if (up && fillet_corner_at(layers, outer, gi, gj, radius)) {
+            if (up && fillets_meet_at(layers, outer, gi, gj, radius)) {
               /* Of the squares round a fillets' corner, the bands' are the fillets', the one under
                * the piece above is covered, and the one across the corner keeps what lies outside
                * the corner piece: outside its quarter circle about a sharp upright, outside the
                * 2 R arc (torus_corner_flat, with the bands' squares) about a rounded one. At a
-               * concave corner the square outside the piece is the sphere piece's. */
-              if (!upright_rounded(layers, outer, gi, gj, radius) && !cube_layers_filled(layers, outer, i, j)) {
+               * concave corner the square outside the piece is the sphere piece's, or the two
+               * mitred fillets'. */
+              if (cells_around(layers, outer, gi, gj) == 1 && !upright_rounded(layers, outer, gi, gj, radius) &&
+                  !cube_layers_filled(layers, outer, i, j)) {
                 const float far[2] = {(float)layers->x[gi] + (float)(a ? -1 : 1) * radius,
                                       (float)layers->z[gj] + (float)(b ? -1 : 1) * radius};
                 flat_square(far, a ? 1 : -1, b ? 1 : -1, CORNER_PIECE, y, radius);

@@ -12,7 +12,7 @@
 %% tests/homework45/two_layers_uprights.wings, tests/homework45/l_on_slab.wings,
 %% tests/homework45/slab_on_l.wings, tests/homework45/l_on_slab_sharp_corners.wings, tests/homework45/u_on_slab.wings, tests/homework45/ring_on_slab.wings,
 %% tests/homework45/bar_on_slab.wings, tests/homework45/bar_stretches.wings, tests/homework45/ring.wings,
-%% tests/homework45/l_inside_slab.wings,
+%% tests/homework45/l_inside_slab.wings, tests/homework45/l_inside_slab_sharp_inner.wings,
 %% tests/homework45/refused_*.wings (objects the homework program refuses) and tests/unit/data/wings/*.wings and *.term.
 
 main([Root]) ->
@@ -185,6 +185,10 @@ main([Root]) ->
                                    1.0, {0.0, 0.0, 0.0}),
     write(filename:join(Root, "tests/homework45/l_inside_slab.wings"),
           [object("Steps", LInSlabVs, LInSlabFs, All, top_paint, true)], Materials, []),
+    %% The same with the L's inner upright sharp: the fillets meet in a mitre at its foot.
+    SharpInner = fun(A, B) -> not (upright(A, B) andalso {element(1, A), element(3, A)} == {2.0, 2.0}) end,
+    write(filename:join(Root, "tests/homework45/l_inside_slab_sharp_inner.wings"),
+          [object("Steps", LInSlabVs, LInSlabFs, SharpInner, top_paint, true)], Materials, []),
     %% A U of five cubes on a slab of 3 x 2 (two concave corners on its top), and a ring of eight
     %% on a slab of 3 x 3 (its top outlined by two loops, round the hole and round the ring).
     {UOnSlabVs, UOnSlabFs} = cubes([{X, 0, Z} || X <- [0, 1, 2], Z <- [0, 1]] ++
