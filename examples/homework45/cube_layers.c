@@ -269,36 +269,66 @@ static int foot_filleted(const struct cube_layers *layers, const unsigned char *
   return 1 + standing_corner;
 }
 
-/* Whether the foot of the piece numbered `start` of `layer`'s footprint (`piece` numbers the
- * layer's cells), whose cells lie from (i0, j0) to (i1, j1) and which is not a rectangle, is
- * filleted all round (FILLETED_FOOT in cube_layers.h): the layer below fills the cells under it
- * and every cell round it (beside it or across a corner), which this layer leaves empty, and
- * every edge along its foot is hard. At a concave corner the two fillets meeting there turn round
- * a rounded upright in an eighth of a sphere (its centre on the upright's axis, R above the
- * foot), and meet in a mitre at a sharp one. A foot with a side flush with the layer below's side
- * is left sharp. */
+/* How the foot of the piece numbered `start` of `layer`'s footprint (`piece` numbers the layer's
+ * cells), whose cells lie from (i0, j0) to (i1, j1) and which is not a rectangle, is filleted
+ * (FILLETED_FOOT in cube_layers.h), as foot_filleted says for a rectangle: the layer below fills
+ * the cells under it, this layer leaves every cell round it (beside it or across a corner) empty;
+ * each side of a cell on its outline is inside the lower layer's top (which fills the cell
+ * beyond it; the foot's edge there hard) or flush with the lower layer's side, at least one
+ * inside. At a convex corner between two sides inside the layer below fills the cell across the
+ * corner too, and where a side inside meets a flush one it does not (the lower layer's side runs
+ * on past the corner under the flush side) and the corner's upright must be rounded: a standing
+ * corner (returns 2: filleted only when the lower piece's top rim is rounded). At a concave corner
+ * both sides are inside (the two fillets meet in an eighth of a sphere round a rounded upright, in
+ * a mitre at a sharp one) or both flush. Returns 0 when the foot is not filleted, else 1 or 2. */
 static int outlined_foot_filleted(const struct cube_layers *layers, const unsigned char *covered,
                                   const unsigned char *soft, const int *piece, int start, int layer, int i0, int i1,
                                   int j0, int j1)
 {
   if (layer == 0) return 0;
+  int inside = 0, standing = 0;
   for (int j = j0 - 1; j <= j1 + 1; ++j)
     for (int i = i0 - 1; i <= i1 + 1; ++i) {
       if (in_piece(layers, piece, start, i, j)) {
         if (!cube_layers_filled(layers, layer - 1, i, j)) return 0;
-        /* Its sides on the outline: the foot's edges there hard. */
-        if (!in_piece(layers, piece, start, i - 1, j) && !rim_hard(covered, soft, layers, 0, layer, i, j)) return 0;
-        if (!in_piece(layers, piece, start, i + 1, j) && !rim_hard(covered, soft, layers, 0, layer, i + 1, j)) return 0;
-        if (!in_piece(layers, piece, start, i, j - 1) && !rim_hard(covered, soft, layers, 1, layer, i, j)) return 0;
-        if (!in_piece(layers, piece, start, i, j + 1) && !rim_hard(covered, soft, layers, 1, layer, i, j + 1)) return 0;
+        /* Its sides on the outline inside the lower layer's top: the foot's edges there hard. */
+        const int next[4][2] = {{i - 1, j}, {i + 1, j}, {i, j - 1}, {i, j + 1}};
+        for (int n = 0; n < 4; ++n) {
+          const int ni = next[n][0], nj = next[n][1];
+          if (in_piece(layers, piece, start, ni, nj) || !cube_layers_filled(layers, layer - 1, ni, nj)) continue;
+          const int along_x = n >= 2;
+          if (!rim_hard(covered, soft, layers, along_x, layer, n == 1 ? i + 1 : i, n == 3 ? j + 1 : j)) return 0;
+          ++inside;
+        }
         continue;
       }
       int touches = 0;
       for (int dj = -1; dj <= 1; ++dj)
         for (int di = -1; di <= 1; ++di) touches |= in_piece(layers, piece, start, i + di, j + dj);
-      if (touches && (cube_layers_filled(layers, layer, i, j) || !cube_layers_filled(layers, layer - 1, i, j))) return 0;
+      if (touches && cube_layers_filled(layers, layer, i, j)) return 0;
     }
-  return 1;
+  if (inside == 0) return 0;
+  for (int gj = j0; gj <= j1 + 1; ++gj)
+    for (int gi = i0; gi <= i1 + 1; ++gi) {
+      const int cells[4][2] = {{gi - 1, gj - 1}, {gi, gj - 1}, {gi - 1, gj}, {gi, gj}};
+      int around = 0, odd = -1;
+      for (int c = 0; c < 4; ++c) around += in_piece(layers, piece, start, cells[c][0], cells[c][1]);
+      if (around == 2 && in_piece(layers, piece, start, gi - 1, gj - 1) == in_piece(layers, piece, start, gi, gj))
+        return 0; /* two cells meeting at a corner only */
+      if (around != 1) continue;
+      for (int c = 0; c < 4; ++c)
+        if (in_piece(layers, piece, start, cells[c][0], cells[c][1])) odd = c;
+      /* The cells beside the corner's cell along x and along z, and the one across the corner. */
+      const int beside_x = odd ^ 1, beside_z = odd ^ 2, across = odd ^ 3;
+      const int fx = cube_layers_filled(layers, layer - 1, cells[beside_x][0], cells[beside_x][1]);
+      const int fz = cube_layers_filled(layers, layer - 1, cells[beside_z][0], cells[beside_z][1]);
+      if (cube_layers_filled(layers, layer - 1, cells[across][0], cells[across][1]) != (fx && fz)) return 0;
+      if (fx != fz) {
+        if (!cube_layers_rounded(layers, layer, gi, gj)) return 0;
+        standing = 1;
+      }
+    }
+  return 1 + standing;
 }
 
 /* A piece of a layer's footprint (its cells joined side to side), as cap_pieces sees it. */
@@ -393,7 +423,7 @@ static int cap_pieces(const struct wings_mesh *mesh, struct cube_layers *layers,
       p->foot = foot_filleted(layers, covered, soft, k, p->count, i0, i1, j0, j1);
       if (!p->foot && p->count != (i1 - i0 + 1) * (j1 - j0 + 1))
         p->foot = outlined_foot_filleted(layers, covered, soft, layer_piece, piece_count, k, i0, i1, j0, j1);
-      p->below = p->foot ? piece[(size_t)(k - 1) * cells + (size_t)(j0 * cells_x + i0)] : -1;
+      p->below = p->foot ? piece[(size_t)(k - 1) * cells + (size_t)members[p->first]] : -1;
       p->top_capped = p->top_possible;
       p->foot_filleted = p->foot != 0;
       ++piece_count;

@@ -47,10 +47,9 @@ struct cube_layers {
                              standing corner, where a side inside meets a flush one (its upright
                              rounded, the lower piece's top rim rounded), against the lower
                              layer's rim in a quarter of a torus; also when the piece is not a
-                             rectangle but stands wholly inside the lower layer's top, every
-                             edge along its foot hard (the fillets meeting at a concave corner
-                             in an eighth of a sphere round a rounded upright, in a mitre at a
-                             sharp one) */
+                             rectangle, by the same rules (the fillets meeting at a concave
+                             corner in an eighth of a sphere round a rounded upright, in a
+                             mitre at a sharp one) */
   double max_radius;      /* half the closest spacing of the grid lines: the corners' quarter
                              circles keep apart; for a layer with a filleted foot also its height
                              shared by the fillet and its rounded rims, and for a piece with

@@ -428,9 +428,8 @@ static void load_object(int argc, char **argv)
             "this program rounds the upright edges, layer by layer, and the top (bottom) rim of a piece of a "
             "layer (cubes joined side to side, outlined by one loop or several round holes, such as a rectangle, an L or "
             "a ring, its concave corners' uprights rounded) with nothing above (below) it or, above it, only pieces "
-            "whose feet it fills with fillets (rectangles standing on the layer below, each side inside its top or "
-            "flush with its side, and other pieces standing wholly inside its top); it leaves the other edges along "
-            "the layers' tops and bottoms sharp)\n",
+            "whose feet it fills with fillets (pieces standing on the layer below, each side inside its top or flush "
+            "with its side); it leaves the other edges along the layers' tops and bottoms sharp)\n",
             path, layers.sharp_hard_edges);
   if (layered && layers.radius_limited_by_fillet)
     fprintf(stderr, "homework45: %s: the radius goes up to %g only: the height of a layer whose foot is filleted "

@@ -638,11 +638,14 @@ static double rectangle_fillet_error(const struct cube_layers *layers, int k, in
 }
 
 /* The same for a filleted foot of layer k that is not a rectangle (cells[0 .. count - 1], each
- * j * cells_x + i), filleted all round: a point's distance d across from the foot's outline, with
- * its uprights rounded (round a rounded convex corner the arc about its axis R in from both walls;
- * at a concave corner, whose upright is rounded, the fillet's arc about its axis R out from both
- * walls), must put it R from the fillets' axes, hypot(R - d, foot + R - y) = R: on a fillet, on a
- * torus piece round a convex corner, on the sphere piece in a concave one. */
+ * j * cells_x + i): a point's distance d across from the sides of its cells on the outline that
+ * stand inside the top below (a side flush with the lower layer's side has no fillet: a point
+ * nearer to one is left out, as is one beyond a corner with a flush side, a standing corner's,
+ * standing_corner_error's, or the upright's running on down), with the outline's uprights rounded (round a rounded convex
+ * corner the arc about its axis R in from both walls; at a rounded concave corner the fillet's arc
+ * about its axis R out from both walls), must put it R from the fillets' axes,
+ * hypot(R - d, foot + R - y) = R: on a fillet, on a torus or horn piece round a convex corner, on
+ * the sphere piece or a mitre in a concave one. */
 static double outlined_fillet_error(const struct cube_layers *layers, int k, const int *cells, int count,
                                     double radius)
 {
@@ -652,38 +655,58 @@ static double outlined_fillet_error(const struct cube_layers *layers, int k, con
   for (size_t v = 0; v < drawn_count; ++v) {
     const double *p = drawn[v].point;
     if (p[1] < foot - e || p[1] > foot + radius + e) continue;
-    /* Across from the cells' squares. */
-    double d = INFINITY;
+    /* Across from the cells' sides on the outline, those inside the top below and the flush ones. */
+    double d = INFINITY, flush = INFINITY;
     for (int c = 0; c < count; ++c) {
       const int i = cells[c] % cells_x, j = cells[c] / cells_x;
-      const double dx = fmax(fmax(layers->x[i] - p[0], p[0] - layers->x[i + 1]), 0.0);
-      const double dz = fmax(fmax(layers->z[j] - p[2], p[2] - layers->z[j + 1]), 0.0);
-      d = fmin(d, hypot(dx, dz));
+      const double x0 = layers->x[i], x1 = layers->x[i + 1], z0 = layers->z[j], z1 = layers->z[j + 1];
+      const int next[4][2] = {{i - 1, j}, {i + 1, j}, {i, j - 1}, {i, j + 1}};
+      for (int n = 0; n < 4; ++n) {
+        if (cube_layers_filled(layers, k, next[n][0], next[n][1])) continue;
+        /* How far p lies out beyond the side, and along it past its ends. */
+        const double out = n == 0 ? x0 - p[0] : n == 1 ? p[0] - x1 : n == 2 ? z0 - p[2] : p[2] - z1;
+        if (out < -e) continue;
+        const double past = n < 2 ? fmax(fmax(z0 - p[2], p[2] - z1), 0.0) : fmax(fmax(x0 - p[0], p[0] - x1), 0.0);
+        const double to_side = hypot(fmax(out, 0.0), past);
+        if (cube_layers_filled(layers, k - 1, next[n][0], next[n][1])) d = fmin(d, to_side);
+        else flush = fmin(flush, to_side);
+      }
     }
+    if (flush < d - e) continue;
     /* Round the rounded uprights. */
-    for (int c = 0; c < count; ++c)
+    int standing = 0;
+    for (int c = 0; c < count && !standing; ++c)
       for (int corner = 0; corner < 4; ++corner) {
         const int gi = cells[c] % cells_x + (corner & 1), gj = cells[c] / cells_x + (corner >> 1);
         const int around = cells_around(layers, k, gi, gj);
-        if ((around != 1 && around != 3) || !cube_layers_rounded(layers, k, gi, gj)) continue;
+        if (around != 1 && around != 3) continue;
         /* The one cell round the point that differs from the others, and its direction. */
         int qx = 0, qz = 0;
         for (int dj = -1; dj <= 0; ++dj)
           for (int di = -1; di <= 0; ++di)
             if (cube_layers_filled(layers, k, gi + di, gj + dj) == (around == 1)) qx = di ? -1 : 1, qz = dj ? -1 : 1;
         const double g[2] = {layers->x[gi], layers->z[gj]};
-        const double axis[2] = {g[0] + qx * radius, g[1] + qz * radius};
+        const double r = cube_layers_rounded(layers, k, gi, gj) ? radius : 0.0;
+        const double axis[2] = {g[0] + qx * r, g[1] + qz * r};
         const double along = (p[0] - g[0]) * qx, across = (p[2] - g[1]) * qz;
         if (around == 1) {
-          /* Outside the cell beyond its arc's axis on both sides: from the arc. */
-          if ((p[0] - axis[0]) * qx < 0 && (p[2] - axis[1]) * qz < 0)
-            d = hypot(p[0] - axis[0], p[2] - axis[1]) - radius;
-        } else if (along >= -e && along <= radius + e && across >= -e && across <= radius + e) {
-          /* In the empty cell's R x R square at the corner: from the fillet's arc. */
+          /* Outside the cell beyond its arc's axis on both sides: from the arc, when both sides'
+           * fillets turn round the corner (a standing corner's where one side is flush, and no
+           * fillet's where both are: the upright runs on down). */
+          if ((p[0] - axis[0]) * qx >= 0 || (p[2] - axis[1]) * qz >= 0) continue;
+          const int inside_x = cube_layers_filled(layers, k - 1, gi + (qx > 0 ? -1 : 0), gj + (qz > 0 ? 0 : -1));
+          const int inside_z = cube_layers_filled(layers, k - 1, gi + (qx > 0 ? 0 : -1), gj + (qz > 0 ? -1 : 0));
+          if (!inside_x || !inside_z) standing = 1;
+          else d = hypot(p[0] - axis[0], p[2] - axis[1]) - r;
+          break;
+        }
+        if (r > 0 && along >= -e && along <= radius + e && across >= -e && across <= radius + e) {
+          /* In the empty cell's R x R square at a rounded concave corner: from the fillet's arc. */
           d = fmax(0.0, radius - hypot(p[0] - axis[0], p[2] - axis[1]));
+          break;
         }
       }
-    if (d < -e || d > radius + e) continue;
+    if (standing || d < -e || d > radius + e) continue;
     worst = fmax(worst, fabs(hypot(radius - d, foot + radius - p[1]) - radius));
   }
   return worst;
