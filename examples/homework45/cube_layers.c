@@ -219,69 +219,21 @@ static int loops_round_fillets(const struct cube_layers *layers, const int *piec
   return convex - concave <= 4 && (convex - concave) % 4 == 0;
 }
 
-/* How the foot of the piece of `layer`'s footprint, `count` cells from (i0, j0) to (i1, j1), is
- * filleted (FILLETED_FOOT in cube_layers.h): 0 not at all; else it is a rectangle whose cells the
- * layer below fills, with the ring of cells round them empty in this layer, and along each of its
- * four sides the layer below fills either every cell of the ring (a fillet runs there, with a
- * cell's top beside it at least 2 R wide, every edge along that foot hard) or none (the side is
- * flush with the layer below's side, its wall running on down). Where two filleted sides meet,
- * the layer below fills the ring's corner cell too; where a filleted side meets a flush one, the
- * lower layer's side runs on past the corner under the flush side, so the fillet ends against the
- * lower layer's top rim, in a piece of torus round the corner's upright, which must be rounded
- * (returns 2: the foot is filleted only when that rim is rounded, cap_pieces); where two flush
- * sides meet, the corner's upright runs on down. Returns 1 for a foot filleted all round. */
-static int foot_filleted(const struct cube_layers *layers, const unsigned char *covered, const unsigned char *soft,
-                         int layer, int count, int i0, int i1, int j0, int j1)
-{
-  if (layer == 0 || count != (i1 - i0 + 1) * (j1 - j0 + 1)) return 0;
-  for (int j = j0 - 1; j <= j1 + 1; ++j)
-    for (int i = i0 - 1; i <= i1 + 1; ++i) {
-      const int ring = i < i0 || i > i1 || j < j0 || j > j1;
-      if (ring ? cube_layers_filled(layers, layer, i, j) : !cube_layers_filled(layers, layer - 1, i, j)) return 0;
-    }
-  /* Sides 0 to 3: x = i0 (its ring at i0 - 1), x = i1 + 1, z = j0, z = j1 + 1. */
-  int filleted[4];
-  for (int side = 0; side < 4; ++side) {
-    const int along_x = side >= 2, length = along_x ? i1 - i0 + 1 : j1 - j0 + 1;
-    const int ring = side == 0 ? i0 - 1 : side == 1 ? i1 + 1 : side == 2 ? j0 - 1 : j1 + 1;
-    const int line = side == 0 ? i0 : side == 1 ? i1 + 1 : side == 2 ? j0 : j1 + 1;
-    int below = 0, hard = 1;
-    for (int c = 0; c < length; ++c) {
-      const int i = along_x ? i0 + c : ring, j = along_x ? ring : j0 + c;
-      below += cube_layers_filled(layers, layer - 1, i, j);
-      hard &= rim_hard(covered, soft, layers, along_x, layer, along_x ? i : line, along_x ? line : j);
-    }
-    if (below != 0 && below != length) return 0;
-    filleted[side] = below == length;
-    if (filleted[side] && !hard) return 0;
-  }
-  if (!filleted[0] && !filleted[1] && !filleted[2] && !filleted[3]) return 0;
-  int standing_corner = 0;
-  for (int corner = 0; corner < 4; ++corner) {
-    const int x_side = corner & 1, z_side = 2 + (corner >> 1);
-    const int i = x_side ? i1 + 1 : i0 - 1, j = z_side == 3 ? j1 + 1 : j0 - 1;
-    if (cube_layers_filled(layers, layer - 1, i, j) != (filleted[x_side] && filleted[z_side])) return 0;
-    if (filleted[x_side] != filleted[z_side]) {
-      if (!cube_layers_rounded(layers, layer, x_side ? i1 + 1 : i0, z_side == 3 ? j1 + 1 : j0)) return 0;
-      standing_corner = 1;
-    }
-  }
-  return 1 + standing_corner;
-}
-
 /* How the foot of the piece numbered `start` of `layer`'s footprint (`piece` numbers the layer's
- * cells), whose cells lie from (i0, j0) to (i1, j1) and which is not a rectangle, is filleted
- * (FILLETED_FOOT in cube_layers.h), as foot_filleted says for a rectangle: the layer below fills
- * the cells under it, this layer leaves every cell round it (beside it or across a corner) empty;
- * each side of a cell on its outline is inside the lower layer's top (which fills the cell
- * beyond it; the foot's edge there hard) or flush with the lower layer's side, at least one
- * inside. At a convex corner between two sides inside the layer below fills the cell across the
- * corner too, and where a side inside meets a flush one it does not (the lower layer's side runs
- * on past the corner under the flush side) and the corner's upright must be rounded: a standing
- * corner (returns 2: filleted only when the lower piece's top rim is rounded). At a concave corner
- * both sides are inside (the two fillets meet in an eighth of a sphere round a rounded upright, in
- * a mitre at a sharp one) or both flush. Returns 0 when the foot is not filleted, else 1 or 2. */
-static int outlined_foot_filleted(const struct cube_layers *layers, const unsigned char *covered,
+ * cells), whose cells lie from (i0, j0) to (i1, j1), is filleted (FILLETED_FOOT in
+ * cube_layers.h): 0 not at all; else the layer below fills the cells under it and this layer
+ * leaves every cell round it (beside it or across a corner) empty, and each side of its outline
+ * is inside the lower layer's top (which fills the cells beyond it; the foot's edges there hard)
+ * or flush with the lower layer's side (which fills none of them), at least one inside. At a
+ * convex corner between two sides inside the layer below fills the cell across the corner too;
+ * where a side inside meets a flush one it does not (the lower layer's side runs on past the
+ * corner under the flush side), and the corner's upright must be rounded: a standing corner,
+ * where the fillet ends against the lower layer's top rim in a piece of torus (returns 2: the
+ * foot is filleted only when that rim is rounded, cap_pieces); where two flush sides meet the
+ * upright runs on down. At a concave corner both sides are inside (the two fillets meet in an
+ * eighth of a sphere round a rounded upright, in a mitre at a sharp one) or both flush. Returns 1
+ * for a foot with no standing corner. */
+static int foot_filleted(const struct cube_layers *layers, const unsigned char *covered,
                                   const unsigned char *soft, const int *piece, int start, int layer, int i0, int i1,
                                   int j0, int j1)
 {
@@ -313,8 +265,18 @@ static int outlined_foot_filleted(const struct cube_layers *layers, const unsign
       const int cells[4][2] = {{gi - 1, gj - 1}, {gi, gj - 1}, {gi - 1, gj}, {gi, gj}};
       int around = 0, odd = -1;
       for (int c = 0; c < 4; ++c) around += in_piece(layers, piece, start, cells[c][0], cells[c][1]);
-      if (around == 2 && in_piece(layers, piece, start, gi - 1, gj - 1) == in_piece(layers, piece, start, gi, gj))
-        return 0; /* two cells meeting at a corner only */
+      if (around == 2) {
+        if (in_piece(layers, piece, start, gi - 1, gj - 1) == in_piece(layers, piece, start, gi, gj))
+          return 0; /* two cells meeting at a corner only */
+        /* Along a straight side: inside the lower layer's top on both sides of the point, or flush
+         * on both (the lower layer's side does not end in the middle of the foot's side). */
+        int below = 0;
+        for (int c = 0; c < 4; ++c)
+          if (!in_piece(layers, piece, start, cells[c][0], cells[c][1]))
+            below += cube_layers_filled(layers, layer - 1, cells[c][0], cells[c][1]);
+        if (below == 1) return 0;
+        continue;
+      }
       if (around != 1) continue;
       for (int c = 0; c < 4; ++c)
         if (in_piece(layers, piece, start, cells[c][0], cells[c][1])) odd = c;
@@ -420,9 +382,7 @@ static int cap_pieces(const struct wings_mesh *mesh, struct cube_layers *layers,
         if (side) p->bottom_capped = capped;
         else p->top_possible = capped;
       }
-      p->foot = foot_filleted(layers, covered, soft, k, p->count, i0, i1, j0, j1);
-      if (!p->foot && p->count != (i1 - i0 + 1) * (j1 - j0 + 1))
-        p->foot = outlined_foot_filleted(layers, covered, soft, layer_piece, piece_count, k, i0, i1, j0, j1);
+      p->foot = foot_filleted(layers, covered, soft, layer_piece, piece_count, k, i0, i1, j0, j1);
       p->below = p->foot ? piece[(size_t)(k - 1) * cells + (size_t)members[p->first]] : -1;
       p->top_capped = p->top_possible;
       p->foot_filleted = p->foot != 0;
