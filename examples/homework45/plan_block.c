@@ -193,11 +193,36 @@ static void along_side(int i, double out[2])
   out[1] = in[0];
 }
 
+/* A vertex of a flat piece cut into triangles by GLU's tessellator: its point and its texture
+ * coordinates. */
+struct flat_vertex {
+  GLdouble point[3], texture[2];
+};
+
+static int same_point(const GLdouble p[3], const GLdouble q[3]) { return p[0] == q[0] && p[1] == q[1] && p[2] == q[2]; }
+
+static void GLAPIENTRY emit_flat_vertex(void *data)
+{
+  const struct flat_vertex *v = data;
+  glTexCoord2d(v->texture[0], v->texture[1]);
+  glVertex3dv(v->point);
+}
+
+/* A vertex of a flat piece of the sides at point p, with the sides' texture: s from s_origin at
+ * `origin` (x, z) on along `s_direction` by the length walked (times s_per_length), t as on the
+ * sides. */
+static struct flat_vertex side_vertex(const double p[3], const double origin[2], float s_origin,
+                                      const double s_direction[2])
+{
+  const float along = (float)((p[0] - origin[0]) * s_direction[0] + (p[2] - origin[1]) * s_direction[1]);
+  const struct flat_vertex v = {{p[0], p[1], p[2]}, {s_origin + along * s_per_length, side_t(p[1])}};
+  return v;
+}
+
 static void piece_vertex(const double p[3], const double e[2], float s_e, const double s_direction[2])
 {
-  const float along = (float)((p[0] - e[0]) * s_direction[0] + (p[2] - e[1]) * s_direction[1]);
-  glTexCoord2f(s_e + along * s_per_length, side_t(p[1]));
-  glVertex3dv(p);
+  struct flat_vertex v = side_vertex(p, e, s_e, s_direction);
+  emit_flat_vertex(&v);
 }
 
 /* The point at u (0 to 1) of the quarter circle a rounded rim's strip ends in, in the vertical
@@ -314,22 +339,6 @@ static void rim_corner(int i, enum rim_level level, float s0)
   rim_corner_net(arc, axis, plan.convex[i], top - out * r, top, s0, length, t0, t2, net, tex, centre);
   const struct rim_chart chart = corner_rim_chart(axis, plan.convex[i] ? 0.0 : 2 * r, top - out * r, out, r);
   draw_rim_patch(net, tex, (const double (*)[3][3])centre, 3, level, &chart);
-}
-
-/* A vertex of a flat piece cut into triangles by GLU's tessellator: its point and its texture
- * coordinates. */
-struct flat_vertex {
-  GLdouble point[3], texture[2];
-};
-
-static int same_point(const GLdouble p[3], const GLdouble q[3]) { return p[0] == q[0] && p[1] == q[1] && p[2] == q[2]; }
-
-
-static void GLAPIENTRY emit_flat_vertex(void *data)
-{
-  const struct flat_vertex *v = data;
-  glTexCoord2d(v->texture[0], v->texture[1]);
-  glVertex3dv(v->point);
 }
 
 /* Whether contour `contour` of draw_flat_polygon's keeps its vertex k: not equal to the one
@@ -588,17 +597,6 @@ static int side_cut(int i, int end, enum rim_level level)
          !(plan.rounded[k] && radius > 0);
 }
 
-/* A vertex of side i's face at point p, with its texture: s from s_start at the face's start
- * along the side, t as on the sides. */
-static struct flat_vertex face_vertex(int i, const float start[2], float s_start, const double p[3])
-{
-  double direction[2];
-  along_side(i, direction);
-  const float along = (float)((p[0] - start[0]) * direction[0] + (p[2] - start[1]) * direction[1]);
-  const struct flat_vertex v = {{p[0], p[1], p[2]}, {s_start + along * s_per_length, side_t(p[1])}};
-  return v;
-}
-
 /* The band of side i's face between its grid's end and its sharp rim at `level` (where the
  * grids stop R short of the rim): one flat polygon through the grid's points along its edge,
  * from `start` to `end`, up the quarter circle a rounded neighbour's strip ends in where the side
@@ -610,11 +608,13 @@ static void wall_band(int i, enum rim_level level, const float start[2], const f
 {
   struct flat_vertex v[2 * (SIDE_STEPS + 1) + 2 * ARC_STEPS];
   int n = 0;
-  const double edge = grid_end(level), rim = rim_height(level);
+  const double edge = grid_end(level), rim = rim_height(level), origin[2] = {start[0], start[1]};
+  double direction[2];
+  along_side(i, direction);
   for (int j = 0; j <= SIDE_STEPS; ++j) {
     const float f = (float)j / (float)SIDE_STEPS;
     const double p[3] = {start[0] + f * (end[0] - start[0]), edge, start[1] + f * (end[1] - start[1])};
-    v[n++] = face_vertex(i, start, s0, p);
+    v[n++] = side_vertex(p, origin, s0, direction);
   }
   double cut_arc[2][2][2]; /* at each end: the arc's e and c (rim_end_arc_point) */
   for (int at = 0; at < 2; ++at) {
@@ -630,18 +630,18 @@ static void wall_band(int i, enum rim_level level, const float start[2], const f
     for (int step = 1; step < ARC_STEPS; ++step) {
       double p[3];
       rim_end_arc_point(cut_arc[1][0], cut_arc[1][1], level, (double)step / ARC_STEPS, p);
-      v[n++] = face_vertex(i, start, s0, p);
+      v[n++] = side_vertex(p, origin, s0, direction);
     }
   for (int j = SIDE_STEPS; j >= 0; --j) {
     const double *q = outline_side_point(level, i, j);
     const double p[3] = {q[0], rim, q[1]};
-    v[n++] = face_vertex(i, start, s0, p);
+    v[n++] = side_vertex(p, origin, s0, direction);
   }
   if (side_cut(i, 0, level))
     for (int step = ARC_STEPS - 1; step > 0; --step) {
       double p[3];
       rim_end_arc_point(cut_arc[0][0], cut_arc[0][1], level, (double)step / ARC_STEPS, p);
-      v[n++] = face_vertex(i, start, s0, p);
+      v[n++] = side_vertex(p, origin, s0, direction);
     }
   draw_flat_polygon(v, &n, 1, normal);
 }
@@ -663,17 +663,24 @@ static void side_face(int i, const float start[2], const float end[2], float s0,
       wall_band(i, (enum rim_level)level, start, end, s0, normal);
 }
 
+/* The length of side i's flat face: from where it leaves corner i to where it reaches corner
+ * i + 1 (corner_ends). */
+static float side_length(int i)
+{
+  float from[2], to[2], next_from[2], next_to[2];
+  corner_ends(i, from, to);
+  corner_ends((i + 1) % plan.corners, next_from, next_to);
+  return hypotf(next_from[0] - to[0], next_from[1] - to[1]);
+}
+
 /* The length of the walk round the loop at the current radius: the sides between the uprights'
  * quarter circles, and those. */
 static float outline_length(void)
 {
   float length = 0;
   for (int i = 0; i < plan.corners; ++i) {
-    float from[2], to[2], next_from[2], unused[2];
-    corner_ends(i, from, to);
-    corner_ends((i + 1) % plan.corners, next_from, unused);
     if (plan.rounded[i] && radius > 0) length += (float)(PI / 2) * radius;
-    length += hypotf(next_from[0] - to[0], next_from[1] - to[1]);
+    length += side_length(i);
   }
   return length;
 }
@@ -692,17 +699,16 @@ static void draw_loop(float s_repeat)
   }
   float s = 0;
   for (int i = 0; i < plan.corners; ++i) {
-    const int next = (i + 1) % plan.corners;
-    float from[2], to[2], next_from[2], unused[2];
+    float from[2], to[2], next_from[2], next_to[2];
     float corner[2] = {(float)plan.xz[i][0], (float)plan.xz[i][1]};
     corner_ends(i, from, to);
-    corner_ends(next, next_from, unused);
+    corner_ends((i + 1) % plan.corners, next_from, next_to);
     if (plan.rounded[i] && radius > 0) rounded_edge(i, from, corner, to, s);
     corner_pieces(i, TOP, s);
     corner_pieces(i, BOTTOM, s);
     if (plan.rounded[i] && radius > 0) s += upright_arc_s();
     /* The side from this corner to the next. */
-    const float length = hypotf(next_from[0] - to[0], next_from[1] - to[1]) * s_per_length;
+    const float length = side_length(i) * s_per_length;
     side_face(i, to, next_from, s, s + length);
     if (side_rounded(i, TOP)) rim_strip(i, TOP, s, s + length);
     if (side_rounded(i, BOTTOM)) rim_strip(i, BOTTOM, s, s + length);
