@@ -597,56 +597,19 @@ static int cells_around(const struct cube_layers *layers, int layer, int i, int 
          cube_layers_filled(layers, layer, i - 1, j) + cube_layers_filled(layers, layer, i, j);
 }
 
-/* How far from R the drawn points in the reach of a rectangle's filleted foot (cube_layers.h), from
- * cell (i0, j0) to (i1, j1) of layer k, lie from its fillets' axes, at most: every point between
- * its foot and R above it, within R of a side along which the layer below runs on (a fillet's
- * side), must lie R from the fillet's axis, the line R out from the wall and R above the foot, or
- * round a corner between two such sides the circle R out from the rounded outline or about the
- * sharp upright. A point of the top below left under the fillet, or of a wall reaching below R,
- * lies off it by R (sqrt(2) - 1) or more. Near a side flush with the layer below there is no
- * fillet; a corner between a fillet's side and a flush one is standing_corner_error's. */
-static double rectangle_fillet_error(const struct cube_layers *layers, int k, int i, int i1, int j, int j1,
-                                     double radius)
-{
-  double worst = 0;
-  const double x0 = layers->x[i], x1 = layers->x[i1 + 1], z0 = layers->z[j], z1 = layers->z[j1 + 1];
-  const double foot = layers->height[k], e = 1e-9;
-  /* Whether a fillet runs along the sides x = x0, x1 and z = z0, z1 (the layer below fills the
-   * ring of cells beyond them, or none of it). */
-  const int fillet[4] = {cube_layers_filled(layers, k - 1, i - 1, j), cube_layers_filled(layers, k - 1, i1 + 1, j),
-                         cube_layers_filled(layers, k - 1, i, j - 1), cube_layers_filled(layers, k - 1, i, j1 + 1)};
-  for (size_t v = 0; v < drawn_count; ++v) {
-    const double *p = drawn[v].point;
-    if (p[1] < foot - e || p[1] > foot + radius + e) continue;
-    const int high_x = p[0] > (x0 + x1) / 2, high_z = p[2] > (z0 + z1) / 2;
-    const double r = cube_layers_rounded(layers, k, high_x ? i1 + 1 : i, high_z ? j1 + 1 : j) ? radius : 0;
-    const double cx = high_x ? x1 - r : x0 + r, cz = high_z ? z1 - r : z0 + r;
-    const double out_x = high_x ? p[0] - x1 : x0 - p[0], out_z = high_z ? p[2] - z1 : z0 - p[2];
-    double d;
-    if ((p[0] - cx) * (high_x ? 1 : -1) > 0 && (p[2] - cz) * (high_z ? 1 : -1) > 0) {
-      /* Beyond the corner's arc centre: the fillets turn round it only between two fillets' sides. */
-      if (!fillet[high_x] || !fillet[2 + high_z]) continue;
-      d = hypot(p[0] - cx, p[2] - cz) - r;
-    } else {
-      if (!fillet[out_x > out_z ? high_x : 2 + high_z]) continue;
-      d = fmax(out_x, out_z);
-    }
-    if (d < -e || d > radius + e) continue;
-    worst = fmax(worst, fabs(hypot(radius - d, foot + radius - p[1]) - radius));
-  }
-  return worst;
-}
-
-/* The same for a filleted foot of layer k that is not a rectangle (cells[0 .. count - 1], each
- * j * cells_x + i): a point's distance d across from the sides of its cells on the outline that
- * stand inside the top below (a side flush with the lower layer's side has no fillet: a point
- * nearer to one is left out, as is one beyond a corner with a flush side, a standing corner's,
- * standing_corner_error's, or the upright's running on down), with the outline's uprights rounded (round a rounded convex
- * corner the arc about its axis R in from both walls; at a rounded concave corner the fillet's arc
- * about its axis R out from both walls), must put it R from the fillets' axes,
- * hypot(R - d, foot + R - y) = R: on a fillet, on a torus or horn piece round a convex corner, on
- * the sphere piece or a mitre in a concave one. */
-static double outlined_fillet_error(const struct cube_layers *layers, int k, const int *cells, int count,
+/* How far from R the drawn points in the reach of a filleted foot (cube_layers.h) of layer k, the
+ * piece cells[0 .. count - 1] (each j * cells_x + i), lie from its fillets' axes, at most: a
+ * point between the foot and R above it has a distance d across from the sides of its cells on
+ * the outline that stand inside the top below (a side flush with the lower layer's side has no
+ * fillet: a point nearer to one is left out, as is one beyond a corner with a flush side, a
+ * standing corner's, standing_corner_error's, or the upright's running on down), with the
+ * outline's uprights rounded (round a rounded convex corner the arc about its axis R in from both
+ * walls; at a rounded concave corner the fillet's arc about its axis R out from both walls), and
+ * must lie R from the fillets' axes, hypot(R - d, foot + R - y) = R: on a fillet, on a torus or
+ * horn piece round a convex corner, on the sphere piece or a mitre in a concave one. A point of
+ * the top below left under a fillet, or of a wall reaching below R, lies off it by
+ * R (sqrt(2) - 1) or more. */
+static double foot_fillet_error(const struct cube_layers *layers, int k, const int *cells, int count,
                                     double radius)
 {
   const int cells_x = layers->x_count - 1;
@@ -713,7 +676,7 @@ static double outlined_fillet_error(const struct cube_layers *layers, int k, con
 }
 
 /* How far from R the drawn points in the reach of every filleted foot lie from its fillets' axes,
- * at most (rectangle_fillet_error, outlined_fillet_error). */
+ * at most (foot_fillet_error). */
 static double fillet_axis_error(const struct cube_layers *layers, double radius)
 {
   double worst = 0;
@@ -726,14 +689,13 @@ static double fillet_axis_error(const struct cube_layers *layers, double radius)
     memset(seen, 0, (size_t)cells_x * (size_t)cells_z);
     for (int start = 0; start < cells_x * cells_z; ++start) {
       if (seen[start] || !(cube_layers_capped(layers, k, start % cells_x, start / cells_x) & FILLETED_FOOT)) continue;
-      /* The piece through `start`: its cells joined side to side, and their bounds. */
-      int count = 0, done = 0, i0 = cells_x, i1 = -1, j0 = cells_z, j1 = -1;
+      /* The piece through `start`: its cells joined side to side. */
+      int count = 0, done = 0;
       piece[count++] = start;
       seen[start] = 1;
       while (done < count) {
         const int i = piece[done] % cells_x, j = piece[done] / cells_x;
         ++done;
-        i0 = i < i0 ? i : i0, i1 = i > i1 ? i : i1, j0 = j < j0 ? j : j0, j1 = j > j1 ? j : j1;
         const int next[4][2] = {{i - 1, j}, {i + 1, j}, {i, j - 1}, {i, j + 1}};
         for (int n = 0; n < 4; ++n) {
           const int ni = next[n][0], nj = next[n][1];
@@ -742,9 +704,7 @@ static double fillet_axis_error(const struct cube_layers *layers, double radius)
           piece[count++] = nj * cells_x + ni;
         }
       }
-      worst = fmax(worst, count == (i1 - i0 + 1) * (j1 - j0 + 1)
-                              ? rectangle_fillet_error(layers, k, i0, i1, j0, j1, radius)
-                              : outlined_fillet_error(layers, k, piece, count, radius));
+      worst = fmax(worst, foot_fillet_error(layers, k, piece, count, radius));
     }
   }
   free(piece);
