@@ -194,6 +194,21 @@ TEST_CASE("row_sampler_2d_matches_sampler") {
           tc[i] = random.range(-spread, spread);
           if (random.next() % 97 == 0) s[i] = nan;
         }
+        if (row % 3 == 1) {
+          // A row as a triangle's interior gives it: s one way in steps of up to two texels of
+          // the base level, t within one texel row or across two, anywhere along the row and
+          // at its right edge (the stretch read whole, and where it must not be).
+          const float texel = 1.0f / static_cast<float>(c.width);
+          const float step = random.range(-2.2f, 2.2f) * texel;
+          const float start = random.next() % 4 == 0 ? 1.0f - random.range(0.0f, 16.0f) * texel
+                                                     : random.range(-3.0f, 3.0f);
+          const float t0 = random.range(-3.0f, 3.0f);
+          const float tStep = random.next() % 2 == 0 ? 0.0f : random.range(-0.2f, 0.2f) / static_cast<float>(c.height);
+          for (int i = 0; i < kSampledRowPixels; ++i) {
+            s[i] = start + step * static_cast<float>(i);
+            tc[i] = t0 + tStep * static_cast<float>(i);
+          }
+        }
         for (int k = 0; k < kSampledRowPixels / 2; ++k) {
           const uint32_t pick = random.next() % 8;
           const float lambda = pick == 0 ? nan : (pick == 1 ? -1.0f : random.range(-0.5f, 9.0f));

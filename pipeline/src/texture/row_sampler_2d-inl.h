@@ -24,6 +24,7 @@
 
 #include <hwy/highway.h>
 
+#include <algorithm>
 #include <bit>
 #include <cstdint>
 #include <cstring>
@@ -80,6 +81,50 @@ auto texelWords(const uint8_t* texels, VI offsets) {
 #endif
 }
 
+// The words of texels i0 and i0 + 1 of rows j0 and j1, as texelWords gives them, when the lanes
+// of `active` all read the row j0 of the first lane and a stretch of 2 x kLanes texels of it
+// that begins at the first or the last lane's i0 and ends before the level's right edge (so i0 +
+// 1 never wraps). Then the stretch is read whole from both rows and its texels moved to the
+// lanes by table lookups instead of gathers (textured_scene 1 to 2% faster with AVX2 and
+// AVX-512 on an AMD EPYC; gathers cost more on other processors). Returns false, writing
+// nothing, otherwise, and always for vectors of fewer than 8 lanes (slower there).
+template <class M, class VI, class VU>
+HWY_INLINE bool texelWordsFromOneRow(const Sampler2D::Level& level, M activeLanes, VI i0, VI j0, VU (&words)[4]) {
+  const hn::RebindToUnsigned<RowTag> du;
+  const hn::RebindToSigned<RowTag> di;
+  constexpr int kTable = static_cast<int>(hn::MaxLanes(du));
+  if constexpr (kTable < 8) {
+    return false;
+  } else {
+    // A row's texel coordinates run one way along it: its stretch begins at one of its ends.
+    const int32_t iLow = std::min(hn::GetLane(i0), hn::ExtractLane(i0, kTable - 1));
+    if (iLow + 2 * kTable > level.width) return false;
+    const int32_t j = hn::GetLane(j0);
+    const auto first = hn::Sub(i0, hn::Set(di, iLow));
+    const auto inStretch = hn::And(hn::Eq(j0, hn::Set(di, j)),
+                                   hn::And(hn::Gt(first, hn::Set(di, -1)), hn::Lt(first, hn::Set(di, 2 * kTable - 1))));
+    if (!hn::AllTrue(di, hn::Or(inStretch, hn::Not(hn::RebindMask(di, activeLanes))))) return false;
+    // Lanes outside `active` look anywhere in the stretch; their words are not used.
+    const auto stretchEnd = hn::Set(di, 2 * kTable - 1);
+    const auto left = hn::And(first, stretchEnd), right = hn::And(hn::Add(first, hn::Set(di, 1)), stretchEnd);
+    auto fromStretch = [&](const uint8_t* stretch, auto at) {
+      const auto low = hn::LoadU(du, reinterpret_cast<const uint32_t*>(stretch));
+      const auto high = hn::LoadU(du, reinterpret_cast<const uint32_t*>(stretch) + kTable);
+      const auto within = hn::IndicesFromVec(du, hn::And(at, hn::Set(di, kTable - 1)));
+      const auto inLow = hn::RebindMask(du, hn::Lt(at, hn::Set(di, kTable)));
+      return hn::IfThenElse(inLow, hn::TableLookupLanes(low, within), hn::TableLookupLanes(high, within));
+    };
+    const int jNext = (j + 1) & (level.height - 1);
+    const uint8_t* row0 = level.texels + 4 * (static_cast<std::ptrdiff_t>(j) * level.width + iLow);
+    const uint8_t* row1 = level.texels + 4 * (static_cast<std::ptrdiff_t>(jNext) * level.width + iLow);
+    words[0] = fromStretch(row0, left);
+    words[1] = fromStretch(row0, right);
+    words[2] = fromStretch(row1, left);
+    words[3] = fromStretch(row1, right);
+    return true;
+  }
+}
+
 // Sampler2D's LINEAR lookup in a power-of-two GL_REPEAT level, for the pixels `i .. i + lanes
 // - 1` of the row whose bits are set in `lanes` and whose texel coordinates are below 2^20 in
 // magnitude (the others would need keepInIntRange's reduction): writes out[c] for them and
@@ -120,10 +165,14 @@ inline unsigned bilinearRow(const Sampler2D::Level& level, const float* s, const
     const auto i1 = hn::And(hn::Add(i0, hn::Set(di, 1)), widthMask);
     const auto j0 = hn::And(vWhole, heightMask);
     const auto j1 = hn::And(hn::Add(j0, hn::Set(di, 1)), heightMask);
-    const auto row0 = j0 * width, row1 = j1 * width;
-    const decltype(hn::Zero(hn::RebindToUnsigned<RowTag>())) words[4] = {
-        texelWords(level.texels, hn::Add(row0, i0)), texelWords(level.texels, hn::Add(row0, i1)),
-        texelWords(level.texels, hn::Add(row1, i0)), texelWords(level.texels, hn::Add(row1, i1))};
+    decltype(hn::Zero(hn::RebindToUnsigned<RowTag>())) words[4];
+    if (!texelWordsFromOneRow(level, inRange, i0, j0, words)) {
+      const auto row0 = j0 * width, row1 = j1 * width;
+      words[0] = texelWords(level.texels, hn::Add(row0, i0));
+      words[1] = texelWords(level.texels, hn::Add(row0, i1));
+      words[2] = texelWords(level.texels, hn::Add(row1, i0));
+      words[3] = texelWords(level.texels, hn::Add(row1, i1));
+    }
     const auto notAlpha = hn::Sub(one, alpha), notBeta = hn::Sub(one, beta);
     const decltype(hn::Zero(f)) weight[4] = {hn::Mul(notAlpha, notBeta), hn::Mul(alpha, notBeta),
                                              hn::Mul(notAlpha, beta), hn::Mul(alpha, beta)};
