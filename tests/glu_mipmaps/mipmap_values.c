@@ -37,19 +37,22 @@ static uint64_t hashBytes(uint64_t hash, const unsigned char* bytes, size_t n) {
   return hash;
 }
 
-/* The elements of a width x height image laid out by the current GL_UNPACK_* state, row by row
- * without the rows' padding. */
+/* The elements of a width x height image laid out by the current GL_UNPACK_* state (rows and
+ * texels skipped, rows padded), row by row without the rows' padding. */
 static void printLevel(GLint level, GLsizei width, GLsizei height, GLsizei depth, GLenum format, GLenum type,
                        const void* data) {
-  GLint alignment = 4, rowLength = 0, imageHeight = 0;
+  GLint alignment = 4, rowLength = 0, imageHeight = 0, skipRows = 0, skipPixels = 0;
   glGetIntegerv(GL_UNPACK_ALIGNMENT, &alignment);
   glGetIntegerv(GL_UNPACK_ROW_LENGTH, &rowLength);
   glGetIntegerv(GL_UNPACK_IMAGE_HEIGHT, &imageHeight);
+  glGetIntegerv(GL_UNPACK_SKIP_ROWS, &skipRows);
+  glGetIntegerv(GL_UNPACK_SKIP_PIXELS, &skipPixels);
   const size_t element = (size_t)bytesOfType(type), group = element * (size_t)componentsOfFormat(format);
   size_t row = group * (size_t)(rowLength > 0 ? rowLength : width);
   if (element < (size_t)alignment) row = (row + (size_t)alignment - 1) / (size_t)alignment * (size_t)alignment;
   const size_t image = row * (size_t)(imageHeight > 0 ? imageHeight : height);
   uint64_t hash = 14695981039346656037ull;
+  data = (const unsigned char*)data + (size_t)skipRows * row + (size_t)skipPixels * group;
   for (GLsizei k = 0; k < depth; ++k)
     for (GLsizei j = 0; j < height; ++j)
       hash = hashBytes(hash, (const unsigned char*)data + (size_t)k * image + (size_t)j * row, group * (size_t)width);
@@ -82,6 +85,24 @@ void glTexImage3D(GLenum target, GLint level, GLint internalFormat, GLsizei widt
   if (!library) library = (TexImage3DCall)dlsym(RTLD_NEXT, "glTexImage3D");
   if (recording && target == GL_TEXTURE_3D && data) printLevel(level, width, height, depth, format, type, data);
   library(target, level, internalFormat, width, height, depth, border, format, type, data);
+}
+
+/* The levels of the bound 2D texture from 0 on, as glGetTexImage reads them in RGBA bytes (a level
+ * of width 0 ends them), one hash each. The texture is then cleared for the next case. */
+static void printTextureLevels(void) {
+  for (GLint level = 0;; ++level) {
+    GLint width = 0, height = 0;
+    glGetTexLevelParameteriv(GL_TEXTURE_2D, level, GL_TEXTURE_WIDTH, &width);
+    glGetTexLevelParameteriv(GL_TEXTURE_2D, level, GL_TEXTURE_HEIGHT, &height);
+    if (width == 0 || height == 0) break;
+    const size_t n = (size_t)width * (size_t)height * 4;
+    unsigned char* texels = calloc(n, 1);
+    glGetTexImage(GL_TEXTURE_2D, level, GL_RGBA, GL_UNSIGNED_BYTE, texels);
+    printf("    texture level %d %dx%d hash %016llx\n", level, width, height,
+           (unsigned long long)hashBytes(14695981039346656037ull, texels, n));
+    free(texels);
+    glTexImage2D(GL_TEXTURE_2D, level, GL_RGBA, 0, 0, 0, GL_RGBA, GL_UNSIGNED_BYTE, NULL);
+  }
 }
 
 static uint32_t randomState = 12345u;
@@ -166,7 +187,60 @@ int main(void) {
                                                    kTypes[t], data));
         free(data);
       }
+
   recording = 0;
+
+  /* Unsigned bytes as programs hand them over, through the unpack layouts they use: sizes that
+   * need no resampling (the bytes halved as they are), every format with one to four components,
+   * rows padded and skipped; and gluBuild2DMipmapLevels, also of sides that are not powers of
+   * two, from level 0 and from a later level with base and max inside the chain. What is
+   * compared is the texture's levels as glGetTexImage reads them (libGLU hands GL_BGRA levels
+   * over in another layout than it was given, to the same texels). Two kinds of case are marked
+   * "glass only" and left out of the comparison with libGLU, which gets them wrong (the same
+   * texels laid out otherwise give it other levels): one texel wide with rows padded or spaced,
+   * and resampled along x only, where its last row comes out as zeros. */
+  glBindTexture(GL_TEXTURE_2D, 1);  /* a texture of its own, without the levels of the cases above */
+  static const int byteSizes[][2] = {{64, 32}, {1, 16}, {8, 1}, {2, 2}, {1, 1}, {128, 4}, {6, 4}, {8, 3}};
+  static const GLenum byteFormats[] = {GL_RGBA, GL_RGB, GL_LUMINANCE_ALPHA, GL_LUMINANCE, GL_ALPHA, GL_BGRA};
+  static const int layouts[][4] = {{1, 0, 0, 0}, {4, 0, 0, 0}, {8, 3, 2, 1}, {2, 5, 0, 3}};
+  for (size_t s = 0; s < sizeof byteSizes / sizeof byteSizes[0]; ++s)
+    for (size_t f = 0; f < sizeof byteFormats / sizeof byteFormats[0]; ++f)
+      for (size_t u = 0; u < sizeof layouts / sizeof layouts[0]; ++u) {
+        const int width = byteSizes[s][0], height = byteSizes[s][1];
+        const int alignment = layouts[u][0], rowLength = layouts[u][1] > 0 ? width + layouts[u][1] : 0;
+        const int skipRows = layouts[u][2], skipPixels = layouts[u][3];
+        const size_t group = (size_t)componentsOfFormat(byteFormats[f]);
+        const size_t rowTexels = (size_t)(rowLength > 0 ? rowLength : width);
+        const size_t n = (rowTexels * (size_t)(height + skipRows) + (size_t)skipPixels + 8) * group * 2;
+        void* data = randomImage(n, GL_UNSIGNED_BYTE, byteFormats[f], 1);
+        glPixelStorei(GL_UNPACK_ALIGNMENT, alignment);
+        glPixelStorei(GL_UNPACK_ROW_LENGTH, rowLength);
+        glPixelStorei(GL_UNPACK_SKIP_ROWS, skipRows);
+        glPixelStorei(GL_UNPACK_SKIP_PIXELS, skipPixels);
+        const int spaced = rowLength > 0 || (group * (size_t)width) % (size_t)alignment != 0;
+        int last = 0;
+        while ((width >> last) > 1 || (height >> last) > 1) ++last;
+        const int resampledAlongX = (width & (width - 1)) != 0 && (height & (height - 1)) == 0;
+        const char* prefix = (width == 1 && spaced) || resampledAlongX ? "glass only: " : "";
+        printf("%sbytes %dx%d format 0x%x alignment %d row length %d skip rows %d pixels %d\n", prefix, width,
+               height, byteFormats[f], alignment, rowLength, skipRows, skipPixels);
+        printf("  gluBuild2DMipmaps result %d\n",
+               gluBuild2DMipmaps(GL_TEXTURE_2D, GL_RGBA, width, height, byteFormats[f], GL_UNSIGNED_BYTE, data));
+        printTextureLevels();
+        printf("  gluBuild2DMipmapLevels 0 0 %d result %d\n", last,
+               gluBuild2DMipmapLevels(GL_TEXTURE_2D, GL_RGBA, width, height, byteFormats[f], GL_UNSIGNED_BYTE, 0, 0,
+                                      last, data));
+        printTextureLevels();
+        printf("  gluBuild2DMipmapLevels 2 3 %d result %d\n", last + 1,
+               gluBuild2DMipmapLevels(GL_TEXTURE_2D, GL_RGBA, width, height, byteFormats[f], GL_UNSIGNED_BYTE, 2, 3,
+                                      last + 1, data));
+        printTextureLevels();
+        free(data);
+      }
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
+  glPixelStorei(GL_UNPACK_SKIP_ROWS, 0);
+  glPixelStorei(GL_UNPACK_SKIP_PIXELS, 0);
 
   /* gluScaleImage from every type to every type, colours and indices. */
   static const int scales[][4] = {{48, 48, 64, 64}, {100, 30, 37, 51}, {8, 8, 4, 4}, {5, 7, 13, 2}, {33, 65, 32, 64}};

@@ -156,8 +156,7 @@ double averageOf(const double* v, int n, GLenum type) {
 
 }  // namespace
 
-ClientImage readClientImage(int dimensions, int width, int height, int depth, GLenum format, GLenum type,
-                            const void* data) {
+ClientLayout clientLayout(int dimensions, int width, int height, GLenum format, GLenum type, const void* data) {
   GLint alignment = 4, rowLength = 0, skipRows = 0, skipPixels = 0, swapBytes = 0, imageHeight = 0, skipImages = 0;
   glGetIntegerv(GL_UNPACK_ALIGNMENT, &alignment);
   glGetIntegerv(GL_UNPACK_ROW_LENGTH, &rowLength);
@@ -168,6 +167,22 @@ ClientImage readClientImage(int dimensions, int width, int height, int depth, GL
     glGetIntegerv(GL_UNPACK_IMAGE_HEIGHT, &imageHeight);
     glGetIntegerv(GL_UNPACK_SKIP_IMAGES, &skipImages);
   }
+  ClientLayout layout;
+  layout.elementBytes = static_cast<size_t>(bytesOfType(type));
+  layout.groupBytes = layout.elementBytes * static_cast<size_t>(componentsOfFormat(format));
+  layout.rowBytes = layout.groupBytes * static_cast<size_t>(rowLength > 0 ? rowLength : width);
+  const size_t align = static_cast<size_t>(std::max(alignment, 1));
+  if (layout.elementBytes < align) layout.rowBytes = (layout.rowBytes + align - 1) / align * align;
+  layout.imageBytes = layout.rowBytes * static_cast<size_t>(imageHeight > 0 ? imageHeight : height);
+  layout.first = static_cast<const unsigned char*>(data) + static_cast<size_t>(skipImages) * layout.imageBytes +
+                 static_cast<size_t>(skipRows) * layout.rowBytes + static_cast<size_t>(skipPixels) * layout.groupBytes;
+  layout.swapBytes = swapBytes != 0 && layout.elementBytes > 1;
+  return layout;
+}
+
+ClientImage readClientImage(int dimensions, int width, int height, int depth, GLenum format, GLenum type,
+                            const void* data) {
+  const ClientLayout layout = clientLayout(dimensions, width, height, format, type, data);
   ClientImage image;
   image.width = width;
   image.height = height;
@@ -175,23 +190,15 @@ ClientImage readClientImage(int dimensions, int width, int height, int depth, GL
   image.components = componentsOfFormat(format);
   image.values.resize(static_cast<size_t>(width) * static_cast<size_t>(height) * static_cast<size_t>(depth) *
                       static_cast<size_t>(image.components));
-  const size_t elementBytes = static_cast<size_t>(bytesOfType(type));
-  const size_t groupBytes = elementBytes * static_cast<size_t>(image.components);
-  size_t rowBytes = groupBytes * static_cast<size_t>(rowLength > 0 ? rowLength : width);
-  const size_t align = static_cast<size_t>(std::max(alignment, 1));
-  if (elementBytes < align) rowBytes = (rowBytes + align - 1) / align * align;
-  const size_t imageBytes = rowBytes * static_cast<size_t>(imageHeight > 0 ? imageHeight : height);
-  const auto* base = static_cast<const unsigned char*>(data) + static_cast<size_t>(skipImages) * imageBytes +
-                     static_cast<size_t>(skipRows) * rowBytes + static_cast<size_t>(skipPixels) * groupBytes;
-  const bool swap = swapBytes != 0 && elementBytes > 1;
   for (int k = 0; k < depth; ++k)
     for (int j = 0; j < height; ++j)
       for (int i = 0; i < width; ++i)
         for (int c = 0; c < image.components; ++c)
-          image.at(i, j, k, c) =
-              readElement(base + static_cast<size_t>(k) * imageBytes + static_cast<size_t>(j) * rowBytes +
-                              static_cast<size_t>(i) * groupBytes + static_cast<size_t>(c) * elementBytes,
-                          type, swap);
+          image.at(i, j, k, c) = readElement(layout.first + static_cast<size_t>(k) * layout.imageBytes +
+                                                 static_cast<size_t>(j) * layout.rowBytes +
+                                                 static_cast<size_t>(i) * layout.groupBytes +
+                                                 static_cast<size_t>(c) * layout.elementBytes,
+                                             type, layout.swapBytes);
   return image;
 }
 
@@ -234,6 +241,12 @@ void uploadLevel(GLenum target, int dimensions, GLint level, GLint internalForma
   const size_t elementBytes = static_cast<size_t>(bytesOfType(type));
   std::vector<unsigned char> data(image.values.size() * elementBytes);
   for (size_t k = 0; k < image.values.size(); ++k) writeElement(image.values[k], type, &data[k * elementBytes]);
+  uploadPackedLevel(target, dimensions, level, internalFormat, image.width, image.height, image.depth, format, type,
+                    data.data());
+}
+
+void uploadPackedLevel(GLenum target, int dimensions, GLint level, GLint internalFormat, int width, int height,
+                       int depth, GLenum format, GLenum type, const void* data) {
   GLint alignment, rowLength, skipRows, skipPixels, swapBytes, imageHeight = 0, skipImages = 0;
   glGetIntegerv(GL_UNPACK_ALIGNMENT, &alignment);
   glGetIntegerv(GL_UNPACK_ROW_LENGTH, &rowLength);
@@ -246,15 +259,15 @@ void uploadLevel(GLenum target, int dimensions, GLint level, GLint internalForma
   glPixelStorei(GL_UNPACK_SKIP_PIXELS, 0);
   glPixelStorei(GL_UNPACK_SWAP_BYTES, GL_FALSE);
   if (dimensions == 1) {
-    glTexImage1D(target, level, internalFormat, image.width, 0, format, type, data.data());
+    glTexImage1D(target, level, internalFormat, width, 0, format, type, data);
   } else if (dimensions == 2) {
-    glTexImage2D(target, level, internalFormat, image.width, image.height, 0, format, type, data.data());
+    glTexImage2D(target, level, internalFormat, width, height, 0, format, type, data);
   } else {
     glGetIntegerv(GL_UNPACK_IMAGE_HEIGHT, &imageHeight);
     glGetIntegerv(GL_UNPACK_SKIP_IMAGES, &skipImages);
     glPixelStorei(GL_UNPACK_IMAGE_HEIGHT, 0);
     glPixelStorei(GL_UNPACK_SKIP_IMAGES, 0);
-    glTexImage3D(target, level, internalFormat, image.width, image.height, image.depth, 0, format, type, data.data());
+    glTexImage3D(target, level, internalFormat, width, height, depth, 0, format, type, data);
     glPixelStorei(GL_UNPACK_IMAGE_HEIGHT, imageHeight);
     glPixelStorei(GL_UNPACK_SKIP_IMAGES, skipImages);
   }

@@ -43,6 +43,16 @@ struct ClientImage {
   double at(int i, int j, int k, int c) const { return values[indexOf(i, j, k, c)]; }
 };
 
+// Where the elements of a client image lie with the current GL_UNPACK_* layout (spec 3.6.4; for
+// 3 dimensions also GL_UNPACK_IMAGE_HEIGHT and GL_UNPACK_SKIP_IMAGES, 3.8.1): component c of
+// texel (i, j, k) starts at first + k imageBytes + j rowBytes + i groupBytes + c elementBytes.
+struct ClientLayout {
+  const unsigned char* first = nullptr;
+  std::size_t elementBytes = 0, groupBytes = 0, rowBytes = 0, imageBytes = 0;
+  bool swapBytes = false;  // GL_UNPACK_SWAP_BYTES, for elements of more than one byte
+};
+ClientLayout clientLayout(int dimensions, int width, int height, GLenum format, GLenum type, const void* data);
+
 // Reads the client image with the current GL_UNPACK_* layout (spec 3.6.4; for 3 dimensions also
 // GL_UNPACK_IMAGE_HEIGHT and GL_UNPACK_SKIP_IMAGES, 3.8.1).
 ClientImage readClientImage(int dimensions, int width, int height, int depth, GLenum format, GLenum type,
@@ -62,8 +72,11 @@ double fromSixteenBit(uint16_t u, GLenum type, bool index);
 // GLU's box filter on 16-bit values (its scale_internal, and scaleInternal3D with a depth).
 ClientImage scaleSixteenBit(const ClientImage& in, int widthOut, int heightOut, int depthOut);
 
-// Loads one level, tightly packed, with glTexImage1D/2D/3D, restoring the caller's unpack state.
+// Loads one level, tightly packed, with glTexImage1D/2D/3D, restoring the caller's unpack state:
+// from raw element values written as `type`, or from elements already so written.
 void uploadLevel(GLenum target, int dimensions, GLint level, GLint internalFormat, const ClientImage& image,
                  GLenum format, GLenum type);
+void uploadPackedLevel(GLenum target, int dimensions, GLint level, GLint internalFormat, int width, int height,
+                       int depth, GLenum format, GLenum type, const void* data);
 
 }  // namespace glass::glu

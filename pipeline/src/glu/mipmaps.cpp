@@ -13,10 +13,13 @@
 //      1 texel long the filter is 2 x 1, (a + b) / 2.
 // Every 2D level is handed to glTexImage in the client's own format and type. The 1D builders
 // work as gluScaleImage does, in 16-bit values, and load GL_UNSIGNED_SHORT levels (as GLU does).
-// The packed pixel types and GL_BITMAP are not accepted (GLU_INVALID_ENUM).
+// The packed pixel types and GL_BITMAP are not accepted (GLU_INVALID_ENUM). Images of unsigned
+// bytes that need no resampling are halved on their bytes (glu/byte_mipmaps.h, a fast path).
 #include <GL/gl.h>
 #include <GL/glu.h>
 
+#include "core/fast_paths.h"
+#include "glu/byte_mipmaps.h"
 #include "glu/client_image.h"
 
 #include <algorithm>
@@ -147,6 +150,12 @@ void loadTwoDimensionalLevels(GLenum target, GLint internalFormat, ClientImage i
   }
 }
 
+// Whether the 2D levels of an image of `type` are made by the fast path on bytes
+// (glu/byte_mipmaps.h) rather than by halveImage.
+bool takesByteLevels(int dimensions, GLenum type) {
+  return dimensions == 2 && type == GL_UNSIGNED_BYTE && glass::gl::fastPathsEnabled();
+}
+
 GLint buildMipmaps(GLenum target, int dimensions, GLint internalFormat, GLsizei width, GLsizei height,
                    GLenum format, GLenum type, const void* data) {
   if (isPackedOrBitmapType(type)) return GLU_INVALID_ENUM;
@@ -162,8 +171,12 @@ GLint buildMipmaps(GLenum target, int dimensions, GLint internalFormat, GLsizei 
     newHeight = std::max(1, newHeight / 2);
   }
   try {
-    ClientImage image = readClientImage(dimensions, width, height, 1, format, type, data);
     const int levels = std::max(log2OfPowerOfTwo(newWidth), log2OfPowerOfTwo(newHeight));
+    if (takesByteLevels(dimensions, type) && width == newWidth && height == newHeight) {
+      loadByteLevels(target, internalFormat, width, height, format, data, 0, 0, levels);
+      return 0;
+    }
+    ClientImage image = readClientImage(dimensions, width, height, 1, format, type, data);
     if (dimensions == 1) {
       loadOneDimensionalLevels(target, internalFormat, std::move(image), format, type, newWidth, 0, 0, levels);
       return 0;
@@ -190,6 +203,10 @@ GLint buildMipmapLevels(GLenum target, int dimensions, GLint internalFormat, GLs
   const int last = std::max(exactLog2(width), dimensions == 2 ? exactLog2(height) : -1) + level;
   if (base < 0 || base < level || max < base || last < max) return GLU_INVALID_VALUE;
   try {
+    if (takesByteLevels(dimensions, type)) {
+      loadByteLevels(target, internalFormat, width, height, format, data, level, base, max);
+      return 0;
+    }
     ClientImage image = readClientImage(dimensions, width, height, 1, format, type, data);
     if (dimensions == 1) {
       loadOneDimensionalLevels(target, internalFormat, std::move(image), format, type, width, level, base, max);
