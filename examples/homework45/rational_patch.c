@@ -2,6 +2,7 @@
 
 #include <math.h>
 #include <stddef.h>
+#include <string.h>
 #include <GL/glut.h>
 
 #include "rounded_upright.h"
@@ -79,22 +80,33 @@ void draw_part_mapped(const float tex[][3][2], struct grid_part part)
   glDisable(GL_MAP2_TEXTURE_COORD_2);
 }
 
+/* The texture coordinates `texture` gives the points of row j of the grid part (columns i0 to i1). */
+static void chart_row(point_texture texture, const void *chart, struct grid_part part, int j, float st[][2])
+{
+  for (int i = part.i0; i <= part.i1; ++i) {
+    double point[3];
+    rational_patch_point(part_net, part_rows, (double)i / ARC_STEPS, (double)j / part_v_steps, point);
+    texture(point, chart, st[i - part.i0]);
+  }
+}
+
 void draw_part_charted(point_texture texture, const void *chart, struct grid_part part)
 {
   /* glEvalMesh2's rows, as the triangle strips it draws them in; the texture's map is off, so
-   * glEvalPoint2 takes the current texture coordinates. */
+   * glEvalPoint2 takes the current texture coordinates, charted once for each point of the grid. */
+  float lower[ARC_STEPS + 1][2], upper[ARC_STEPS + 1][2];
+  chart_row(texture, chart, part, part.j0, lower);
   for (int j = part.j0; j < part.j1; ++j) {
+    chart_row(texture, chart, part, j + 1, upper);
     glBegin(GL_TRIANGLE_STRIP);
-    for (int i = part.i0; i <= part.i1; ++i)
-      for (int k = 0; k < 2; ++k) {
-        double point[3];
-        float st[2];
-        rational_patch_point(part_net, part_rows, (double)i / ARC_STEPS, (double)(j + k) / part_v_steps, point);
-        texture(point, chart, st);
-        glTexCoord2fv(st);
-        glEvalPoint2(i, j + k);
-      }
+    for (int i = part.i0; i <= part.i1; ++i) {
+      glTexCoord2fv(lower[i - part.i0]);
+      glEvalPoint2(i, j);
+      glTexCoord2fv(upper[i - part.i0]);
+      glEvalPoint2(i, j + 1);
+    }
     glEnd();
+    memcpy(lower, upper, sizeof lower);
   }
 }
 
