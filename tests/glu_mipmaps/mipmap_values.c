@@ -224,6 +224,7 @@ int main(void) {
         const char* prefix = (width == 1 && spaced) || resampledAlongX ? "glass only: " : "";
         printf("%sbytes %dx%d format 0x%x alignment %d row length %d skip rows %d pixels %d\n", prefix, width,
                height, byteFormats[f], alignment, rowLength, skipRows, skipPixels);
+        fflush(stdout);  /* the case is on record if a library fails in it */
         printf("  gluBuild2DMipmaps result %d\n",
                gluBuild2DMipmaps(GL_TEXTURE_2D, GL_RGBA, width, height, byteFormats[f], GL_UNSIGNED_BYTE, data));
         printTextureLevels();

@@ -3,8 +3,8 @@
 // reused from level to level, instead of as one double per element. GLU's average of unsigned
 // bytes is integer arithmetic, (a + b + c + d + 2) / 4, or (a + b) / 2 along an axis already 1
 // texel long, which the reference (halveImage on raw values held as doubles) computes exactly
-// too, so the levels handed to glTexImage2D are the same bytes. The glu_mipmaps test runs with
-// the fast paths on and off and compares both with Mesa's libGLU.
+// too, so the levels handed to glTexImage2D are the same bytes: the test glu_mipmaps.fast_paths
+// runs the builders with the fast paths on and off, and glu_mipmaps compares them with libGLU.
 #pragma once
 
 #include <GL/gl.h>

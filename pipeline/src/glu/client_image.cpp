@@ -112,13 +112,17 @@ double readElement(const unsigned char* p, GLenum type, bool swap) {
 }  // namespace
 
 void writeElement(double v, GLenum type, unsigned char* p) {
+  // Integer types: truncated towards zero to a 64-bit integer, then wrapped to the element's
+  // width, as C converts GLU's integer working values (an index of 137 written as a GL_BYTE is
+  // -119). Converting the double straight to a narrower type is undefined out of its range.
+  const long long whole = v > -9.0e18 && v < 9.0e18 ? static_cast<long long>(v) : 0;
   switch (type) {
-    case GL_UNSIGNED_BYTE: { const auto x = static_cast<uint8_t>(v); std::memcpy(p, &x, 1); break; }
-    case GL_BYTE: { const auto x = static_cast<int8_t>(v); std::memcpy(p, &x, 1); break; }
-    case GL_UNSIGNED_SHORT: { const auto x = static_cast<uint16_t>(v); std::memcpy(p, &x, 2); break; }
-    case GL_SHORT: { const auto x = static_cast<int16_t>(v); std::memcpy(p, &x, 2); break; }
-    case GL_UNSIGNED_INT: { const auto x = static_cast<uint32_t>(v); std::memcpy(p, &x, 4); break; }
-    case GL_INT: { const auto x = static_cast<int32_t>(v); std::memcpy(p, &x, 4); break; }
+    case GL_UNSIGNED_BYTE: { const auto x = static_cast<uint8_t>(whole); std::memcpy(p, &x, 1); break; }
+    case GL_BYTE: { const auto x = static_cast<int8_t>(whole); std::memcpy(p, &x, 1); break; }
+    case GL_UNSIGNED_SHORT: { const auto x = static_cast<uint16_t>(whole); std::memcpy(p, &x, 2); break; }
+    case GL_SHORT: { const auto x = static_cast<int16_t>(whole); std::memcpy(p, &x, 2); break; }
+    case GL_UNSIGNED_INT: { const auto x = static_cast<uint32_t>(whole); std::memcpy(p, &x, 4); break; }
+    case GL_INT: { const auto x = static_cast<int32_t>(whole); std::memcpy(p, &x, 4); break; }
     case GL_FLOAT: { const auto x = static_cast<float>(v); std::memcpy(p, &x, 4); break; }
     default: break;
   }
