@@ -11,6 +11,7 @@
 #include <limits>
 
 #include "core/simd_dispatch.h"
+#include "lcg_random.h"
 #include "texture/level_of_detail.h"
 #include "texture/texture_lod.h"
 
@@ -20,12 +21,7 @@ using glass::gl::SimdTarget;
 
 namespace {
 
-struct Random {
-  uint64_t state;
-  uint64_t next() {
-    state = state * 6364136223846793005ull + 1442695040888963407ull;
-    return state >> 11;
-  }
+struct Random : LcgRandom {
   double unit() { return static_cast<double>(next() >> 11) / 4294967296.0; }  // [0, 1)
 };
 
@@ -59,7 +55,7 @@ TEST_CASE("level_of_detail_lanes_match: four quads' lambdas at once are the scal
       {3.0f, 1.0f, 0.0f},  // min above max: the scalar function's order decides
       {-1000.0f, 1000.0f, 16.0f},
   };
-  Random random{12345u};
+  Random random{{12345u}};
   long compared = 0, mismatches = 0;
   int targets = 0;
   for (int t = 0; t < static_cast<int>(SimdTarget::Count); ++t) {
@@ -107,7 +103,7 @@ TEST_CASE("selectMipmapLevels takes the specification's floor and ceiling of lam
     m.weight2 = lambda < 0.0f ? 0.0f : lambda - whole;
     return m;
   };
-  Random random{99u};
+  Random random{{99u}};
   long checked = 0;
   for (const GLenum filter : {GL_NEAREST_MIPMAP_NEAREST, GL_LINEAR_MIPMAP_LINEAR}) {
     for (int base = 0; base <= 3; ++base)

@@ -93,7 +93,32 @@ void lightGeometryRows(const LightSource& light, const LightingInput& in, Rows3&
   normalizeRows(toLight[0], toLight[1], toLight[2], n);
 }
 
-// spot_i at every vertex; 1 without a cone.
+// lightingPower(base[i], exponent) for every i where wanted[i]; the other entries of power are
+// left as they are. A whole exponent is squared in double over the whole batch at once, the
+// same multiplications in the same order as lightingPower's loop makes for one base, so every
+// lane gets lightingPower's bits; other exponents call lightingPower lane by lane.
+void powerRows(const float* base, float exponent, const bool* wanted, int n, float* power) {
+  if (!lighting_math::isWholeLightingExponent(exponent)) {
+    for (int i = 0; i < n; ++i)
+      if (wanted[i]) power[i] = lighting_math::lightingPower(base[i], exponent);
+    return;
+  }
+  double result[K], square[K];
+  for (int i = 0; i < n; ++i) {
+    result[i] = 1.0;
+    square[i] = base[i];
+  }
+  for (unsigned e = static_cast<unsigned>(exponent); e != 0; e >>= 1) {
+    if (e & 1u)
+      for (int i = 0; i < n; ++i) result[i] *= square[i];
+    if (e > 1u)
+      for (int i = 0; i < n; ++i) square[i] *= square[i];
+  }
+  for (int i = 0; i < n; ++i)
+    if (wanted[i]) power[i] = static_cast<float>(result[i]);
+}
+
+// spot_i at every vertex; 1 without a cone (spotFactor's steps, the power over the batch).
 void spotRows(const LightSource& light, const Rows3& toLight, int n, float* spot) {
   if (light.spotCutoff == 180.0f) {
     for (int i = 0; i < n; ++i) spot[i] = 1.0f;
@@ -102,11 +127,16 @@ void spotRows(const LightSource& light, const Rows3& toLight, int n, float* spot
   float direction[3];
   lighting_math::unitSpotDirection(light, direction);
   const float cosCutoff = lighting_math::spotCosCutoff(light);
+  float base[K];
+  bool inside[K];
   for (int i = 0; i < n; ++i) {
     const float cosine = -(toLight[0][i] * direction[0] + toLight[1][i] * direction[1] +
                            toLight[2][i] * direction[2]);
-    spot[i] = lighting_math::spotFactor(cosine, cosCutoff, light.spotExponent);
+    inside[i] = !(cosine < cosCutoff);
+    base[i] = cosine > 0.0f ? cosine : 0.0f;
+    spot[i] = 0.0f;
   }
+  powerRows(base, light.spotExponent, inside, n, spot);
 }
 
 }  // namespace
@@ -165,15 +195,18 @@ void LightBatch(const LightingState& state, int face, bool reverseNormal, const 
           half[c][i] = toLight[c][i] + (localViewer ? toEye[c][i] : (c == 2 ? 1.0f : 0.0f));
       normalizeRows(half[0], half[1], half[2], n);
     }
-    // f_i (n . h_i)^s only where the light reaches the front of the surface (a scalar power).
+    // f_i (n . h_i)^s only where the light reaches the front of the surface (specularFactor's
+    // steps, the power over the batch).
+    float nDotHBase[K];
+    bool facing[K];
     for (int i = 0; i < n; ++i) {
+      const float nDotH =
+          normal[0][i] * half[0][i] + normal[1][i] * half[1][i] + normal[2][i] * half[2][i];
+      nDotHBase[i] = nDotH > 0.0f ? nDotH : 0.0f;
+      facing[i] = scale[i] != 0.0f && nDotL[i] > 0.0f;
       specular[i] = 0.0f;
-      if (scale[i] != 0.0f && nDotL[i] > 0.0f) {
-        const float nDotH =
-            normal[0][i] * half[0][i] + normal[1][i] * half[1][i] + normal[2][i] * half[2][i];
-        specular[i] = lighting_math::specularFactor(nDotH, shininess);
-      }
     }
+    powerRows(nDotHBase, shininess, facing, n, specular);
     float diffuse[K];
     for (int i = 0; i < n; ++i) diffuse[i] = nDotL[i] > 0.0f ? nDotL[i] : 0.0f;
     for (int c = 0; c < 3; ++c)
@@ -213,6 +246,11 @@ constexpr SimdFunctions<decltype(&HWY_STATIC_DISPATCH(LightBatch))> kLightBatch 
 void lightBatch(const LightingState& state, int face, bool reverseNormal, const LightingInput& in,
                 LitColorRows& out) {
   chosenSimdFunction(kLightBatch)(state, face, reverseNormal, in, out);
+}
+
+void lightBatchWith(SimdTarget target, const LightingState& state, int face, bool reverseNormal,
+                    const LightingInput& in, LitColorRows& out) {
+  kLightBatch[static_cast<int>(target)](state, face, reverseNormal, in, out);
 }
 
 }  // namespace glass::gl

@@ -8,6 +8,7 @@
 // the steps both use), so the colours are the same bytes.
 #pragma once
 
+#include "core/simd_dispatch.h"
 #include "lighting/lighting_state.h"
 
 namespace glass::gl {
@@ -33,5 +34,8 @@ struct LitColorRows {
 // two-sided lighting, reverseNormal lights it as if the normal pointed the other way.
 void lightBatch(const LightingState& state, int face, bool reverseNormal, const LightingInput& in,
                 LitColorRows& out);
+// The same with the copy compiled for `target` (which must run here), for the tests.
+void lightBatchWith(SimdTarget target, const LightingState& state, int face, bool reverseNormal,
+                    const LightingInput& in, LitColorRows& out);
 
 }  // namespace glass::gl

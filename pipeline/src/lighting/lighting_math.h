@@ -58,8 +58,12 @@ inline void unitSpotDirection(const LightSource& light, float direction[3]) {
 // float result's 2^-24, and like portable::pow it uses IEEE basic operations only, so it gives
 // the same bytes on every machine. On 2.8 million test powers it gives the correctly rounded
 // float every time (tests/unit/lighting_equation.cpp). Other exponents go to portable::pow.
+inline bool isWholeLightingExponent(float exponent) {
+  return exponent >= 0.0f && exponent <= 128.0f &&
+         exponent == static_cast<float>(static_cast<int>(exponent));
+}
 inline float lightingPower(float base, float exponent) {
-  if (exponent >= 0.0f && exponent <= 128.0f && exponent == static_cast<float>(static_cast<int>(exponent))) {
+  if (isWholeLightingExponent(exponent)) {
     double result = 1.0, square = base;
     for (unsigned n = static_cast<unsigned>(exponent); n != 0; n >>= 1) {
       if (n & 1u) result *= square;
