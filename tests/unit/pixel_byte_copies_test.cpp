@@ -1,7 +1,7 @@
 // The byte copies that stand in for the conversions of client pixels (texture/client_pixels.h):
-// glReadPixels of a colour buffer and texture images of RGBA bytes copy bytes where the general
-// path would take each byte b as b / 255 and convert it back. Each copy must write exactly what
-// the conversion writes.
+// glReadPixels of a colour buffer, texture images of RGBA bytes and glDrawPixels of unsigned bytes
+// copy bytes where the general path would take each byte b as b / 255 and convert it back. Each
+// copy must write exactly what the conversion writes.
 #include <GL/gl.h>
 #include <doctest/doctest.h>
 
@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "fragment/color_conversion.h"
 #include "texture/client_pixels.h"
 #include "texture/texture_image.h"
 
@@ -95,4 +96,53 @@ TEST_CASE("unpack_rgba_bytes_copies_conversion") {
       CHECK(std::count(seen.begin(), seen.end(), true) == 256);
     }
   }
+}
+
+// glDrawPixels's fast path takes colours of unsigned bytes as bytes (unpackByteColorSpan) where
+// the reference path unpacks each byte b as b / 255 (unpackColorRow) and the fragment stage
+// converts it back (floatToColorByte). The bytes must be what that conversion gives: every byte
+// value in every colour format, with padding, row length and skips, from a column inside the row.
+TEST_CASE("unpack_byte_color_span_matches_floats") {
+  using glass::gl::PixelLayout;
+  const GLenum formats[] = {GL_RGBA, GL_BGRA, GL_RGB, GL_BGR, GL_RED, GL_GREEN, GL_BLUE,
+                            GL_ALPHA, GL_LUMINANCE, GL_LUMINANCE_ALPHA};
+  const int width = 262, column = 3, count = 256, row = 1;
+  std::vector<uint8_t> client(static_cast<size_t>(300) * 4 * 4 + 64);
+  for (size_t i = 0; i < client.size(); ++i) client[i] = static_cast<uint8_t>((i * 7 + i / 4) & 255);
+  for (const GLenum format : formats) {
+    for (const int alignment : {1, 2, 4, 8}) {
+      PixelLayout layout{};
+      layout.alignment = alignment;
+      layout.rowLength = 300;
+      layout.skipPixels = 2;
+      layout.skipRows = 1;
+      CAPTURE(format);
+      CAPTURE(alignment);
+      std::vector<uint8_t> bytes(static_cast<size_t>(count) * 4, kUntouched);
+      REQUIRE(glass::gl::unpackByteColorSpan(client.data(), count, width, column, row, format,
+                                             GL_UNSIGNED_BYTE, layout, bytes.data()));
+      std::vector<float> rgba(static_cast<size_t>(width) * 4);
+      glass::gl::unpackColorRow(client.data(), width, row, format, GL_UNSIGNED_BYTE, layout, rgba.data());
+      std::vector<uint8_t> converted(bytes.size());
+      for (size_t i = 0; i < converted.size(); ++i)
+        converted[i] = glass::gl::floatToColorByte(rgba[static_cast<size_t>(column) * 4 + i]);
+      CHECK(bytes == converted);
+    }
+  }
+  // Every byte value reaches every channel of RGBA.
+  std::vector<uint8_t> all(256 * 4), bytes(256 * 4);
+  for (size_t i = 0; i < all.size(); ++i) all[i] = static_cast<uint8_t>(i / 4 + 85 * (i % 4));
+  PixelLayout layout{};
+  std::vector<float> rgba(all.size());
+  glass::gl::unpackColorRow(all.data(), 256, 0, GL_RGBA, GL_UNSIGNED_BYTE, layout, rgba.data());
+  REQUIRE(glass::gl::unpackByteColorSpan(all.data(), 256, 256, 0, 0, GL_RGBA, GL_UNSIGNED_BYTE, layout, bytes.data()));
+  for (size_t i = 0; i < all.size(); ++i) CHECK(glass::gl::floatToColorByte(rgba[i]) == all[i]);
+  CHECK(bytes == all);
+  // Other types are left to the conversion, with nothing written.
+  std::vector<uint8_t> untouched(64, kUntouched), buffer = untouched;
+  CHECK_FALSE(glass::gl::unpackByteColorSpan(all.data(), 4, 4, 0, 0, GL_RGBA, GL_UNSIGNED_SHORT, layout,
+                                             buffer.data()));
+  CHECK_FALSE(glass::gl::unpackByteColorSpan(all.data(), 4, 4, 0, 0, GL_RGBA, GL_UNSIGNED_INT_8_8_8_8,
+                                             layout, buffer.data()));
+  CHECK(buffer == untouched);
 }

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "core/fast_paths.h"
 #include "pipeline_test_support.h"
 
 using glass::test::pixelAt;
@@ -521,4 +522,65 @@ TEST_CASE("pixels draw: glCopyPixels reads only the part of its rectangle inside
   CHECK(pixelAt(9, 1) == Rgba{255, 255, 255, 255});
   glCopyPixels(-(1 << 30), -(1 << 30), 1 << 30, 1 << 30, GL_DEPTH);
   CHECK(glGetError() == GL_NO_ERROR);
+}
+
+// glDrawPixels of unsigned bytes without zoom, transfer operations or fragment operations puts
+// the bytes in the colour buffer directly (drawPixelBytes); it must draw what the reference path
+// draws. Every colour format, unpack layouts, images partly off each side of the window, the
+// scissor box, a triangle still queued under the image, and states that leave the image to the
+// reference path (blending, a zoom, a scale) drawn both ways too.
+TEST_CASE("pixels draw: the byte fast path draws what the reference path draws") {
+  const int size = 24;
+  const GLenum formats[] = {GL_RGBA, GL_BGRA, GL_RGB, GL_BGR, GL_RED, GL_GREEN,
+                            GL_BLUE, GL_ALPHA, GL_LUMINANCE, GL_LUMINANCE_ALPHA};
+  struct Placement {
+    int x, y, width, height;
+  };
+  const Placement placements[] = {{3, 4, 9, 7}, {-5, 2, 12, 6}, {18, 19, 11, 9}, {-3, -4, 30, 31}, {2, 30, 5, 5}};
+  std::vector<GLubyte> client(64 * 64 * 4 + 64);
+  for (size_t i = 0; i < client.size(); ++i) client[i] = static_cast<GLubyte>((i * 13 + i / 7) & 255);
+
+  const auto draw = [&](bool fast, GLenum format, const Placement& p, int alignment, int state) {
+    glass::gl::ScopedFastPaths paths(fast);
+    ScopedContext context(size, size);
+    glass::test::pixelProjection(size, size);
+    glClearColor(0.2f, 0.4f, 0.6f, 0.8f);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glBegin(GL_TRIANGLES);  // queued, under part of the image
+    glColor3ub(200, 10, 90);
+    glVertex2f(0, 0);
+    glVertex2f(20, 3);
+    glVertex2f(6, 22);
+    glEnd();
+    glPixelStorei(GL_UNPACK_ALIGNMENT, alignment);
+    glPixelStorei(GL_UNPACK_ROW_LENGTH, p.width + 3);
+    glPixelStorei(GL_UNPACK_SKIP_PIXELS, 2);
+    glPixelStorei(GL_UNPACK_SKIP_ROWS, 1);
+    if (state == 1) {
+      glEnable(GL_SCISSOR_TEST);
+      glScissor(5, 3, 11, 14);
+    } else if (state == 2) {
+      glEnable(GL_BLEND);
+      glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    } else if (state == 3) {
+      glPixelZoom(2.0f, -1.0f);
+    } else if (state == 4) {
+      glPixelTransferf(GL_GREEN_SCALE, 0.5f);
+    }
+    glWindowPos2i(p.x, p.y);
+    glDrawPixels(p.width, p.height, format, GL_UNSIGNED_BYTE, client.data());
+    CHECK(glGetError() == GL_NO_ERROR);
+    return glass::test::readFramebuffer(size, size);
+  };
+  for (const GLenum format : formats)
+    for (const Placement& p : placements)
+      for (const int alignment : {1, 4, 8})
+        for (int state = 0; state < 5; ++state) {
+          CAPTURE(format);
+          CAPTURE(p.x);
+          CAPTURE(p.y);
+          CAPTURE(alignment);
+          CAPTURE(state);
+          CHECK(draw(true, format, p, alignment, state) == draw(false, format, p, alignment, state));
+        }
 }

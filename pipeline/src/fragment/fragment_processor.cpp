@@ -107,6 +107,12 @@ bool FragmentProcessor::kernelsAllowed() const {
          s_.statistics == nullptr;
 }
 
+bool FragmentProcessor::storesColorsAsGiven() const {
+  return kernelsAllowed() && !s_.phong && !s_.texturing && !s_.colorSum && !s_.fog && !s_.alphaTest &&
+         !s_.tests.stencilTest && !s_.tests.depthTest && !s_.blend && !s_.logicOp && s_.writesColor &&
+         s_.allChannels;
+}
+
 BlockKernel FragmentProcessor::chooseKernel() const {
   if (!kernelsAllowed()) return nullptr;
   // What no kernel does (block_kernels.h).

@@ -48,6 +48,10 @@ class FragmentProcessor final : public raster::FragmentSink {
   // fragment, not from a copy made by prepare(): while fragments of such a draw are queued,
   // that state must not change.
   bool readsContextState() const { return s_.texturing || s_.fog || s_.phong; }
+  // Whether every fragment's colour goes to its pixel as it comes (converted to bytes) and
+  // nothing else happens: fast paths allowed, and no lighting, texturing, colour sum, fog, test,
+  // blending, logic op or mask. glDrawPixels's fast path writes the bytes itself then.
+  bool storesColorsAsGiven() const;
   // Per-fragment lighting reads the lights and materials of the context.
   bool readsLighting() const { return s_.phong; }
   // Whether two processors treat every fragment the same way.

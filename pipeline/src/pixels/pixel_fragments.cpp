@@ -8,6 +8,9 @@
 #include "fragment/fragment_processor.h"
 #include "glass/raster/depth_value.h"
 #include "glass/raster/fragment.h"
+#include "pixels/imaging_pipeline.h"
+#include "pixels/pixel_transfer.h"
+#include "texture/client_pixels.h"
 #include "vertex/varyings.h"
 
 namespace glass::gl {
@@ -140,6 +143,29 @@ void drawImageFragments(Context& ctx, const FragmentImage& image) {
       if (image.depths) f.depth = raster::depthValue(image.depths[pixel]);
     }
   }
+}
+
+bool drawPixelBytes(Context& ctx, const void* pixels, int width, int height, GLenum format, GLenum type,
+                    const PixelPacking& unpack) {
+  if (type != GL_UNSIGNED_BYTE || !isColorFormat(format) || width <= 0 || height <= 0) return false;
+  if (ctx.renderMode.mode != GL_RENDER || !ctx.rasterPosition.valid) return false;
+  if (ctx.pixelTransfer.zoomX != 1.0f || ctx.pixelTransfer.zoomY != 1.0f) return false;
+  if (!colorTransferChangesNothing(ctx.pixelTransfer) || imagingActive(ctx.imaging)) return false;
+  FragmentProcessor processor;
+  processor.prepare(ctx, false);
+  if (!processor.storesColorsAsGiven()) return false;
+
+  const raster::PixelRect bounds = writableRect(ctx);
+  FragmentImage image;
+  image.width = width;
+  image.height = height;
+  const ZoomedAxis xs = columnsOf(ctx, image, bounds);
+  const ZoomedAxis ys = rowsOf(ctx, image, bounds);
+  // Without zoom the visible columns show consecutive image columns.
+  for (int y = ys.first; y < ys.end; ++y)
+    unpackByteColorSpan(pixels, xs.end - xs.first, width, xs.source(xs.first), ys.source(y), format, type,
+                        unpack, ctx.framebuffer.colorAt(xs.first, y));
+  return true;
 }
 
 void drawStencilImage(Context& ctx, const FragmentImage& image) {

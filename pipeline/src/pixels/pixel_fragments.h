@@ -16,7 +16,11 @@
 // blending, logic op and the masks.
 #pragma once
 
+#include <GL/gl.h>
+
 #include <cstdint>
+
+#include "core/pixel_store.h"
 
 namespace glass::gl {
 
@@ -39,6 +43,15 @@ struct FragmentImage {
 // Draws the image at the current raster position with the current zoom. The caller checked
 // that the raster position is valid and that the render mode is GL_RENDER.
 void drawImageFragments(Context& ctx, const FragmentImage& image);
+
+// glDrawPixels's fast path (docs/pipeline.md, "Fast paths"): colours of unsigned bytes, without
+// zoom, pixel transfer or imaging operations that would change them, drawn by a fragment stage
+// that stores colours as they come (FragmentProcessor::storesColorsAsGiven), in GL_RENDER mode at
+// a valid raster position. Each visible row's bytes go into the colour buffer directly: the bytes
+// the reference path (floats, fragments, conversion back to bytes) writes. Returns false, having
+// done nothing, in any other case. Queued drawing must be finished.
+bool drawPixelBytes(Context& ctx, const void* pixels, int width, int height, GLenum format, GLenum type,
+                    const PixelPacking& unpack);
 
 // Writes stencil indices at the raster position with the zoom: only the scissor test, the
 // pixel ownership test and the stencil write mask apply (spec 4.3.1).

@@ -12,6 +12,7 @@
 #include "fragment/buffer_selection.h"
 #include "lists/command_recording.h"
 #include "primitive/queued_drawing.h"
+#include "pixels/pixel_fragments.h"
 #include "pixels/pixel_image.h"
 #include "texture/client_pixels.h"
 
@@ -45,6 +46,11 @@ void glDrawPixels(GLsizei width, GLsizei height, GLenum format, GLenum type, con
   glass::gl::executeNow([=](Context& ctx) {
     GLenum error = glass::gl::checkPixelFormatAndType(format, type);
     if (width < 0 || height < 0) error = GL_INVALID_VALUE;
+    // Executed now, the common colour images may go into the colour buffer as they are.
+    if (error == GL_NO_ERROR && pixels != nullptr && !ctx.assembly.active && !ctx.lists.isCompiling()) {
+      glass::gl::finishQueuedDrawing(ctx);
+      if (glass::gl::drawPixelBytes(ctx, pixels, width, height, format, type, ctx.pixelStore.unpack)) return;
+    }
     std::shared_ptr<const glass::gl::UnpackedImage> image;
     if (error == GL_NO_ERROR && pixels != nullptr && !refusedBeforeReading(ctx)) {
       try {

@@ -312,6 +312,34 @@ void unpackColorRow(const void* pixels, int width, int row, GLenum format, GLenu
   }
 }
 
+bool unpackByteColorSpan(const void* pixels, int count, int width, int column, int row, GLenum format,
+                         GLenum type, const PixelLayout& layout, uint8_t* rgba8) {
+  if (type != GL_UNSIGNED_BYTE) return false;
+  const SpanFormat span = spanFormat(width, format, type, layout);
+  const FormatComponents& components = span.components;
+  const unsigned char* first = static_cast<const unsigned char*>(pixels) + span.block.firstByte +
+                               static_cast<size_t>(row) * span.block.rowBytes +
+                               static_cast<size_t>(column) * span.block.groupBytes;
+  if (format == GL_RGBA) {
+    std::memcpy(rgba8, first, static_cast<size_t>(count) * 4);
+    return true;
+  }
+  for (int i = 0; i < count; ++i) {
+    const unsigned char* group = first + static_cast<size_t>(i) * span.block.groupBytes;
+    uint8_t* out = rgba8 + static_cast<size_t>(i) * 4;
+    out[0] = out[1] = out[2] = 0;
+    out[3] = 255;
+    for (int c = 0; c < components.count; ++c) {
+      if (components.slot[c] == kLuminance) {
+        out[0] = out[1] = out[2] = group[c];
+      } else {
+        out[components.slot[c]] = group[c];
+      }
+    }
+  }
+  return true;
+}
+
 void packPixelRow(const float* rgba, int width, int row, GLenum format, GLenum type,
                   const PixelLayout& layout, void* pixels) {
   packColorSpan(rgba, width, width, 0, row, format, type, layout, LuminancePacking::Red, pixels);

@@ -85,6 +85,14 @@ void packColorSpan(const float* rgba, int count, int width, int column, int row,
 // writes what packColorSpan writes for every byte value, format and layout it takes.
 bool packByteColorSpan(const uint8_t* rgba8, int count, int width, int column, int row, GLenum format,
                        GLenum type, const PixelLayout& layout, void* pixels);
+// The bytes of the colours unpackColorRow gives, each component converted to the colour buffer's
+// 8 bits (floatToColorByte), for unsigned bytes (which are b / 255 and convert back to b): `count`
+// groups from column `column` of row `row`, 4 bytes each in RGBA order into rgba8 (luminance into
+// red, green and blue; a missing colour component 0, a missing alpha 255). Returns false, having
+// written nothing, for other types. The unit test unpack_byte_color_span_matches_floats compares
+// it with the conversion of unpackColorRow's floats for every byte value, format and layout.
+bool unpackByteColorSpan(const void* pixels, int count, int width, int column, int row, GLenum format,
+                         GLenum type, const PixelLayout& layout, uint8_t* rgba8);
 // glGetHistogram's counts (OpenGL 1.4 specification, section 6.1.9, "Histogram Query"): a
 // one-row block of `count` groups, 4 counts each in RGBA order (luminance from R), written as
 // numbers, not normalized: each saturated to its type's range (its field's for packed types).
