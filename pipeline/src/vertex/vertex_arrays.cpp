@@ -1,5 +1,6 @@
 #include "vertex/vertex_arrays.h"
 
+#include <algorithm>
 #include <memory>
 #include <vector>
 
@@ -8,6 +9,7 @@
 #include "lists/command_recording.h"
 #include "primitive/draw_pipeline.h"
 #include "vertex/array_draw.h"
+#include "vertex/array_fetch.h"
 #include "vertex/attribute_conversion.h"
 #include "vertex/immediate_mode.h"
 #include "vertex/vertex_batch.h"
@@ -160,6 +162,44 @@ void storeElement(const ArrayElementValues& e, CompiledArrayDraw& draw) {
   if (layout.edgeFlag) draw.edgeFlag.push_back(e.edgeFlag ? 1 : 0);
 }
 
+// The attributes of draw.layout of elements [0, count) (element indices[i], or first + i when
+// indices is null), appended to the draw's packed arrays: what storeElement appends for each
+// element's readElement values, read a batch at a time by fetchArrayRows (the same conversions,
+// the type and size of each array looked at once per batch rather than once per component).
+void storeElements(const ArrayState& arrays, const int* indices, int first, int count,
+                   CompiledArrayDraw& draw) {
+  constexpr int kBatch = 64;
+  static constexpr float kPointDefaults[4] = {0.0f, 0.0f, 0.0f, 1.0f};
+  static constexpr float kColorDefaults[4] = {0.0f, 0.0f, 0.0f, 1.0f};
+  const auto store = [&](const ClientArray& array, bool normalized, const float* defaults, int components,
+                         std::vector<float>& to) {
+    float rows[4][kBatch];
+    float* const pointers[4] = {rows[0], rows[1], rows[2], rows[3]};
+    const size_t end = to.size();
+    to.resize(end + static_cast<size_t>(count) * static_cast<size_t>(components));
+    for (int start = 0; start < count; start += kBatch) {
+      const int n = std::min(kBatch, count - start);
+      fetchArrayRows(array, normalized, defaults, components, indices ? indices + start : nullptr, first + start,
+                     n, pointers);
+      float* out = to.data() + end + static_cast<size_t>(start) * static_cast<size_t>(components);
+      for (int i = 0; i < n; ++i)
+        for (int c = 0; c < components; ++c) out[i * components + c] = rows[c][i];
+    }
+  };
+  const ArrayElementLayout& layout = draw.layout;
+  if (layout.vertex) store(arrays.vertex, false, kPointDefaults, kVertexComponents, draw.vertex);
+  if (layout.color) store(arrays.color, true, kColorDefaults, kColorComponents, draw.color);
+  if (layout.normal) store(arrays.normal, true, kPointDefaults, kNormalComponents, draw.normal);
+  for (int u = 0; u < kTextureUnitCount; ++u)
+    if (layout.texCoord[u]) store(arrays.texCoord[u], false, kPointDefaults, kTexCoordComponents, draw.texCoord[u]);
+  if (layout.fogCoord) store(arrays.fogCoord, false, kPointDefaults, 1, draw.fogCoord);
+  if (layout.secondaryColor)
+    store(arrays.secondaryColor, true, kColorDefaults, kSecondaryColorComponents, draw.secondaryColor);
+  if (layout.edgeFlag)
+    for (int i = 0; i < count; ++i)
+      draw.edgeFlag.push_back(*elementAddress(arrays.edgeFlag, indices ? indices[i] : first + i) != 0 ? 1 : 0);
+}
+
 // Client arrays over a compiled draw's packed values: each attribute tightly packed, GL_FLOAT
 // components (the edge flags as bytes), so that readElement gives back exactly the stored values
 // and the batched path can replay them. Attributes the layout does not read stay disabled.
@@ -211,10 +251,14 @@ void drawArrayElements(Context& ctx, GLenum mode, const int* indices, int first,
     draw->layout = layout;
     draw->count = count;
     reserveElements(*draw);
-    ArrayElementValues values;
-    for (int i = 0; i < count; ++i) {
-      readElement(ctx.arrays, layout, indices ? indices[i] : first + i, values);
-      storeElement(values, *draw);
+    if (fastPathsEnabled()) {
+      storeElements(ctx.arrays, indices, first, count, *draw);
+    } else {
+      ArrayElementValues values;
+      for (int i = 0; i < count; ++i) {
+        readElement(ctx.arrays, layout, indices ? indices[i] : first + i, values);
+        storeElement(values, *draw);
+      }
     }
     std::shared_ptr<const CompiledArrayDraw> compiled = std::move(draw);
     compileOrExecuteOn(ctx, [compiled](Context& c) { replayCompiledDraw(c, *compiled); });
