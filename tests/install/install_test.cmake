@@ -3,7 +3,7 @@
 #   1. cc program.c $(pkg-config --cflags --libs glass), with PKG_CONFIG_PATH into the prefix; its
 #      <GL/gl.h>, <GL/glu.h> and <glass/context.h> must come from the prefix;
 #   2. a CMake project with find_package(glass) linking glass::gl (consumer/);
-# and runs the installed glass command with an empty environment (3).
+# and runs the installed glass command with an empty environment (3: render and compare).
 # Variables: BUILD_DIR, SOURCE_DIR (tests/install), WORK_DIR (scratch), C_COMPILER, BIN_DIR (the
 # install's bin directory, relative to the prefix), SCENE (a scene to render).
 cmake_minimum_required(VERSION 3.25)
@@ -66,6 +66,10 @@ if(NOT EXISTS ${WORK_DIR}/scene.png)
   message(FATAL_ERROR "the installed glass command wrote no picture")
 endif()
 message(STATUS "installed glass command: rendered ${SCENE}")
+# `glass compare` loads the image comparison module installed beside it (lib/glass).
+run("the installed glass compare with an empty environment"
+    env -i ${prefix}/${BIN_DIR}/glass compare ${WORK_DIR}/scene.png ${WORK_DIR}/scene.png --fail-psnr inf)
+expect_output("the installed glass compare of a picture with itself" "identical")
 
 # 4. Textbook-style programs (textbook/*.c) that name features by their extensions and use depth
 #    textures, shadow comparison and the imaging subset, built unchanged with pkg-config and run;

@@ -1,10 +1,14 @@
 // `glass compare`: how far one picture is from another, through the image comparison library
-// (tools/imagecompare, OpenImageIO).
+// (tools/imagecompare, OpenImageIO), which this command loads as a module (compare_module.cpp)
+// from GLASS_COMPARE_MODULE_PATH beside the program: the other commands start without it.
 #include "command_registry.h"
 
-#include <glass/image_compare.h>
+#include <dlfcn.h>
+#include <unistd.h>
 
+#include <climits>
 #include <iostream>
+#include <string>
 
 namespace glass::cli {
 
@@ -31,18 +35,34 @@ examples:
   glass compare glass.png mesa.png --fail-psnr 40 --fail-percent 0.5 --diff diff.png
 )";
 
+// The module's place: GLASS_COMPARE_MODULE_PATH from the directory of this program.
+std::string modulePath() {
+  char self[PATH_MAX];
+  const ssize_t length = readlink("/proc/self/exe", self, sizeof self - 1);
+  if (length <= 0) return GLASS_COMPARE_MODULE_PATH;
+  const std::string program(self, static_cast<size_t>(length));
+  return program.substr(0, program.find_last_of('/') + 1) + GLASS_COMPARE_MODULE_PATH;
+}
+
 int runCompare(const std::vector<std::string> &args) {
   if (wantsHelp(args)) {
     std::cout << kHelp;
     return kExitOk;
   }
-  std::string error;
-  std::optional<ImageCompareRequest> request = parseImageCompareArguments(args, error);
-  if (!request) {
-    std::cerr << "glass compare: " << error << "\n(see glass compare --help)\n";
+  const std::string path = modulePath();
+  void *module = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
+  using Run = int (*)(int, const char *const *);
+  const auto run = module ? reinterpret_cast<Run>(dlsym(module, "glassCompareRun")) : nullptr;
+  if (run == nullptr) {
+    const char *reason = dlerror();  // names the file
+    std::cerr << "glass compare: cannot load the image comparison module: "
+              << (reason ? reason : path + " has no glassCompareRun") << "\n";
     return kExitUsage;
   }
-  return runImageCompare(*request, std::cout, std::cerr);
+  std::vector<const char *> argv;
+  for (const std::string &arg : args) argv.push_back(arg.c_str());
+  // The module prints to the same std::cout and std::cerr (one C++ runtime in the process).
+  return run(static_cast<int>(argv.size()), argv.data());
 }
 
 const bool registered = registerCommand({"compare", "measure how far one picture is from another (PSNR, pixels off)", runCompare});
