@@ -76,8 +76,10 @@ class DrawPipeline {
   const VertexStageSetup& vertexSetup() const { return vertex_; }
   // GLASS_STATS's counts of the frame, or nullptr (teaching/frame_statistics.h).
   FrameStatistics* statistics() const { return statistics_; }
+  // The vertex's outcode (raster::outcode) under this draw's clip settings.
+  unsigned clipCodeOf(const raster::ClipVertex& v) const { return raster::outcode(v, clip_); }
   // The vertex lies outside a frustum plane or an enabled user clip plane.
-  bool needsClipping(const PipelineVertex& v) const { return raster::outcode(v.clip, clip_) != 0; }
+  bool needsClipping(const PipelineVertex& v) const { return codeOf(v.clip, v.clipCode) != 0; }
 
   void drawPoint(const PipelineVertex& v);
   // restartStipple: the segment starts a new line (GL_LINES, the first of a strip).
@@ -88,16 +90,24 @@ class DrawPipeline {
 
  private:
   // A triangle's three vertices where they are, so that a triangle drawn with its vertices'
-  // own colours is not copied (polygon_fill.cpp).
+  // own colours is not copied (polygon_fill.cpp), with their outcodes if known.
   struct ClipCorners {
     const raster::ClipVertex* v[3];
+    unsigned code[3];  // PipelineVertex::clipCode of each
   };
-  static ClipCorners cornersOf(const raster::ClipVertex (&v)[3]) { return {{&v[0], &v[1], &v[2]}}; }
+  static ClipCorners cornersOf(const raster::ClipVertex (&v)[3], const unsigned (&codes)[3]) {
+    return {{&v[0], &v[1], &v[2]}, {codes[0], codes[1], codes[2]}};
+  }
+  // A vertex's outcode: `known` unless it is kClipCodeUnknown.
+  unsigned codeOf(const raster::ClipVertex& v, unsigned known) const {
+    return known != kClipCodeUnknown ? known : raster::outcode(v, clip_);
+  }
   // polygon_fill.cpp
   void fillTriangle(const ClipCorners& corners, bool frontFacing);
   // unfilled_polygon.cpp
-  void drawTriangleEdges(const raster::ClipVertex (&v)[3], unsigned boundaryEdges);
-  void drawTriangleVertices(const raster::ClipVertex (&v)[3], unsigned boundaryEdges);
+  void drawTriangleEdges(const raster::ClipVertex (&v)[3], const unsigned (&codes)[3], unsigned boundaryEdges);
+  void drawTriangleVertices(const raster::ClipVertex (&v)[3], const unsigned (&codes)[3],
+                            unsigned boundaryEdges);
   // The offset of a polygon for a polygon mode whose offset is enabled, else 0.
   double polygonDepthBias(const ClipCorners& corners, bool offsetEnabled);
   // line_stage.cpp, point_stage.cpp: clip, viewport, rasterize.

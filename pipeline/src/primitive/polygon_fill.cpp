@@ -9,9 +9,9 @@ namespace glass::gl {
 
 int DrawPipeline::clipToWindow(const ClipCorners& corners, raster::WindowVertex* out) {
   const raster::ClipVertex* const* v = corners.v;
-  const unsigned o0 = raster::outcode(*v[0], clip_);
-  const unsigned o1 = raster::outcode(*v[1], clip_);
-  const unsigned o2 = raster::outcode(*v[2], clip_);
+  const unsigned o0 = codeOf(*v[0], corners.code[0]);
+  const unsigned o1 = codeOf(*v[1], corners.code[1]);
+  const unsigned o2 = codeOf(*v[2], corners.code[2]);
   if (o0 & o1 & o2) return 0;  // all vertices outside one plane: trivially rejected
 
   if (o0 | o1 | o2) {
@@ -39,8 +39,8 @@ double DrawPipeline::polygonDepthBias(const ClipCorners& corners, bool offsetEna
 void DrawPipeline::fillTriangle(const ClipCorners& corners, bool frontFacing) {
   const int count = clipToWindow(corners, window_);
   if (statistics_) {
-    const unsigned o0 = raster::outcode(*corners.v[0], clip_), o1 = raster::outcode(*corners.v[1], clip_),
-                   o2 = raster::outcode(*corners.v[2], clip_);
+    const unsigned o0 = codeOf(*corners.v[0], corners.code[0]), o1 = codeOf(*corners.v[1], corners.code[1]),
+                   o2 = codeOf(*corners.v[2], corners.code[2]);
     countClipping(o0 | o1 | o2, o0 & o1 & o2, count - 2);
   }
   if (count < 3) return;

@@ -23,7 +23,9 @@ void DrawPipeline::drawTriangle(const PipelineVertex& a, const PipelineVertex& b
   const GLenum mode = front ? r.polygonModeFront : r.polygonModeBack;
   // Filled with the vertices' own colours (smooth shading, front colours): drawn from the
   // vertices where they are.
-  if (mode == GL_FILL && !flat_ && !back) return fillTriangle({{&a.clip, &b.clip, &c.clip}}, front);
+  const unsigned codes[3] = {a.clipCode, b.clipCode, c.clipCode};
+  if (mode == GL_FILL && !flat_ && !back)
+    return fillTriangle({{&a.clip, &b.clip, &c.clip}, {codes[0], codes[1], codes[2]}}, front);
 
   raster::ClipVertex v[3] = {a.clip, b.clip, c.clip};
   if (flat_) {
@@ -36,13 +38,13 @@ void DrawPipeline::drawTriangle(const PipelineVertex& a, const PipelineVertex& b
 
   switch (mode) {
     case GL_LINE:
-      drawTriangleEdges(v, boundaryEdges);
+      drawTriangleEdges(v, codes, boundaryEdges);
       break;
     case GL_POINT:
-      drawTriangleVertices(v, boundaryEdges);
+      drawTriangleVertices(v, codes, boundaryEdges);
       break;
     default:
-      fillTriangle(cornersOf(v), front);
+      fillTriangle(cornersOf(v, codes), front);
       break;
   }
 }

@@ -60,8 +60,9 @@ bool cutByUserPlane(const raster::ClipVertex (&v)[3], int plane, unsigned bounda
 
 }  // namespace
 
-void DrawPipeline::drawTriangleEdges(const raster::ClipVertex (&v)[3], unsigned boundaryEdges) {
-  const double bias = polygonDepthBias(cornersOf(v), ctx_.raster.polygonOffsetLine);
+void DrawPipeline::drawTriangleEdges(const raster::ClipVertex (&v)[3], const unsigned (&codes)[3],
+                                     unsigned boundaryEdges) {
+  const double bias = polygonDepthBias(cornersOf(v, codes), ctx_.raster.polygonOffsetLine);
   for (int i = 0; i < 3; ++i) {
     if (!(boundaryEdges & (1u << i))) continue;
     stippleCounter_ = 0;
@@ -80,8 +81,9 @@ void DrawPipeline::drawTriangleEdges(const raster::ClipVertex (&v)[3], unsigned 
   }
 }
 
-void DrawPipeline::drawTriangleVertices(const raster::ClipVertex (&v)[3], unsigned boundaryEdges) {
-  const double bias = polygonDepthBias(cornersOf(v), ctx_.raster.polygonOffsetPoint);
+void DrawPipeline::drawTriangleVertices(const raster::ClipVertex (&v)[3], const unsigned (&codes)[3],
+                                        unsigned boundaryEdges) {
+  const double bias = polygonDepthBias(cornersOf(v, codes), ctx_.raster.polygonOffsetPoint);
   for (int i = 0; i < 3; ++i) {
     if (boundaryEdges & (1u << i)) rasterizeVertexPoint(v[i], bias);
   }

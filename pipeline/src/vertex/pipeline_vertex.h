@@ -6,8 +6,15 @@
 
 namespace glass::gl {
 
+// PipelineVertex::clipCode when the vertex's outcode has not been computed.
+inline constexpr unsigned kClipCodeUnknown = ~0u;
+
 struct PipelineVertex {
   raster::ClipVertex clip;
+  // raster::outcode of `clip` under the draw's clip settings, computed once per vertex by the
+  // batched vertex path (DrawPipeline::clipCodeOf) for the primitives that share the vertex; or
+  // kClipCodeUnknown, and the primitive stages compute it.
+  unsigned clipCode = kClipCodeUnknown;
   // With two-sided lighting, the colours for back-facing primitives: the primitive stage copies
   // them over the front colours once it knows the facing (spec 2.13.1).
   float backColor[4];

@@ -215,6 +215,7 @@ void processBatch(const Context& ctx, bool colorPerVertex, const VertexStageSetu
       const float* plane = s.clipPlanes[p];
       v.userClipDistance[p] = plane[0] * eye[0] + plane[1] * eye[1] + plane[2] * eye[2] + plane[3] * eye[3];
     }
+    out.clipCode = ctx.draw->clipCodeOf(v);
   }
 }
 

@@ -74,6 +74,7 @@ void processVertex(const Context& ctx, const VertexStageSetup& s, const float ob
                    PipelineVertex& out) {
   raster::ClipVertex& v = out.clip;
   transformVector4(s.modelviewProjection, object, v.clip);
+  out.clipCode = kClipCodeUnknown;  // `out` may be a slot an earlier vertex used
   out.edgeFlag = ctx.current.edgeFlag;
 
   float eye[4] = {0.0f, 0.0f, 0.0f, 1.0f};
