@@ -77,10 +77,16 @@ ArrayElementLayout currentElementLayout(const ArrayState& arrays) {
   return layout;
 }
 
+namespace {
+
+// The components an array without them gives (spec 2.8): as the immediate commands' defaults.
+constexpr float kPointDefaults[4] = {0.0f, 0.0f, 0.0f, 1.0f};
+constexpr float kColorDefaults[4] = {0.0f, 0.0f, 0.0f, 1.0f};
+
+}  // namespace
+
 void readElement(const ArrayState& arrays, const ArrayElementLayout& layout, int index,
                  ArrayElementValues& out) {
-  static constexpr float kPointDefaults[4] = {0.0f, 0.0f, 0.0f, 1.0f};
-  static constexpr float kColorDefaults[4] = {0.0f, 0.0f, 0.0f, 1.0f};
   if (layout.edgeFlag) out.edgeFlag = *elementAddress(arrays.edgeFlag, index) != 0;
   for (int u = 0; u < kTextureUnitCount; ++u) {
     if (layout.texCoord[u])
@@ -168,9 +174,7 @@ void storeElement(const ArrayElementValues& e, CompiledArrayDraw& draw) {
 // the type and size of each array looked at once per batch rather than once per component).
 void storeElements(const ArrayState& arrays, const int* indices, int first, int count,
                    CompiledArrayDraw& draw) {
-  constexpr int kBatch = 64;
-  static constexpr float kPointDefaults[4] = {0.0f, 0.0f, 0.0f, 1.0f};
-  static constexpr float kColorDefaults[4] = {0.0f, 0.0f, 0.0f, 1.0f};
+  constexpr int kBatch = kVertexBatch;
   const auto store = [&](const ClientArray& array, bool normalized, const float* defaults, int components,
                          std::vector<float>& to) {
     float rows[4][kBatch];
