@@ -214,7 +214,9 @@ void emitBlockFragments(const TriangleSetup& setup, const CoveredBlock& block, F
   const double columnX0 = bx + 0.5, rowY0 = by + 0.5;  // centres of column/row 0
   const AttributePlanes& planes = setup.planes;
   const int varyingCount = setup.varyingCount;
-  // q = 1/w (or 1), and p = varying / w, per column and row as above; a varying is p / q.
+  // q = 1/w (or 1), and p = varying / w, per column and row as above; a varying is p times
+  // the reciprocal of q (one division a pixel, not one a varying: both exact IEEE operations in
+  // double, rounded to float once at the end).
   double qColumn[kBlockSize], qRow[kBlockSize];
   double pColumn[kBlockSize][kMaxVaryings], pRow[kBlockSize][kMaxVaryings];
   unsigned columns = 0;  // the columns with a pixel in some row
@@ -238,9 +240,9 @@ void emitBlockFragments(const TriangleSetup& setup, const CoveredBlock& block, F
       fragment.x = bx + i;
       fragment.y = by + j;
       fragment.depth = block.depth[j][i];
-      const double q = qColumn[i] + qRow[j];
+      const double inverseQ = 1.0 / (qColumn[i] + qRow[j]);
       for (int k = 0; k < varyingCount; ++k)
-        fragment.varyings[k] = static_cast<float>((pColumn[i][k] + pRow[j][k]) / q);
+        fragment.varyings[k] = static_cast<float>((pColumn[i][k] + pRow[j][k]) * inverseQ);
     }
   }
 

@@ -12,12 +12,12 @@
 //             pixel once, so testing all of them first and then shading the ones that passed
 //             gives what testing and shading one fragment after another gives.
 //   varyings  the reference path (emitBlockFragments, rasterizer/src/triangle_rasterize.cpp)
-//             computes float((p_column + p_row) / (q_column + q_row)) with p_column = a0 + dx x,
-//             p_row = dy y, q_column = invW0 + invWdx x, q_row = invWdy y at the pixel centre;
-//             BlockVaryings does exactly that, for the slots the key needs only, a row of
-//             columns per vector operation. When the 1/w plane is the constant 1 (an
-//             orthographic view), q is exactly 1.0 and dividing by it changes no bit, so the
-//             division is skipped.
+//             computes float((p_column + p_row) * (1 / (q_column + q_row))) with p_column =
+//             a0 + dx x, p_row = dy y, q_column = invW0 + invWdx x, q_row = invWdy y at the
+//             pixel centre; BlockVaryings does exactly that, for the slots the key needs only, a
+//             row of columns per vector operation, the reciprocal once per row for all slots.
+//             When the 1/w plane is the constant 1 (an orthographic view), q is exactly 1.0,
+//             and so is its reciprocal, which is then not computed.
 //   colour    the same functions as the reference path on the same floats: texture_hooks.h's
 //             lookup (through Sampler2D, which gives sampleTexture's bits) and environment, then
 //             floatToColorByte (here on a row of pixels at a time) and one store, or the
@@ -97,12 +97,18 @@ class BlockVaryings {
     const RowDoubles d;
     const hn::Rebind<float, RowDoubles> f;
     const double y = rowY0_ + j;
+    const int lanes = static_cast<int>(hn::Lanes(d));
+    // 1 / q, or exactly 1 when q is (the products below then change no bit).
+    alignas(64) double inverseQ[kSize];
     const auto qRow = hn::Set(d, planes_.invWdy * y);
+    for (int i = 0; i < kSize; i += lanes) {
+      const auto one = hn::Set(d, 1.0);
+      hn::Store(unitQ_ ? one : hn::Div(one, hn::Add(hn::Load(d, &qColumn_[i]), qRow)), d, &inverseQ[i]);
+    }
     for (int n = 0; n < kCount; ++n) {
       const auto pRow = hn::Set(d, planes_.dy[slots[n]] * y);
-      for (int i = 0; i < kSize; i += static_cast<int>(hn::Lanes(d))) {
-        auto value = hn::Add(hn::Load(d, &pColumn_[n][i]), pRow);
-        if (!unitQ_) value = hn::Div(value, hn::Add(hn::Load(d, &qColumn_[i]), qRow));
+      for (int i = 0; i < kSize; i += lanes) {
+        const auto value = hn::Mul(hn::Add(hn::Load(d, &pColumn_[n][i]), pRow), hn::Load(d, &inverseQ[i]));
         hn::Store(hn::DemoteTo(f, value), f, &values_[n][i]);
       }
     }
