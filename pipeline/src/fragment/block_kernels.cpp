@@ -100,11 +100,9 @@ class BlockVaryings {
     const int lanes = static_cast<int>(hn::Lanes(d));
     // 1 / q, or exactly 1 when q is (the products below then change no bit).
     alignas(64) double inverseQ[kSize];
-    const auto qRow = hn::Set(d, planes_.invWdy * y);
-    for (int i = 0; i < kSize; i += lanes) {
-      const auto one = hn::Set(d, 1.0);
+    const auto qRow = hn::Set(d, planes_.invWdy * y), one = hn::Set(d, 1.0);
+    for (int i = 0; i < kSize; i += lanes)
       hn::Store(unitQ_ ? one : hn::Div(one, hn::Add(hn::Load(d, &qColumn_[i]), qRow)), d, &inverseQ[i]);
-    }
     for (int n = 0; n < kCount; ++n) {
       const auto pRow = hn::Set(d, planes_.dy[slots[n]] * y);
       for (int i = 0; i < kSize; i += lanes) {
