@@ -22,7 +22,6 @@
 // set. The counter runs over fragments outside the bounds too: the scissor does not move it.
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 
 #include "glass/raster/depth_value.h"
 #include "glass/raster/line.h"
@@ -30,6 +29,7 @@
 #include "line_quad.h"
 #include "line_section.h"
 #include "line_quad_walk.h"
+#include "line_run_interpolation.h"
 #include "subpixel.h"
 
 namespace glass::raster {
@@ -37,88 +37,51 @@ namespace {
 
 // Runs (line_run.h) in batches, with their attributes. Every fragment of a run (one column of an
 // x-major line, one row of a y-major one) has the same t and so the same depth and varyings: they
-// are computed once per run.
+// are computed once per run, for a whole batch at a time when it is handed on, the runs as lanes
+// of vectors (line_run_interpolation.h).
 class LineRunWriter {
  public:
   LineRunWriter(const WindowVertex& a, const WindowVertex& b, const LineSettings& settings,
                 bool xMajor, FragmentSink& sink)
-      : a_(a), b_(b), settings_(settings), sink_(sink), xMajor_(xMajor) {
-    varyingCount_ = std::clamp(settings.varyingCount, 0, kMaxVaryings);
-    start_ = xMajor ? a.x : a.y;
-    length_ = (xMajor ? double(b.x) : double(b.y)) - start_;
-    qa_ = settings.perspectiveCorrect ? double(a.invW) : 1.0;
-    qb_ = settings.perspectiveCorrect ? double(b.invW) : 1.0;
-    // The ends' varyings as doubles, once per segment, in whole groups of four (zeros after the
-    // last), so that each run's interpolation is a loop of fixed length the compiler vectorizes.
-    lanes_ = (varyingCount_ + kGroup - 1) / kGroup * kGroup;
-    for (int k = 0; k < lanes_; ++k) {
-      varyingsA_[k] = k < varyingCount_ ? double(a.varyings[k]) : 0.0;
-      varyingsB_[k] = k < varyingCount_ ? double(b.varyings[k]) : 0.0;
-    }
+      : sink_(sink), xMajor_(xMajor) {
+    batch_.varyingCount = std::clamp(settings.varyingCount, 0, kMaxVaryings);
+    batch_.alongX = !xMajor;
+    ends_.start = xMajor ? a.x : a.y;
+    ends_.length = (xMajor ? double(b.x) : double(b.y)) - ends_.start;
+    ends_.qa = settings.perspectiveCorrect ? double(a.invW) : 1.0;
+    ends_.qb = settings.perspectiveCorrect ? double(b.invW) : 1.0;
+    ends_.za = a.z;
+    ends_.zb = b.z;
+    ends_.depthBias = settings.depthBias;
+    ends_.varyingsA = a.varyings;
+    ends_.varyingsB = b.varyings;
   }
   ~LineRunWriter() { flush(); }
 
   // The run at major coordinate `major`, minor coordinates minorFirst to minorLast; it must lie
   // within settings.bounds (the walk is clipped to them).
   void emit(int major, int minorFirst, int minorLast) {
-    LineRun& run = runs_[count_++];
-    run.first.x = xMajor_ ? major : minorFirst;
-    run.first.y = xMajor_ ? minorFirst : major;
-    run.length = minorLast - minorFirst + 1;
-    interpolate(major, run.first);
-    if (count_ == LineRunBatch::kMaxRuns) flush();
+    const int r = batch_.count++;
+    majors_[r] = major;
+    batch_.x[r] = xMajor_ ? major : minorFirst;
+    batch_.y[r] = xMajor_ ? minorFirst : major;
+    batch_.length[r] = minorLast - minorFirst + 1;
+    if (batch_.count == LineRunBatch::kMaxRuns) flush();
   }
 
   void flush() {
-    if (count_ == 0) return;
-    LineRunBatch batch;
-    batch.runs = runs_;
-    batch.count = count_;
-    batch.varyingCount = varyingCount_;
-    batch.alongX = !xMajor_;
-    sink_.processLineRuns(batch);
-    count_ = 0;
+    if (batch_.count == 0) return;
+    interpolateLineRuns(ends_, majors_, batch_);
+    sink_.processLineRuns(batch_);
+    batch_.count = 0;
   }
 
  private:
-  // The depth and varyings at the centre of the runs at major coordinate `major`.
-  void interpolate(int major, Fragment& f) const {
-    const double centre = major + 0.5;
-    double t = (centre - start_) / length_;
-    // The weights of the two ends, (1 - t) q_a / q and t q_b / q, sum to one.
-    double wa = (1.0 - t) * qa_, wb = t * qb_, q = wa + wb;
-    if (!(q > 0.0)) {
-      t = std::clamp(t, 0.0, 1.0);
-      wa = (1.0 - t) * qa_, wb = t * qb_, q = wa + wb;
-    }
-    f.depth = depthValue((1.0 - t) * a_.z + t * b_.z + settings_.depthBias);
-    // Without perspective (q_a = q_b = 1) q is (1 - t) + t, which is exactly 1 for almost every
-    // t; w / 1 is w exactly (IEEE 754 division is correctly rounded), so the divisions are skipped
-    // only where they cannot change a bit.
-    const bool unit = q == 1.0;
-    const double weightA = unit ? wa : wa / q, weightB = unit ? wb : wb / q;
-    for (int group = 0; group < lanes_; group += kGroup) {
-      float values[kGroup];
-      for (int k = 0; k < kGroup; ++k)
-        values[k] = static_cast<float>(weightA * varyingsA_[group + k] + weightB * varyingsB_[group + k]);
-      std::memcpy(f.varyings + group, values, sizeof values);
-    }
-  }
-
-  static constexpr int kGroup = 4;
-  static_assert(kMaxVaryings % kGroup == 0);
-
-  const WindowVertex& a_;
-  const WindowVertex& b_;
-  const LineSettings& settings_;
   FragmentSink& sink_;
   bool xMajor_;
-  int varyingCount_;
-  double start_, length_, qa_, qb_;
-  int lanes_;  // varyingCount_ rounded up to whole groups
-  double varyingsA_[kMaxVaryings], varyingsB_[kMaxVaryings];
-  LineRun runs_[LineRunBatch::kMaxRuns];
-  int count_ = 0;
+  LineRunEnds ends_;
+  int majors_[LineRunBatch::kMaxRuns] = {};  // those past the batch's count are read too
+  LineRunBatch batch_;
 };
 
 // Draws the segment's fragments inside settings.bounds. The stipple counter starts at

@@ -2,8 +2,6 @@
 // fragments, all with the run's depth and varyings.
 #include "glass/raster/line_run.h"
 
-#include <algorithm>
-
 namespace glass::raster {
 
 void emitLineRunFragments(const LineRunBatch& batch, FragmentSink& sink) {
@@ -20,13 +18,12 @@ void emitLineRunFragments(const LineRunBatch& batch, FragmentSink& sink) {
     count = 0;
   };
   for (int r = 0; r < batch.count; ++r) {
-    const LineRun& run = batch.runs[r];
-    for (int i = 0; i < run.length; ++i) {
+    for (int i = 0; i < batch.length[r]; ++i) {
       Fragment& f = fragments[count++];
-      f.x = run.first.x + (batch.alongX ? i : 0);
-      f.y = run.first.y + (batch.alongX ? 0 : i);
-      f.depth = run.first.depth;
-      std::copy(run.first.varyings, run.first.varyings + batch.varyingCount, f.varyings);
+      f.x = batch.x[r] + (batch.alongX ? i : 0);
+      f.y = batch.y[r] + (batch.alongX ? 0 : i);
+      f.depth = batch.depth[r];
+      for (int k = 0; k < batch.varyingCount; ++k) f.varyings[k] = batch.varyings[k][r];
       if (count == kBatchSize) flush();
     }
   }

@@ -1,6 +1,7 @@
-// packColorFloats (fragment/color_conversion.h) converts four components on the lanes of one
-// vector; it must give floatToColorByte's bytes, packed as packColorBytes packs them, for every
-// float: the line kernels use it in place of the reference path's four scalar conversions.
+// packColorColumns (fragment/color_conversion.h) converts four colours at a time on the lanes of
+// vectors; it must give floatToColorByte's bytes, packed as packColorBytes packs them, for every
+// float in every lane and in the colours after the last whole four: the line kernels use it in
+// place of the reference path's four scalar conversions per fragment.
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -13,7 +14,7 @@
 
 using glass::gl::floatToColorByte;
 using glass::gl::packColorBytes;
-using glass::gl::packColorFloats;
+using glass::gl::packColorColumns;
 
 namespace {
 
@@ -24,7 +25,7 @@ uint32_t packedOneByOne(const float c[4]) {
 
 }  // namespace
 
-TEST_CASE("packColorFloats gives floatToColorByte's bytes on every lane") {
+TEST_CASE("packColorColumns gives floatToColorByte's bytes on every lane") {
   std::vector<float> values = {0.0f, -0.0f, 1.0f, -1.0f, 0.3f, 0.9f, 2.0f, 1e-30f, -1e-30f,
                                std::numeric_limits<float>::denorm_min(),
                                std::numeric_limits<float>::infinity(),
@@ -43,11 +44,25 @@ TEST_CASE("packColorFloats gives floatToColorByte's bytes on every lane") {
   std::uniform_real_distribution<float> around(-0.25f, 1.25f);
   for (int i = 0; i < 20000; ++i) values.push_back(around(random));
 
-  // Each value in each lane, beside the values before it.
-  for (size_t i = 0; i < values.size(); ++i) {
-    const float c[4] = {values[i], values[(i + 1) % values.size()], values[(i + 2) % values.size()],
-                        values[(i + 3) % values.size()]};
-    CAPTURE(values[i]);
-    REQUIRE(packColorFloats(c) == packedOneByOne(c));
+  // Columns of 0 to 9 colours (two whole vectors and a rest of one to three), the values taken in
+  // turn so that each lands in every component and every position.
+  const size_t n = values.size();
+  size_t next = 0;
+  for (int round = 0; next < 8 * n; ++round) {
+    const int count = round % 10;
+    float columns[4][9];
+    for (int i = 0; i < count; ++i)
+      for (int c = 0; c < 4; ++c) columns[c][i] = values[next++ % n];
+    const float* const component[4] = {columns[0], columns[1], columns[2], columns[3]};
+    uint32_t words[9];
+    packColorColumns(component, count, words);
+    for (int i = 0; i < count; ++i) {
+      const float c[4] = {columns[0][i], columns[1][i], columns[2][i], columns[3][i]};
+      CAPTURE(c[0]);
+      CAPTURE(c[1]);
+      CAPTURE(c[2]);
+      CAPTURE(c[3]);
+      REQUIRE(words[i] == packedOneByOne(c));
+    }
   }
 }

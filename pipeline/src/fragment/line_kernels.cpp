@@ -5,8 +5,8 @@
 //   colour    the reference path's colour is the fragment's varyings 0-3, untouched by the
 //             stages that are off, converted by floatToColorByte and stored as one word
 //             (packColorBytes). Every fragment of a run has the same varyings, so the kernel
-//             converts them once per run into the same word (packColorFloats: the same
-//             conversion on four lanes).
+//             converts them once per run into the same word, the batch's runs four at a time
+//             (packColorColumns: the same conversion on the lanes of vectors).
 //   depth     the reference path's own function, testStencilAndDepth (without a stencil
 //             buffer), on each fragment in the same order, so a fragment that lands on a pixel an
 //             earlier fragment of the batch wrote is tested against that write, as there.
@@ -29,18 +29,21 @@ void shadeLineRuns(raster::Framebuffer& framebuffer, const StencilDepthSettings&
   const size_t width = static_cast<size_t>(framebuffer.width());
   // From one fragment of a run to the next: one pixel to the right, or one row up.
   const size_t step = batch.alongX ? 1 : width;
+  uint32_t words[raster::LineRunBatch::kMaxRuns];
+  if constexpr (writeColor) {
+    const float* const components[4] = {batch.varyings[0], batch.varyings[1], batch.varyings[2],
+                                        batch.varyings[3]};
+    packColorColumns(components, batch.count, words);
+  }
   for (int r = 0; r < batch.count; ++r) {
-    const raster::LineRun& run = batch.runs[r];
-    const raster::Fragment& fragment = run.first;
-    const uint32_t word = writeColor ? packColorFloats(fragment.varyings) : 0;
-    size_t index = static_cast<size_t>(fragment.y) * width + static_cast<size_t>(fragment.x);
-    for (int i = 0; i < run.length; ++i, index += step) {
+    size_t index = static_cast<size_t>(batch.y[r]) * width + static_cast<size_t>(batch.x[r]);
+    for (int i = 0; i < batch.length[r]; ++i, index += step) {
       if constexpr (depthTest) {
-        if (testStencilAndDepth(tests, nullptr, depths + index, fragment.depth) !=
+        if (testStencilAndDepth(tests, nullptr, depths + index, batch.depth[r]) !=
             StencilDepthOutcome::Passed)
           continue;
       }
-      if constexpr (writeColor) std::memcpy(colors + 4 * index, &word, 4);
+      if constexpr (writeColor) std::memcpy(colors + 4 * index, &words[r], 4);
     }
   }
 }
