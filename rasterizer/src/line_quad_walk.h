@@ -62,6 +62,35 @@ enum class RunCount { None, ThroughClip, All };
 // RunCount::None a segment drawn tile by tile is walked once in all. Starting later changes no
 // pixel: each bound is floor(n_k / d) for the exact integer n_k of its run k, computed directly at
 // the first run and kept exact by SteppedFloorDivision from there on.
+namespace line_quad_detail {
+// Narrows the runs [low, high] (major coordinates) to those where the quad reaches the clip's
+// minor range. A long side with Q > 0 bounds a run's pixels from below, so it must hold at the
+// clip's highest minor coordinate, and one with Q < 0 at the lowest. Edge i at run k and minor
+// coordinate m is 256 P k + 256 Q m + C >= 0, so the runs where it holds at m are k >= ceil(r /
+// 256 P) for P > 0 and k <= floor(-r / -256 P) for P < 0, with r = -C - 256 Q m: exact integers,
+// so exactly the runs whose pixels the clip would all remove are dropped. Done only where the
+// quad's corners reach beyond the minor range (a segment crossing a tile's lower or upper side,
+// for an x-major one), and for clip bounds within 2^20 pixels of the origin, where no product
+// overflows.
+inline void narrowToMinorClip(const int64_t P[4], const int64_t Q[4], const int64_t C[4],
+                              const int64_t minorCoord[4], const LineQuadClip& clip, int64_t& low,
+                              int64_t& high) {
+  constexpr int64_t kNear = int64_t{1} << 20;
+  if (clip.minorLow < -kNear || clip.minorHigh > kNear) return;
+  const int64_t lowest = *std::min_element(minorCoord, minorCoord + 4);
+  const int64_t highest = *std::max_element(minorCoord, minorCoord + 4);
+  if (lowest >= 256 * clip.minorLow && highest < 256 * (clip.minorHigh + 1)) return;
+  for (int i = 0; i < 4; ++i) {
+    if (Q[i] == 0) continue;
+    const int64_t m = Q[i] > 0 ? clip.minorHigh : clip.minorLow;
+    const int64_t r = -C[i] - 256 * Q[i] * m, p = 256 * P[i];
+    if (p > 0) low = std::max(low, ceilDiv(r, p));
+    else if (p < 0) high = std::min(high, floorDiv(-r, -p));
+    else if (r > 0) high = low - 1;  // holds at no run
+  }
+}
+}  // namespace line_quad_detail
+
 template <class Visit>
 int64_t walkLineQuad(const LineQuad& quad, bool increasing, const LineQuadClip& clip,
                      RunCount count, Visit&& visit) {
@@ -108,8 +137,9 @@ int64_t walkLineQuad(const LineQuad& quad, bool increasing, const LineQuadClip& 
   // The runs to walk, as positions n = 0 .. runs - 1 in order of travel: the clipped ones, from
   // the segment's start when runs before them are counted, to its end when all are counted.
   const int64_t runs = highMajor - lowMajor + 1;
-  const int64_t clipLow = std::max(lowMajor, clip.majorLow);
-  const int64_t clipHigh = std::min(highMajor, clip.majorHigh);
+  int64_t clipLow = std::max(lowMajor, clip.majorLow);
+  int64_t clipHigh = std::min(highMajor, clip.majorHigh);
+  if (count == RunCount::None) narrowToMinorClip(P, Q, C, quad.xMajor ? Y : X, clip, clipLow, clipHigh);
   int64_t firstN = 0, lastN = runs - 1;  // RunCount::All
   if (count != RunCount::All) {
     if (clipLow > clipHigh) {
