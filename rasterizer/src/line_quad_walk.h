@@ -170,6 +170,11 @@ int64_t walkLineQuad(const LineQuad& quad, bool increasing, const LineQuadClip& 
       upper.start(rest, -256 * Q[i], restStep);
     }
   }
+  // The clip's bounds in locals, which the visits' stores cannot change; without counting, every
+  // run walked lies inside the major range.
+  const int64_t majorLow = clip.majorLow, majorHigh = clip.majorHigh;
+  const int64_t minorLow = clip.minorLow, minorHigh = clip.minorHigh;
+  const bool walksOutside = count != RunCount::None;
   int64_t counted = 0;
   for (int64_t n = firstN, k = firstK; n <= lastN; ++n, k += dk) {
     const int64_t lo = lower.quotient, hi = upper.quotient;
@@ -177,9 +182,11 @@ int64_t walkLineQuad(const LineQuad& quad, bool increasing, const LineQuadClip& 
     upper.advance();
     if (lo > hi) continue;
     const int64_t run = counted;
-    if (count != RunCount::None) ++counted;
-    if (k < clip.majorLow || k > clip.majorHigh) continue;
-    const int64_t first = std::max(lo, clip.minorLow), last = std::min(hi, clip.minorHigh);
+    if (walksOutside) {
+      ++counted;
+      if (k < majorLow || k > majorHigh) continue;
+    }
+    const int64_t first = std::max(lo, minorLow), last = std::min(hi, minorHigh);
     if (first <= last)
       visit(static_cast<int>(k), static_cast<int>(first), static_cast<int>(last), run);
   }
