@@ -45,6 +45,7 @@
 #include "fragment/blending.h"
 #include "fragment/stencil_depth_tests.h"
 #include "fragment/color_conversion.h"
+#include "fragment/color_packing-inl.h"
 #include "fragment/fog_hooks.h"
 #include "fragment/fog_state.h"
 #include "glass/raster/triangle.h"
@@ -131,26 +132,8 @@ class BlockVaryings {
 void packRowColors(const float* red, const float* green, const float* blue, const float* alpha,
                    uint32_t words[kSize]) {
   const RowFloats f;
-  const hn::RebindToUnsigned<RowFloats> u;
-  auto toByte = [&](const float* channel, int i) {
-    const auto c = hn::Load(f, channel + i);
-    // Multiply, then add: two roundings, as in floatToColorByte (no fused multiply-add).
-    const auto sum = hn::Add(hn::Mul(c, hn::Set(f, 255.0f / 256.0f)), hn::Set(f, 32768.0f));
-    const auto inRange = hn::And(hn::BitCast(u, sum), hn::Set(u, 0xFFu));
-    const auto belowOne = hn::IfThenElse(hn::RebindMask(u, hn::Ge(c, hn::Set(f, 1.0f))),
-                                         hn::Set(u, 255u), inRange);
-    return hn::IfThenElseZero(hn::RebindMask(u, hn::Gt(c, hn::Zero(f))), belowOne);  // 0 for NaN
-  };
-  for (int i = 0; i < kSize; i += static_cast<int>(hn::Lanes(f))) {
-    const auto r = toByte(red, i), g = toByte(green, i), b = toByte(blue, i), a = toByte(alpha, i);
-    if constexpr (std::endian::native == std::endian::little) {
-      hn::Store(hn::Or(hn::Or(r, hn::ShiftLeft<8>(g)), hn::Or(hn::ShiftLeft<16>(b), hn::ShiftLeft<24>(a))),
-                u, words + i);
-    } else {
-      hn::Store(hn::Or(hn::Or(hn::ShiftLeft<24>(r), hn::ShiftLeft<16>(g)), hn::Or(hn::ShiftLeft<8>(b), a)),
-                u, words + i);
-    }
-  }
+  for (int i = 0; i < kSize; i += static_cast<int>(hn::Lanes(f)))
+    color_packing::packColorVector(f, red + i, green + i, blue + i, alpha + i, words + i);
 }
 
 // quotient[i] = numerator[i] / denominator[i] for the eight columns of a row, in float (the

@@ -37,36 +37,4 @@ inline uint32_t packColorBytes(uint8_t r, uint8_t g, uint8_t b, uint8_t a) {
   }
 }
 
-// words[i] = packColorBytes(floatToColorByte(red[i]), ..., floatToColorByte(alpha[i])) for i <
-// count, for colours held as one array per component (component[0] red to component[3] alpha),
-// such as a batch of line runs' (fragment/line_kernels.cpp). Four colours at a time are the
-// lanes of vectors (GCC and Clang vector extensions), each lane doing exactly floatToColorByte's
-// operations, so the bytes are the same on any target; the last count % 4 one by one.
-inline void packColorColumns(const float* const component[4], int count, uint32_t* words) {
-  using FloatLanes = float __attribute__((vector_size(16)));
-  using IntLanes = int32_t __attribute__((vector_size(16)));
-  constexpr int kLanes = 4;
-  int i = 0;
-  for (; i + kLanes <= count; i += kLanes) {
-    IntLanes packed = {0, 0, 0, 0};
-    for (int c = 0; c < 4; ++c) {
-      FloatLanes value;
-      std::memcpy(&value, component[c] + i, sizeof value);
-      const FloatLanes sum = value * (255.0f / 256.0f) + 32768.0f;
-      IntLanes inRange;
-      std::memcpy(&inRange, &sum, sizeof inRange);
-      inRange &= 0xFF;
-      const IntLanes belowOne = value >= 1.0f ? IntLanes{255, 255, 255, 255} : inRange;
-      const IntLanes bytes = value > 0.0f ? belowOne : IntLanes{0, 0, 0, 0};  // 0 also for NaN
-      // The colour buffer's order, r, g, b, a in memory, as packColorBytes's word holds it.
-      const int shift = std::endian::native == std::endian::little ? 8 * c : 24 - 8 * c;
-      packed |= bytes << shift;
-    }
-    std::memcpy(words + i, &packed, sizeof packed);
-  }
-  for (; i < count; ++i)
-    words[i] = packColorBytes(floatToColorByte(component[0][i]), floatToColorByte(component[1][i]),
-                              floatToColorByte(component[2][i]), floatToColorByte(component[3][i]));
-}
-
 }  // namespace glass::gl

@@ -9,6 +9,9 @@
 // writes the same bytes.
 #pragma once
 
+#include <cstdint>
+
+#include "core/simd_dispatch.h"
 #include "fragment/stencil_depth_tests.h"
 #include "glass/raster/framebuffer.h"
 #include "glass/raster/line_run.h"
@@ -29,7 +32,13 @@ struct LineKernelKey {
 using LineKernel = void (*)(raster::Framebuffer& framebuffer, const StencilDepthSettings& tests,
                             const raster::LineRunBatch& batch);
 
-// The kernel compiled for the key.
+// The kernel compiled for the key, in the copy of the chosen SIMD target.
 LineKernel lineKernelFor(const LineKernelKey& key);
+
+// The kernels' conversion of colours held as one array per component (component[0] red to
+// component[3] alpha): words[i] = packColorBytes(floatToColorByte(red[i]), ...,
+// floatToColorByte(alpha[i])) for i < count, in the copy compiled for `target` (tests; the
+// target must run here).
+void packColorColumnsWith(SimdTarget target, const float* const component[4], int count, uint32_t* words);
 
 }  // namespace glass::gl
