@@ -23,7 +23,7 @@
 #include <cstring>
 
 #include "block_rows.h"
-#include "glass/raster/depth_value.h"
+#include "depth_value-inl.h"
 #include "glass/raster/simd_target.h"
 
 HWY_BEFORE_NAMESPACE();
@@ -54,18 +54,10 @@ unsigned rowCoverage(const BlockRows& rows, const int64_t rowStart[3]) {
 // Row j's depths, all eight columns, into z.
 void rowDepths(const BlockRows& rows, int j, uint32_t z[kSize]) {
   const hn::CappedTag<double, kSize> d;
-  const hn::Rebind<int32_t, decltype(d)> d32;
   const int lanes = static_cast<int>(hn::Lanes(d));
-  const auto zero = hn::Zero(d), one = hn::Set(d, 1.0);
-  const auto scale = hn::Set(d, double(kDepthMax)), half = hn::Set(d, 0.5);
   const auto row = hn::Set(d, rows.depthRow[j]);
   auto* out = reinterpret_cast<int32_t*>(z);  // depths are below 2^24: the same bits either way
-  for (int i = 0; i < kSize; i += lanes) {
-    auto value = hn::Add(hn::LoadU(d, rows.depthColumn + i), row);
-    value = hn::IfThenElse(hn::Gt(value, zero), value, zero);
-    value = hn::IfThenElse(hn::Lt(value, one), value, one);
-    hn::StoreU(hn::DemoteTo(d32, hn::Add(hn::Mul(value, scale), half)), d32, out + i);
-  }
+  for (int i = 0; i < kSize; i += lanes) storeDepthValues(d, hn::Add(hn::LoadU(d, rows.depthColumn + i), row), out + i);
 }
 
 // Which orderings of a fragment's depth against the stored one pass rows.compare, each as the

@@ -17,7 +17,7 @@
 
 #include <limits>
 
-#include "glass/raster/depth_value.h"
+#include "depth_value-inl.h"
 #include "line_run_interpolation.h"
 
 HWY_BEFORE_NAMESPACE();
@@ -37,7 +37,6 @@ void InterpolateLineRuns(const LineRunEnds& ends, const int* majors, LineRunBatc
   const auto start = hn::Set(d, ends.start), length = hn::Set(d, ends.length);
   const auto qa = hn::Set(d, ends.qa), qb = hn::Set(d, ends.qb);
   const auto za = hn::Set(d, ends.za), zb = hn::Set(d, ends.zb), bias = hn::Set(d, ends.depthBias);
-  const auto depthScale = hn::Set(d, double(kDepthMax));
   const auto floatMax = hn::Set(d, double(std::numeric_limits<float>::max()));
   alignas(64) double weightA[kRuns], weightB[kRuns];
   auto* depth = reinterpret_cast<int32_t*>(batch.depth);  // below 2^24: the same bits either way
@@ -54,11 +53,7 @@ void InterpolateLineRuns(const LineRunEnds& ends, const int* majors, LineRunBatc
     const auto q = hn::Add(wa, wb);
     hn::Store(hn::Div(wa, q), d, weightA + r);
     hn::Store(hn::Div(wb, q), d, weightB + r);
-    // depthValue (depth_value.h), lane by lane.
-    auto z = hn::Add(hn::Add(hn::Mul(notT, za), hn::Mul(t, zb)), bias);
-    z = hn::IfThenElse(hn::Gt(z, zero), z, zero);
-    z = hn::IfThenElse(hn::Lt(z, one), z, one);
-    hn::StoreU(hn::DemoteTo(d32, hn::Add(hn::Mul(z, depthScale), half)), d32, depth + r);
+    storeDepthValues(d, hn::Add(hn::Add(hn::Mul(notT, za), hn::Mul(t, zb)), bias), depth + r);
   }
   for (int k = 0; k < batch.varyingCount; ++k) {
     const auto atA = hn::Set(d, double(ends.varyingsA[k])), atB = hn::Set(d, double(ends.varyingsB[k]));
