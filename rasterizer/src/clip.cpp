@@ -20,6 +20,7 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 namespace glass::raster {
@@ -100,22 +101,43 @@ int clipAgainstPlane(const ClipVertex* in, int n, int plane, int varyingCount, C
   return count;
 }
 
+// The bits of the six frustum planes a vertex with finite clip coordinates lies outside of
+// (planeDistance's order: -w <= x, x <= w, then y, then z), without branches.
+inline unsigned frustumBits(float x, float y, float z, float w) {
+  return static_cast<unsigned>(!(w + x >= 0.0f)) | static_cast<unsigned>(!(w - x >= 0.0f)) << 1 |
+         static_cast<unsigned>(!(w + y >= 0.0f)) << 2 | static_cast<unsigned>(!(w - y >= 0.0f)) << 3 |
+         static_cast<unsigned>(!(w + z >= 0.0f)) << 4 | static_cast<unsigned>(!(w - z >= 0.0f)) << 5;
+}
+
+// std::isfinite of all four, as comparisons (NaN compares false).
+inline bool allFinite(float x, float y, float z, float w) {
+  constexpr float kLargest = std::numeric_limits<float>::max();
+  return (std::fabs(x) <= kLargest) & (std::fabs(y) <= kLargest) & (std::fabs(z) <= kLargest) &
+         (std::fabs(w) <= kLargest);
+}
+
 }  // namespace
 
 unsigned outcode(const ClipVertex& v, const ClipSettings& settings) {
   const unsigned enabled = enabledPlaneMask(settings);
-  if (!(std::isfinite(v.clip[0]) && std::isfinite(v.clip[1]) && std::isfinite(v.clip[2]) &&
-        std::isfinite(v.clip[3])))
-    return enabled | kNotFinite;
-  // The six frustum planes, always enabled, without branches; then the enabled user planes.
-  unsigned code = 0;
-  for (int plane = 0; plane < kFrustumPlanes; ++plane)
-    code |= static_cast<unsigned>(!(planeDistance(v, plane) >= 0.0f)) << plane;
+  if (!allFinite(v.clip[0], v.clip[1], v.clip[2], v.clip[3])) return enabled | kNotFinite;
+  // The six frustum planes, always enabled; then the enabled user planes.
+  unsigned code = frustumBits(v.clip[0], v.clip[1], v.clip[2], v.clip[3]);
   for (unsigned user = enabled >> kFrustumPlanes; user != 0; user &= user - 1) {
     const int plane = kFrustumPlanes + std::countr_zero(user);
     if (!(planeDistance(v, plane) >= 0.0f)) code |= 1u << plane;
   }
   return code;
+}
+
+void frustumOutcodes(const float* x, const float* y, const float* z, const float* w, int count,
+                     unsigned* codes) {
+  const unsigned notFinite = enabledPlaneMask(ClipSettings{}) | kNotFinite;
+  for (int i = 0; i < count; ++i) {
+    // Without a branch: notFinite holds every frustum bit.
+    const unsigned finite = allFinite(x[i], y[i], z[i], w[i]);
+    codes[i] = frustumBits(x[i], y[i], z[i], w[i]) | (notFinite & (finite - 1u));
+  }
 }
 
 bool pointInside(const ClipVertex& v, const ClipSettings& settings) {

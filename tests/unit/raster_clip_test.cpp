@@ -2,7 +2,10 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <algorithm>
+#include <cstdint>
 #include <cstring>
+#include <vector>
 
 #include "glass/raster/clip.h"
 #include "raster_test_support.h"
@@ -169,4 +172,51 @@ TEST_CASE("clip: segments") {
   // Outside two different planes, missing the frustum's corner.
   ClipVertex e = clipVertex(0.5f, 3, 0, 1), f = clipVertex(3, 0.5f, 0, 1);
   CHECK_FALSE(clipLine(e, f, settings));
+}
+
+TEST_CASE("clip: frustum outcodes of a batch are each vertex's outcode, for any coordinates") {
+  // Coordinates on the planes (w + x = 0 exactly, signed zeros), beyond them, huge, tiny,
+  // infinite and NaN, in every combination the random draw makes.
+  const float special[] = {0.0f, -0.0f, 1.0f, -1.0f, 0.5f, -0.5f, 2.0f, -2.0f, 1e-40f, -1e-40f,
+                           3.4e38f, -3.4e38f, INFINITY, -INFINITY, NAN};
+  constexpr int kCount = 4096;
+  std::vector<float> rows[4];
+  std::vector<ClipVertex> vertices(kCount);
+  uint32_t state = 12345;
+  auto next = [&state] { return state = state * 1664525u + 1013904223u; };
+  for (int i = 0; i < kCount; ++i) {
+    float c[4];
+    for (float& value : c)
+      value = next() % 4 == 0 ? (static_cast<float>(next() % 2001) - 1000.0f) / 250.0f
+                              : special[next() % (sizeof special / sizeof special[0])];
+    vertices[i] = clipVertex(c[0], c[1], c[2], c[3]);
+    for (int r = 0; r < 4; ++r) rows[r].push_back(c[r]);
+  }
+  std::vector<unsigned> codes(kCount);
+  // Batches of every length up to 64, as the vertex stage hands them over, then the rest.
+  int done = 0;
+  for (int length = 1; done < kCount; length = length % 64 + 1) {
+    const int n = std::min(length, kCount - done);
+    frustumOutcodes(rows[0].data() + done, rows[1].data() + done, rows[2].data() + done, rows[3].data() + done, n,
+                    codes.data() + done);
+    done += n;
+  }
+  int mismatches = 0, notFinite = 0, inside = 0;
+  for (int i = 0; i < kCount; ++i) {
+    const float* c = vertices[i].clip;
+    unsigned expected = 0x3Fu | kNotFinite;
+    if (std::isfinite(c[0]) && std::isfinite(c[1]) && std::isfinite(c[2]) && std::isfinite(c[3])) {
+      expected = 0;
+      for (int axis = 0; axis < 3; ++axis) {
+        if (!(c[3] + c[axis] >= 0.0f)) expected |= 1u << (2 * axis);
+        if (!(c[3] - c[axis] >= 0.0f)) expected |= 1u << (2 * axis + 1);
+      }
+    }
+    if (codes[i] != expected || outcode(vertices[i], ClipSettings{}) != expected) ++mismatches;
+    notFinite += (expected & kNotFinite) != 0;
+    inside += expected == 0;
+  }
+  CHECK(mismatches == 0);
+  CHECK(notFinite > kCount / 10);  // the draw reaches every case
+  CHECK(inside > kCount / 100);
 }

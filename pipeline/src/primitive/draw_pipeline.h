@@ -78,6 +78,8 @@ class DrawPipeline {
   FrameStatistics* statistics() const { return statistics_; }
   // The vertex's outcode (raster::outcode) under this draw's clip settings.
   unsigned clipCodeOf(const raster::ClipVertex& v) const { return raster::outcode(v, clip_); }
+  // No user clip plane is enabled: raster::frustumOutcodes gives clipCodeOf's codes.
+  bool clipsToFrustumOnly() const { return clip_.userPlaneMask == 0; }
   // The vertex lies outside a frustum plane or an enabled user clip plane.
   bool needsClipping(const PipelineVertex& v) const { return codeOf(v.clip, v.clipCode) != 0; }
 

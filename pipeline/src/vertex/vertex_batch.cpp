@@ -145,6 +145,12 @@ void processBatch(const Context& ctx, bool colorPerVertex, const VertexStageSetu
   lighting.count = count;
   if (s.needEyeNormal) transformNormals(s, in.normal, count, lighting.normal);
 
+  // The vertices' outcodes a batch at a time, unless user clip planes need each vertex's
+  // distances (computed below).
+  const bool frustumOnly = ctx.draw->clipsToFrustumOnly();
+  unsigned frustumCodes[K];
+  if (frustumOnly) raster::frustumOutcodes(work.clip[0], work.clip[1], work.clip[2], work.clip[3], count, frustumCodes);
+
   const bool twoSided = s.twoSided;
   if (s.lightPerVertex) {
     for (int i = 0; i < count; ++i) {
@@ -215,7 +221,7 @@ void processBatch(const Context& ctx, bool colorPerVertex, const VertexStageSetu
       const float* plane = s.clipPlanes[p];
       v.userClipDistance[p] = plane[0] * eye[0] + plane[1] * eye[1] + plane[2] * eye[2] + plane[3] * eye[3];
     }
-    out.clipCode = ctx.draw->clipCodeOf(v);
+    out.clipCode = frustumOnly ? frustumCodes[i] : ctx.draw->clipCodeOf(v);
   }
 }
 

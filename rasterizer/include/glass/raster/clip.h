@@ -34,4 +34,10 @@ bool pointInside(const ClipVertex& v, const ClipSettings& settings);
 inline constexpr unsigned kNotFinite = 1u << 31;
 unsigned outcode(const ClipVertex& v, const ClipSettings& settings);
 
+// outcode of `count` vertices without user clip planes, their clip coordinates in rows (vertex
+// i at x[i], y[i], z[i], w[i]), into codes[i]: the same values, a loop over the vertices without
+// branches that the compiler turns into vector code.
+void frustumOutcodes(const float* x, const float* y, const float* z, const float* w, int count,
+                     unsigned* codes);
+
 }  // namespace glass::raster
