@@ -41,6 +41,16 @@ constexpr size_t kSceneBudgetBytes = size_t{32} << 20;
 // never idle and the scenes grow to the budget as before.
 constexpr size_t kIdleLaunchBytes = size_t{1} << 20;
 
+// A scene of at most this many active tiles and bytes is rasterized by the submitting thread
+// itself, as with one thread: handing it to the workers (a lock, a wake-up, a wait) costs more
+// than its tiles take. Drawing that is finished after every glEnd (a textured draw is finished
+// there, docs/pipeline.md) hands over a scene of a tile or two per draw: 2,000 small textured
+// quads, each in its own glBegin/glEnd, took about 45 ms a frame on 2 threads against 28 on one.
+// (The bytes keep a scene of many primitives in a few tiles, which the workers can rasterize
+// while the submitting thread goes on binning, with the workers.)
+constexpr int kSubmitterTiles = 4;
+constexpr size_t kSubmitterBytes = size_t{64} << 10;
+
 // Before a tile's bin runs, asks the memory system for the tile's depth and colour rows all at
 // once. Otherwise the first fragments to reach each cache line of the tile wait for it one line
 // at a time, which for scattered small primitives costs more than shading them. (A hint only:
@@ -166,7 +176,8 @@ struct TiledRasterizer::Impl {
     land();
     TileScene& scene = filling();
     if (scene.empty()) return;
-    if (workers.empty()) {  // one thread: rasterize it right here
+    const bool small = scene.activeTileCount() <= kSubmitterTiles && scene.bytes() <= kSubmitterBytes;
+    if (workers.empty() || small) {  // rasterize it right here
       for (int i = 0; i < scene.activeTileCount(); ++i) runTile(scene, i);
       scene.clear();
       return;
