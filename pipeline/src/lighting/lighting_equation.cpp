@@ -72,17 +72,7 @@ LightGeometry lightGeometry(const LightSource& light, const float eyePoint[3]) {
 }  // namespace
 
 void eyePointFromHomogeneous(const float eyePosition[4], float point[3]) {
-  const float w = eyePosition[3];
-  if (w == 1.0f || w == 0.0f) {
-    point[0] = eyePosition[0];
-    point[1] = eyePosition[1];
-    point[2] = eyePosition[2];
-  } else {
-    const float inverseW = 1.0f / w;
-    point[0] = eyePosition[0] * inverseW;
-    point[1] = eyePosition[1] * inverseW;
-    point[2] = eyePosition[2] * inverseW;
-  }
+  for (int c = 0; c < 3; ++c) point[c] = eyeCoordinateFromHomogeneous(eyePosition[c], eyePosition[3]);
 }
 
 void evaluateLighting(const LightingState& state, const Material& material,

@@ -38,4 +38,12 @@ void evaluateLighting(const LightingState& state, const Material& material,
 // reachable through glVertex4 with w = 0) is taken as the point (x, y, z).
 void eyePointFromHomogeneous(const float eyePosition[4], float point[3]);
 
+// One coordinate of that point: c itself when w is 1 or 0, else c times the reciprocal of w.
+// Written as a selection, so that a loop over vertices (processBatch) becomes vector code; the
+// reciprocal of a w of 0 is computed there and not chosen.
+inline float eyeCoordinateFromHomogeneous(float c, float w) {
+  const float scaled = c * (1.0f / w);
+  return w == 1.0f || w == 0.0f ? c : scaled;
+}
+
 }  // namespace glass::gl

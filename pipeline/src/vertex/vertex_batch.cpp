@@ -153,12 +153,9 @@ void processBatch(const Context& ctx, bool colorPerVertex, const VertexStageSetu
 
   const bool twoSided = s.twoSided;
   if (s.lightPerVertex) {
-    for (int i = 0; i < count; ++i) {
-      const float eye[4] = {work.eye[0][i], work.eye[1][i], work.eye[2][i], work.eye[3][i]};
-      float point[3];
-      eyePointFromHomogeneous(eye, point);
-      for (int c = 0; c < 3; ++c) lighting.point[c][i] = point[c];
-    }
+    // eyePointFromHomogeneous, a row at a time.
+    for (int c = 0; c < 3; ++c)
+      for (int i = 0; i < count; ++i) lighting.point[c][i] = eyeCoordinateFromHomogeneous(work.eye[c][i], work.eye[3][i]);
     lighting.color = colorPerVertex ? in.color : nullptr;
     const LightingState& l = ctx.lighting;
     lightBatch(l, kFrontMaterial, false, lighting, work.front);
