@@ -137,6 +137,26 @@ void BlockDepthRange(const uint32_t* stored, ptrdiff_t stride, int rowCount, uin
   highest = static_cast<uint32_t>(hn::GetLane(hn::MaxOfLanes(d, high)));
 }
 
+void BlockColumnsDepthRange(const uint32_t* stored, ptrdiff_t stride, int rowCount, unsigned columns,
+                            uint32_t& lowest, uint32_t& highest) {
+  // All eight columns are read; those outside `columns` are left out by selection.
+  const hn::CappedTag<int32_t, kSize> d;
+  const int lanes = static_cast<int>(hn::Lanes(d));
+  const auto none = hn::Set(d, static_cast<int32_t>(kDepthMax));
+  auto low = none, high = hn::Zero(d);
+  for (int i = 0; i < kSize; i += lanes) {
+    const uint8_t columnBits[8] = {static_cast<uint8_t>(columns >> i)};
+    const auto inside = hn::LoadMaskBits(d, columnBits);
+    for (int r = 0; r < rowCount; ++r) {
+      const auto values = hn::LoadU(d, reinterpret_cast<const int32_t*>(stored + r * stride) + i);
+      low = hn::Min(low, hn::IfThenElse(inside, values, none));
+      high = hn::Max(high, hn::IfThenElseZero(inside, values));
+    }
+  }
+  lowest = static_cast<uint32_t>(hn::GetLane(hn::MinOfLanes(d, low)));
+  highest = static_cast<uint32_t>(hn::GetLane(hn::MaxOfLanes(d, high)));
+}
+
 }  // namespace HWY_NAMESPACE
 }  // namespace glass::raster
 HWY_AFTER_NAMESPACE();
@@ -149,6 +169,8 @@ constexpr SimdFunctions<decltype(&HWY_STATIC_DISPATCH(CoverBlockRows))> kCoverBl
     GLASS_SIMD_FUNCTIONS(CoverBlockRows);
 constexpr SimdFunctions<decltype(&HWY_STATIC_DISPATCH(BlockDepthRange))> kBlockDepthRange =
     GLASS_SIMD_FUNCTIONS(BlockDepthRange);
+constexpr SimdFunctions<decltype(&HWY_STATIC_DISPATCH(BlockColumnsDepthRange))> kBlockColumnsDepthRange =
+    GLASS_SIMD_FUNCTIONS(BlockColumnsDepthRange);
 
 }  // namespace
 
@@ -161,6 +183,11 @@ void blockDepthRange(const uint32_t* stored, ptrdiff_t stride, int rowCount, uin
   chosenSimdFunction(kBlockDepthRange)(stored, stride, rowCount, lowest, highest);
 }
 
+void blockColumnsDepthRange(const uint32_t* stored, ptrdiff_t stride, int rowCount, unsigned columns,
+                            uint32_t& lowest, uint32_t& highest) {
+  chosenSimdFunction(kBlockColumnsDepthRange)(stored, stride, rowCount, columns, lowest, highest);
+}
+
 bool coverBlockRowsWith(SimdTarget target, const BlockRows& rows, CoveredBlock& block) {
   return kCoverBlockRows[static_cast<int>(target)](rows, block);
 }
@@ -168,6 +195,11 @@ bool coverBlockRowsWith(SimdTarget target, const BlockRows& rows, CoveredBlock& 
 void blockDepthRangeWith(SimdTarget target, const uint32_t* stored, ptrdiff_t stride, int rowCount,
                          uint32_t& lowest, uint32_t& highest) {
   kBlockDepthRange[static_cast<int>(target)](stored, stride, rowCount, lowest, highest);
+}
+
+void blockColumnsDepthRangeWith(SimdTarget target, const uint32_t* stored, ptrdiff_t stride, int rowCount,
+                                unsigned columns, uint32_t& lowest, uint32_t& highest) {
+  kBlockColumnsDepthRange[static_cast<int>(target)](stored, stride, rowCount, columns, lowest, highest);
 }
 
 }  // namespace glass::raster

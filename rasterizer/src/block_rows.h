@@ -44,11 +44,17 @@ bool coverBlockRows(const BlockRows& rows, CoveredBlock& block);
 // each) from `stored`, row r at stored + r * stride; rowCount >= 1.
 void blockDepthRange(const uint32_t* stored, ptrdiff_t stride, int rowCount, uint32_t& lowest,
                      uint32_t& highest);
+// The same over the columns of `columns` alone (bit i: column i; at least one). All eight
+// columns of each row are read, so they must be this thread's to read.
+void blockColumnsDepthRange(const uint32_t* stored, ptrdiff_t stride, int rowCount, unsigned columns,
+                            uint32_t& lowest, uint32_t& highest);
 
 // The same, by the copy compiled for `target` (which must run here: simdTargetRuns), for tests;
 // the functions above use the chosen target's.
 bool coverBlockRowsWith(SimdTarget target, const BlockRows& rows, CoveredBlock& block);
 void blockDepthRangeWith(SimdTarget target, const uint32_t* stored, ptrdiff_t stride, int rowCount,
                          uint32_t& lowest, uint32_t& highest);
+void blockColumnsDepthRangeWith(SimdTarget target, const uint32_t* stored, ptrdiff_t stride, int rowCount,
+                                unsigned columns, uint32_t& lowest, uint32_t& highest);
 
 }  // namespace glass::raster

@@ -234,6 +234,7 @@ void TileScene::runTile(int activeIndex) const {
         TriangleSetup setup;
         if (!setupTriangle(a, b, c, settings, setup)) break;
         setup.privateRect = rect;  // this thread owns the tile
+        setup.hiddenBlockOdds = &bin.hiddenBlockOdds;
         rasterizeTriangle(setup, *r.sink);
         break;
       }

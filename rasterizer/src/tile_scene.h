@@ -22,6 +22,7 @@
 #include "glass/raster/framebuffer_clear.h"
 #include "glass/raster/line.h"
 #include "glass/raster/triangle.h"
+#include "hidden_block_odds.h"
 
 namespace glass::raster {
 
@@ -93,6 +94,8 @@ class TileScene {
     BinList<PointRecord> points;
     BinList<ClearRequest> clears;
     BinList<float> varyings;  // the varyings of each primitive's vertices, in order
+    // The tile's odds of hidden blocks, kept from scene to scene (runTile changes them).
+    mutable HiddenBlockOdds hiddenBlockOdds;
     bool empty() const { return order.empty(); }
     void reset();
   };

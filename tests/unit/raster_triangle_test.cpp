@@ -8,8 +8,13 @@
 #include <map>
 #include <numbers>
 #include <random>
+#include <tuple>
+#include <vector>
 
+#include "glass/raster/depth_value.h"
+#include "glass/raster/framebuffer.h"
 #include "glass/raster/triangle.h"
+#include "hidden_block_odds.h"
 #include "raster_test_support.h"
 
 using namespace glass::raster;
@@ -432,4 +437,75 @@ TEST_CASE("triangle: attribute derivatives match finite differences of the exact
   CHECK(ddx == doctest::Approx((value(10.5 + h, 20.5) - value(10.5 - h, 20.5)) / (2 * h)).epsilon(1e-6));
   CHECK(ddy == doctest::Approx((value(10.5, 20.5 + h) - value(10.5, 20.5 - h)) / (2 * h)).epsilon(1e-6));
   CHECK(ddx > 0);
+}
+
+TEST_CASE("triangle: the early depth test and its hidden blocks drop exactly the fragments that fail") {
+  // Every ordering and the other comparisons, small triangles (one or a few blocks, tested for
+  // being hidden when the odds say so) and large ones (their blocks' stored ranges looked at
+  // whole), over stored depths made of constant blocks, planes and noise, with and without the
+  // thread's private rectangle: the fragments must be those of the walk without the early test
+  // that pass the comparison against the stored depth, pixel by pixel.
+  constexpr int kWidth = 96, kHeight = 80;
+  Framebuffer fb(kWidth, kHeight);
+  std::mt19937 rng(2026);
+  const DepthCompare compares[] = {DepthCompare::Less,         DepthCompare::LessEqual, DepthCompare::Greater,
+                                   DepthCompare::GreaterEqual, DepthCompare::Equal,     DepthCompare::NotEqual};
+  long mismatches = 0, dropped = 0, kept = 0;
+  int hiddenFound = 0;
+  for (int round = 0; round < 240; ++round) {
+    // The stored depths: 8 x 8 patches of one value each, a plane, or noise.
+    std::uniform_int_distribution<uint32_t> anyDepth(0, kDepthMax);
+    const int kind = round % 3;
+    const uint32_t base = anyDepth(rng);
+    for (int y = 0; y < kHeight; ++y)
+      for (int x = 0; x < kWidth; ++x) {
+        uint32_t value = anyDepth(rng);
+        if (kind == 0) value = (base + 2654435761u * static_cast<uint32_t>((x / 8) * 31 + y / 8)) % (kDepthMax + 1);
+        if (kind == 1) value = std::min<uint32_t>(kDepthMax, base / 2 + static_cast<uint32_t>(x * 40000 + y * 25000));
+        *fb.depthAt(x, y) = value;
+      }
+    const DepthCompare compare = compares[round % 6];
+    const bool large = round % 4 == 0;
+    const float size = large ? 90.0f : 14.0f;
+    const float x0 = gridCoordinate(rng, -4.0f, kWidth - (large ? 20.0f : 8.0f));
+    const float y0 = gridCoordinate(rng, -4.0f, kHeight - (large ? 20.0f : 8.0f));
+    std::uniform_real_distribution<float> depth(-0.1f, 1.1f);
+    WindowVertex v[3];
+    for (WindowVertex& corner : v)
+      corner = windowVertex(x0 + gridCoordinate(rng, 0.0f, size), y0 + gridCoordinate(rng, 0.0f, size), depth(rng));
+    TriangleSettings plain = settingsFor(rect(0, 0, kWidth, kHeight));
+    RecordingSink all;
+    drawTriangle(v[0], v[1], v[2], plain, all);
+    std::vector<std::tuple<int, int, uint32_t>> expected;
+    for (const Fragment& f : all.fragments)
+      if (passesDepthCompare(compare, f.depth, *fb.depthAt(f.x, f.y))) expected.emplace_back(f.x, f.y, f.depth);
+    dropped += static_cast<long>(all.fragments.size() - expected.size());
+    kept += static_cast<long>(expected.size());
+    std::sort(expected.begin(), expected.end());
+    for (int variant = 0; variant < 3; ++variant) {
+      TriangleSettings early = plain;
+      early.earlyDepth = {&fb, compare};
+      TriangleSetup setup;
+      if (!setupTriangle(v[0], v[1], v[2], early, setup)) continue;
+      // Always testing small triangles' blocks; testing when the odds say so; no private
+      // rectangle (small triangles' blocks are then never tested).
+      HiddenBlockOdds odds;
+      if (variant == 0) odds.score = 64;
+      if (variant < 2) {
+        setup.privateRect = rect(0, 0, kWidth, kHeight);
+        setup.hiddenBlockOdds = &odds;
+      }
+      RecordingSink sink;
+      rasterizeTriangle(setup, sink);
+      std::vector<std::tuple<int, int, uint32_t>> got;
+      for (const Fragment& f : sink.fragments) got.emplace_back(f.x, f.y, f.depth);
+      std::sort(got.begin(), got.end());
+      if (got != expected) ++mismatches;
+      if (variant == 0 && odds.score > 64 - 4) ++hiddenFound;
+    }
+  }
+  CHECK(mismatches == 0);
+  CHECK(dropped > 1000);  // the comparisons drop fragments, and keep others
+  CHECK(kept > 1000);
+  CHECK(hiddenFound > 5);  // small triangles' blocks were found hidden
 }

@@ -17,6 +17,8 @@
 
 namespace glass::raster {
 
+struct HiddenBlockOdds;  // hidden_block_odds.h (the rasterizer's own)
+
 struct TriangleSettings {
   PixelRect bounds;            // framebuffer intersected with the scissor box
   int varyingCount = 0;
@@ -44,6 +46,9 @@ struct TriangleSetup {
   // (the tiled rasterizer's tile): the early depth test may read a whole block row of stored
   // depths inside it, beyond the box. Empty: only the box's pixels are read.
   PixelRect privateRect;
+  // Where the walk keeps the odds of finding a small triangle's block hidden (the tile's, in the
+  // tiled rasterizer); null: such blocks are not tested.
+  HiddenBlockOdds* hiddenBlockOdds = nullptr;
   // Signed area in window coordinates (positive: counter-clockwise), for facing and culling.
   double signedArea;
 };
