@@ -119,6 +119,13 @@ unsigned columnMask(int i0, int i1) { return (0xFFu << i0) & (0xFFu >> (kBlockSi
   }
 }
 
+// The orderings among the early depth comparisons, for which a block's depth range can decide:
+// nearer fragments pass (LESS, LEQUAL) or farther ones (GREATER, GEQUAL).
+constexpr bool nearerPasses(DepthCompare c) { return c == DepthCompare::Less || c == DepthCompare::LessEqual; }
+constexpr bool fartherPasses(DepthCompare c) {
+  return c == DepthCompare::Greater || c == DepthCompare::GreaterEqual;
+}
+
 // What the early depth test decides for a whole block from its depth range and the stored
 // range (see "Hidden blocks" above).
 enum class BlockDepthOutcome { AllFail, AllPass, PerPixel };
@@ -126,9 +133,7 @@ enum class BlockDepthOutcome { AllFail, AllPass, PerPixel };
 template <DepthCompare kCompare>
 [[gnu::always_inline]] inline BlockDepthOutcome blockDepthOutcome(const BlockDepth& depth, const Framebuffer& fb,
                                                                   int bx, int by, int x0, int x1, int y0, int y1) {
-  constexpr bool kNearerPasses = kCompare == DepthCompare::Less || kCompare == DepthCompare::LessEqual;
-  constexpr bool kFartherPasses =
-      kCompare == DepthCompare::Greater || kCompare == DepthCompare::GreaterEqual;
+  constexpr bool kNearerPasses = nearerPasses(kCompare), kFartherPasses = fartherPasses(kCompare);
   if constexpr (!kNearerPasses && !kFartherPasses) {
     return BlockDepthOutcome::PerPixel;
   } else {
@@ -153,12 +158,12 @@ template <DepthCompare kCompare>
 // ordering: the pixel most likely to pass against the stored value most favourable to it. That
 // pixel is a corner, the one the plane's slopes choose (the depths never decrease along a
 // non-negative slope, see "Hidden blocks" above); the stored values are read in vector lanes, so
-// the block's eight columns must be this thread's (`whole`). blockDepthOutcome's AllFail, with
-// one corner instead of four.
+// the block's eight columns must be this thread's (BlockRows::storedWhole). blockDepthOutcome's
+// AllFail, with one corner instead of four.
 template <DepthCompare kCompare>
 bool blockHidden(const TriangleSetup& setup, const BlockDepth& depth, const Framebuffer& fb, int bx, int by,
                  int x0, int x1, int y0, int y1) {
-  constexpr bool kNearerPasses = kCompare == DepthCompare::Less || kCompare == DepthCompare::LessEqual;
+  constexpr bool kNearerPasses = nearerPasses(kCompare);
   const bool columnsRise = setup.zdx >= 0.0, rowsRise = setup.zdy >= 0.0;
   const int i = columnsRise == kNearerPasses ? x0 - bx : x1 - 1 - bx;
   const int j = rowsRise == kNearerPasses ? y0 - by : y1 - 1 - by;
@@ -176,8 +181,7 @@ void walkTriangle(const TriangleSetup& setup, FragmentSink& sink) {
   const PixelEdgeFunctions edges(setup);
   const Framebuffer* earlyDepth = setup.earlyDepth.buffer;
   HiddenBlockOdds* const odds = setup.hiddenBlockOdds;
-  constexpr bool kOrdering = kCompare == DepthCompare::Less || kCompare == DepthCompare::LessEqual ||
-                             kCompare == DepthCompare::Greater || kCompare == DepthCompare::GreaterEqual;
+  constexpr bool kOrdering = nearerPasses(kCompare) || fartherPasses(kCompare);
 
   // What the block rows (block_rows.h) take from the triangle, the same for every block; each
   // block sets the rest. Edge k's step from column 0 of a block to column i is i * stepX[k].
@@ -300,10 +304,14 @@ namespace {
 // stored depths whole, a small one's are only tested for being hidden (hidden_block_odds.h).
 template <bool kEarly, DepthCompare kCompare>
 void walkBySize(const TriangleSetup& setup, FragmentSink& sink) {
-  const PixelRect& box = setup.box;
-  if (box.x1 - box.x0 >= 4 * kBlockSize && box.y1 - box.y0 >= 4 * kBlockSize)
-    return walkTriangle<kEarly, kCompare, true>(setup, sink);
-  walkTriangle<kEarly, kCompare, false>(setup, sink);
+  if constexpr (!kEarly) {
+    walkTriangle<false, kCompare, true>(setup, sink);  // without the early test the size decides nothing
+  } else {
+    const PixelRect& box = setup.box;
+    if (box.x1 - box.x0 >= 4 * kBlockSize && box.y1 - box.y0 >= 4 * kBlockSize)
+      return walkTriangle<true, kCompare, true>(setup, sink);
+    walkTriangle<true, kCompare, false>(setup, sink);
+  }
 }
 
 }  // namespace
