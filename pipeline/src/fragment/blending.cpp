@@ -1,6 +1,7 @@
 #include "fragment/blending.h"
 
 #include <algorithm>
+#include <cstring>
 
 namespace glass::gl {
 
@@ -33,7 +34,7 @@ bool isBlendEquation(GLenum equation) {
 namespace {
 
 // The factor for component i (0-2: colour, 3: alpha) of table 4.1, as an 8-bit value.
-unsigned blendFactor(GLenum factor, int i, const uint8_t s[4], const uint8_t d[4],
+[[gnu::always_inline]] inline unsigned blendFactor(GLenum factor, int i, const uint8_t s[4], const uint8_t d[4],
                      const uint8_t c[4]) {
   switch (factor) {
     case GL_ZERO: return 0;
@@ -58,9 +59,9 @@ unsigned blendFactor(GLenum factor, int i, const uint8_t s[4], const uint8_t d[4
 // v * f / 255 rounded to the nearest integer (255 is odd, so there are no ties).
 int scale(unsigned v, unsigned f) { return static_cast<int>((v * f * 2 + 255) / 510); }
 
-}  // namespace
-
-void blend(const BlendSettings& b, const uint8_t s[4], const uint8_t d[4], uint8_t result[4]) {
+// blend() for one pixel, inline so that blendWith can fix the settings it switches on.
+[[gnu::always_inline]] inline void blendPixel(const BlendSettings& b, const uint8_t s[4], const uint8_t d[4],
+                                              uint8_t result[4]) {
   for (int i = 0; i < 4; ++i) {
     int value;
     switch (b.equation) {
@@ -78,6 +79,52 @@ void blend(const BlendSettings& b, const uint8_t s[4], const uint8_t d[4], uint8
     }
     result[i] = static_cast<uint8_t>(std::clamp(value, 0, 255));
   }
+}
+
+// blend() with the equation and factors fixed (the blend colour still comes from b).
+template <GLenum kEquation, GLenum kSrcRGB, GLenum kDstRGB, GLenum kSrcAlpha, GLenum kDstAlpha>
+void blendWith(const BlendSettings& b, const uint8_t s[4], const uint8_t d[4], uint8_t result[4]) {
+  BlendSettings fixed;
+  fixed.equation = kEquation;
+  fixed.srcRGB = kSrcRGB;
+  fixed.dstRGB = kDstRGB;
+  fixed.srcAlpha = kSrcAlpha;
+  fixed.dstAlpha = kDstAlpha;
+  std::memcpy(fixed.constant, b.constant, sizeof fixed.constant);
+  blendPixel(fixed, s, d, result);
+}
+
+// The settings blendWith is compiled for, each with the same factors for colour and alpha.
+struct CompiledBlend {
+  GLenum equation, source, destination;
+  BlendFunction function;
+};
+template <GLenum kSource, GLenum kDestination>
+constexpr CompiledBlend addingWith() {
+  return {GL_FUNC_ADD, kSource, kDestination, &blendWith<GL_FUNC_ADD, kSource, kDestination, kSource, kDestination>};
+}
+constexpr CompiledBlend kCompiledBlends[] = {
+    addingWith<GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA>(),  // transparency, antialiased lines and points
+    addingWith<GL_ONE, GL_ONE_MINUS_SRC_ALPHA>(),        // premultiplied alpha
+    addingWith<GL_SRC_ALPHA, GL_ONE>(),                  // additive glow, particles
+    addingWith<GL_ONE, GL_ONE>(),                        // additive
+    addingWith<GL_DST_COLOR, GL_ZERO>(),                 // modulation (light maps, multipass)
+    addingWith<GL_ZERO, GL_SRC_COLOR>(),
+};
+
+}  // namespace
+
+void blend(const BlendSettings& b, const uint8_t s[4], const uint8_t d[4], uint8_t result[4]) {
+  blendPixel(b, s, d, result);
+}
+
+BlendFunction blendFunctionFor(const BlendSettings& b) {
+  for (const CompiledBlend& compiled : kCompiledBlends) {
+    if (b.equation == compiled.equation && b.srcRGB == compiled.source && b.srcAlpha == compiled.source &&
+        b.dstRGB == compiled.destination && b.dstAlpha == compiled.destination)
+      return compiled.function;
+  }
+  return &blend;
 }
 
 }  // namespace glass::gl

@@ -28,4 +28,14 @@ bool isBlendEquation(GLenum equation);
 void blend(const BlendSettings& settings, const uint8_t source[4], const uint8_t destination[4],
            uint8_t result[4]);
 
+// A function that blends one pixel as blend() does, chosen once per draw by blendFunctionFor:
+// for the settings programs use most (transparency and antialiasing with GL_SRC_ALPHA,
+// GL_ONE_MINUS_SRC_ALPHA, additive and premultiplied blending, modulation) a copy of blend()
+// compiled with the equation and the four factors as constants, so that its switches fold
+// away; blend() itself for every other setting. The same bytes either way (the unit test "the
+// blend function chosen for a setting gives blend()'s bytes").
+using BlendFunction = void (*)(const BlendSettings& settings, const uint8_t source[4],
+                               const uint8_t destination[4], uint8_t result[4]);
+BlendFunction blendFunctionFor(const BlendSettings& settings);
+
 }  // namespace glass::gl

@@ -357,14 +357,15 @@ void testStencilAndDepthOfBlock(raster::Framebuffer& fb, const StencilDepthSetti
 }
 
 // Blends the colours words[i] (RGBA8, as packColorBytes lays them out) of the pixels of mask
-// into the colour buffer's row, pixel by pixel with the reference path's function.
-void blendCoveredWords(const BlendSettings& settings, uint8_t* row, const uint32_t* words, unsigned mask) {
+// into the colour buffer's row, pixel by pixel with the reference path's function (or its copy
+// for the draw's settings, blendFunctionFor).
+void blendCoveredWords(const KernelPixelOps& ops, uint8_t* row, const uint32_t* words, unsigned mask) {
   for (unsigned rest = mask; rest != 0; rest &= rest - 1) {
     const int i = std::countr_zero(rest);
     uint8_t source[4], blended[4];
     std::memcpy(source, words + i, 4);
     uint8_t* pixel = row + 4 * i;
-    blend(settings, source, pixel, blended);
+    ops.blendFunction(ops.blendSettings, source, pixel, blended);
     std::memcpy(pixel, blended, 4);
   }
 }
@@ -425,7 +426,7 @@ void shadeBlock(Context& ctx, const KernelPixelOps& ops, const KernelTexture& te
       alignas(64) uint32_t words[kSize];
       packRowColors(color[0], color[1], color[2], color[3], words);
       if (ops.blend) {
-        blendCoveredWords(ops.blendSettings, fb.colorAt(bx, by + j), words, mask);
+        blendCoveredWords(ops, fb.colorAt(bx, by + j), words, mask);
       } else {
         storeCoveredWords(fb.colorAt(bx, by + j), words, mask);
       }

@@ -54,6 +54,7 @@ struct KernelPixelOps {
   StencilDepthSettings tests;  // the kernel runs them when tests.stencilTest is on
   bool blend = false;  // blend with the colour buffer (blending.h) instead of replacing it
   BlendSettings blendSettings;
+  BlendFunction blendFunction = &glass::gl::blend;  // blendFunctionFor(blendSettings)
 
   bool operator==(const KernelPixelOps&) const = default;
 };

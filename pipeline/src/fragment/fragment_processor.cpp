@@ -66,6 +66,8 @@ void FragmentProcessor::prepare(Context& ctx, bool phong) {
     s_.blendSettings.constant[i] = floatToColorByte(f.blendColor[i]);
     s_.colorMask[i] = f.colorMask[i];
   }
+  // Without the fast paths, blend() itself (the reference path's own function).
+  s_.blendFunction = fastPathsEnabled() ? blendFunctionFor(s_.blendSettings) : &blend;
   s_.writesColor = drawsColor(f.drawBuffer) &&
                    (s_.colorMask[0] || s_.colorMask[1] || s_.colorMask[2] || s_.colorMask[3]);
   s_.allChannels = s_.colorMask[0] && s_.colorMask[1] && s_.colorMask[2] && s_.colorMask[3];
@@ -97,6 +99,7 @@ void FragmentProcessor::prepare(Context& ctx, bool phong) {
   pixelOps_.tests = s_.tests;
   pixelOps_.blend = s_.blend;
   pixelOps_.blendSettings = s_.blendSettings;
+  pixelOps_.blendFunction = s_.blendFunction;
   if (kernel_ != nullptr && s_.texturing) kernelTexture_.prepare(ctx);
   // With the stencil test on, the kernel makes the depth test itself (block_kernels.h).
   kernelNeedsEarlyDepth_ = s_.tests.depthTest && s_.tests.depthFunc != GL_ALWAYS && !s_.tests.stencilTest;
@@ -238,7 +241,7 @@ void FragmentProcessor::processFragments(const raster::FragmentBatch& batch,
     for (int c = 0; c < 4; ++c) out[c] = floatToColorByte(color[c]);
     if (s_.blend) {
       uint8_t blended[4];
-      blend(s_.blendSettings, out, pixel, blended);
+      s_.blendFunction(s_.blendSettings, out, pixel, blended);
       for (int c = 0; c < 4; ++c) out[c] = blended[c];
     } else if (s_.logicOp) {
       for (int c = 0; c < 4; ++c) out[c] = applyLogicOp(s_.logicOpMode, out[c], pixel[c]);

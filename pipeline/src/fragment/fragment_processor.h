@@ -78,6 +78,7 @@ class FragmentProcessor final : public raster::FragmentSink {
 
     bool blend = false;
     BlendSettings blendSettings;
+    BlendFunction blendFunction = &glass::gl::blend;  // blendFunctionFor(blendSettings), or blend()
     bool logicOp = false;
     GLenum logicOpMode = GL_COPY;
     bool colorMask[4] = {true, true, true, true};
