@@ -98,21 +98,25 @@ void TileScene::addTriangle(const WindowVertex& a, const WindowVertex& b, const 
   }
   r.settings = settings;
   r.settings.varyingCount = std::clamp(settings.varyingCount, 0, kMaxVaryings);
+  r.settings.payloadCount = settings.payload != nullptr ? std::clamp(settings.payloadCount, 0, kMaxTrianglePayload) : 0;
+  r.settings.payload = nullptr;  // runTile points it at the bin's copy
   const size_t n = static_cast<size_t>(r.settings.varyingCount);
+  const size_t payload = static_cast<size_t>(r.settings.payloadCount);
 
   const auto addToBin = [&](int tile) {
     Bin& bin = binOf(tile);
     bin.order.push(*arena_, Kind::Triangle);
     bin.triangles.push(*arena_, r);
-    // The three vertices' varyings in one run, as runTile takes them.
-    float* varyings = bin.varyings.extend(*arena_, 3 * n);
+    // The three vertices' varyings in one run, then the payload, as runTile takes them.
+    float* varyings = bin.varyings.extend(*arena_, 3 * n + payload);
     for (int i = 0; i < 3; ++i) std::copy(vertices[i]->varyings, vertices[i]->varyings + n, varyings + i * n);
+    std::copy(settings.payload, settings.payload + payload, varyings + 3 * n);
     // A new record lands on cache lines nobody has touched yet, and with hundreds of bins filled
     // in turn each write would otherwise wait for its line; by the time the bin's next
     // primitive arrives, the lines are there.
     bin.triangles.prefetchNext(1);
-    bin.varyings.prefetchNext(3 * n);
-    bytes_ += 1 + sizeof(TriangleRecord) + 3 * sizeof(float) * n;
+    bin.varyings.prefetchNext(3 * n + payload);
+    bytes_ += 1 + sizeof(TriangleRecord) + sizeof(float) * (3 * n + payload);
   };
   const PixelRect& box = edges.box;
   const int firstTileX = box.x0 / kTileSize, lastTileX = (box.x1 - 1) / kTileSize;
@@ -223,12 +227,13 @@ void TileScene::runTile(int activeIndex) const {
       case Kind::Triangle: {
         const TriangleRecord& r = *triangles.take(1);
         const int n = r.settings.varyingCount;
-        const float* varyings = varyingRuns.take(3 * static_cast<size_t>(n));
+        const float* varyings = varyingRuns.take(3 * static_cast<size_t>(n) + static_cast<size_t>(r.settings.payloadCount));
         const WindowVertex a = rebuildVertex(r.position[0], varyings, n);
         const WindowVertex b = rebuildVertex(r.position[1], varyings + n, n);
         const WindowVertex c = rebuildVertex(r.position[2], varyings + 2 * n, n);
         TriangleSettings settings = r.settings;
         settings.bounds = intersect(settings.bounds, rect);
+        if (settings.payloadCount > 0) settings.payload = varyings + 3 * n;
         // The same setup as the whole triangle's, its box cut to the tile (the edges and planes
         // depend on the vertices alone).
         TriangleSetup setup;

@@ -291,6 +291,7 @@ void emitBlockFragments(const TriangleSetup& setup, const CoveredBlock& block, F
   batch.varyingCount = varyingCount;
   batch.frontFacing = setup.frontFacing;
   batch.planes = &setup.planes;
+  batch.payload = setup.payload;
   sink.processFragments(batch);
 }
 

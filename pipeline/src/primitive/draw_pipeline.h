@@ -40,6 +40,7 @@
 #include "glass/raster/tiled_rasterizer.h"
 #include "glass/raster/triangle.h"
 #include "primitive/polygon_stipple.h"
+#include "primitive/smooth_coverage.h"
 #include "primitive/viewport_transform.h"
 #include "select/primitive_recorder.h"
 #include "teaching/frame_statistics.h"
@@ -151,6 +152,9 @@ class DrawPipeline {
   int stippleCounter_ = 0;
   PolygonStippleFilter polygonStipple_;
   raster::FragmentSink* polygonSink_ = &fragments_;  // polygonStipple_ when stippling
+  // The sinks of antialiased lines' and points' triangles, whose fragments carry their shape.
+  CoverageFilter<SmoothLineCoverage> smoothLineSink_{fragments_};
+  CoverageFilter<SmoothPointCoverage> smoothPointSink_{fragments_};
   bool recording_ = false;   // GL_SELECT or GL_FEEDBACK: primitives go to recorder_
   bool lineReset_ = false;   // the next recorded line starts a new line (GL_LINE_RESET_TOKEN)
   PrimitiveRecorder recorder_;

@@ -39,12 +39,7 @@ void DrawPipeline::rasterizeSegment(raster::ClipVertex a, raster::ClipVertex b, 
     lineReset_ = false;
     return;
   }
-  // Smooth ones are rasterized at once (smooth_stage.cpp), not queued: what is queued goes
-  // first, so that every pixel still receives its fragments in submission order.
-  if (smoothLines_) {
-    tiles_.finish();
-    return rasterizeSmoothSegment(wa, wb, depthBias);
-  }
+  if (smoothLines_) return rasterizeSmoothSegment(wa, wb, depthBias);  // smooth_stage.cpp
   lineSettings_.depthBias = depthBias;
   tiles_.line(wa, wb, lineSettings_, fragments_);
 }

@@ -39,12 +39,7 @@ void DrawPipeline::rasterizeVertexPoint(const raster::ClipVertex& v, double dept
   if (!toWindow(viewport_, v, clip_.varyingCount, w)) return;
   if (recording_) return recorder_.point(w);
   const float size = pointSizeAt(v);
-  // Smooth ones are rasterized at once (smooth_stage.cpp), not queued: what is queued goes
-  // first, so that every pixel still receives its fragments in submission order.
-  if (smoothPoints_) {
-    tiles_.finish();
-    return rasterizeSmoothPoint(w, size, depthBias);
-  }
+  if (smoothPoints_) return rasterizeSmoothPoint(w, size, depthBias);  // smooth_stage.cpp
   pointSettings_.size = size;
   pointSettings_.depthBias = depthBias;
   tiles_.point(w, pointSettings_, fragments_);

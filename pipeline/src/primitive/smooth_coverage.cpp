@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 namespace glass::gl {
 namespace {
@@ -21,7 +22,7 @@ raster::WindowVertex corner(const raster::WindowVertex& v, float x, float y, int
 
 }  // namespace
 
-float SmoothLineShape::coverage(float x, float y) const {
+float SmoothLineCoverage::coverage(float x, float y) const {
   const float rx = x - midX, ry = y - midY;
   const float along = rx * dirX + ry * dirY;
   const float across = ry * dirX - rx * dirY;
@@ -60,7 +61,7 @@ bool makeSmoothLine(const raster::WindowVertex& a, const raster::WindowVertex& b
   return true;
 }
 
-float SmoothPointShape::coverage(float fx, float fy) const {
+float SmoothPointCoverage::coverage(float fx, float fy) const {
   const float s = (fx - x) / radius, t = (fy - y) / radius;
   const float d = s * s + t * t;
   if (d > 1.0f) return -1.0f;
@@ -91,8 +92,11 @@ void makeSmoothPoint(const raster::WindowVertex& v, float radius, int framebuffe
   shape.corners[3] = corner(v, v.x - radius, top - (y + radius), varyingCount);
 }
 
-template <class Shape>
-void CoverageFilter<Shape>::processFragments(const raster::FragmentBatch& batch) {
+template <class Coverage>
+void CoverageFilter<Coverage>::processFragments(const raster::FragmentBatch& batch) {
+  if (batch.payload == nullptr) return;  // not a shape's triangle: nothing to weigh it by
+  Coverage shape;
+  std::memcpy(static_cast<void*>(&shape), batch.payload, sizeof shape);  // trivially copyable floats
   constexpr int kChunk = 64;
   raster::Fragment kept[kChunk];
   float coverage[kChunk];
@@ -102,7 +106,7 @@ void CoverageFilter<Shape>::processFragments(const raster::FragmentBatch& batch)
     for (int i = first; i < end; ++i) {
       const raster::Fragment& f = batch.fragments[i];
       const float c =
-          shape_.coverage(static_cast<float>(f.x) + 0.5f, static_cast<float>(f.y) + 0.5f);
+          shape.coverage(static_cast<float>(f.x) + 0.5f, static_cast<float>(f.y) + 0.5f);
       if (c < 0.0f) continue;
       kept[count] = f;
       coverage[count++] = c;
@@ -115,7 +119,7 @@ void CoverageFilter<Shape>::processFragments(const raster::FragmentBatch& batch)
   }
 }
 
-template class CoverageFilter<SmoothLineShape>;
-template class CoverageFilter<SmoothPointShape>;
+template class CoverageFilter<SmoothLineCoverage>;
+template class CoverageFilter<SmoothPointCoverage>;
 
 }  // namespace glass::gl

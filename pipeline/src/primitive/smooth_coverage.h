@@ -32,16 +32,18 @@
 // alpha clamp comes with the conversion to the framebuffer's 8 bits).
 #pragma once
 
+#include <type_traits>
+
 #include "fragment/fragment_processor.h"
 #include "glass/raster/fragment.h"
+#include "glass/raster/triangle.h"
 #include "glass/raster/vertex.h"
 
 namespace glass::gl {
 
-struct SmoothLineShape {
-  // The rectangle's corners, and the two triangles Mesa splits it into.
-  raster::WindowVertex corners[4];
-  static constexpr int kTriangles[2][3] = {{0, 1, 2}, {3, 1, 0}};
+// What the coverage of a smooth line's fragment depends on; the floats its queued triangles
+// carry to the fragment stage (raster::TriangleSettings::payload).
+struct SmoothLineCoverage {
   float midX = 0, midY = 0;        // the segment's midpoint
   float dirX = 1, dirY = 0;        // unit direction p0 -> p1
   float halfWidth = 1;             // h
@@ -52,6 +54,12 @@ struct SmoothLineShape {
   float coverage(float x, float y) const;
 };
 
+struct SmoothLineShape : SmoothLineCoverage {
+  // The rectangle's corners, and the two triangles Mesa splits it into.
+  raster::WindowVertex corners[4];
+  static constexpr int kTriangles[2][3] = {{0, 1, 2}, {3, 1, 0}};
+};
+
 // Builds the rectangle of a smooth segment a -> b of the given width in window coordinates
 // (varyingCount varyings copied); false for a segment of zero length, which draws nothing.
 // framebufferHeight: Mesa builds the corners in rows numbered from the top, which decides the
@@ -59,16 +67,20 @@ struct SmoothLineShape {
 bool makeSmoothLine(const raster::WindowVertex& a, const raster::WindowVertex& b, float width,
                     int framebufferHeight, int varyingCount, SmoothLineShape& shape);
 
-struct SmoothPointShape {
-  // The square's corners, and the two triangles Mesa splits it into.
-  raster::WindowVertex corners[4];
-  static constexpr int kTriangles[2][3] = {{0, 1, 2}, {0, 2, 3}};
+// What the coverage of a smooth point's fragment depends on (as SmoothLineCoverage).
+struct SmoothPointCoverage {
   float x = 0, y = 0;   // the point
   float radius = 1;     // r
 
   // Coverage of the fragment whose centre is (x, y): Mesa's value inside the disc of radius r
   // (1, or more towards the centre), a negative value outside it (the fragment is discarded).
   float coverage(float fx, float fy) const;
+};
+
+struct SmoothPointShape : SmoothPointCoverage {
+  // The square's corners, and the two triangles Mesa splits it into.
+  raster::WindowVertex corners[4];
+  static constexpr int kTriangles[2][3] = {{0, 1, 2}, {0, 2, 3}};
 };
 
 // The half-side r of a smooth point of the given size: perVertexSize is true when the size comes
@@ -78,21 +90,26 @@ float smoothPointRadius(float size, bool perVertexSize);
 void makeSmoothPoint(const raster::WindowVertex& v, float radius, int framebufferHeight,
                      int varyingCount, SmoothPointShape& shape);
 
-// A fragment sink between the triangle rasterizer and the fragment stage: it computes each
-// fragment's coverage from its pixel centre, drops the fragments of negative coverage, and hands
-// the rest on with their coverage.
-template <class Shape>
+// A fragment sink between the triangle rasterizer and the fragment stage, one per draw for each
+// kind of shape: it reads the shape's Coverage from the fragments' payload (each triangle of a
+// smooth line or point carries its own), computes each fragment's coverage from its pixel
+// centre, drops the fragments of negative coverage, and hands the rest on with their coverage.
+template <class Coverage>
 class CoverageFilter final : public raster::FragmentSink {
  public:
-  CoverageFilter(const Shape& shape, FragmentProcessor& next) : shape_(shape), next_(next) {}
+  // The payload a triangle carries: the Coverage's floats.
+  static constexpr int kPayloadFloats = static_cast<int>(sizeof(Coverage) / sizeof(float));
+  static_assert(std::is_trivially_copyable_v<Coverage> && sizeof(Coverage) % sizeof(float) == 0 &&
+                kPayloadFloats <= raster::kMaxTrianglePayload);
+
+  explicit CoverageFilter(FragmentProcessor& next) : next_(next) {}
   void processFragments(const raster::FragmentBatch& batch) override;
 
  private:
-  const Shape& shape_;
   FragmentProcessor& next_;
 };
 
-extern template class CoverageFilter<SmoothLineShape>;
-extern template class CoverageFilter<SmoothPointShape>;
+extern template class CoverageFilter<SmoothLineCoverage>;
+extern template class CoverageFilter<SmoothPointCoverage>;
 
 }  // namespace glass::gl

@@ -1,9 +1,13 @@
 // Antialiased lines and points (GL_LINE_SMOOTH, GL_POINT_SMOOTH): the rectangle or square of
 // smooth_coverage.h, rasterized as two triangles by the triangle rule, each fragment carrying its
-// coverage to the fragment stage. A stippled smooth line is first cut into its dashes
-// (stipple_dashes.h).
+// coverage to the fragment stage. The triangles are queued with the draw's other primitives
+// (tiled_rasterizer.h), each carrying its shape's coverage parameters as its payload, so they
+// are drawn tile by tile like any triangle, in submission order per pixel. A stippled smooth line
+// is first cut into its dashes (stipple_dashes.h).
 #include <algorithm>
 #include <cmath>
+#include <cstring>
+#include <type_traits>
 
 #include "core/context.h"
 #include "primitive/draw_pipeline.h"
@@ -13,20 +17,20 @@
 namespace glass::gl {
 namespace {
 
-template <class Shape>
-void fillShape(const Shape& shape, raster::TriangleSettings settings, double depthBias,
-               FragmentProcessor& fragments) {
+// Queues the shape's two triangles, each with the shape's Coverage as its payload, for `sink`.
+template <class Coverage, class Shape>
+void queueShape(raster::TiledRasterizer& tiles, const Shape& shape, raster::TriangleSettings settings,
+                double depthBias, CoverageFilter<Coverage>& sink) {
+  static_assert(std::is_base_of_v<Coverage, Shape>);
+  float payload[CoverageFilter<Coverage>::kPayloadFloats];
+  const Coverage& coverage = shape;
+  std::memcpy(payload, &coverage, sizeof payload);
   settings.depthBias = depthBias;
   settings.frontFacing = true;
-  CoverageFilter<Shape> filter(shape, fragments);
-  for (const auto& t : Shape::kTriangles) {
-    raster::TriangleSetup setup;
-    if (!raster::setupTriangle(shape.corners[t[0]], shape.corners[t[1]], shape.corners[t[2]],
-                               settings, setup)) {
-      continue;
-    }
-    raster::rasterizeTriangle(setup, filter);
-  }
+  settings.payload = payload;
+  settings.payloadCount = CoverageFilter<Coverage>::kPayloadFloats;
+  for (const auto& t : Shape::kTriangles)
+    tiles.triangle(shape.corners[t[0]], shape.corners[t[1]], shape.corners[t[2]], settings, sink);
 }
 
 // The window vertex at t along a -> b, every value linear in window coordinates (as Mesa's
@@ -73,7 +77,7 @@ void DrawPipeline::rasterizeSmoothDash(const raster::WindowVertex& a,
   if (!makeSmoothLine(reversed ? b : a, reversed ? a : b, width, ctx_.framebuffer.height(),
                       vertex_.varyingCount, shape))
     return;
-  fillShape(shape, triangleSettings_, depthBias, fragments_);
+  queueShape(tiles_, shape, triangleSettings_, depthBias, smoothLineSink_);
 }
 
 void DrawPipeline::rasterizeSmoothPoint(const raster::WindowVertex& w, float size,
@@ -81,7 +85,7 @@ void DrawPipeline::rasterizeSmoothPoint(const raster::WindowVertex& w, float siz
   SmoothPointShape shape;
   makeSmoothPoint(w, smoothPointRadius(size, pointDistanceAttenuated_), ctx_.framebuffer.height(),
                   vertex_.varyingCount, shape);
-  fillShape(shape, triangleSettings_, depthBias, fragments_);
+  queueShape(tiles_, shape, triangleSettings_, depthBias, smoothPointSink_);
 }
 
 }  // namespace glass::gl

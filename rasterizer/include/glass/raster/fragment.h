@@ -43,6 +43,7 @@ struct FragmentBatch {
   int varyingCount = 0;                    // varyings[0 .. varyingCount) are valid
   bool frontFacing = true;                 // lines and points are front facing
   const AttributePlanes* planes = nullptr; // triangles only; null for lines and points
+  const float* payload = nullptr;          // the triangle's TriangleSettings::payload, if any
 };
 
 class FragmentSink {

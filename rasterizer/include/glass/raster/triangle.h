@@ -28,7 +28,14 @@ struct TriangleSettings {
   double depthBias = 0.0;
   bool frontFacing = true;     // passed through to the fragment batches
   EarlyDepthTest earlyDepth;   // off by default (depth_test.h)
+  // Values the sink reads with every fragment of the triangle (FragmentBatch::payload): the
+  // coverage shape of an antialiased line or point. payloadCount floats from payload, at most
+  // kMaxTrianglePayload; the tiled rasterizer keeps a copy with the queued triangle.
+  const float* payload = nullptr;
+  int payloadCount = 0;
 };
+
+inline constexpr int kMaxTrianglePayload = 8;
 
 struct TriangleSetup {
   // Edge functions E_i(x, y) = A_i * x + B_i * y + C_i in 24.8 fixed point (x, y are window
@@ -49,6 +56,7 @@ struct TriangleSetup {
   // Where the walk keeps the odds of finding a small triangle's block hidden (the tile's, in the
   // tiled rasterizer); null: such blocks are not tested.
   HiddenBlockOdds* hiddenBlockOdds = nullptr;
+  const float* payload = nullptr;  // TriangleSettings::payload
   // Signed area in window coordinates (positive: counter-clockwise), for facing and culling.
   double signedArea;
 };
