@@ -8,6 +8,8 @@
  *                    depth test: about 25 fragments for every pixel (GL_QUADS)
  *   lines            200,000 width-1 lines up to 64 pixels long
  *   lines_immediate  the same lines through glBegin/glColor4ubv/glVertex3fv/glEnd
+ *   smooth_lines     the same lines antialiased (GL_LINE_SMOOTH, GL_NICEST) and blended with
+ *                    GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA
  *   lit_spheres      48 spheres of 3,132 triangles (150,336 in all), smooth shaded and lit by a
  *                    directional and a positional light with a specular highlight, colour
  *                    material from a colour array, depth test
@@ -60,6 +62,7 @@ typedef struct {
   GLubyte *colors;    /* r, g, b, a per vertex */
   GLfloat *normals;   /* x, y, z per vertex, for lit frames; NULL otherwise */
   GLfloat *texCoords; /* s, t per vertex, for textured frames; NULL otherwise */
+  int antialiased;    /* lines with GL_LINE_SMOOTH, blended by their coverage */
 } Frame;
 
 static void *allocateOrExit(size_t bytes)
@@ -92,7 +95,7 @@ static void setVertex(Frame *frame, size_t v, float x, float y, float z, Lcg *ra
 /* Triangles about 6 pixels across at random places and depths (z in [-1, 1], ortho). */
 static Frame smallTriangles(void)
 {
-  Frame frame = {"small_triangles", GL_TRIANGLES, 250000, 3, 1, ARRAYS, 0, NULL, NULL, NULL, NULL, NULL};
+  Frame frame = {"small_triangles", GL_TRIANGLES, 250000, 3, 1, ARRAYS, 0, NULL, NULL, NULL, NULL, NULL, 0};
   Lcg random = {1u};
   allocate(&frame);
   for (int t = 0; t < frame.primitives; ++t) {
@@ -109,7 +112,7 @@ static Frame smallTriangles(void)
  * cut through each other and the depth test decides most pixels many times over. */
 static Frame largeTriangles(void)
 {
-  Frame frame = {"large_triangles", GL_TRIANGLES, 64, 3, 1, ARRAYS, 0, NULL, NULL, NULL, NULL, NULL};
+  Frame frame = {"large_triangles", GL_TRIANGLES, 64, 3, 1, ARRAYS, 0, NULL, NULL, NULL, NULL, NULL, 0};
   Lcg random = {2u};
   allocate(&frame);
   for (int t = 0; t < frame.primitives; ++t)
@@ -124,7 +127,7 @@ static Frame largeTriangles(void)
  * they cut through each other: about 25 depth-tested fragments for every pixel of the screen. */
 static Frame gouraudQuads(void)
 {
-  Frame frame = {"gouraud_quads", GL_QUADS, 96, 4, 1, ARRAYS, 0, NULL, NULL, NULL, NULL, NULL};
+  Frame frame = {"gouraud_quads", GL_QUADS, 96, 4, 1, ARRAYS, 0, NULL, NULL, NULL, NULL, NULL, 0};
   Lcg random = {5u};
   allocate(&frame);
   for (int q = 0; q < frame.primitives; ++q) {
@@ -144,7 +147,7 @@ static Frame gouraudQuads(void)
 
 static Frame lines(void)
 {
-  Frame frame = {"lines", GL_LINES, 200000, 2, 0, ARRAYS, 0, NULL, NULL, NULL, NULL, NULL};
+  Frame frame = {"lines", GL_LINES, 200000, 2, 0, ARRAYS, 0, NULL, NULL, NULL, NULL, NULL, 0};
   Lcg random = {3u};
   allocate(&frame);
   for (int l = 0; l < frame.primitives; ++l) {
@@ -182,7 +185,7 @@ static Frame litSpheres(void)
 {
   const int perSphere = 2 * SPHERE_SLICES * (SPHERE_STACKS - 1);
   Frame frame = {"lit_spheres", GL_TRIANGLES, SPHERE_COLUMNS * SPHERE_ROWS * perSphere, 3, 1, ARRAYS, 0,
-                 NULL, NULL, NULL, NULL, NULL};
+                 NULL, NULL, NULL, NULL, NULL, 0};
   const float cellW = (float)WIDTH / SPHERE_COLUMNS, cellH = (float)HEIGHT / SPHERE_ROWS;
   const float r = 0.45f * (cellW < cellH ? cellW : cellH);
   Lcg random = {4u};
@@ -220,7 +223,7 @@ static Frame litSpheresIndexed(void)
   const int gridVertices = (SPHERE_SLICES + 1) * (SPHERE_STACKS + 1);
   const int spheres = SPHERE_COLUMNS * SPHERE_ROWS;
   Frame frame = {"lit_spheres_indexed", GL_TRIANGLES, spheres * perSphere, 3, 1, ELEMENTS, 0,
-                 NULL, NULL, NULL, NULL, NULL};
+                 NULL, NULL, NULL, NULL, NULL, 0};
   const float cellW = (float)WIDTH / SPHERE_COLUMNS, cellH = (float)HEIGHT / SPHERE_ROWS;
   const float r = 0.45f * (cellW < cellH ? cellW : cellH);
   Lcg random = {4u};
@@ -258,6 +261,15 @@ static Frame litSpheresIndexed(void)
   return frame;
 }
 
+/* The lines frame antialiased. */
+static Frame smoothLines(void)
+{
+  Frame frame = lines();
+  frame.name = "smooth_lines";
+  frame.antialiased = 1;
+  return frame;
+}
+
 /* A frame drawn through glBegin/glEnd instead of arrays, from the same data. */
 static Frame immediately(Frame frame, const char *name)
 {
@@ -290,7 +302,7 @@ static void texturedQuad(Frame *frame, size_t v, const float corners[4][3], cons
 static Frame texturedScene(void)
 {
   Frame frame = {"textured_scene", GL_QUADS, 1 + 6 * SCENE_CUBES_X * SCENE_CUBES_Z, 4, 1, ARRAYS, 0,
-                 NULL, NULL, NULL, NULL, NULL};
+                 NULL, NULL, NULL, NULL, NULL, 0};
   allocate(&frame);
   frame.normals = allocateOrExit((size_t)frame.vertexCount * 3 * sizeof(GLfloat));
   frame.texCoords = allocateOrExit((size_t)frame.vertexCount * 2 * sizeof(GLfloat));
@@ -409,6 +421,20 @@ static void prepareFrameState(int lit)
   glEnableClientState(GL_NORMAL_ARRAY);
 }
 
+/* Antialiasing for the frames that want it: smooth lines blended by their coverage. */
+static void prepareAntialiasing(int on)
+{
+  if (!on) {
+    glDisable(GL_LINE_SMOOTH);
+    glDisable(GL_BLEND);
+    return;
+  }
+  glEnable(GL_LINE_SMOOTH);
+  glHint(GL_LINE_SMOOTH_HINT, GL_NICEST);
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+}
+
 static double now_ms(void)
 {
   struct timespec t;
@@ -488,10 +514,10 @@ static double peakMemoryMiB(void)
   return (double)usage.ru_maxrss / 1024.0;
 }
 
-enum { FRAME_COUNT = 12 };
+enum { FRAME_COUNT = 13 };
 static const char *const frameNames[FRAME_COUNT + 1] = {
     "small_triangles",       "large_triangles",     "gouraud_quads",  "lines",
-    "lines_immediate",       "lit_spheres",         "lit_spheres_immediate",
+    "lines_immediate",       "smooth_lines",        "lit_spheres",         "lit_spheres_immediate",
     "lit_spheres_indexed",   "textured_scene",      "small_triangles_immediate",
     "gouraud_quads_immediate", "textured_scene_immediate", NULL};
 
@@ -503,6 +529,7 @@ static int makeFrame(const char *name, Frame *frame)
   else if (strcmp(name, "gouraud_quads") == 0) *frame = gouraudQuads();
   else if (strcmp(name, "lines") == 0) *frame = lines();
   else if (strcmp(name, "lines_immediate") == 0) *frame = immediately(lines(), "lines_immediate");
+  else if (strcmp(name, "smooth_lines") == 0) *frame = smoothLines();
   else if (strcmp(name, "lit_spheres") == 0) *frame = litSpheres();
   else if (strcmp(name, "lit_spheres_immediate") == 0)
     *frame = immediately(litSpheres(), "lit_spheres_immediate");
@@ -585,6 +612,7 @@ int main(int argc, char **argv)
       prepareTexturedFrameState();
     else
       prepareFrameState(frame.normals != NULL);
+    prepareAntialiasing(frame.antialiased);
     drawFrame(&frame);
     for (int r = 0; r < runs; ++r) times[r] = drawFrame(&frame);
     qsort(times, (size_t)runs, sizeof times[0], byValue);
