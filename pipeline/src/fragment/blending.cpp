@@ -34,8 +34,8 @@ bool isBlendEquation(GLenum equation) {
 namespace {
 
 // The factor for component i (0-2: colour, 3: alpha) of table 4.1, as an 8-bit value.
-[[gnu::always_inline]] inline unsigned blendFactor(GLenum factor, int i, const uint8_t s[4], const uint8_t d[4],
-                     const uint8_t c[4]) {
+[[gnu::always_inline]] inline unsigned blendFactor(GLenum factor, int i, const uint8_t s[4],
+                                                   const uint8_t d[4], const uint8_t c[4]) {
   switch (factor) {
     case GL_ZERO: return 0;
     case GL_ONE: return 255;
