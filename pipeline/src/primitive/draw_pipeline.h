@@ -85,9 +85,12 @@ class DrawPipeline {
   bool needsClipping(const PipelineVertex& v) const { return codeOf(v.clip, v.clipCode) != 0; }
 
   void drawPoint(const PipelineVertex& v);
-  // restartStipple: the segment starts a new line (GL_LINES, the first of a strip).
+  // Where a segment's line stipple counter starts (spec 3.4.2) and whether another segment goes
+  // on from where it ends: Alone starts at 0 and none does (every segment of GL_LINES), First
+  // starts at 0 and the next goes on (a strip's first), Continued goes on from the previous one.
+  enum class StippleRun { Alone, First, Continued };
   void drawLine(const PipelineVertex& a, const PipelineVertex& b, const PipelineVertex& provoking,
-                bool restartStipple);
+                StippleRun stipple);
   void drawTriangle(const PipelineVertex& a, const PipelineVertex& b, const PipelineVertex& c,
                     const PipelineVertex& provoking, unsigned boundaryEdges);
 
@@ -150,6 +153,9 @@ class DrawPipeline {
   FrameStatistics* statistics_ = nullptr;  // GLASS_STATS, if set (teaching/)
   bool drawReadsContext_ = false;  // this draw's fragments read GL state by reference
   int stippleCounter_ = 0;
+  // Whether the segment being drawn must leave stippleCounter_ where it ends (a next segment goes
+  // on from there): otherwise the rasterizer need not walk the whole segment to count it.
+  bool stippleEndNeeded_ = true;
   PolygonStippleFilter polygonStipple_;
   raster::FragmentSink* polygonSink_ = &fragments_;  // polygonStipple_ when stippling
   // The sinks of antialiased lines' and points' triangles, whose fragments carry their shape.

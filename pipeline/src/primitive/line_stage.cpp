@@ -7,11 +7,12 @@
 namespace glass::gl {
 
 void DrawPipeline::drawLine(const PipelineVertex& a, const PipelineVertex& b,
-                            const PipelineVertex& provoking, bool restartStipple) {
-  if (restartStipple) {
+                            const PipelineVertex& provoking, StippleRun stipple) {
+  if (stipple != StippleRun::Continued) {
     stippleCounter_ = 0;
     lineReset_ = true;
   }
+  stippleEndNeeded_ = stipple != StippleRun::Alone;
   raster::ClipVertex va = a.clip, vb = b.clip;
   if (statistics_) {
     ++statistics_->lines;
@@ -41,6 +42,8 @@ void DrawPipeline::rasterizeSegment(raster::ClipVertex a, raster::ClipVertex b, 
   }
   if (smoothLines_) return rasterizeSmoothSegment(wa, wb, depthBias);  // smooth_stage.cpp
   lineSettings_.depthBias = depthBias;
+  // A segment whose counter nobody goes on from starts at 0 (it was just restarted): no counter.
+  lineSettings_.stippleCounter = stippleEndNeeded_ ? &stippleCounter_ : nullptr;
   tiles_.line(wa, wb, lineSettings_, fragments_);
 }
 

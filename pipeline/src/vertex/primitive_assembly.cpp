@@ -119,7 +119,7 @@ void assembleVertex(Context& ctx, const PipelineVertex& v) {
       if (n % 2 == 0) {
         w[0] = v;
       } else {
-        draw.drawLine(w[0], v, v, true);
+        draw.drawLine(w[0], v, v, DrawPipeline::StippleRun::Alone);
       }
       break;
     case GL_LINE_STRIP:
@@ -127,7 +127,7 @@ void assembleVertex(Context& ctx, const PipelineVertex& v) {
       if (n == 0) {
         pa.first = v;
       } else {
-        draw.drawLine(w[0], v, v, n == 1);
+        draw.drawLine(w[0], v, v, n == 1 ? DrawPipeline::StippleRun::First : DrawPipeline::StippleRun::Continued);
       }
       w[0] = v;
       break;
@@ -192,7 +192,7 @@ void endPrimitive(Context& ctx) {
   finishGathering(ctx);
   PrimitiveAssembly& pa = ctx.assembly;
   if (pa.mode == GL_LINE_LOOP && pa.vertexCount >= 2) {
-    ctx.draw->drawLine(pa.window[0], pa.first, pa.first, false);
+    ctx.draw->drawLine(pa.window[0], pa.first, pa.first, DrawPipeline::StippleRun::Continued);
   } else if (pa.mode == GL_POLYGON) {
     drawPolygon(*ctx.draw, pa.pending);
   } else if (pa.mode == GL_QUADS) {
