@@ -118,6 +118,9 @@ class DrawPipeline {
   double polygonDepthBias(const ClipCorners& corners, bool offsetEnabled);
   // line_stage.cpp, point_stage.cpp: clip, viewport, rasterize.
   void rasterizeSegment(raster::ClipVertex a, raster::ClipVertex b, double depthBias);
+  // Where the next segment's stipple counter starts (drawLine's StippleRun; a polygon's edges are
+  // each Alone).
+  void startStippleRun(StippleRun run);
   void rasterizeVertexPoint(const raster::ClipVertex& v, double depthBias);
   // The size of a point at clip position v: glPointSize, or the derived size of the point
   // parameters (point_stage.cpp).

@@ -8,11 +8,7 @@ namespace glass::gl {
 
 void DrawPipeline::drawLine(const PipelineVertex& a, const PipelineVertex& b,
                             const PipelineVertex& provoking, StippleRun stipple) {
-  if (stipple != StippleRun::Continued) {
-    stippleCounter_ = 0;
-    lineReset_ = true;
-  }
-  stippleEndNeeded_ = stipple != StippleRun::Alone;
+  startStippleRun(stipple);
   raster::ClipVertex va = a.clip, vb = b.clip;
   if (statistics_) {
     ++statistics_->lines;
@@ -25,6 +21,14 @@ void DrawPipeline::drawLine(const PipelineVertex& a, const PipelineVertex& b,
     useProvokingColors(provoking, false, vb);
   }
   rasterizeSegment(va, vb, 0.0);
+}
+
+void DrawPipeline::startStippleRun(StippleRun run) {
+  if (run != StippleRun::Continued) {
+    stippleCounter_ = 0;
+    lineReset_ = true;
+  }
+  stippleEndNeeded_ = run != StippleRun::Alone;
 }
 
 void DrawPipeline::rasterizeSegment(raster::ClipVertex a, raster::ClipVertex b, double depthBias) {

@@ -65,9 +65,7 @@ void DrawPipeline::drawTriangleEdges(const raster::ClipVertex (&v)[3], const uns
   const double bias = polygonDepthBias(cornersOf(v, codes), ctx_.raster.polygonOffsetLine);
   for (int i = 0; i < 3; ++i) {
     if (!(boundaryEdges & (1u << i))) continue;
-    stippleCounter_ = 0;  // each edge is stippled alone
-    stippleEndNeeded_ = false;
-    lineReset_ = true;
+    startStippleRun(StippleRun::Alone);  // each edge is stippled alone
     rasterizeSegment(v[i], v[(i + 1) % 3], bias);
   }
   for (int plane = 0; plane < raster::kMaxUserClipPlanes; ++plane) {
@@ -76,9 +74,7 @@ void DrawPipeline::drawTriangleEdges(const raster::ClipVertex (&v)[3], const uns
         !cutByUserPlane(v, plane, boundaryEdges, clip_.varyingCount, cut)) {
       continue;
     }
-    stippleCounter_ = 0;  // each edge is stippled alone
-    stippleEndNeeded_ = false;
-    lineReset_ = true;
+    startStippleRun(StippleRun::Alone);  // each edge is stippled alone
     rasterizeSegment(cut.exit, cut.entry, bias);
   }
 }
