@@ -22,6 +22,11 @@
 //             lookup (through Sampler2D, which gives sampleTexture's bits) and environment, then
 //             floatToColorByte (here on a row of pixels at a time) and one store, or the
 //             reference path's blend() with the stored pixel when blending is on.
+//   coverage  an antialiased line's or point's (primitive/smooth_coverage.h): the filter the
+//             reference path puts before the fragment stage (CoverageFilter) computes it from
+//             each pixel centre and drops a point's pixels of negative coverage before any
+//             test; the kernel does both first (smooth_coverage_rows-inl.h, the same operations
+//             lane by lane) and multiplies the alpha after fog, where processFragments does.
 //
 // Equality between targets: every vector operation here is one IEEE operation per lane (add,
 // multiply, exact division, conversion with round-to-nearest), which gives the same bits at any
@@ -49,6 +54,8 @@
 #include "fragment/fog_hooks.h"
 #include "fragment/fog_state.h"
 #include "glass/raster/triangle.h"
+#include "primitive/smooth_coverage.h"
+#include "primitive/smooth_coverage_rows-inl.h"
 #include "texture/level_of_detail-inl.h"
 #include "texture/row_sampler_2d-inl.h"
 #include "texture/sampler_2d.h"
@@ -337,13 +344,13 @@ void storeCoveredWords(void* row, const uint32_t* words, unsigned mask) {
   }
 }
 
-// The stencil and depth tests and their writes on each covered pixel of the block, in the
-// reference path's order and with its function (stencil_depth_tests.h); passed gets, per row,
-// the pixels that passed both.
+// The stencil and depth tests and their writes on each pixel of rowMask, in the reference
+// path's order and with its function (stencil_depth_tests.h); rowMask keeps, per row, the
+// pixels that passed both.
 void testStencilAndDepthOfBlock(raster::Framebuffer& fb, const StencilDepthSettings& tests,
-                                const raster::CoveredBlock& block, uint8_t passed[kSize]) {
+                                const raster::CoveredBlock& block, uint8_t rowMask[kSize]) {
   for (int j = 0; j < kSize; ++j) {
-    unsigned mask = block.rowMask[j];
+    unsigned mask = rowMask[j];
     const int y = block.by + j;
     for (unsigned rest = mask; rest != 0; rest &= rest - 1) {
       const int i = std::countr_zero(rest), x = block.bx + i;
@@ -352,8 +359,52 @@ void testStencilAndDepthOfBlock(raster::Framebuffer& fb, const StencilDepthSetti
       if (testStencilAndDepth(tests, stencil, depth, block.depth[j][i]) != StencilDepthOutcome::Passed)
         mask &= ~(1u << i);
     }
-    passed[j] = static_cast<uint8_t>(mask);
+    rowMask[j] = static_cast<uint8_t>(mask);
   }
+}
+
+// How the fragments of an antialiased shape are weighed (smooth_coverage_rows-inl.h).
+template <KernelCoverage kCoverage>
+struct CoverageStage;
+template <>
+struct CoverageStage<KernelCoverage::SmoothLine> {
+  using Shape = SmoothLineCoverage;
+  using Rows = smooth_coverage_rows::LineRows<kSize>;
+};
+template <>
+struct CoverageStage<KernelCoverage::SmoothPoint> {
+  using Shape = SmoothPointCoverage;
+  using Rows = smooth_coverage_rows::PointRows<kSize>;
+};
+
+// The coverage of the pixels of rowMask for the shape in the triangle's payload, as the
+// reference path's CoverageFilter computes it; the pixels of negative coverage (outside a
+// point's disc) leave rowMask, as the filter drops them before any test.
+template <KernelCoverage kCoverage>
+void weighBlock(const float* payload, const raster::CoveredBlock& block, uint8_t rowMask[kSize],
+                float coverage[kSize][kSize]) {
+  using Stage = CoverageStage<kCoverage>;
+  typename Stage::Shape shape;
+  std::memcpy(static_cast<void*>(&shape), payload, sizeof shape);  // trivially copyable floats
+  const typename Stage::Rows rows(shape);
+  const smooth_coverage_rows::ColumnCentres<kSize> centres(block.bx);
+  for (int j = 0; j < kSize; ++j) {
+    if (rowMask[j] == 0) continue;
+    rows.row(centres.x, static_cast<float>(block.by + j) + 0.5f, coverage[j]);
+    unsigned mask = rowMask[j];
+    for (unsigned rest = mask; rest != 0; rest &= rest - 1) {
+      const int i = std::countr_zero(rest);
+      if (coverage[j][i] < 0.0f) mask &= ~(1u << i);
+    }
+    rowMask[j] = static_cast<uint8_t>(mask);
+  }
+}
+
+// color[3][i] *= coverage[i] for the row's pixels (spec 3.11), as the reference path does after fog.
+void weighAlphaRow(const float* coverage, float color[4][kSize]) {
+  const RowFloats f;
+  for (int i = 0; i < kSize; i += static_cast<int>(hn::Lanes(f)))
+    hn::Store(hn::Mul(hn::Load(f, color[3] + i), hn::Load(f, coverage + i)), f, color[3] + i);
 }
 
 // Blends the colours words[i] (RGBA8, as packColorBytes lays them out) of the pixels of mask
@@ -380,16 +431,18 @@ void applyFogRow(const FogState& fog, const float* c, unsigned mask, float color
   }
 }
 
-template <bool kWriteDepth, bool kWriteColor, KernelTexturing kTexturing, bool kFog>
+template <bool kWriteDepth, bool kWriteColor, KernelTexturing kTexturing, bool kFog, KernelCoverage kCoverage>
 void shadeBlock(Context& ctx, const KernelPixelOps& ops, const KernelTexture& texture,
                 const raster::TriangleSetup& setup, const raster::CoveredBlock& block) {
   raster::Framebuffer& fb = ctx.framebuffer;
   const int bx = block.bx, by = block.by;
   uint8_t rowMask[kSize];  // the pixels to shade
+  std::memcpy(rowMask, block.rowMask, sizeof rowMask);
+  [[maybe_unused]] alignas(64) float coverage[kSize][kSize];
+  if constexpr (kCoverage != KernelCoverage::None) weighBlock<kCoverage>(setup.payload, block, rowMask, coverage);
   if (ops.tests.stencilTest) {
     testStencilAndDepthOfBlock(fb, ops.tests, block, rowMask);
   } else {
-    std::memcpy(rowMask, block.rowMask, sizeof rowMask);
     if constexpr (kWriteDepth) {
       for (int j = 0; j < kSize; ++j) {
         if (rowMask[j] != 0) storeCoveredWords(fb.depthAt(bx, by + j), block.depth[j], rowMask[j]);
@@ -423,6 +476,7 @@ void shadeBlock(Context& ctx, const KernelPixelOps& ops, const KernelTexture& te
         fogCoordinate->computeRow(j);
         applyFogRow(ctx.fog, fogCoordinate->row(0), mask, color);
       }
+      if constexpr (kCoverage != KernelCoverage::None) weighAlphaRow(coverage[j], color);
       alignas(64) uint32_t words[kSize];
       packRowColors(color[0], color[1], color[2], color[3], words);
       if (ops.blend) {
@@ -440,13 +494,14 @@ constexpr BlockKernel kernelAt() {
   constexpr bool writeDepth = kIndex & 1, writeColor = kIndex & 2;
   constexpr KernelTexturing texturing = (kIndex & 4) ? KernelTexturing::Single2D : KernelTexturing::None;
   constexpr bool fog = kIndex & 8;
-  return &shadeBlock<writeDepth, writeColor, texturing, fog>;
+  constexpr auto coverage = static_cast<KernelCoverage>(kIndex >> 4);
+  return &shadeBlock<writeDepth, writeColor, texturing, fog, coverage>;
 }
 template <int... kIndices>
 constexpr std::array<BlockKernel, sizeof...(kIndices)> kernelTable(std::integer_sequence<int, kIndices...>) {
   return {kernelAt<kIndices>()...};
 }
-constexpr auto kKernels = kernelTable(std::make_integer_sequence<int, 16>());
+constexpr auto kKernels = kernelTable(std::make_integer_sequence<int, 16 * kKernelCoverageCount>());
 
 }  // namespace
 
@@ -465,7 +520,8 @@ int kernelIndex(const BlockKernelKey& key) {
   // Texturing and fog matter only when colour is written.
   const bool textured = key.writeColor && key.texturing == KernelTexturing::Single2D;
   const bool fog = key.writeColor && key.fog;
-  return (key.writeDepth ? 1 : 0) | (key.writeColor ? 2 : 0) | (textured ? 4 : 0) | (fog ? 8 : 0);
+  return (key.writeDepth ? 1 : 0) | (key.writeColor ? 2 : 0) | (textured ? 4 : 0) | (fog ? 8 : 0) |
+         (static_cast<int>(key.coverage) << 4);
 }
 
 }  // namespace

@@ -31,6 +31,13 @@ enum class KernelTexturing : uint8_t {
              // environment but GL_COMBINE
 };
 
+// What weighs the fragments' alpha: nothing (a filled triangle), or the coverage of the
+// antialiased line or point whose triangle the block belongs to (primitive/smooth_coverage.h),
+// read from the triangle's payload (raster::TriangleSetup::payload). A point's fragments outside
+// its disc are dropped before any test.
+enum class KernelCoverage : uint8_t { None, SmoothLine, SmoothPoint };
+inline constexpr int kKernelCoverageCount = 3;
+
 // The state a kernel is compiled for. Kernels exist only for draws whose fragments need no
 // per-fragment lighting, colour sum, alpha test or logic op, and write either all four colour
 // channels or none; FragmentProcessor::prepare checks that.
@@ -39,6 +46,7 @@ struct BlockKernelKey {
   bool writeColor = false;
   KernelTexturing texturing = KernelTexturing::None;
   bool fog = false;  // fog_hooks.h's applyFog after texturing
+  KernelCoverage coverage = KernelCoverage::None;  // after fog, as the reference path does
 };
 
 // What a kernel does with the pixels it shades, decided once per draw and read at run time

@@ -94,13 +94,13 @@ void FragmentProcessor::prepare(Context& ctx, bool phong) {
     s_.scissorX1 = static_cast<int>(std::min<long long>(INT_MAX, static_cast<long long>(box.x) + box.width));
     s_.scissorY1 = static_cast<int>(std::min<long long>(INT_MAX, static_cast<long long>(box.y) + box.height));
   }
-  kernel_ = chooseKernel();
+  for (int c = 0; c < kKernelCoverageCount; ++c) kernels_[c] = chooseKernel(static_cast<KernelCoverage>(c));
   lineKernel_ = chooseLineKernel();
   pixelOps_.tests = s_.tests;
   pixelOps_.blend = s_.blend;
   pixelOps_.blendSettings = s_.blendSettings;
   pixelOps_.blendFunction = s_.blendFunction;
-  if (kernel_ != nullptr && s_.texturing) kernelTexture_.prepare(ctx);
+  if (kernels_[0] != nullptr && s_.texturing) kernelTexture_.prepare(ctx);
   // With the stencil test on, the kernel makes the depth test itself (block_kernels.h).
   kernelNeedsEarlyDepth_ = s_.tests.depthTest && s_.tests.depthFunc != GL_ALWAYS && !s_.tests.stencilTest;
 }
@@ -116,7 +116,7 @@ bool FragmentProcessor::storesColorsAsGiven() const {
          s_.allChannels;
 }
 
-BlockKernel FragmentProcessor::chooseKernel() const {
+BlockKernel FragmentProcessor::chooseKernel(KernelCoverage coverage) const {
   if (!kernelsAllowed()) return nullptr;
   // What no kernel does (block_kernels.h).
   if (s_.phong || s_.colorSum || s_.alphaTest || s_.logicOp || (s_.writesColor && !s_.allChannels))
@@ -126,6 +126,7 @@ BlockKernel FragmentProcessor::chooseKernel() const {
   key.writeDepth = s_.tests.depthTest && s_.tests.depthMask && !s_.tests.stencilTest;
   key.writeColor = s_.writesColor;
   key.fog = s_.fog;
+  key.coverage = coverage;
   if (s_.texturing) {
     if (singleTexture2D(*ctx_) == nullptr) return nullptr;
     key.texturing = KernelTexturing::Single2D;
@@ -145,13 +146,26 @@ LineKernel FragmentProcessor::chooseLineKernel() const {
   return lineKernelFor(key);
 }
 
+bool FragmentProcessor::kernelMayShade(BlockKernel kernel, const raster::TriangleSetup& setup) const {
+  return kernel != nullptr && (!kernelNeedsEarlyDepth_ || setup.earlyDepth.buffer != nullptr);
+}
+
 void FragmentProcessor::processTriangleBlock(const raster::TriangleSetup& setup,
                                              const raster::CoveredBlock& block) {
-  if (kernel_ != nullptr && (!kernelNeedsEarlyDepth_ || setup.earlyDepth.buffer != nullptr)) {
-    kernel_(*ctx_, pixelOps_, kernelTexture_, setup, block);
+  const BlockKernel kernel = kernels_[static_cast<int>(KernelCoverage::None)];
+  if (kernelMayShade(kernel, setup)) {
+    kernel(*ctx_, pixelOps_, kernelTexture_, setup, block);
   } else {
     raster::FragmentSink::processTriangleBlock(setup, block);
   }
+}
+
+bool FragmentProcessor::shadeWeighedBlock(const raster::TriangleSetup& setup,
+                                          const raster::CoveredBlock& block, KernelCoverage coverage) {
+  const BlockKernel kernel = kernels_[static_cast<int>(coverage)];
+  if (setup.payload == nullptr || !kernelMayShade(kernel, setup)) return false;
+  kernel(*ctx_, pixelOps_, kernelTexture_, setup, block);
+  return true;
 }
 
 void FragmentProcessor::processLineRuns(const raster::LineRunBatch& batch) {

@@ -11,6 +11,7 @@
 
 #include <GL/gl.h>
 
+#include <algorithm>
 #include <cstdint>
 
 #include "fragment/blending.h"
@@ -40,6 +41,12 @@ class FragmentProcessor final : public raster::FragmentSink {
   // (block_kernels.h), or the reference path when there is none.
   void processTriangleBlock(const raster::TriangleSetup& setup,
                             const raster::CoveredBlock& block) override;
+  // The same with the block's fragments weighed by `coverage` (the triangle belongs to an
+  // antialiased line or point whose shape is its payload): true when a kernel shaded the
+  // block; false when none is chosen for the state, and then nothing was done (the caller,
+  // CoverageFilter, takes the reference path).
+  bool shadeWeighedBlock(const raster::TriangleSetup& setup, const raster::CoveredBlock& block,
+                         KernelCoverage coverage);
   // Runs of a line segment: the line kernel prepare() chose for the draw's state
   // (line_kernels.h), or the reference path when there is none.
   void processLineRuns(const raster::LineRunBatch& batch) override;
@@ -56,7 +63,7 @@ class FragmentProcessor final : public raster::FragmentSink {
   bool readsLighting() const { return s_.phong; }
   // Whether two processors treat every fragment the same way.
   bool sameSettings(const FragmentProcessor& other) const {
-    return ctx_ == other.ctx_ && s_ == other.s_ && kernel_ == other.kernel_ &&
+    return ctx_ == other.ctx_ && s_ == other.s_ && std::ranges::equal(kernels_, other.kernels_) &&
            lineKernel_ == other.lineKernel_;
   }
 
@@ -104,16 +111,20 @@ class FragmentProcessor final : public raster::FragmentSink {
   // Whether any kernel may draw: fast paths are on and no teaching view or statistics watch
   // the fragments (they see them in the reference path, teaching/teaching_hooks.h).
   bool kernelsAllowed() const;
-  // The fast path's kernel for the settings, or null (block_kernels.h).
-  BlockKernel chooseKernel() const;
+  // The fast path's kernel for the settings and a kind of coverage, or null (block_kernels.h).
+  BlockKernel chooseKernel(KernelCoverage coverage) const;
+  // Whether kernel may shade the block (it relies on the walk's early depth test when the
+  // depth test is on).
+  bool kernelMayShade(BlockKernel kernel, const raster::TriangleSetup& setup) const;
   // The fast path's kernel for line runs with the settings, or null (line_kernels.h).
   LineKernel chooseLineKernel() const;
 
   Context* ctx_ = nullptr;
   Settings s_;
-  BlockKernel kernel_ = nullptr;
+  // The block kernels for each KernelCoverage (filled triangles, smooth lines, smooth points).
+  BlockKernel kernels_[kKernelCoverageCount] = {};
   LineKernel lineKernel_ = nullptr;
-  KernelPixelOps pixelOps_;  // what kernel_ does with the pixels it shades, from s_
+  KernelPixelOps pixelOps_;  // what kernels_ do with the pixels they shade, from s_
   KernelTexture kernelTexture_;  // the texture of a kernel that textures
   // The kernel relies on the triangle walk's early depth test (the depth test is on and not
   // GL_ALWAYS); a triangle set up without it goes the reference way.

@@ -119,6 +119,13 @@ void CoverageFilter<Coverage>::processFragments(const raster::FragmentBatch& bat
   }
 }
 
+template <class Coverage>
+void CoverageFilter<Coverage>::processTriangleBlock(const raster::TriangleSetup& setup,
+                                                   const raster::CoveredBlock& block) {
+  if (next_.shadeWeighedBlock(setup, block, Coverage::kKernelCoverage)) return;
+  raster::FragmentSink::processTriangleBlock(setup, block);  // emitBlockFragments, then processFragments
+}
+
 template class CoverageFilter<SmoothLineCoverage>;
 template class CoverageFilter<SmoothPointCoverage>;
 

@@ -44,6 +44,7 @@ namespace glass::gl {
 // What the coverage of a smooth line's fragment depends on; the floats its queued triangles
 // carry to the fragment stage (raster::TriangleSettings::payload).
 struct SmoothLineCoverage {
+  static constexpr KernelCoverage kKernelCoverage = KernelCoverage::SmoothLine;
   float midX = 0, midY = 0;        // the segment's midpoint
   float dirX = 1, dirY = 0;        // unit direction p0 -> p1
   float halfWidth = 1;             // h
@@ -69,6 +70,7 @@ bool makeSmoothLine(const raster::WindowVertex& a, const raster::WindowVertex& b
 
 // What the coverage of a smooth point's fragment depends on (as SmoothLineCoverage).
 struct SmoothPointCoverage {
+  static constexpr KernelCoverage kKernelCoverage = KernelCoverage::SmoothPoint;
   float x = 0, y = 0;   // the point
   float radius = 1;     // r
 
@@ -94,6 +96,8 @@ void makeSmoothPoint(const raster::WindowVertex& v, float radius, int framebuffe
 // kind of shape: it reads the shape's Coverage from the fragments' payload (each triangle of a
 // smooth line or point carries its own), computes each fragment's coverage from its pixel
 // centre, drops the fragments of negative coverage, and hands the rest on with their coverage.
+// That is the reference path; a covered block goes instead to the fragment stage's block kernel
+// for the state and the Coverage when there is one (block_kernels.h), which does the same.
 template <class Coverage>
 class CoverageFilter final : public raster::FragmentSink {
  public:
@@ -104,6 +108,7 @@ class CoverageFilter final : public raster::FragmentSink {
 
   explicit CoverageFilter(FragmentProcessor& next) : next_(next) {}
   void processFragments(const raster::FragmentBatch& batch) override;
+  void processTriangleBlock(const raster::TriangleSetup& setup, const raster::CoveredBlock& block) override;
 
  private:
   FragmentProcessor& next_;
