@@ -1,7 +1,9 @@
 #include "fragment/blending.h"
 
 #include <algorithm>
+#include <array>
 #include <cstring>
+#include <utility>
 
 namespace glass::gl {
 
@@ -94,23 +96,17 @@ void blendWith(const BlendSettings& b, const uint8_t s[4], const uint8_t d[4], u
   blendPixel(fixed, s, d, result);
 }
 
-// The settings blendWith is compiled for, each with the same factors for colour and alpha.
-struct CompiledBlend {
-  GLenum equation, source, destination;
-  BlendFunction function;
-};
-template <GLenum kSource, GLenum kDestination>
-constexpr CompiledBlend addingWith() {
-  return {GL_FUNC_ADD, kSource, kDestination, &blendWith<GL_FUNC_ADD, kSource, kDestination, kSource, kDestination>};
+// blendWith for kCommonBlends[kIndex].
+template <int kIndex>
+constexpr BlendFunction commonBlendFunction() {
+  constexpr CommonBlend common = kCommonBlends[kIndex];
+  return &blendWith<GL_FUNC_ADD, common.source, common.destination, common.source, common.destination>;
 }
-constexpr CompiledBlend kCompiledBlends[] = {
-    addingWith<GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA>(),  // transparency, antialiased lines and points
-    addingWith<GL_ONE, GL_ONE_MINUS_SRC_ALPHA>(),        // premultiplied alpha
-    addingWith<GL_SRC_ALPHA, GL_ONE>(),                  // additive glow, particles
-    addingWith<GL_ONE, GL_ONE>(),                        // additive
-    addingWith<GL_DST_COLOR, GL_ZERO>(),                 // modulation (light maps, multipass)
-    addingWith<GL_ZERO, GL_SRC_COLOR>(),
-};
+template <int... kIndices>
+constexpr std::array<BlendFunction, sizeof...(kIndices)> commonBlendFunctions(std::integer_sequence<int, kIndices...>) {
+  return {commonBlendFunction<kIndices>()...};
+}
+constexpr auto kCommonBlendFunctions = commonBlendFunctions(std::make_integer_sequence<int, kCommonBlendCount>());
 
 }  // namespace
 
@@ -118,13 +114,19 @@ void blend(const BlendSettings& b, const uint8_t s[4], const uint8_t d[4], uint8
   blendPixel(b, s, d, result);
 }
 
-BlendFunction blendFunctionFor(const BlendSettings& b) {
-  for (const CompiledBlend& compiled : kCompiledBlends) {
-    if (b.equation == compiled.equation && b.srcRGB == compiled.source && b.srcAlpha == compiled.source &&
-        b.dstRGB == compiled.destination && b.dstAlpha == compiled.destination)
-      return compiled.function;
+int commonBlendIndex(const BlendSettings& b) {
+  for (int i = 0; i < kCommonBlendCount; ++i) {
+    const CommonBlend& common = kCommonBlends[i];
+    if (b.equation == GL_FUNC_ADD && b.srcRGB == common.source && b.srcAlpha == common.source &&
+        b.dstRGB == common.destination && b.dstAlpha == common.destination)
+      return i;
   }
-  return &blend;
+  return -1;
+}
+
+BlendFunction blendFunctionFor(const BlendSettings& b) {
+  const int common = commonBlendIndex(b);
+  return common >= 0 ? kCommonBlendFunctions[common] : &blend;
 }
 
 }  // namespace glass::gl

@@ -28,6 +28,25 @@ bool isBlendEquation(GLenum equation);
 void blend(const BlendSettings& settings, const uint8_t source[4], const uint8_t destination[4],
            uint8_t result[4]);
 
+// The settings programs use most, each with GL_FUNC_ADD and the same factors for colour and
+// alpha, for which blendFunctionFor and the blend rows (blend_rows.h) have copies compiled with
+// the equation and factors as constants.
+struct CommonBlend {
+  GLenum source, destination;
+};
+inline constexpr CommonBlend kCommonBlends[] = {
+    {GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA},  // transparency, antialiased lines and points
+    {GL_ONE, GL_ONE_MINUS_SRC_ALPHA},        // premultiplied alpha
+    {GL_SRC_ALPHA, GL_ONE},                  // additive glow, particles
+    {GL_ONE, GL_ONE},                        // additive
+    {GL_DST_COLOR, GL_ZERO},                 // modulation (light maps, multipass)
+    {GL_ZERO, GL_SRC_COLOR},
+};
+inline constexpr int kCommonBlendCount = static_cast<int>(sizeof kCommonBlends / sizeof kCommonBlends[0]);
+
+// The index in kCommonBlends of the settings' equation and factors, or -1.
+int commonBlendIndex(const BlendSettings& settings);
+
 // A function that blends one pixel as blend() does, chosen once per draw by blendFunctionFor:
 // for the settings programs use most (transparency and antialiasing with GL_SRC_ALPHA,
 // GL_ONE_MINUS_SRC_ALPHA, additive and premultiplied blending, modulation) a copy of blend()

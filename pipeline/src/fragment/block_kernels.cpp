@@ -20,8 +20,9 @@
 //             and so is its reciprocal, which is then not computed.
 //   colour    the same functions as the reference path on the same floats: texture_hooks.h's
 //             lookup (through Sampler2D, which gives sampleTexture's bits) and environment, then
-//             floatToColorByte (here on a row of pixels at a time) and one store, or the
-//             reference path's blend() with the stored pixel when blending is on.
+//             floatToColorByte (here on a row of pixels at a time) and one store, or, when
+//             blending is on, blend()'s bytes with the stored pixels for a row at a time
+//             (blend_rows.h).
 //   coverage  an antialiased line's or point's (primitive/smooth_coverage.h): the filter the
 //             reference path puts before the fragment stage (CoverageFilter) computes it from
 //             each pixel centre and drops a point's pixels of negative coverage before any
@@ -47,7 +48,7 @@
 #include "core/context.h"
 #include "core/simd_dispatch.h"
 #include "fragment/block_kernels.h"
-#include "fragment/blending.h"
+#include "fragment/blend_rows.h"
 #include "fragment/stencil_depth_tests.h"
 #include "fragment/color_conversion.h"
 #include "fragment/color_packing-inl.h"
@@ -307,17 +308,17 @@ struct TexturingStage<KernelTexturing::Single2D> {
   using Texturing = QuadTexturing;
 };
 
-// Copies kWords words from `from` + offset to `to` + 4 offset: a fixed size, one instruction.
+// Copies kWords pixels (4 bytes each) at pixel offset `offset`: a fixed size, one instruction.
 template <int kWords>
-void copyWordsAt(uint8_t* to, const uint32_t* from, int offset) {
-  std::memcpy(to + 4 * offset, from + offset, 4 * kWords);
+void copyWordsAt(uint8_t* to, const uint8_t* from, int offset) {
+  std::memcpy(to + 4 * offset, from + 4 * offset, 4 * kWords);
 }
 
-// Copies the run of n words (1 <= n <= 8) from `from` to `to` in at most two fixed-size copies,
-// the second overlapping the first where n is not a power of two (the overlap is written twice
-// with the same values). Every byte written belongs to the run: the pixels beside it may be
-// another thread's, in the next tile.
-void copyWordRun(uint8_t* to, const uint32_t* from, int n) {
+// Copies the run of n pixels (1 <= n <= 8) in at most two fixed-size copies, the second
+// overlapping the first where n is not a power of two (the overlap is written twice with the
+// same values). Every byte read and written belongs to the run: the pixels beside it in the
+// colour or depth buffer may be another thread's, in the next tile, or past the row's end.
+void copyWordRun(uint8_t* to, const uint8_t* from, int n) {
   if (n >= 4) {
     copyWordsAt<4>(to, from, 0);
     copyWordsAt<4>(to, from, n - 4);
@@ -329,20 +330,24 @@ void copyWordRun(uint8_t* to, const uint32_t* from, int n) {
   }
 }
 
-// Stores words[i] as the 4 bytes at row + 4 i for each bit i of mask (a depth value or an RGBA8
-// pixel): a covered run without gaps (most rows) is one or two copies.
-void storeCoveredWords(void* row, const uint32_t* words, unsigned mask) {
-  auto* bytes = static_cast<uint8_t*>(row);
+// Copies pixel i (4 bytes at 4 i, a depth value or an RGBA8 colour) from `from` to `to` for each
+// bit i of mask: a covered run without gaps (most rows) is one or two copies.
+void copyCoveredWords(void* to, const void* from, unsigned mask) {
+  auto* toBytes = static_cast<uint8_t*>(to);
+  const auto* fromBytes = static_cast<const uint8_t*>(from);
   const int first = firstBit(mask), last = lastBit(mask);
   if (mask >> first == (2u << (last - first)) - 1u) {
-    copyWordRun(bytes + 4 * first, words + first, last - first + 1);
+    copyWordRun(toBytes + 4 * first, fromBytes + 4 * first, last - first + 1);
     return;
   }
   for (unsigned rest = mask; rest != 0; rest &= rest - 1) {
     const int i = std::countr_zero(rest);
-    std::memcpy(bytes + 4 * i, words + i, 4);
+    std::memcpy(toBytes + 4 * i, fromBytes + 4 * i, 4);
   }
 }
+
+// Stores words[i] as the 4 bytes at row + 4 i for each bit i of mask.
+void storeCoveredWords(void* row, const uint32_t* words, unsigned mask) { copyCoveredWords(row, words, mask); }
 
 // The stencil and depth tests and their writes on each pixel of rowMask, in the reference
 // path's order and with its function (stencil_depth_tests.h); rowMask keeps, per row, the
@@ -408,17 +413,13 @@ void weighAlphaRow(const float* coverage, float color[4][kSize]) {
 }
 
 // Blends the colours words[i] (RGBA8, as packColorBytes lays them out) of the pixels of mask
-// into the colour buffer's row, pixel by pixel with the reference path's function (or its copy
-// for the draw's settings, blendFunctionFor).
+// into the colour buffer's row, the row's pixels at once (blend_rows.h, blend()'s bytes); the
+// buffer's pixels outside mask are neither read nor written.
 void blendCoveredWords(const KernelPixelOps& ops, uint8_t* row, const uint32_t* words, unsigned mask) {
-  for (unsigned rest = mask; rest != 0; rest &= rest - 1) {
-    const int i = std::countr_zero(rest);
-    uint8_t source[4], blended[4];
-    std::memcpy(source, words + i, 4);
-    uint8_t* pixel = row + 4 * i;
-    ops.blendFunction(ops.blendSettings, source, pixel, blended);
-    std::memcpy(pixel, blended, 4);
-  }
+  alignas(64) uint32_t destination[kSize] = {}, blended[kSize];
+  copyCoveredWords(destination, row, mask);
+  ops.blendRow(ops.blendSettings, words, destination, blended);
+  storeCoveredWords(row, blended, mask);
 }
 
 // The fog of fog_hooks.h's applyFog on the pixels of mask, whose fog coordinates are c[i]: the

@@ -15,6 +15,7 @@
 
 #include <cstdint>
 
+#include "fragment/blend_rows.h"
 #include "fragment/blending.h"
 #include "fragment/kernel_texture.h"
 #include "fragment/stencil_depth_tests.h"
@@ -62,7 +63,7 @@ struct KernelPixelOps {
   StencilDepthSettings tests;  // the kernel runs them when tests.stencilTest is on
   bool blend = false;  // blend with the colour buffer (blending.h) instead of replacing it
   BlendSettings blendSettings;
-  BlendFunction blendFunction = &glass::gl::blend;  // blendFunctionFor(blendSettings)
+  BlendRow blendRow = nullptr;  // blendRowFor(blendSettings), when blending
 
   bool operator==(const KernelPixelOps&) const = default;
 };

@@ -99,7 +99,7 @@ void FragmentProcessor::prepare(Context& ctx, bool phong) {
   pixelOps_.tests = s_.tests;
   pixelOps_.blend = s_.blend;
   pixelOps_.blendSettings = s_.blendSettings;
-  pixelOps_.blendFunction = s_.blendFunction;
+  pixelOps_.blendRow = s_.blend ? blendRowFor(s_.blendSettings) : nullptr;
   if (kernels_[0] != nullptr && s_.texturing) kernelTexture_.prepare(ctx);
   // With the stencil test on, the kernel makes the depth test itself (block_kernels.h).
   kernelNeedsEarlyDepth_ = s_.tests.depthTest && s_.tests.depthFunc != GL_ALWAYS && !s_.tests.stencilTest;
