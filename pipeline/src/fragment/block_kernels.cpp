@@ -396,6 +396,9 @@ void weighBlock(const float* payload, const raster::CoveredBlock& block, uint8_t
   for (int j = 0; j < kSize; ++j) {
     if (rowMask[j] == 0) continue;
     rows.row(centres.x, static_cast<float>(block.by + j) + 0.5f, coverage[j]);
+    // A line's coverage is a product of clamped values and a positive factor, never below 0
+    // (at worst -0 or NaN, which the filter keeps too): only a point's pixels can be dropped.
+    if constexpr (kCoverage != KernelCoverage::SmoothPoint) continue;
     unsigned mask = rowMask[j];
     for (unsigned rest = mask; rest != 0; rest &= rest - 1) {
       const int i = std::countr_zero(rest);
