@@ -111,7 +111,11 @@ bool CoverBlockRows(const BlockRows& rows, CoveredBlock& block) {
       for (int k = 0; k < 3; ++k) rowStart[k] += rows.stepY[k];
     }
     if (mask == 0) continue;
-    rowDepths(rows, j, block.depth[j]);
+    if (rows.depthColumn != nullptr) {
+      rowDepths(rows, j, block.depth[j]);
+    } else {
+      std::memset(block.depth[j], 0, sizeof block.depth[j]);
+    }
     if (rows.stored != nullptr) mask &= rowDepthPasses(rows, passing, j, block.depth[j]);
     block.rowMask[j] = static_cast<uint8_t>(mask);
     any |= mask != 0;

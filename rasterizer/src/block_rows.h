@@ -24,7 +24,8 @@ struct BlockRows {
   bool accepted;      // every centre of the block is inside all three edges: no coverage test
   unsigned columns;   // the columns of the triangle's box: bits [i0, i1)
   int firstRow, endRow;  // the rows of the triangle's box: [j0, j1)
-  // The depth at the centre of pixel (bx + i, by + j) is depthValue(depthColumn[i] + depthRow[j]).
+  // The depth at the centre of pixel (bx + i, by + j) is depthValue(depthColumn[i] + depthRow[j]);
+  // 0 when depthColumn is null (nothing reads it: TriangleSettings::depthUsed).
   const double* depthColumn;
   const double* depthRow;
   // The early depth test, unless `stored` is null: row j's stored depths from column bx are at

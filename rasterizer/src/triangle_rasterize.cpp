@@ -31,7 +31,9 @@
 //
 // Depth comes first, so that the early depth test (depth_test.h) can drop hidden fragments
 // before their varyings are interpolated: with many overlapping triangles most fragments are
-// hidden, and the divisions of perspective-correct interpolation are the costliest part.
+// hidden, and the divisions of perspective-correct interpolation are the costliest part. When
+// nothing reads depth (the depth test is off: TriangleSettings::depthUsed), the walk leaves out
+// the block's depth plane and the rows' depths, and the fragments carry depth 0.
 //
 // Hidden blocks. The depth a pixel gets, depthValue(column + row) with column and row as above,
 // never decreases (or never increases) from one column to the next, nor from one row to the
@@ -182,6 +184,7 @@ void walkTriangle(const TriangleSetup& setup, FragmentSink& sink) {
   const Framebuffer* earlyDepth = setup.earlyDepth.buffer;
   HiddenBlockOdds* const odds = setup.hiddenBlockOdds;
   constexpr bool kOrdering = nearerPasses(kCompare) || fartherPasses(kCompare);
+  const bool depthUsed = kEarly || setup.depthUsed;  // the early test reads it
 
   // What the block rows (block_rows.h) take from the triangle, the same for every block; each
   // block sets the rest. Edge k's step from column 0 of a block to column i is i * stepX[k].
@@ -224,7 +227,7 @@ void walkTriangle(const TriangleSetup& setup, FragmentSink& sink) {
           }
         }
       }
-      depth.fillInterior();
+      if (depthUsed) depth.fillInterior();
 
       // Coverage and depth, row by row; a fragment that fails the early depth test goes no
       // further.
@@ -233,7 +236,7 @@ void walkTriangle(const TriangleSetup& setup, FragmentSink& sink) {
       rows.columns = columnMask(i0, i1);
       rows.firstRow = y0 - by;
       rows.endRow = y1 - by;
-      rows.depthColumn = depth.column;
+      rows.depthColumn = depthUsed ? depth.column : nullptr;
       rows.depthRow = depth.row;
       rows.stored = test ? earlyDepth->depthAt(bx, by) : nullptr;
       rows.storedWhole = storedWhole;

@@ -134,6 +134,7 @@ void setPlanes(const SnappedTriangle& t, const TriangleSettings& settings, Trian
   setup.perspectiveCorrect = settings.perspectiveCorrect;
   setup.frontFacing = settings.frontFacing;
   setup.earlyDepth = settings.earlyDepth;
+  setup.depthUsed = settings.depthUsed;
   setup.payload = settings.payload;
 }
 

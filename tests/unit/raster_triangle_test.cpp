@@ -363,6 +363,33 @@ TEST_CASE("triangle: depth is the plane through the vertices, biased, clamped an
   for (const Fragment& f : flat.fragments) CHECK(f.depth == (f.x < 10 || f.x >= 20 ? kDepthMax : 0u));
 }
 
+TEST_CASE("triangle: without a reader of depth, the same fragments with depth 0") {
+  // TriangleSettings::depthUsed false (the depth test is off): the walk skips the depth plane,
+  // and every fragment is the one it would be otherwise but for its depth, which is 0.
+  std::mt19937 rng(61206);
+  std::uniform_real_distribution<double> unit(0, 1), w(0.1, 2);
+  for (int trial = 0; trial < 60; ++trial) {
+    WindowVertex v[3];
+    for (WindowVertex& vertex : v) {
+      vertex = windowVertex(gridCoordinate(rng, -8, 72), gridCoordinate(rng, -8, 72), static_cast<float>(unit(rng)),
+                            static_cast<float>(w(rng)));
+      for (int k = 0; k < 4; ++k) vertex.varyings[k] = static_cast<float>(unit(rng));
+    }
+    TriangleSettings settings = settingsFor(rect(0, 0, 64, 64), 4);
+    RecordingSink withDepth, without;
+    drawTriangle(v[0], v[1], v[2], settings, withDepth);
+    settings.depthUsed = false;
+    drawTriangle(v[0], v[1], v[2], settings, without);
+    REQUIRE(without.fragments.size() == withDepth.fragments.size());
+    for (size_t i = 0; i < without.fragments.size(); ++i) {
+      const Fragment &a = withDepth.fragments[i], &b = without.fragments[i];
+      CHECK((a.x == b.x && a.y == b.y));
+      CHECK(b.depth == 0u);
+      for (int k = 0; k < 4; ++k) CHECK(std::bit_cast<uint32_t>(a.varyings[k]) == std::bit_cast<uint32_t>(b.varyings[k]));
+    }
+  }
+}
+
 TEST_CASE("triangle: varyings are perspective-correct and constants stay exact") {
   // Vertices with different w; the value at a pixel is sum(l_i a_i / w_i) / sum(l_i / w_i) with
   // l_i the screen-space barycentric coordinates of the pixel centre.

@@ -80,6 +80,7 @@ void DrawPipeline::prepare() {
   triangleSettings_.varyingCount = vertex_.varyingCount;
   triangleSettings_.perspectiveCorrect = perspective;
   triangleSettings_.earlyDepth = earlyDepthTest(ctx);
+  triangleSettings_.depthUsed = depthTestActive(ctx);  // only the depth test reads a fragment's depth
   teaching_ = teachingCanvasFor(ctx);
   // The overdraw view counts every fragment rasterized: none may be dropped before the count.
   // So does GLASS_STATS, whose depth test count is the fragment stage's.

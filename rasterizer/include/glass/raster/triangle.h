@@ -28,6 +28,9 @@ struct TriangleSettings {
   double depthBias = 0.0;
   bool frontFacing = true;     // passed through to the fragment batches
   EarlyDepthTest earlyDepth;   // off by default (depth_test.h)
+  // Whether anything reads the fragments' depth (the depth test is on). When not, the walk
+  // neither interpolates it nor computes the block's depth plane, and gives every fragment 0.
+  bool depthUsed = true;
   // Values the sink reads with every fragment of the triangle (FragmentBatch::payload): the
   // coverage shape of an antialiased line or point. payloadCount floats from payload, at most
   // kMaxTrianglePayload; the tiled rasterizer keeps a copy with the queued triangle.
@@ -49,6 +52,7 @@ struct TriangleSetup {
   bool perspectiveCorrect;
   bool frontFacing;
   EarlyDepthTest earlyDepth;
+  bool depthUsed = true;  // TriangleSettings::depthUsed
   // The pixels of the framebuffer that nothing else reads or writes while the triangle is drawn
   // (the tiled rasterizer's tile): the early depth test may read a whole block row of stored
   // depths inside it, beyond the box. Empty: only the box's pixels are read.
