@@ -398,13 +398,14 @@ void weighBlock(const float* payload, const raster::CoveredBlock& block, uint8_t
     rows.row(centres.x, static_cast<float>(block.by + j) + 0.5f, coverage[j]);
     // A line's coverage is a product of clamped values and a positive factor, never below 0
     // (at worst -0 or NaN, which the filter keeps too): only a point's pixels can be dropped.
-    if constexpr (kCoverage != KernelCoverage::SmoothPoint) continue;
-    unsigned mask = rowMask[j];
-    for (unsigned rest = mask; rest != 0; rest &= rest - 1) {
-      const int i = std::countr_zero(rest);
-      if (coverage[j][i] < 0.0f) mask &= ~(1u << i);
+    if constexpr (kCoverage == KernelCoverage::SmoothPoint) {
+      unsigned mask = rowMask[j];
+      for (unsigned rest = mask; rest != 0; rest &= rest - 1) {
+        const int i = std::countr_zero(rest);
+        if (coverage[j][i] < 0.0f) mask &= ~(1u << i);
+      }
+      rowMask[j] = static_cast<uint8_t>(mask);
     }
-    rowMask[j] = static_cast<uint8_t>(mask);
   }
 }
 

@@ -4,6 +4,7 @@
 #include <climits>
 #include <cstdint>
 #include <cstring>
+#include <optional>
 
 #include "core/context.h"
 #include "core/fast_paths.h"
@@ -94,7 +95,12 @@ void FragmentProcessor::prepare(Context& ctx, bool phong) {
     s_.scissorX1 = static_cast<int>(std::min<long long>(INT_MAX, static_cast<long long>(box.x) + box.width));
     s_.scissorY1 = static_cast<int>(std::min<long long>(INT_MAX, static_cast<long long>(box.y) + box.height));
   }
-  for (int c = 0; c < kKernelCoverageCount; ++c) kernels_[c] = chooseKernel(static_cast<KernelCoverage>(c));
+  // One key for the state; a kernel for each kind of coverage.
+  std::optional<BlockKernelKey> key = kernelKey();
+  for (int c = 0; c < kKernelCoverageCount; ++c) {
+    if (key) key->coverage = static_cast<KernelCoverage>(c);
+    kernels_[c] = key ? blockKernelFor(*key) : nullptr;
+  }
   lineKernel_ = chooseLineKernel();
   pixelOps_.tests = s_.tests;
   pixelOps_.blend = s_.blend;
@@ -116,22 +122,21 @@ bool FragmentProcessor::storesColorsAsGiven() const {
          s_.allChannels;
 }
 
-BlockKernel FragmentProcessor::chooseKernel(KernelCoverage coverage) const {
-  if (!kernelsAllowed()) return nullptr;
+std::optional<BlockKernelKey> FragmentProcessor::kernelKey() const {
+  if (!kernelsAllowed()) return std::nullopt;
   // What no kernel does (block_kernels.h).
   if (s_.phong || s_.colorSum || s_.alphaTest || s_.logicOp || (s_.writesColor && !s_.allChannels))
-    return nullptr;
+    return std::nullopt;
   BlockKernelKey key;
   // With the stencil test on, the kernel's stencil and depth tests write the depth.
   key.writeDepth = s_.tests.depthTest && s_.tests.depthMask && !s_.tests.stencilTest;
   key.writeColor = s_.writesColor;
   key.fog = s_.fog;
-  key.coverage = coverage;
   if (s_.texturing) {
-    if (singleTexture2D(*ctx_) == nullptr) return nullptr;
+    if (singleTexture2D(*ctx_) == nullptr) return std::nullopt;
     key.texturing = KernelTexturing::Single2D;
   }
-  return blockKernelFor(key);
+  return key;
 }
 
 LineKernel FragmentProcessor::chooseLineKernel() const {
@@ -146,24 +151,18 @@ LineKernel FragmentProcessor::chooseLineKernel() const {
   return lineKernelFor(key);
 }
 
-bool FragmentProcessor::kernelMayShade(BlockKernel kernel, const raster::TriangleSetup& setup) const {
-  return kernel != nullptr && (!kernelNeedsEarlyDepth_ || setup.earlyDepth.buffer != nullptr);
-}
-
 void FragmentProcessor::processTriangleBlock(const raster::TriangleSetup& setup,
                                              const raster::CoveredBlock& block) {
-  const BlockKernel kernel = kernels_[static_cast<int>(KernelCoverage::None)];
-  if (kernelMayShade(kernel, setup)) {
-    kernel(*ctx_, pixelOps_, kernelTexture_, setup, block);
-  } else {
-    raster::FragmentSink::processTriangleBlock(setup, block);
-  }
+  if (!shadeBlock(setup, block, KernelCoverage::None)) raster::FragmentSink::processTriangleBlock(setup, block);
 }
 
-bool FragmentProcessor::shadeWeighedBlock(const raster::TriangleSetup& setup,
-                                          const raster::CoveredBlock& block, KernelCoverage coverage) {
+bool FragmentProcessor::shadeBlock(const raster::TriangleSetup& setup, const raster::CoveredBlock& block,
+                                   KernelCoverage coverage) {
   const BlockKernel kernel = kernels_[static_cast<int>(coverage)];
-  if (setup.payload == nullptr || !kernelMayShade(kernel, setup)) return false;
+  if (kernel == nullptr) return false;
+  // The kernel relies on the walk's early depth test, and a weighing one on the shape's payload.
+  if (kernelNeedsEarlyDepth_ && setup.earlyDepth.buffer == nullptr) return false;
+  if (coverage != KernelCoverage::None && setup.payload == nullptr) return false;
   kernel(*ctx_, pixelOps_, kernelTexture_, setup, block);
   return true;
 }

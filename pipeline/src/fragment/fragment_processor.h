@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <optional>
 
 #include "fragment/blending.h"
 #include "fragment/block_kernels.h"
@@ -41,12 +42,13 @@ class FragmentProcessor final : public raster::FragmentSink {
   // (block_kernels.h), or the reference path when there is none.
   void processTriangleBlock(const raster::TriangleSetup& setup,
                             const raster::CoveredBlock& block) override;
-  // The same with the block's fragments weighed by `coverage` (the triangle belongs to an
-  // antialiased line or point whose shape is its payload): true when a kernel shaded the
-  // block; false when none is chosen for the state, and then nothing was done (the caller,
-  // CoverageFilter, takes the reference path).
-  bool shadeWeighedBlock(const raster::TriangleSetup& setup, const raster::CoveredBlock& block,
-                         KernelCoverage coverage);
+  // The block by the kernel for the state and `coverage` (other than None: the triangle
+  // belongs to an antialiased line or point whose shape is its payload, and the fragments are
+  // weighed by it): true when a kernel shaded it; false when none covers the state, and then
+  // nothing was done (the caller, processTriangleBlock or CoverageFilter, takes the reference
+  // path).
+  bool shadeBlock(const raster::TriangleSetup& setup, const raster::CoveredBlock& block,
+                  KernelCoverage coverage);
   // Runs of a line segment: the line kernel prepare() chose for the draw's state
   // (line_kernels.h), or the reference path when there is none.
   void processLineRuns(const raster::LineRunBatch& batch) override;
@@ -111,11 +113,9 @@ class FragmentProcessor final : public raster::FragmentSink {
   // Whether any kernel may draw: fast paths are on and no teaching view or statistics watch
   // the fragments (they see them in the reference path, teaching/teaching_hooks.h).
   bool kernelsAllowed() const;
-  // The fast path's kernel for the settings and a kind of coverage, or null (block_kernels.h).
-  BlockKernel chooseKernel(KernelCoverage coverage) const;
-  // Whether kernel may shade the block (it relies on the walk's early depth test when the
-  // depth test is on).
-  bool kernelMayShade(BlockKernel kernel, const raster::TriangleSetup& setup) const;
+  // The key of the block kernels for the settings (coverage None), or none when no kernel
+  // covers them (block_kernels.h).
+  std::optional<BlockKernelKey> kernelKey() const;
   // The fast path's kernel for line runs with the settings, or null (line_kernels.h).
   LineKernel chooseLineKernel() const;
 

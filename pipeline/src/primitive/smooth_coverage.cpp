@@ -122,7 +122,7 @@ void CoverageFilter<Coverage>::processFragments(const raster::FragmentBatch& bat
 template <class Coverage>
 void CoverageFilter<Coverage>::processTriangleBlock(const raster::TriangleSetup& setup,
                                                    const raster::CoveredBlock& block) {
-  if (next_.shadeWeighedBlock(setup, block, Coverage::kKernelCoverage)) return;
+  if (next_.shadeBlock(setup, block, Coverage::kKernelCoverage)) return;
   raster::FragmentSink::processTriangleBlock(setup, block);  // emitBlockFragments, then processFragments
 }
 
