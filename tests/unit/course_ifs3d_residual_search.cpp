@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <vector>
 
 #include "glass/course/ifs3d_distance_grid.h"
@@ -48,6 +49,23 @@ std::vector<g::Affine3> withCopy(const std::vector<g::Affine3>& truth, std::size
   std::vector<g::Affine3> maps = truth;
   maps[missing] = truth[(missing + 1) % truth.size()];
   return maps;
+}
+
+// What the residual search reads of a system's cloud: its distance grid (`resolution` cells along
+// the longest side), its mean and spread points of it.
+struct SearchInputs {
+  c::DistanceGrid grid;
+  glm::dvec3 mean{0.0};
+  std::span<const glm::dvec3> probes;
+};
+
+SearchInputs searchInputsOf(const Case& system, int resolution) {
+  const g::KdTree3 tree(system.cloud);
+  SearchInputs inputs{c::DistanceGrid(system.cloud, tree, resolution), glm::dvec3(0.0), {}};
+  for (const glm::dvec3& p : system.cloud) inputs.mean += p;
+  inputs.mean /= static_cast<double>(system.cloud.size());
+  inputs.probes = std::span<const glm::dvec3>(system.cloud).first(2000);
+  return inputs;
 }
 
 }  // namespace
@@ -93,13 +111,8 @@ TEST_CASE("course homework 3: the missing map is found from the uncovered points
   for (const auto& [seed, missing] : cases) {
     CAPTURE(seed);
     const Case system = caseOf(seed);
-    const g::KdTree3 tree(system.cloud);
-    const c::DistanceGrid grid(system.cloud, tree, 40);
-    glm::dvec3 mean(0.0);
-    for (const glm::dvec3& p : system.cloud) mean += p;
-    mean /= static_cast<double>(kPoints);
-    const std::span<const glm::dvec3> probes = std::span<const glm::dvec3>(system.cloud).first(2000);
-    const c::ResidualSearch search{&grid, mean, probes, orientations};
+    const SearchInputs inputs = searchInputsOf(system, 40);
+    const c::ResidualSearch search{&inputs.grid, inputs.mean, inputs.probes, orientations};
     const std::vector<glm::dvec3> residual =
         c::uncoveredPoints(withCopy(system.truth, missing), system.cloud, system.cloud, 3.0 * system.spacing);
     const std::vector<g::Affine3> found = c::residualCandidates(search, residual, 3);
@@ -109,6 +122,36 @@ TEST_CASE("course homework 3: the missing map is found from the uncovered points
     CHECK(nearest < 0.03);
     // Too few points to search from: nothing.
     CHECK(c::residualCandidates(search, std::span<const glm::dvec3>(residual).first(7), 3).empty());
+  }
+}
+
+TEST_CASE("course homework 3: the residual search's bounded vote chooses what a vote in full chooses") {
+  // The vote stops summing a candidate's score once it cannot rank among the best voteDepth so
+  // far; the candidates must be the same bytes as with every score in full (depth 0), also when
+  // the depth is too shallow for the candidates kept and the rest must be scored after all (1).
+  // A coarser grid than the fit's keeps the votes in full quick.
+  const std::vector<glm::dmat3> orientations = c::startingOrientations();
+  for (const std::uint64_t seed : {90001u, 90004u}) {
+    CAPTURE(seed);
+    const Case system = caseOf(seed);
+    const SearchInputs inputs = searchInputsOf(system, 24);
+    for (std::size_t missing = 0; missing < 4; missing += 3) {
+      CAPTURE(missing);
+      const std::vector<glm::dvec3> residual =
+          c::uncoveredPoints(withCopy(system.truth, missing), system.cloud, system.cloud, 3.0 * system.spacing);
+      std::vector<std::vector<g::Affine3>> found;
+      for (const std::size_t depth : {std::size_t{0}, std::size_t{1}, std::size_t{2000}}) {
+        c::ResidualSearch search{&inputs.grid, inputs.mean, inputs.probes, orientations};
+        search.voteDepth = depth;
+        found.push_back(c::residualCandidates(search, residual, 3));
+      }
+      REQUIRE(found[0].size() == 3);
+      for (std::size_t depth = 1; depth < found.size(); ++depth) {
+        REQUIRE(found[depth].size() == found[0].size());
+        for (std::size_t i = 0; i < found[0].size(); ++i)
+          CHECK(std::memcmp(&found[depth][i].m, &found[0][i].m, sizeof found[0][i].m) == 0);
+      }
+    }
   }
 }
 

@@ -31,17 +31,6 @@ DistanceGrid::DistanceGrid(std::span<const glm::dvec3> cloud, const g::KdTree3& 
       }
 }
 
-double DistanceGrid::at(const glm::dvec3& p) const {
-  const glm::dvec3 u = (p - lo_) / cell_;
-  if (!(u.x >= 0.0 && u.y >= 0.0 && u.z >= 0.0 && u.x < size_[0] && u.y < size_[1] && u.z < size_[2]))
-    return std::numeric_limits<double>::infinity();
-  return values_[index(static_cast<int>(u.x), static_cast<int>(u.y), static_cast<int>(u.z))];
-}
-
-std::size_t DistanceGrid::index(int x, int y, int z) const {
-  return (static_cast<std::size_t>(z) * size_[1] + static_cast<std::size_t>(y)) * size_[0] + static_cast<std::size_t>(x);
-}
-
 glm::dmat3 climbOnGrid(const GridScore& score, glm::dmat3 linear, glm::dvec3& centre, double shift) {
   double best = score(linear, centre);
   double angle = 8.0, stretch = 0.08;

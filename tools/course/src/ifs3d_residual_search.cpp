@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
+#include <optional>
+#include <queue>
 
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
@@ -80,14 +82,151 @@ std::vector<std::size_t> mapsByOwnCover(std::span<const g::Affine3> maps, std::s
   return order;
 }
 
+namespace {
+
+constexpr std::size_t kProbes = 12, kKept = 120;
+constexpr double kCoarseTolerance = 1.5;
+// Ratios from the smallest part the course's systems have (0.3 of the cloud, shrunk by a quarter
+// on an axis) to the largest (0.6, stretched by a quarter); the hill climbing stretches between
+// them.
+constexpr double kRatios[] = {0.25, 0.31, 0.38, 0.46, 0.55, 0.66};
+
+// A centre's best map of the coarse vote: x -> centre + ratio orientation (x - mean).
+struct Candidate {
+  double score;
+  glm::dvec3 centre;
+  double ratio;
+  std::size_t orientation;
+  bool scored;  // false: left out by the vote's bound, its score not below it
+};
+
+// The coarse vote at one ratio: a candidate map's score is how far the pre-images of the
+// residual probes and the images of the cloud probes fall from the cloud, each beyond the
+// tolerance and up to the cap, summed.
+class RatioVote {
+ public:
+  RatioVote(const ResidualSearch& search, std::span<const glm::dvec3> probes, std::span<const glm::dvec3> residualProbes,
+            double ratio, double tolerance, double cap)
+      : grid_(*search.grid), ratio_(ratio), tolerance_(tolerance), cap_(cap), probeCount_(probes.size()),
+        residualCount_(residualProbes.size()) {
+    // Per orientation: the probes' offsets under the map, the residual probes' pre-images before
+    // the centre's share, and the inverse that takes the centre back.
+    const std::size_t orientations = search.orientations.size();
+    forward_.resize(orientations * probes.size());
+    backward_.resize(orientations * residualProbes.size());
+    inverses_.resize(orientations);
+    for (std::size_t q = 0; q < orientations; ++q) {
+      inverses_[q] = glm::transpose(search.orientations[q]) / ratio;  // orientations are orthogonal
+      for (std::size_t j = 0; j < probes.size(); ++j)
+        forward_[q * probes.size() + j] = ratio * (search.orientations[q] * (probes[j] - search.cloudMean));
+      for (std::size_t j = 0; j < residualProbes.size(); ++j)
+        backward_[q * residualProbes.size() + j] = search.cloudMean + inverses_[q] * residualProbes[j];
+    }
+  }
+
+  // The best orientation at `centre` (the least score, the first of equal ones) when its score is
+  // below `bound`; otherwise a candidate that is not scored. A sum stops once it reaches the
+  // best score so far, which starts at the bound: its terms are not negative.
+  Candidate best(const glm::dvec3& centre, double bound) const {
+    Candidate best{bound, centre, ratio_, 0, false};
+    for (std::size_t q = 0; q < inverses_.size(); ++q) {
+      const glm::dvec3 back = inverses_[q] * centre;
+      double score = 0.0;
+      for (std::size_t j = 0; j < residualCount_ && score < best.score; ++j)
+        score += std::clamp(grid_.at(backward_[q * residualCount_ + j] - back) - tolerance_, 0.0, cap_);
+      for (std::size_t j = 0; j < probeCount_ && score < best.score; ++j)
+        score += std::clamp(grid_.at(centre + forward_[q * probeCount_ + j]) - tolerance_, 0.0, cap_);
+      if (score < best.score) best = {score, centre, ratio_, q, true};
+    }
+    if (!best.scored) best.score = std::numeric_limits<double>::infinity();
+    return best;
+  }
+
+ private:
+  const DistanceGrid& grid_;
+  double ratio_, tolerance_, cap_;
+  std::size_t probeCount_, residualCount_;
+  std::vector<glm::dvec3> forward_, backward_;
+  std::vector<glm::dmat3> inverses_;
+};
+
+// The centres of the grid, at each ratio, whose image can hold the residual probes (reach) with
+// the best orientation of each, in the order ratio, z, y, x.
+//
+// Scoring every orientation of every centre in full is the search's whole cost, and only the
+// first few hundred candidates matter (the kKept kept apart from each other lie among the first
+// few hundred of tens of thousands); so the vote keeps the voteDepth-th least score so far as a
+// bound, and a centre whose every orientation sums to no less is left out, unscored. The bound
+// only falls, so every centre whose score is below its final value was scored: the candidates,
+// sorted, begin exactly as the sorted candidates of a vote without a bound, as far as the
+// returned bound. Past it, `scoreLeftOut` scores the rest.
+struct CoarseVote {
+  std::vector<Candidate> candidates;
+  std::vector<RatioVote> votes;  // per ratio
+  double bound = std::numeric_limits<double>::infinity();
+
+  void scoreLeftOut() {
+    for (Candidate& c : candidates) {
+      if (c.scored) continue;
+      const std::size_t r = static_cast<std::size_t>(std::find(std::begin(kRatios), std::end(kRatios), c.ratio) - std::begin(kRatios));
+      c = votes[r].best(c.centre, std::numeric_limits<double>::infinity());
+    }
+    bound = std::numeric_limits<double>::infinity();
+  }
+};
+
+CoarseVote coarseVote(const ResidualSearch& search, std::span<const glm::dvec3> probes, std::span<const glm::dvec3> residualProbes,
+                      double radius, double tolerance, double cap) {
+  const DistanceGrid& grid = *search.grid;
+  const double h = grid.cell();
+  CoarseVote vote;
+  std::priority_queue<double> ranked;  // the voteDepth least scores so far
+  for (const double ratio : kRatios) {
+    vote.votes.emplace_back(search, probes, residualProbes, ratio, tolerance, cap);
+    const RatioVote& ratioVote = vote.votes.back();
+    for (int z = 0; z < grid.size(2); ++z)
+      for (int y = 0; y < grid.size(1); ++y)
+        for (int x = 0; x < grid.size(0); ++x) {
+          const glm::dvec3 centre = grid.lo() + (glm::dvec3(x, y, z) + 0.5) * h;
+          // The residual lies in the image, so within the image's reach of its centre.
+          bool reachable = true;
+          for (const glm::dvec3& r : residualProbes) reachable = reachable && glm::length(r - centre) <= 1.3 * ratio * radius + h;
+          if (!reachable) continue;
+          const Candidate best = ratioVote.best(centre, vote.bound);
+          vote.candidates.push_back(best);
+          if (!best.scored || search.voteDepth == 0) continue;
+          ranked.push(best.score);
+          if (ranked.size() > search.voteDepth) ranked.pop();
+          if (ranked.size() == search.voteDepth) vote.bound = ranked.top();
+        }
+  }
+  return vote;
+}
+
+// Up to kKept of the sorted candidates, each apart from those before it in centre or in
+// orientation; nullopt when the list runs past `bound` (its order there is not known) first.
+std::optional<std::vector<Candidate>> keptApart(std::span<const Candidate> sorted, double bound, const ResidualSearch& search, double h) {
+  std::vector<Candidate> kept;
+  for (const Candidate& c : sorted) {
+    if (kept.size() == kKept) break;
+    if (!(c.score < bound)) return std::nullopt;
+    const bool near = std::any_of(kept.begin(), kept.end(), [&](const Candidate& other) {
+      if (glm::length(other.centre - c.centre) >= 2.0 * h || std::abs(other.ratio - c.ratio) > 0.1) return false;
+      const glm::dmat3 d = search.orientations[other.orientation] - search.orientations[c.orientation];
+      double largest = 0.0;
+      for (int col = 0; col < 3; ++col)
+        for (int row = 0; row < 3; ++row) largest = std::max(largest, std::abs(d[col][row]));
+      return largest < 0.5;
+    });
+    if (!near) kept.push_back(c);
+  }
+  return kept;
+}
+
+}  // namespace
+
 std::vector<g::Affine3> residualCandidates(const ResidualSearch& search, std::span<const glm::dvec3> residual, std::size_t wanted) {
-  constexpr std::size_t kProbes = 12, kKept = 120;
-  constexpr double kCoarseTolerance = 1.5;
   constexpr double kSameMap = 0.05;  // largest entry difference
-  // Ratios from the smallest part the course's systems have (0.3 of the cloud, shrunk by a
-  // quarter on an axis) to the largest (0.6, stretched by a quarter); the hill climbing
-  // stretches between them.
-  constexpr double kRatios[] = {0.25, 0.31, 0.38, 0.46, 0.55, 0.66};
   if (residual.size() < 8 || search.cloudProbes.empty()) return {};
   const DistanceGrid& grid = *search.grid;
   const double h = grid.cell(), cap = 3.0 * h;
@@ -100,48 +239,18 @@ std::vector<g::Affine3> residualCandidates(const ResidualSearch& search, std::sp
   double radius = 0.0;  // of the cloud about its mean
   for (const glm::dvec3& p : search.cloudProbes) radius = std::max(radius, glm::length(p - mean));
 
-  struct Candidate {
-    double score;
-    glm::dvec3 centre;
-    double ratio;
-    std::size_t orientation;
-  };
-  std::vector<Candidate> candidates;
-  const std::size_t orientations = search.orientations.size();
-  for (const double ratio : kRatios) {
-    // Per orientation: the probes' offsets under the map, the residual probes' pre-images before
-    // the centre's share, and the inverse that takes the centre back.
-    std::vector<glm::dvec3> forward(orientations * probes.size()), backward(orientations * residualProbes.size());
-    std::vector<glm::dmat3> inverses(orientations);
-    for (std::size_t q = 0; q < orientations; ++q) {
-      inverses[q] = glm::transpose(search.orientations[q]) / ratio;  // orientations are orthogonal
-      for (std::size_t j = 0; j < probes.size(); ++j) forward[q * probes.size() + j] = ratio * (search.orientations[q] * (probes[j] - mean));
-      for (std::size_t j = 0; j < residualProbes.size(); ++j) backward[q * residualProbes.size() + j] = mean + inverses[q] * residualProbes[j];
-    }
-    for (int z = 0; z < grid.size(2); ++z)
-      for (int y = 0; y < grid.size(1); ++y)
-        for (int x = 0; x < grid.size(0); ++x) {
-          const glm::dvec3 centre = grid.lo() + (glm::dvec3(x, y, z) + 0.5) * h;
-          // The residual lies in the image, so within the image's reach of its centre.
-          bool reachable = true;
-          for (const glm::dvec3& r : residualProbes) reachable = reachable && glm::length(r - centre) <= 1.3 * ratio * radius + h;
-          if (!reachable) continue;
-          Candidate best{std::numeric_limits<double>::infinity(), centre, ratio, 0};
-          for (std::size_t q = 0; q < orientations; ++q) {
-            const glm::dvec3 back = inverses[q] * centre;
-            double score = 0.0;
-            for (std::size_t j = 0; j < residualProbes.size() && score < best.score; ++j)
-              score += std::clamp(grid.at(backward[q * residualProbes.size() + j] - back) - tolerance, 0.0, cap);
-            for (std::size_t j = 0; j < probes.size() && score < best.score; ++j)
-              score += std::clamp(grid.at(centre + forward[q * probes.size() + j]) - tolerance, 0.0, cap);
-            if (score < best.score) best = {score, centre, ratio, q};
-          }
-          candidates.push_back(best);
-        }
+  CoarseVote vote = coarseVote(search, probes, residualProbes, radius, tolerance, cap);
+  const auto byScore = [](const Candidate& a, const Candidate& b) { return a.score < b.score; };
+  std::stable_sort(vote.candidates.begin(), vote.candidates.end(), byScore);
+  std::optional<std::vector<Candidate>> keptCandidates = keptApart(vote.candidates, vote.bound, search, h);
+  if (!keptCandidates) {  // the kept lie deeper than the vote scored: the rest scored, the same choice
+    vote.scoreLeftOut();
+    std::stable_sort(vote.candidates.begin(), vote.candidates.end(), byScore);
+    keptCandidates = keptApart(vote.candidates, vote.bound, search, h);
   }
-  std::stable_sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) { return a.score < b.score; });
+  const std::vector<Candidate>& kept = *keptCandidates;
 
-  // The best, apart from each other in centre or in orientation, improved on finer probes.
+  // The kept candidates improved on finer probes.
   const std::vector<glm::dvec3> fineProbes = spreadPoints(search.cloudProbes, 4 * kProbes);
   const std::vector<glm::dvec3> fineResidual = spreadPoints(residual, 3 * kProbes);
   const GridScore score = [&](const glm::dmat3& linear, const glm::dvec3& centre) {
@@ -155,19 +264,6 @@ std::vector<g::Affine3> residualCandidates(const ResidualSearch& search, std::sp
     for (const glm::dvec3& r : fineResidual) sum += std::min(grid.at(mean + inverse * (r - centre)), cap);
     return forwardMean + sum / static_cast<double>(fineResidual.size());
   };
-  std::vector<Candidate> kept;
-  for (const Candidate& c : candidates) {
-    if (kept.size() == kKept) break;
-    const bool near = std::any_of(kept.begin(), kept.end(), [&](const Candidate& other) {
-      if (glm::length(other.centre - c.centre) >= 2.0 * h || std::abs(other.ratio - c.ratio) > 0.1) return false;
-      const glm::dmat3 d = search.orientations[other.orientation] - search.orientations[c.orientation];
-      double largest = 0.0;
-      for (int col = 0; col < 3; ++col)
-        for (int row = 0; row < 3; ++row) largest = std::max(largest, std::abs(d[col][row]));
-      return largest < 0.5;
-    });
-    if (!near) kept.push_back(c);
-  }
   struct Climbed {
     double score;
     g::Affine3 map;

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <functional>
+#include <limits>
 #include <span>
 #include <vector>
 
@@ -19,14 +20,22 @@ class DistanceGrid {
  public:
   // `resolution` cells along the longest side of the cloud's box; cubic cells.
   DistanceGrid(std::span<const glm::dvec3> cloud, const geometry::KdTree3& tree, int resolution);
-  // The distance stored for p's cell; infinity outside the grid.
-  double at(const glm::dvec3& p) const;
+  // The distance stored for p's cell; infinity outside the grid. Inline: the searches call it
+  // hundreds of millions of times.
+  double at(const glm::dvec3& p) const {
+    const glm::dvec3 u = (p - lo_) / cell_;
+    if (!(u.x >= 0.0 && u.y >= 0.0 && u.z >= 0.0 && u.x < size_[0] && u.y < size_[1] && u.z < size_[2]))
+      return std::numeric_limits<double>::infinity();
+    return values_[index(static_cast<int>(u.x), static_cast<int>(u.y), static_cast<int>(u.z))];
+  }
   double cell() const { return cell_; }
   const glm::dvec3& lo() const { return lo_; }
   int size(int axis) const { return size_[axis]; }
 
  private:
-  std::size_t index(int x, int y, int z) const;
+  std::size_t index(int x, int y, int z) const {
+    return (static_cast<std::size_t>(z) * size_[1] + static_cast<std::size_t>(y)) * size_[0] + static_cast<std::size_t>(x);
+  }
   glm::dvec3 lo_{0.0};
   double cell_ = 1.0;
   int size_[3] = {1, 1, 1};

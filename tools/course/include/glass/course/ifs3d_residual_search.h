@@ -43,6 +43,11 @@ struct ResidualSearch {
   glm::dvec3 cloudMean{0.0};
   std::span<const glm::dvec3> cloudProbes;   // spread points of the cloud (their images must lie in it)
   std::span<const glm::dmat3> orientations;  // the starting orientations, reflections included
+  // How deep the coarse vote ranks in full: it stops summing a candidate's score once the score
+  // cannot rank among the voteDepth best so far, and scores the rest only when the candidates
+  // kept lie deeper (never, so far). The candidates are the same at every depth; 0 scores every
+  // candidate in full.
+  std::size_t voteDepth = 2000;
 };
 
 // Up to `wanted` candidate maps whose image lies in the cloud and covers `residual`, best first,
