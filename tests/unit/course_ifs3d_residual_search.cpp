@@ -125,10 +125,11 @@ TEST_CASE("course homework 3: the missing map is found from the uncovered points
   }
 }
 
-TEST_CASE("course homework 3: the residual search's bounded vote chooses what a vote in full chooses") {
+TEST_CASE("course homework 3: the residual search's bounded vote, on any number of threads, chooses what a vote in full chooses") {
   // The vote stops summing a candidate's score once it cannot rank among the best voteDepth so
   // far; the candidates must be the same bytes as with every score in full (depth 0), also when
-  // the depth is too shallow for the candidates kept and the rest must be scored after all (1).
+  // the depth is too shallow for the candidates kept and the rest must be scored after all (1),
+  // and on several threads, which share the bound.
   // A coarser grid than the fit's keeps the votes in full quick.
   const std::vector<glm::dmat3> orientations = c::startingOrientations();
   for (const std::uint64_t seed : {90001u, 90004u}) {
@@ -140,9 +141,14 @@ TEST_CASE("course homework 3: the residual search's bounded vote chooses what a 
       const std::vector<glm::dvec3> residual =
           c::uncoveredPoints(withCopy(system.truth, missing), system.cloud, system.cloud, 3.0 * system.spacing);
       std::vector<std::vector<g::Affine3>> found;
-      for (const std::size_t depth : {std::size_t{0}, std::size_t{1}, std::size_t{2000}}) {
+      const struct {
+        std::size_t depth;
+        int threads;
+      } votes[] = {{0, 1}, {1, 1}, {2000, 1}, {2000, 3}, {1, 2}};
+      for (const auto& [depth, threads] : votes) {
         c::ResidualSearch search{&inputs.grid, inputs.mean, inputs.probes, orientations};
         search.voteDepth = depth;
+        search.threads = threads;
         found.push_back(c::residualCandidates(search, residual, 3));
       }
       REQUIRE(found[0].size() == 3);

@@ -812,7 +812,8 @@ Ifs3Fit fitOnce(std::span<const glm::dvec3> cloud, const g::KdTree3& cloudTree, 
     const DistanceGrid grid(cloud, cloudTree, kResidualGridResolution);
     work.add(static_cast<std::size_t>(grid.size(0)) * grid.size(1) * grid.size(2));
     const std::vector<glm::dvec3> cloudProbes = sample(cloud, 2000, options.seed + 51);
-    const ResidualSearch search{&grid, cloudMoments.mean, cloudProbes, orientations};
+    ResidualSearch search{&grid, cloudMoments.mean, cloudProbes, orientations};
+    search.threads = options.threads > 0 ? options.threads : raster::configuredThreadCount();
     // The best of the maps `base` becomes with candidates for its residual's largest clusters in
     // place of its least needed maps, each refined briefly, ranked by their attractor; or, on the
     // collage path (`byCollage`), in place of the maps whose image lies farthest out of the cloud,

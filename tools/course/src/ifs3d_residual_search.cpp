@@ -1,11 +1,14 @@
 #include "glass/course/ifs3d_residual_search.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
+#include <mutex>
 #include <numeric>
 #include <optional>
 #include <queue>
+#include <thread>
 
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
@@ -175,31 +178,65 @@ struct CoarseVote {
   }
 };
 
+// The vote's bound, shared by the threads that vote: the voteDepth-th least of the scores found
+// so far. Only the centres that come below the bound are scored, a few thousand of tens of
+// thousands once it has fallen, so a lock on the ranking costs little.
+class SharedBound {
+ public:
+  explicit SharedBound(std::size_t depth) : depth_(depth) {}
+  double current() const { return bound_.load(std::memory_order_relaxed); }
+  double last() const { return bound_.load(); }
+  void add(double score) {
+    if (depth_ == 0) return;
+    const std::lock_guard<std::mutex> lock(mutex_);
+    ranked_.push(score);
+    if (ranked_.size() > depth_) ranked_.pop();
+    if (ranked_.size() == depth_) bound_.store(ranked_.top(), std::memory_order_relaxed);
+  }
+
+ private:
+  std::size_t depth_;
+  std::mutex mutex_;
+  std::priority_queue<double> ranked_;  // the depth_ least scores so far
+  std::atomic<double> bound_{std::numeric_limits<double>::infinity()};
+};
+
 CoarseVote coarseVote(const ResidualSearch& search, std::span<const glm::dvec3> probes, std::span<const glm::dvec3> residualProbes,
                       double radius, double tolerance, double cap) {
   const DistanceGrid& grid = *search.grid;
   const double h = grid.cell();
   CoarseVote vote;
-  std::priority_queue<double> ranked;  // the voteDepth least scores so far
-  for (const double ratio : kRatios) {
-    vote.votes.emplace_back(search, probes, residualProbes, ratio, tolerance, cap);
-    const RatioVote& ratioVote = vote.votes.back();
-    for (int z = 0; z < grid.size(2); ++z)
+  for (const double ratio : kRatios) vote.votes.emplace_back(search, probes, residualProbes, ratio, tolerance, cap);
+  // A task per ratio and z slice of the grid, taken in turn by the threads; the candidates are
+  // joined in task order, the order of the vote on one thread, whatever thread voted each.
+  const std::size_t slices = static_cast<std::size_t>(grid.size(2)), tasks = vote.votes.size() * slices;
+  std::vector<std::vector<Candidate>> taskCandidates(tasks);
+  SharedBound bound(search.voteDepth);
+  std::atomic<std::size_t> nextTask{0};
+  const auto voteTasks = [&] {
+    for (std::size_t task = nextTask++; task < tasks; task = nextTask++) {
+      const std::size_t r = task / slices;
+      const int z = static_cast<int>(task % slices);
+      const double ratio = kRatios[r];
       for (int y = 0; y < grid.size(1); ++y)
         for (int x = 0; x < grid.size(0); ++x) {
           const glm::dvec3 centre = grid.lo() + (glm::dvec3(x, y, z) + 0.5) * h;
           // The residual lies in the image, so within the image's reach of its centre.
           bool reachable = true;
-          for (const glm::dvec3& r : residualProbes) reachable = reachable && glm::length(r - centre) <= 1.3 * ratio * radius + h;
+          for (const glm::dvec3& p : residualProbes) reachable = reachable && glm::length(p - centre) <= 1.3 * ratio * radius + h;
           if (!reachable) continue;
-          const Candidate best = ratioVote.best(centre, vote.bound);
-          vote.candidates.push_back(best);
-          if (!best.scored || search.voteDepth == 0) continue;
-          ranked.push(best.score);
-          if (ranked.size() > search.voteDepth) ranked.pop();
-          if (ranked.size() == search.voteDepth) vote.bound = ranked.top();
+          const Candidate best = vote.votes[r].best(centre, bound.current());
+          taskCandidates[task].push_back(best);
+          if (best.scored) bound.add(best.score);
         }
-  }
+    }
+  };
+  std::vector<std::thread> helpers;
+  for (int t = 1; t < std::min<int>(search.threads, static_cast<int>(tasks)); ++t) helpers.emplace_back(voteTasks);
+  voteTasks();
+  for (std::thread& helper : helpers) helper.join();
+  for (const std::vector<Candidate>& candidates : taskCandidates) vote.candidates.insert(vote.candidates.end(), candidates.begin(), candidates.end());
+  vote.bound = bound.last();
   return vote;
 }
 

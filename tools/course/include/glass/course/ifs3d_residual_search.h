@@ -48,6 +48,9 @@ struct ResidualSearch {
   // kept lie deeper (never, so far). The candidates are the same at every depth; 0 scores every
   // candidate in full.
   std::size_t voteDepth = 2000;
+  // The threads the coarse vote runs on (the calling one and threads - 1 more); the candidates are
+  // the same on any number.
+  int threads = 1;
 };
 
 // Up to `wanted` candidate maps whose image lies in the cloud and covers `residual`, best first,
