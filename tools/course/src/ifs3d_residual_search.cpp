@@ -98,23 +98,26 @@ constexpr double kRatios[] = {0.25, 0.31, 0.38, 0.46, 0.55, 0.66};
 struct Candidate {
   double score;
   glm::dvec3 centre;
-  double ratio;
+  std::size_t ratioIndex;  // in kRatios
   std::size_t orientation;
   bool scored;  // false: left out by the vote's bound, its score not below it
+
+  double ratio() const { return kRatios[ratioIndex]; }
 };
 
-// The coarse vote at one ratio: a candidate map's score is how far the pre-images of the
+// The coarse vote at one of kRatios: a candidate map's score is how far the pre-images of the
 // residual probes and the images of the cloud probes fall from the cloud, each beyond the
 // tolerance and up to the cap, summed.
 class RatioVote {
  public:
   RatioVote(const ResidualSearch& search, std::span<const glm::dvec3> probes, std::span<const glm::dvec3> residualProbes,
-            double ratio, double tolerance, double cap)
-      : grid_(*search.grid), ratio_(ratio), tolerance_(tolerance), cap_(cap), probeCount_(probes.size()),
+            std::size_t ratioIndex, double tolerance, double cap)
+      : grid_(*search.grid), ratioIndex_(ratioIndex), tolerance_(tolerance), cap_(cap), probeCount_(probes.size()),
         residualCount_(residualProbes.size()) {
     // Per orientation: the probes' offsets under the map, the residual probes' pre-images before
     // the centre's share, and the inverse that takes the centre back.
     const std::size_t orientations = search.orientations.size();
+    const double ratio = kRatios[ratioIndex];
     forward_.resize(orientations * probes.size());
     backward_.resize(orientations * residualProbes.size());
     inverses_.resize(orientations);
@@ -131,7 +134,7 @@ class RatioVote {
   // below `bound`; otherwise a candidate that is not scored. A sum stops once it reaches the
   // best score so far, which starts at the bound: its terms are not negative.
   Candidate best(const glm::dvec3& centre, double bound) const {
-    Candidate best{bound, centre, ratio_, 0, false};
+    Candidate best{bound, centre, ratioIndex_, 0, false};
     for (std::size_t q = 0; q < inverses_.size(); ++q) {
       const glm::dvec3 back = inverses_[q] * centre;
       double score = 0.0;
@@ -139,7 +142,7 @@ class RatioVote {
         score += std::clamp(grid_.at(backward_[q * residualCount_ + j] - back) - tolerance_, 0.0, cap_);
       for (std::size_t j = 0; j < probeCount_ && score < best.score; ++j)
         score += std::clamp(grid_.at(centre + forward_[q * probeCount_ + j]) - tolerance_, 0.0, cap_);
-      if (score < best.score) best = {score, centre, ratio_, q, true};
+      if (score < best.score) best = {score, centre, ratioIndex_, q, true};
     }
     if (!best.scored) best.score = std::numeric_limits<double>::infinity();
     return best;
@@ -147,7 +150,8 @@ class RatioVote {
 
  private:
   const DistanceGrid& grid_;
-  double ratio_, tolerance_, cap_;
+  std::size_t ratioIndex_;
+  double tolerance_, cap_;
   std::size_t probeCount_, residualCount_;
   std::vector<glm::dvec3> forward_, backward_;
   std::vector<glm::dmat3> inverses_;
@@ -171,8 +175,7 @@ struct CoarseVote {
   void scoreLeftOut() {
     for (Candidate& c : candidates) {
       if (c.scored) continue;
-      const std::size_t r = static_cast<std::size_t>(std::find(std::begin(kRatios), std::end(kRatios), c.ratio) - std::begin(kRatios));
-      c = votes[r].best(c.centre, std::numeric_limits<double>::infinity());
+      c = votes[c.ratioIndex].best(c.centre, std::numeric_limits<double>::infinity());
     }
     bound = std::numeric_limits<double>::infinity();
   }
@@ -206,7 +209,7 @@ CoarseVote coarseVote(const ResidualSearch& search, std::span<const glm::dvec3> 
   const DistanceGrid& grid = *search.grid;
   const double h = grid.cell();
   CoarseVote vote;
-  for (const double ratio : kRatios) vote.votes.emplace_back(search, probes, residualProbes, ratio, tolerance, cap);
+  for (std::size_t r = 0; r < std::size(kRatios); ++r) vote.votes.emplace_back(search, probes, residualProbes, r, tolerance, cap);
   // A task per ratio and z slice of the grid, taken in turn by the threads; the candidates are
   // joined in task order, the order of the vote on one thread, whatever thread voted each.
   const std::size_t slices = static_cast<std::size_t>(grid.size(2)), tasks = vote.votes.size() * slices;
@@ -248,7 +251,7 @@ std::optional<std::vector<Candidate>> keptApart(std::span<const Candidate> sorte
     if (kept.size() == kKept) break;
     if (!(c.score < bound)) return std::nullopt;
     const bool near = std::any_of(kept.begin(), kept.end(), [&](const Candidate& other) {
-      if (glm::length(other.centre - c.centre) >= 2.0 * h || std::abs(other.ratio - c.ratio) > 0.1) return false;
+      if (glm::length(other.centre - c.centre) >= 2.0 * h || std::abs(other.ratio() - c.ratio()) > 0.1) return false;
       const glm::dmat3 d = search.orientations[other.orientation] - search.orientations[c.orientation];
       double largest = 0.0;
       for (int col = 0; col < 3; ++col)
@@ -307,7 +310,7 @@ std::vector<g::Affine3> residualCandidates(const ResidualSearch& search, std::sp
   };
   std::vector<Climbed> climbed;
   for (Candidate c : kept) {
-    const glm::dmat3 linear = climbOnGrid(score, c.ratio * search.orientations[c.orientation], c.centre, h);
+    const glm::dmat3 linear = climbOnGrid(score, c.ratio() * search.orientations[c.orientation], c.centre, h);
     climbed.push_back({score(linear, c.centre), g::Affine3::fromParts(linear, c.centre - linear * mean)});
   }
   std::stable_sort(climbed.begin(), climbed.end(), [](const Climbed& a, const Climbed& b) { return a.score < b.score; });
