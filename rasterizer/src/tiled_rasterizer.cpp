@@ -24,6 +24,7 @@
 #include <thread>
 #include <vector>
 
+#include "hidden_block_odds.h"
 #include "tile_scene.h"
 
 namespace glass::raster {
@@ -50,6 +51,10 @@ constexpr size_t kIdleLaunchBytes = size_t{1} << 20;
 // while the submitting thread goes on binning, with the workers.)
 constexpr int kSubmitterTiles = 4;
 constexpr size_t kSubmitterBytes = size_t{64} << 10;
+
+// With one thread, a triangle whose box is at most this many pixels wide and high is drawn when it
+// is submitted rather than binned (Impl::drawAtOnce).
+constexpr int kAtOnceSize = kTileSize;
 
 // Before a tile's bin runs, asks the memory system for the tile's depth and colour rows all at
 // once. Otherwise the first fragments to reach each cache line of the tile wait for it one line
@@ -95,7 +100,9 @@ struct TiledRasterizer::Impl {
   Impl(const Framebuffer& fb, int threads)
       : framebuffer(fb),
         scenes{TileScene(fb.width(), fb.height()), TileScene(fb.width(), fb.height())},
-        threadCount(threads) {
+        threadCount(threads),
+        tilesX((fb.width() + kTileSize - 1) / kTileSize),
+        oddsByTile(static_cast<size_t>(tilesX) * static_cast<size_t>((fb.height() + kTileSize - 1) / kTileSize)) {
     flight.runs = std::vector<Run>(static_cast<size_t>(threadCount));
     for (int i = 1; i < threadCount; ++i) workers.emplace_back([this, i] { workerLoop(i); });
   }
@@ -208,6 +215,27 @@ struct TiledRasterizer::Impl {
     land();
   }
 
+  // With one thread, deferring a small triangle gains nothing: the tiles keep a large primitive's
+  // pixels in the cache while the primitives after it are drawn, but a small triangle's pixels
+  // stay there anyway, and binning it (its record stored and read back, its setup done again in
+  // each tile it touches) costs more than drawing it. So a triangle whose box is at most
+  // kAtOnceSize each way is drawn at once, after everything queued before it, so that every pixel
+  // still gets its fragments in submission order. Its fragments are those the tiles would give
+  // (coverage and attributes do not depend on the tiles, see tiled_rasterizer.h). False when the
+  // triangle is to be binned.
+  bool drawAtOnce(const WindowVertex& a, const WindowVertex& b, const WindowVertex& c,
+                  const TriangleSettings& settings, FragmentSink& sink) {
+    TriangleSetup setup;
+    if (!setupTriangle(a, b, c, settings, setup)) return true;  // nothing to draw, binned or not
+    const PixelRect& box = setup.box;
+    if (box.x1 - box.x0 > kAtOnceSize || box.y1 - box.y0 > kAtOnceSize) return false;
+    finish();
+    setup.privateRect = PixelRect{0, 0, framebuffer.width(), framebuffer.height()};  // no other thread
+    setup.hiddenBlockOdds = &oddsByTile[static_cast<size_t>((box.y0 / kTileSize) * tilesX + box.x0 / kTileSize)];
+    rasterizeTriangle(setup, sink);
+    return true;
+  }
+
   const Framebuffer& framebuffer;
   TileScene scenes[2];
   int fillingIndex = 0;
@@ -215,6 +243,10 @@ struct TiledRasterizer::Impl {
   uint64_t flightNumber = 0;
   bool stopping = false;
   int threadCount;
+  int tilesX;
+  // The odds of finding a block hidden (hidden_block_odds.h) for the triangles drawn at once, kept
+  // by tile as the bins keep theirs, by the tile of the box's first pixel.
+  std::vector<HiddenBlockOdds> oddsByTile;
   std::mutex mutex;
   std::condition_variable wake, done;
   std::vector<std::thread> workers;
@@ -229,6 +261,7 @@ int TiledRasterizer::threadCount() const { return impl_->threadCount; }
 
 void TiledRasterizer::triangle(const WindowVertex& a, const WindowVertex& b, const WindowVertex& c,
                                const TriangleSettings& settings, FragmentSink& sink) {
+  if (impl_->workers.empty() && impl_->drawAtOnce(a, b, c, settings, sink)) return;
   impl_->filling().addTriangle(a, b, c, settings, sink);
   impl_->afterSubmit();
 }

@@ -3,7 +3,9 @@
 // triangles, lines and points written into a framebuffer are interleaved with clears of random
 // rectangles (colour with every colour mask, depth, stencil through a write mask); with 1, 2, 3
 // and 8 threads the framebuffer must hold exactly the bytes of drawing and clearing everything in
-// order on one thread without tiles.
+// order on one thread without tiles. Half of the triangles are small: with one thread those are
+// drawn as they come, between the binned large ones and clears, which must still reach each pixel
+// in order.
 #include <doctest/doctest.h>
 
 #include <cstring>
@@ -69,7 +71,13 @@ std::vector<Step> randomProgram(unsigned seed) {
     const int k = kind(random);
     if (k < 5) {
       s.kind = Step::Triangle;
-      for (WindowVertex& v : s.v) v = coloured(x(random), y(random), random);
+      if (bit(random)) {  // within a box of 60 x 60 pixels
+        const float cx = x(random), cy = y(random);
+        std::uniform_real_distribution<float> near(-30.0f, 30.0f);
+        for (WindowVertex& v : s.v) v = coloured(cx + near(random), cy + near(random), random);
+      } else {
+        for (WindowVertex& v : s.v) v = coloured(x(random), y(random), random);
+      }
     } else if (k < 7) {
       s.kind = Step::Line;
       for (WindowVertex& v : s.v) v = coloured(x(random), y(random), random);
