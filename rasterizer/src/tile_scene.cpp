@@ -211,8 +211,20 @@ int TileScene::firstActiveTileFrom(int numerator, int denominator) const {
                           activeTiles_.begin());
 }
 
-void TileScene::runTile(int activeIndex) const {
-  const int tile = activeTiles_[static_cast<size_t>(activeIndex)];
+void TileScene::runTile(int activeIndex) const { runBin(activeTiles_[static_cast<size_t>(activeIndex)]); }
+
+void TileScene::runTileNow(int tile) {
+  Bin& bin = bins_[static_cast<size_t>(tile)];
+  if (bin.empty()) return;
+  runBin(tile);
+  bin.reset();
+  activeTiles_.erase(std::find(activeTiles_.begin(), activeTiles_.end(), tile));
+  // With no tile left, nothing is queued: the scene starts afresh, as after the last tile of a
+  // launch (hasPrimitives() false again, so that a draw with other fragment settings may begin).
+  if (activeTiles_.empty()) clear();
+}
+
+void TileScene::runBin(int tile) const {
   const PixelRect rect = tileRect(tile);
   const Bin& bin = bins_[static_cast<size_t>(tile)];
   // Each list is read front to back; `order` says which list the next primitive comes from.

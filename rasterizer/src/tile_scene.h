@@ -22,6 +22,7 @@
 #include "glass/raster/framebuffer_clear.h"
 #include "glass/raster/line.h"
 #include "glass/raster/triangle.h"
+#include "glass/raster/tiled_rasterizer.h"
 #include "hidden_block_odds.h"
 
 namespace glass::raster {
@@ -58,6 +59,16 @@ class TileScene {
   // After orderActiveTilesByPlace: the first active index whose tile comes at or after the given
   // fraction of the window's tiles in that order (activeTileCount() when none does).
   int firstActiveTileFrom(int numerator, int denominator) const;
+
+  // The tile holding pixel (x, y) of the window, and its rectangle.
+  int tileAt(int x, int y) const { return (y / kTileSize) * tilesX_ + x / kTileSize; }
+  PixelRect tileRect(int tile) const;
+  bool queuedIn(int tile) const { return !bins_[static_cast<size_t>(tile)].empty(); }
+  // Rasterizes the tile's bin now, if it holds anything, and empties it (the tile is no longer
+  // active): what is drawn in the tile next comes after everything queued in it.
+  void runTileNow(int tile);
+  // The tile's odds of hidden blocks, for a triangle drawn in it at once.
+  HiddenBlockOdds& hiddenBlockOdds(int tile) const { return bins_[static_cast<size_t>(tile)].hiddenBlockOdds; }
 
   bool empty() const { return activeTiles_.empty(); }
   // Whether a triangle, line or point is queued (whose sink the tiles will call), not only clears.
@@ -104,7 +115,7 @@ class TileScene {
   // Calls add(bin) for the bin of every tile the inclusive pixel range may touch.
   template <typename AddToBin>
   void forTilesIn(int64_t x0, int64_t y0, int64_t x1, int64_t y1, AddToBin add);
-  PixelRect tileRect(int tile) const;
+  void runBin(int tile) const;
 
   int width_, height_, tilesX_, tilesY_;
   std::unique_ptr<BinArena> arena_;  // the memory of the bins' lists

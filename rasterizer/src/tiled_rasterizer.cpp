@@ -24,7 +24,6 @@
 #include <thread>
 #include <vector>
 
-#include "hidden_block_odds.h"
 #include "tile_scene.h"
 
 namespace glass::raster {
@@ -100,9 +99,7 @@ struct TiledRasterizer::Impl {
   Impl(const Framebuffer& fb, int threads)
       : framebuffer(fb),
         scenes{TileScene(fb.width(), fb.height()), TileScene(fb.width(), fb.height())},
-        threadCount(threads),
-        tilesX((fb.width() + kTileSize - 1) / kTileSize),
-        oddsByTile(static_cast<size_t>(tilesX) * static_cast<size_t>((fb.height() + kTileSize - 1) / kTileSize)) {
+        threadCount(threads) {
     flight.runs = std::vector<Run>(static_cast<size_t>(threadCount));
     for (int i = 1; i < threadCount; ++i) workers.emplace_back([this, i] { workerLoop(i); });
   }
@@ -219,19 +216,27 @@ struct TiledRasterizer::Impl {
   // pixels in the cache while the primitives after it are drawn, but a small triangle's pixels
   // stay there anyway, and binning it (its record stored and read back, its setup done again in
   // each tile it touches) costs more than drawing it. So a triangle whose box is at most
-  // kAtOnceSize each way is drawn at once, after everything queued before it, so that every pixel
-  // still gets its fragments in submission order. Its fragments are those the tiles would give
-  // (coverage and attributes do not depend on the tiles, see tiled_rasterizer.h). False when the
-  // triangle is to be binned.
+  // kAtOnceSize each way is drawn at once. The bins of the tiles its box overlaps are run first
+  // (only those: a queued clear of the window is then done tile by tile just before the tile is
+  // drawn, while the tile is in the cache), so that every pixel still gets its fragments in
+  // submission order. Its fragments are those the tiles would give (coverage and attributes do
+  // not depend on the tiles, see tiled_rasterizer.h). False when the triangle is to be binned.
   bool drawAtOnce(const WindowVertex& a, const WindowVertex& b, const WindowVertex& c,
                   const TriangleSettings& settings, FragmentSink& sink) {
     TriangleSetup setup;
     if (!setupTriangle(a, b, c, settings, setup)) return true;  // nothing to draw, binned or not
     const PixelRect& box = setup.box;
     if (box.x1 - box.x0 > kAtOnceSize || box.y1 - box.y0 > kAtOnceSize) return false;
-    finish();
+    TileScene& scene = filling();  // with no workers, the only scene
+    for (int y = box.y0 - box.y0 % kTileSize; y < box.y1; y += kTileSize)
+      for (int x = box.x0 - box.x0 % kTileSize; x < box.x1; x += kTileSize) {
+        const int tile = scene.tileAt(x, y);
+        if (!scene.queuedIn(tile)) continue;
+        prefetchTile(framebuffer, scene.tileRect(tile));
+        scene.runTileNow(tile);
+      }
     setup.privateRect = PixelRect{0, 0, framebuffer.width(), framebuffer.height()};  // no other thread
-    setup.hiddenBlockOdds = &oddsByTile[static_cast<size_t>((box.y0 / kTileSize) * tilesX + box.x0 / kTileSize)];
+    setup.hiddenBlockOdds = &scene.hiddenBlockOdds(scene.tileAt(box.x0, box.y0));
     rasterizeTriangle(setup, sink);
     return true;
   }
@@ -243,10 +248,6 @@ struct TiledRasterizer::Impl {
   uint64_t flightNumber = 0;
   bool stopping = false;
   int threadCount;
-  int tilesX;
-  // The odds of finding a block hidden (hidden_block_odds.h) for the triangles drawn at once, kept
-  // by tile as the bins keep theirs, by the tile of the box's first pixel.
-  std::vector<HiddenBlockOdds> oddsByTile;
   std::mutex mutex;
   std::condition_variable wake, done;
   std::vector<std::thread> workers;

@@ -219,3 +219,28 @@ TEST_CASE("a tiled rasterizer with only clears queued holds no primitive") {
   CHECK_FALSE(tiles.primitivesQueued());
   CHECK(*fb.depthAt(kWidth - 1, kHeight - 1) == 0xFFFFFFu);
 }
+
+// With one thread a small triangle is drawn at once, after the bins of the tiles under it have
+// run. When that leaves no bin with anything in it, nothing is queued: primitivesQueued() must
+// say so, or the draw pipeline would keep an earlier draw's fragment settings for the next draw
+// (it changes them only when no primitive is queued).
+TEST_CASE("one thread: a small triangle that runs every queued bin leaves nothing queued") {
+  Framebuffer fb(kWidth, kHeight);
+  WritingSink sink(fb);
+  TiledRasterizer tiles(fb, 1);
+  // A box of 98 x 58 pixels over the first two tiles of the bottom row: binned.
+  tiles.triangle(windowVertex(2, 2), windowVertex(100, 2), windowVertex(2, 60), triangleSettings(), sink);
+  CHECK(tiles.primitivesQueued());
+  // 30 x 30 pixels over the same two tiles: drawn at once, after both bins.
+  tiles.triangle(windowVertex(50, 10), windowVertex(80, 10), windowVertex(50, 40), triangleSettings(), sink);
+  CHECK(tiles.idle());
+  CHECK_FALSE(tiles.primitivesQueued());
+  // Over one of them only, with the other still queued: still queued.
+  tiles.triangle(windowVertex(2, 2), windowVertex(100, 2), windowVertex(2, 60), triangleSettings(), sink);
+  tiles.triangle(windowVertex(10, 10), windowVertex(30, 10), windowVertex(10, 30), triangleSettings(), sink);
+  CHECK_FALSE(tiles.idle());
+  CHECK(tiles.primitivesQueued());
+  tiles.finish();
+  CHECK(tiles.idle());
+  CHECK_FALSE(tiles.primitivesQueued());
+}

@@ -27,8 +27,8 @@
 // across scenes too.
 //
 // With one thread (no workers) a triangle whose box is at most a tile wide and high is not
-// binned: it is drawn when it is submitted, after everything queued before it is drawn, so the
-// order per pixel holds. Binning a small triangle costs more than the tiles' cache gains for it;
+// binned: it is drawn when it is submitted, after the bins of the tiles it overlaps have run, so
+// the order per pixel holds. Binning a small triangle costs more than the tiles' cache gains for it;
 // large primitives and clears are still binned.
 //
 // The sink of a primitive is called later (or at once, as above), from any of the threads, for
