@@ -40,7 +40,27 @@ WindowVertex rebuildVertex(const float position[4], const float* varyings, int c
   return v;
 }
 
+// The pixels [x0, x1) x [y0, y1) of `bounds` within `reach` pixels of the window positions
+// from (x0, y0) to (x1, y1); empty when there are none.
+PixelRect reachRect(double x0, double y0, double x1, double y1, double reach, const PixelRect& bounds) {
+  const int64_t left = std::max<int64_t>(floorToPixel(x0 - reach), bounds.x0);
+  const int64_t bottom = std::max<int64_t>(floorToPixel(y0 - reach), bounds.y0);
+  const int64_t right = std::min<int64_t>(floorToPixel(x1 + reach) + 1, bounds.x1);
+  const int64_t top = std::min<int64_t>(floorToPixel(y1 + reach) + 1, bounds.y1);
+  if (left >= right || bottom >= top) return PixelRect{};
+  return PixelRect{static_cast<int>(left), static_cast<int>(bottom), static_cast<int>(right), static_cast<int>(top)};
+}
+
 }  // namespace
+
+PixelRect TileScene::lineReach(const WindowVertex& a, const WindowVertex& b, const LineSettings& settings) {
+  return reachRect(std::min(a.x, b.x), std::min(a.y, b.y), std::max(a.x, b.x), std::max(a.y, b.y),
+                   reachOf(settings.width), settings.bounds);
+}
+
+PixelRect TileScene::pointReach(const WindowVertex& v, const PointSettings& settings) {
+  return reachRect(v.x, v.y, v.x, v.y, reachOf(settings.size), settings.bounds);
+}
 
 void TileScene::Bin::reset() {
   order.reset();
@@ -151,12 +171,8 @@ void TileScene::addLine(const WindowVertex& a, const WindowVertex& b, const Line
   r.stippleStart = stippleStart;
   const int n = r.settings.varyingCount;
 
-  const double reach = reachOf(settings.width);
-  const PixelRect& bounds = settings.bounds;
-  forTilesIn(std::max<int64_t>(floorToPixel(std::min(a.x, b.x) - reach), bounds.x0),
-             std::max<int64_t>(floorToPixel(std::min(a.y, b.y) - reach), bounds.y0),
-             std::min<int64_t>(floorToPixel(std::max(a.x, b.x) + reach), bounds.x1 - 1),
-             std::min<int64_t>(floorToPixel(std::max(a.y, b.y) + reach), bounds.y1 - 1),
+  const PixelRect reach = lineReach(a, b, settings);
+  forTilesIn(reach.x0, reach.y0, int64_t{reach.x1} - 1, int64_t{reach.y1} - 1,
              [&](Bin& bin) {
                bin.order.push(*arena_, Kind::Line);
                bin.lines.push(*arena_, r);
@@ -179,12 +195,8 @@ void TileScene::addPoint(const WindowVertex& v, const PointSettings& settings, F
   r.settings.varyingCount = std::clamp(settings.varyingCount, 0, kMaxVaryings);
   const int n = r.settings.varyingCount;
 
-  const double reach = reachOf(settings.size);
-  const PixelRect& bounds = settings.bounds;
-  forTilesIn(std::max<int64_t>(floorToPixel(v.x - reach), bounds.x0),
-             std::max<int64_t>(floorToPixel(v.y - reach), bounds.y0),
-             std::min<int64_t>(floorToPixel(v.x + reach), bounds.x1 - 1),
-             std::min<int64_t>(floorToPixel(v.y + reach), bounds.y1 - 1), [&](Bin& bin) {
+  const PixelRect reach = pointReach(v, settings);
+  forTilesIn(reach.x0, reach.y0, int64_t{reach.x1} - 1, int64_t{reach.y1} - 1, [&](Bin& bin) {
                bin.order.push(*arena_, Kind::Point);
                bin.points.push(*arena_, r);
                bin.varyings.append(*arena_, v.varyings, static_cast<size_t>(n));

@@ -40,6 +40,10 @@ class TileScene {
   void addLine(const WindowVertex& a, const WindowVertex& b, const LineSettings& settings,
                int stippleStart, FragmentSink& sink);
   void addPoint(const WindowVertex& v, const PointSettings& settings, FragmentSink& sink);
+  // The pixels of its bounds a line or point may touch (all that the bins it goes to cover
+  // between them), generously: half its width or size and a margin for the ends and the snapping.
+  static PixelRect lineReach(const WindowVertex& a, const WindowVertex& b, const LineSettings& settings);
+  static PixelRect pointReach(const WindowVertex& v, const PointSettings& settings);
   // A clear of the framebuffer (glClear), run in each tile of its rectangle in order with the
   // primitives, so that the tile is cleared while it is in the cache of the thread drawing it.
   void addClear(const ClearRequest& request);

@@ -51,8 +51,8 @@ constexpr size_t kIdleLaunchBytes = size_t{1} << 20;
 constexpr int kSubmitterTiles = 4;
 constexpr size_t kSubmitterBytes = size_t{64} << 10;
 
-// With one thread, a triangle whose box is at most this many pixels wide and high is drawn when it
-// is submitted rather than binned (Impl::drawAtOnce).
+// With one thread, a primitive whose pixels lie within this many each way is drawn when it is
+// submitted rather than binned (Impl::drawsAtOnce).
 constexpr int kAtOnceSize = kTileSize;
 
 // Before a tile's bin runs, asks the memory system for the tile's depth and colour rows all at
@@ -212,31 +212,43 @@ struct TiledRasterizer::Impl {
     land();
   }
 
-  // With one thread, deferring a small triangle gains nothing: the tiles keep a large primitive's
-  // pixels in the cache while the primitives after it are drawn, but a small triangle's pixels
-  // stay there anyway, and binning it (its record stored and read back, its setup done again in
-  // each tile it touches) costs more than drawing it. So a triangle whose box is at most
-  // kAtOnceSize each way is drawn at once. The bins of the tiles its box overlaps are run first
-  // (only those: a queued clear of the window is then done tile by tile just before the tile is
-  // drawn, while the tile is in the cache), so that every pixel still gets its fragments in
-  // submission order. Its fragments are those the tiles would give (coverage and attributes do
-  // not depend on the tiles, see tiled_rasterizer.h). False when the triangle is to be binned.
-  bool drawAtOnce(const WindowVertex& a, const WindowVertex& b, const WindowVertex& c,
-                  const TriangleSettings& settings, FragmentSink& sink) {
-    TriangleSetup setup;
-    if (!setupTriangle(a, b, c, settings, setup)) return true;  // nothing to draw, binned or not
-    const PixelRect& box = setup.box;
-    if (box.x1 - box.x0 > kAtOnceSize || box.y1 - box.y0 > kAtOnceSize) return false;
+  // With one thread, deferring a small primitive gains nothing: the tiles keep a large
+  // primitive's pixels in the cache while the primitives after it are drawn, but a small one's
+  // pixels stay there anyway, and binning it (its record stored and read back, a triangle's edges
+  // set up twice and its whole setup again in each tile it crosses) costs more than drawing it.
+  // So a primitive whose pixels lie within kAtOnceSize each way is drawn at once, after the bins of
+  // the tiles it overlaps (runTilesUnder). Its fragments are those the tiles would give (neither
+  // coverage nor attributes depend on the tiles, see tiled_rasterizer.h).
+  bool drawsAtOnce(const PixelRect& pixels) const {
+    return workers.empty() && pixels.x1 - pixels.x0 <= kAtOnceSize && pixels.y1 - pixels.y0 <= kAtOnceSize;
+  }
+
+  // Runs now the bins of the tiles that `pixels` overlaps, so that what is drawn there next comes
+  // after everything queued there, every pixel getting its fragments in submission order. Only
+  // those: a clear of the window queued at the start of a frame is still done a tile at a time,
+  // just before the tile's first primitive, while the tile is in the cache. One thread only.
+  void runTilesUnder(const PixelRect& pixels) {
     TileScene& scene = filling();  // with no workers, the only scene
-    for (int y = box.y0 - box.y0 % kTileSize; y < box.y1; y += kTileSize)
-      for (int x = box.x0 - box.x0 % kTileSize; x < box.x1; x += kTileSize) {
+    for (int y = pixels.y0 - pixels.y0 % kTileSize; y < pixels.y1; y += kTileSize)
+      for (int x = pixels.x0 - pixels.x0 % kTileSize; x < pixels.x1; x += kTileSize) {
         const int tile = scene.tileAt(x, y);
         if (!scene.queuedIn(tile)) continue;
         prefetchTile(framebuffer, scene.tileRect(tile));
         scene.runTileNow(tile);
       }
+  }
+
+  // A triangle set up (with the bounds of the whole window) and drawn at once, when drawsAtOnce
+  // says so; false when it is to be binned.
+  bool triangleAtOnce(const WindowVertex& a, const WindowVertex& b, const WindowVertex& c,
+                      const TriangleSettings& settings, FragmentSink& sink) {
+    TriangleSetup setup;
+    if (!setupTriangle(a, b, c, settings, setup)) return true;  // nothing to draw, binned or not
+    if (!drawsAtOnce(setup.box)) return false;
+    runTilesUnder(setup.box);
     setup.privateRect = PixelRect{0, 0, framebuffer.width(), framebuffer.height()};  // no other thread
-    setup.hiddenBlockOdds = &scene.hiddenBlockOdds(scene.tileAt(box.x0, box.y0));
+    const TileScene& scene = filling();
+    setup.hiddenBlockOdds = &scene.hiddenBlockOdds(scene.tileAt(setup.box.x0, setup.box.y0));
     rasterizeTriangle(setup, sink);
     return true;
   }
@@ -262,13 +274,19 @@ int TiledRasterizer::threadCount() const { return impl_->threadCount; }
 
 void TiledRasterizer::triangle(const WindowVertex& a, const WindowVertex& b, const WindowVertex& c,
                                const TriangleSettings& settings, FragmentSink& sink) {
-  if (impl_->workers.empty() && impl_->drawAtOnce(a, b, c, settings, sink)) return;
+  if (impl_->workers.empty() && impl_->triangleAtOnce(a, b, c, settings, sink)) return;
   impl_->filling().addTriangle(a, b, c, settings, sink);
   impl_->afterSubmit();
 }
 
 void TiledRasterizer::line(const WindowVertex& a, const WindowVertex& b,
                            const LineSettings& settings, FragmentSink& sink) {
+  const PixelRect reach = TileScene::lineReach(a, b, settings);
+  if (impl_->drawsAtOnce(reach)) {
+    impl_->runTilesUnder(reach);
+    rasterizeLine(a, b, settings, sink);  // advances the stipple counter as below
+    return;
+  }
   int stippleStart = 0;
   if (settings.stippleFactor > 0 && settings.stippleCounter != nullptr) {
     // The next segment of a strip continues this one's counter, so find where it ends now: walk
@@ -285,6 +303,12 @@ void TiledRasterizer::line(const WindowVertex& a, const WindowVertex& b,
 
 void TiledRasterizer::point(const WindowVertex& v, const PointSettings& settings,
                             FragmentSink& sink) {
+  const PixelRect reach = TileScene::pointReach(v, settings);
+  if (impl_->drawsAtOnce(reach)) {
+    impl_->runTilesUnder(reach);
+    rasterizePoint(v, settings, sink);
+    return;
+  }
   impl_->filling().addPoint(v, settings, sink);
   impl_->afterSubmit();
 }

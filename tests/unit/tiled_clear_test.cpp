@@ -3,9 +3,9 @@
 // triangles, lines and points written into a framebuffer are interleaved with clears of random
 // rectangles (colour with every colour mask, depth, stencil through a write mask); with 1, 2, 3
 // and 8 threads the framebuffer must hold exactly the bytes of drawing and clearing everything in
-// order on one thread without tiles. Half of the triangles are small: with one thread those are
-// drawn as they come, between the binned large ones and clears, which must still reach each pixel
-// in order.
+// order on one thread without tiles. Half of the triangles and lines are small, and so are the
+// points: with one thread those are drawn as they come, between the binned large ones and clears,
+// which must still reach each pixel in order.
 #include <doctest/doctest.h>
 
 #include <cstring>
@@ -80,7 +80,13 @@ std::vector<Step> randomProgram(unsigned seed) {
       }
     } else if (k < 7) {
       s.kind = Step::Line;
-      for (WindowVertex& v : s.v) v = coloured(x(random), y(random), random);
+      if (bit(random)) {  // within a box of 40 x 40 pixels
+        const float cx = x(random), cy = y(random);
+        std::uniform_real_distribution<float> near(-20.0f, 20.0f);
+        for (WindowVertex& v : s.v) v = coloured(cx + near(random), cy + near(random), random);
+      } else {
+        for (WindowVertex& v : s.v) v = coloured(x(random), y(random), random);
+      }
     } else if (k < 8) {
       s.kind = Step::Point;
       s.v[0] = coloured(x(random), y(random), random);

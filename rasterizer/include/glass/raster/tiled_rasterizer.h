@@ -26,10 +26,10 @@
 // The next scene starts only when the previous one has finished, so the order per pixel holds
 // across scenes too.
 //
-// With one thread (no workers) a triangle whose box is at most a tile wide and high is not
-// binned: it is drawn when it is submitted, after the bins of the tiles it overlaps have run, so
-// the order per pixel holds. Binning a small triangle costs more than the tiles' cache gains for it;
-// large primitives and clears are still binned.
+// With one thread (no workers) a triangle, line or point whose pixels lie within a tile's size
+// each way is not binned: it is drawn when it is submitted, after the bins of the tiles it
+// overlaps have run, so the order per pixel holds. Binning a small primitive costs more than the
+// tiles' cache gains for it; large primitives and clears are still binned.
 //
 // The sink of a primitive is called later (or at once, as above), from any of the threads, for
 // different tiles at the same time: it must not change state of its own, and whatever it reads (GL state, textures)
@@ -65,7 +65,7 @@ class TiledRasterizer {
   // Queue a primitive (copied; the vertices and settings may change after the call). A triangle
   // is drawn as setupTriangle(a, b, c, settings) and rasterizeTriangle would draw it (nothing when
   // setupTriangle refuses it); each tile it touches sets it up when it runs. With one thread a
-  // small triangle is drawn before the call returns (see above).
+  // small primitive is drawn before the call returns (see above).
   void triangle(const WindowVertex& a, const WindowVertex& b, const WindowVertex& c,
                 const TriangleSettings& settings, FragmentSink& sink);
   // settings.stippleCounter, when set, is advanced now, as rasterizeLine would advance it.
