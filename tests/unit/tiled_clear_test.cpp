@@ -60,6 +60,17 @@ WindowVertex coloured(float x, float y, std::mt19937& random) {
   return v;
 }
 
+// A step's three vertices, coloured: anywhere in and about the window, or (half of the time)
+// within a box of `small` x `small` pixels there, which one thread draws at once.
+void placeVertices(WindowVertex (&v)[3], float small, std::mt19937& random) {
+  std::uniform_real_distribution<float> x(-40.0f, kWidth + 40.0f), y(-40.0f, kHeight + 40.0f);
+  std::uniform_real_distribution<float> near(-0.5f * small, 0.5f * small);
+  const bool within = std::uniform_int_distribution<int>(0, 1)(random) == 1;
+  const float cx = x(random), cy = y(random);
+  for (WindowVertex& vertex : v)
+    vertex = within ? coloured(cx + near(random), cy + near(random), random) : coloured(x(random), y(random), random);
+}
+
 std::vector<Step> randomProgram(unsigned seed) {
   std::mt19937 random(seed);
   std::uniform_real_distribution<float> x(-40.0f, kWidth + 40.0f), y(-40.0f, kHeight + 40.0f);
@@ -71,22 +82,10 @@ std::vector<Step> randomProgram(unsigned seed) {
     const int k = kind(random);
     if (k < 5) {
       s.kind = Step::Triangle;
-      if (bit(random)) {  // within a box of 60 x 60 pixels
-        const float cx = x(random), cy = y(random);
-        std::uniform_real_distribution<float> near(-30.0f, 30.0f);
-        for (WindowVertex& v : s.v) v = coloured(cx + near(random), cy + near(random), random);
-      } else {
-        for (WindowVertex& v : s.v) v = coloured(x(random), y(random), random);
-      }
+      placeVertices(s.v, 60.0f, random);
     } else if (k < 7) {
       s.kind = Step::Line;
-      if (bit(random)) {  // within a box of 40 x 40 pixels
-        const float cx = x(random), cy = y(random);
-        std::uniform_real_distribution<float> near(-20.0f, 20.0f);
-        for (WindowVertex& v : s.v) v = coloured(cx + near(random), cy + near(random), random);
-      } else {
-        for (WindowVertex& v : s.v) v = coloured(x(random), y(random), random);
-      }
+      placeVertices(s.v, 40.0f, random);
     } else if (k < 8) {
       s.kind = Step::Point;
       s.v[0] = coloured(x(random), y(random), random);
