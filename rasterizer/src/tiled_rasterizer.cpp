@@ -242,6 +242,15 @@ struct TiledRasterizer::Impl {
   // says so; false when it is to be binned.
   bool triangleAtOnce(const WindowVertex& a, const WindowVertex& b, const WindowVertex& c,
                       const TriangleSettings& settings, FragmentSink& sink) {
+    // A triangle whose corners lie further apart than kAtOnceSize (and a pixel) is binned without
+    // being set up here (its plane fits would be wasted: each tile sets it up again). Its box
+    // could still be small, cut by the bounds, but drawing it binned is as right.
+    const auto spread = [](float p, float q, float r) { return std::max({p, q, r}) - std::min({p, q, r}); };
+    if (spread(a.x, b.x, c.x) > kAtOnceSize + 1 || spread(a.y, b.y, c.y) > kAtOnceSize + 1) return false;
+    // The quads of antialiased lines and points (a triangle with a coverage payload) stay binned:
+    // they are thin and blended, each reading and writing pixels the tile keeps in the cache for
+    // the next; drawn at once, the smooth_lines frame took 4% longer (smooth_stage.cpp).
+    if (settings.payload != nullptr) return false;
     TriangleSetup setup;
     if (!setupTriangle(a, b, c, settings, setup)) return true;  // nothing to draw, binned or not
     if (!drawsAtOnce(setup.box)) return false;
