@@ -238,10 +238,21 @@ struct TiledRasterizer::Impl {
       }
   }
 
+  // A line or point drawn at once (by `draw`) when drawsAtOnce says so of the pixels it can reach
+  // (`reach`, the rectangle its bins would use); false when it is to be binned.
+  template <typename Draw>
+  bool drawnAtOnce(const PixelRect& reach, Draw draw) {
+    if (!drawsAtOnce(reach)) return false;
+    runTilesUnder(reach);
+    draw();
+    return true;
+  }
+
   // A triangle set up (with the bounds of the whole window) and drawn at once, when drawsAtOnce
   // says so; false when it is to be binned.
   bool triangleAtOnce(const WindowVertex& a, const WindowVertex& b, const WindowVertex& c,
                       const TriangleSettings& settings, FragmentSink& sink) {
+    if (!workers.empty()) return false;  // spares the threads' path the corners' spread
     // A triangle whose corners lie further apart than kAtOnceSize (and a pixel) is binned without
     // being set up here (its plane fits would be wasted: each tile sets it up again). Its box
     // could still be small, cut by the bounds, but drawing it binned is as right.
@@ -283,19 +294,16 @@ int TiledRasterizer::threadCount() const { return impl_->threadCount; }
 
 void TiledRasterizer::triangle(const WindowVertex& a, const WindowVertex& b, const WindowVertex& c,
                                const TriangleSettings& settings, FragmentSink& sink) {
-  if (impl_->workers.empty() && impl_->triangleAtOnce(a, b, c, settings, sink)) return;
+  if (impl_->triangleAtOnce(a, b, c, settings, sink)) return;
   impl_->filling().addTriangle(a, b, c, settings, sink);
   impl_->afterSubmit();
 }
 
 void TiledRasterizer::line(const WindowVertex& a, const WindowVertex& b,
                            const LineSettings& settings, FragmentSink& sink) {
-  const PixelRect reach = TileScene::lineReach(a, b, settings);
-  if (impl_->drawsAtOnce(reach)) {
-    impl_->runTilesUnder(reach);
-    rasterizeLine(a, b, settings, sink);  // advances the stipple counter as below
+  // Drawn at once, the line advances the stipple counter as the walk below does.
+  if (impl_->drawnAtOnce(TileScene::lineReach(a, b, settings), [&] { rasterizeLine(a, b, settings, sink); }))
     return;
-  }
   int stippleStart = 0;
   if (settings.stippleFactor > 0 && settings.stippleCounter != nullptr) {
     // The next segment of a strip continues this one's counter, so find where it ends now: walk
@@ -312,12 +320,7 @@ void TiledRasterizer::line(const WindowVertex& a, const WindowVertex& b,
 
 void TiledRasterizer::point(const WindowVertex& v, const PointSettings& settings,
                             FragmentSink& sink) {
-  const PixelRect reach = TileScene::pointReach(v, settings);
-  if (impl_->drawsAtOnce(reach)) {
-    impl_->runTilesUnder(reach);
-    rasterizePoint(v, settings, sink);
-    return;
-  }
+  if (impl_->drawnAtOnce(TileScene::pointReach(v, settings), [&] { rasterizePoint(v, settings, sink); })) return;
   impl_->filling().addPoint(v, settings, sink);
   impl_->afterSubmit();
 }
