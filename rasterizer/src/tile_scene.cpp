@@ -102,6 +102,26 @@ void TileScene::forTilesIn(int64_t x0, int64_t y0, int64_t x1, int64_t y1, AddTo
       add(binOf(static_cast<int>(ty * tilesX_ + tx)));
 }
 
+const TriangleSettings& TileScene::drawSettingsFor(const TriangleSettings& settings) {
+  const int varyingCount = std::clamp(settings.varyingCount, 0, kMaxVaryings);
+  const int payloadCount = settings.payload != nullptr ? std::clamp(settings.payloadCount, 0, kMaxTrianglePayload) : 0;
+  const TriangleSettings* last = lastDrawSettings_;
+  if (last != nullptr && last->bounds.x0 == settings.bounds.x0 && last->bounds.y0 == settings.bounds.y0 &&
+      last->bounds.x1 == settings.bounds.x1 && last->bounds.y1 == settings.bounds.y1 &&
+      last->varyingCount == varyingCount && last->perspectiveCorrect == settings.perspectiveCorrect &&
+      last->earlyDepth.buffer == settings.earlyDepth.buffer && last->earlyDepth.compare == settings.earlyDepth.compare &&
+      last->depthUsed == settings.depthUsed && last->payloadCount == payloadCount)
+    return *last;
+  auto* stored = static_cast<TriangleSettings*>(arena_->allocate(sizeof(TriangleSettings)));
+  *stored = settings;
+  stored->varyingCount = varyingCount;
+  stored->payloadCount = payloadCount;
+  stored->payload = nullptr;  // runBin points it at the bin's copy
+  bytes_ += sizeof(TriangleSettings);
+  lastDrawSettings_ = stored;
+  return *stored;
+}
+
 void TileScene::addTriangle(const WindowVertex& a, const WindowVertex& b, const WindowVertex& c,
                             const TriangleSettings& settings, FragmentSink& sink) {
   TriangleSetup edges;  // the edge functions and the box alone
@@ -116,12 +136,11 @@ void TileScene::addTriangle(const WindowVertex& a, const WindowVertex& b, const 
     const float position[4] = {v.x, v.y, v.z, v.invW};
     std::copy(position, position + 4, r.position[i]);
   }
-  r.settings = settings;
-  r.settings.varyingCount = std::clamp(settings.varyingCount, 0, kMaxVaryings);
-  r.settings.payloadCount = settings.payload != nullptr ? std::clamp(settings.payloadCount, 0, kMaxTrianglePayload) : 0;
-  r.settings.payload = nullptr;  // runTile points it at the bin's copy
-  const size_t n = static_cast<size_t>(r.settings.varyingCount);
-  const size_t payload = static_cast<size_t>(r.settings.payloadCount);
+  r.drawSettings = &drawSettingsFor(settings);
+  r.depthBias = settings.depthBias;
+  r.frontFacing = settings.frontFacing;
+  const size_t n = static_cast<size_t>(r.drawSettings->varyingCount);
+  const size_t payload = static_cast<size_t>(r.drawSettings->payloadCount);
 
   const auto addToBin = [&](int tile) {
     Bin& bin = binOf(tile);
@@ -250,12 +269,14 @@ void TileScene::runBin(int tile) const {
     switch (*order.take(1)) {
       case Kind::Triangle: {
         const TriangleRecord& r = *triangles.take(1);
-        const int n = r.settings.varyingCount;
-        const float* varyings = varyingRuns.take(3 * static_cast<size_t>(n) + static_cast<size_t>(r.settings.payloadCount));
+        TriangleSettings settings = *r.drawSettings;
+        settings.depthBias = r.depthBias;
+        settings.frontFacing = r.frontFacing;
+        const int n = settings.varyingCount;
+        const float* varyings = varyingRuns.take(3 * static_cast<size_t>(n) + static_cast<size_t>(settings.payloadCount));
         const WindowVertex a = rebuildVertex(r.position[0], varyings, n);
         const WindowVertex b = rebuildVertex(r.position[1], varyings + n, n);
         const WindowVertex c = rebuildVertex(r.position[2], varyings + 2 * n, n);
-        TriangleSettings settings = r.settings;
         settings.bounds = intersect(settings.bounds, rect);
         if (settings.payloadCount > 0) settings.payload = varyings + 3 * n;
         // The same setup as the whole triangle's, its box cut to the tile (the edges and planes
@@ -298,6 +319,7 @@ void TileScene::clear() {
   for (const int tile : activeTiles_) bins_[static_cast<size_t>(tile)].reset();
   arena_->reset();
   activeTiles_.clear();
+  lastDrawSettings_ = nullptr;
   bytes_ = 0;
   hasPrimitives_ = false;
 }

@@ -6,7 +6,8 @@
 // front to back instead of gathering records from all over the scene: a small triangle touches
 // one or two tiles, and reading its record from a cold, scattered place cost about as much as
 // rasterizing it. Copies are compact: a primitive keeps its vertices with only as many varyings
-// as it has, and runTile rebuilds the full vertices (and a triangle's setup) on its stack. The lists' memory comes from the scene's arena
+// as it has, a triangle only the settings that change within a draw (the rest are kept once per
+// draw in the scene), and runTile rebuilds the full vertices (and a triangle's setup) on its stack. The lists' memory comes from the scene's arena
 // (bin_arena.h), which clear() takes back whole and keeps, so once the first frames have grown it,
 // drawing allocates no memory.
 #pragma once
@@ -82,11 +83,15 @@ class TileScene {
 
  private:
   // A triangle as it was given, for setupTriangle: its vertices without their varyings, which
-  // follow in the bin's varyings (a's, b's, c's), and its settings.
+  // follow in the bin's varyings (a's, b's, c's), and its settings: those of its draw, kept once
+  // in the scene (drawSettings), and the two that change from triangle to triangle of a draw.
+  // (A full copy of the settings in every record made a record 136 bytes instead of 80.)
   struct TriangleRecord {
     FragmentSink* sink;
     float position[3][4];  // x, y, z, invW of a, b and c
-    TriangleSettings settings;
+    const TriangleSettings* drawSettings;  // its frontFacing and depthBias are not used
+    double depthBias;
+    bool frontFacing;
   };
   // A line's vertices without their varyings, which follow in the bin's varyings (a's, b's).
   struct LineRecord {
@@ -120,11 +125,15 @@ class TileScene {
   template <typename AddToBin>
   void forTilesIn(int64_t x0, int64_t y0, int64_t x1, int64_t y1, AddToBin add);
   void runBin(int tile) const;
+  // The scene's copy of a triangle's settings but frontFacing and depthBias (which its record
+  // keeps), the payload's place left out: the last one stored when it matches, else a new one.
+  const TriangleSettings& drawSettingsFor(const TriangleSettings& settings);
 
   int width_, height_, tilesX_, tilesY_;
   std::unique_ptr<BinArena> arena_;  // the memory of the bins' lists
   std::vector<Bin> bins_;
   std::vector<int> activeTiles_;
+  const TriangleSettings* lastDrawSettings_ = nullptr;  // in the arena; null after clear()
   size_t bytes_ = 0;
   bool hasPrimitives_ = false;
 };

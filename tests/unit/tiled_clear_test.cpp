@@ -5,7 +5,10 @@
 // and 8 threads the framebuffer must hold exactly the bytes of drawing and clearing everything in
 // order on one thread without tiles. Half of the triangles and lines are small, and so are the
 // points: with one thread those are drawn as they come, between the binned large ones and clears,
-// which must still reach each pixel in order.
+// which must still reach each pixel in order. Each triangle has settings of its own, as draws
+// change them (bounds cut by a scissor box, how many varyings, which way it faces, its depth
+// offset, whether depth is used and tested early), often the same as the triangle before, as
+// within a draw: a bin keeps the settings of a run of triangles once.
 #include <doctest/doctest.h>
 
 #include <cstring>
@@ -26,8 +29,9 @@ namespace {
 
 constexpr int kWidth = 301, kHeight = 203;  // not multiples of the tile size
 
-// Writes each fragment's colour (varyings 0 to 3, in [0, 1]) and depth, replacing what was there:
-// the order in which fragments and clears reach a pixel decides its bytes.
+// Writes each fragment's colour (varyings 0 to 3, in [0, 1], each plus the last varying, with
+// more than four) and depth, replacing what was there, and adds 1 to the stencil (2 for a triangle
+// facing back): the order in which fragments and clears reach a pixel decides its bytes.
 class WritingSink final : public FragmentSink {
  public:
   explicit WritingSink(Framebuffer& fb) : fb_(fb) {}
@@ -35,9 +39,10 @@ class WritingSink final : public FragmentSink {
     for (int i = 0; i < batch.count; ++i) {
       const Fragment& f = batch.fragments[i];
       uint8_t* pixel = fb_.colorAt(f.x, f.y);
-      for (int c = 0; c < 4; ++c) pixel[c] = static_cast<uint8_t>(f.varyings[c] * 255.0f);
+      const float last = batch.varyingCount > 4 ? f.varyings[batch.varyingCount - 1] : 0.0f;
+      for (int c = 0; c < 4; ++c) pixel[c] = static_cast<uint8_t>((f.varyings[c] + last) * 127.0f);
       *fb_.depthAt(f.x, f.y) = f.depth;
-      ++*fb_.stencilAt(f.x, f.y);
+      *fb_.stencilAt(f.x, f.y) += batch.frontFacing ? 1 : 2;
     }
   }
 
@@ -49,14 +54,23 @@ class WritingSink final : public FragmentSink {
 struct Step {
   enum Kind { Triangle, Line, Point, Clear } kind;
   WindowVertex v[3];
+  TriangleSettings triangle;  // its earlyDepth.buffer is set where it is drawn, when
+  bool earlyDepthTest;        // this is true
   ClearRequest clear;
 };
+
+// The settings of a triangle step drawn into `fb`.
+TriangleSettings settingsIn(const Step& step, const Framebuffer& fb) {
+  TriangleSettings s = step.triangle;
+  if (step.earlyDepthTest) s.earlyDepth = EarlyDepthTest{&fb, DepthCompare::Less};
+  return s;
+}
 
 WindowVertex coloured(float x, float y, std::mt19937& random) {
   std::uniform_real_distribution<float> unit(0.0f, 1.0f);
   WindowVertex v = windowVertex(x, y, unit(random));
   v.invW = 0.25f + unit(random);  // perspective-correct varyings: each tile's setup must give the planes of the whole
-  for (int c = 0; c < 4; ++c) v.varyings[c] = unit(random);
+  for (float& varying : v.varyings) varying = unit(random);
   return v;
 }
 
@@ -71,18 +85,56 @@ void placeVertices(WindowVertex (&v)[3], float small, std::mt19937& random) {
     vertex = within ? coloured(cx + near(random), cy + near(random), random) : coloured(x(random), y(random), random);
 }
 
+TriangleSettings triangleSettings() {
+  TriangleSettings s;
+  s.bounds = PixelRect{0, 0, kWidth, kHeight};
+  s.varyingCount = 4;
+  return s;
+}
+
+// A rectangle of pixels anywhere about the window, cut to it (as a scissor box cuts the bounds).
+PixelRect randomRect(std::mt19937& random) {
+  std::uniform_int_distribution<int> px(-20, kWidth + 20), py(-20, kHeight + 20);
+  int x0 = px(random), x1 = px(random), y0 = py(random), y1 = py(random);
+  if (x0 > x1) std::swap(x0, x1);
+  if (y0 > y1) std::swap(y0, y1);
+  return PixelRect{std::max(x0, 0), std::max(y0, 0), std::min(x1, kWidth), std::min(y1, kHeight)};
+}
+
+// The triangle settings of a new draw: the defaults but for at most one setting, so that two
+// draws in a row may differ in any one alone. The early depth test is `earlyDepthTest`.
+TriangleSettings newDrawSettings(std::mt19937& random, bool& earlyDepthTest) {
+  TriangleSettings s = triangleSettings();
+  earlyDepthTest = false;
+  switch (std::uniform_int_distribution<int>(0, 4)(random)) {
+    case 0: break;
+    case 1: s.bounds = randomRect(random); break;
+    case 2: s.varyingCount = 7; break;
+    case 3: s.depthUsed = false; break;
+    case 4: earlyDepthTest = true; break;
+  }
+  return s;
+}
+
 std::vector<Step> randomProgram(unsigned seed) {
   std::mt19937 random(seed);
   std::uniform_real_distribution<float> x(-40.0f, kWidth + 40.0f), y(-40.0f, kHeight + 40.0f);
   std::uniform_int_distribution<int> kind(0, 9), bit(0, 1), byte(0, 255);
-  std::uniform_int_distribution<int> px(-20, kWidth + 20), py(-20, kHeight + 20);
   std::vector<Step> steps;
+  TriangleSettings triangle = triangleSettings();  // the settings of the draw
+  bool earlyDepthTest = false;
   for (int i = 0; i < 120; ++i) {
     Step s{};
     const int k = kind(random);
     if (k < 5) {
       s.kind = Step::Triangle;
       placeVertices(s.v, 60.0f, random);
+      if (bit(random)) triangle = newDrawSettings(random, earlyDepthTest);  // half begin a new draw
+      s.triangle = triangle;
+      s.earlyDepthTest = earlyDepthTest;
+      // These two change from triangle to triangle within a draw.
+      s.triangle.frontFacing = bit(random) == 1;
+      s.triangle.depthBias = bit(random) ? std::uniform_real_distribution<double>(-0.01, 0.01)(random) : 0.0;
     } else if (k < 7) {
       s.kind = Step::Line;
       placeVertices(s.v, 40.0f, random);
@@ -93,11 +145,8 @@ std::vector<Step> randomProgram(unsigned seed) {
       s.kind = Step::Clear;
       ClearRequest& c = s.clear;
       // A scissor box: any rectangle, clamped to the framebuffer as glClear clamps it.
-      int x0 = px(random), x1 = px(random), y0 = py(random), y1 = py(random);
-      if (x0 > x1) std::swap(x0, x1);
-      if (y0 > y1) std::swap(y0, y1);
-      if (bit(random)) x0 = 0, y0 = 0, x1 = kWidth, y1 = kHeight;
-      c.rect = PixelRect{std::max(x0, 0), std::max(y0, 0), std::min(x1, kWidth), std::min(y1, kHeight)};
+      c.rect = randomRect(random);
+      if (bit(random)) c.rect = PixelRect{0, 0, kWidth, kHeight};
       c.clearColor = bit(random);
       for (int ch = 0; ch < 4; ++ch) {
         c.color[ch] = static_cast<uint8_t>(byte(random));
@@ -114,12 +163,6 @@ std::vector<Step> randomProgram(unsigned seed) {
   return steps;
 }
 
-TriangleSettings triangleSettings() {
-  TriangleSettings s;
-  s.bounds = PixelRect{0, 0, kWidth, kHeight};
-  s.varyingCount = 4;
-  return s;
-}
 LineSettings lineSettings() {
   LineSettings s;
   s.bounds = PixelRect{0, 0, kWidth, kHeight};
@@ -157,7 +200,7 @@ std::vector<uint8_t> drawnInOrder(const std::vector<Step>& steps) {
     switch (s.kind) {
       case Step::Triangle: {
         TriangleSetup setup;
-        if (setupTriangle(s.v[0], s.v[1], s.v[2], triangleSettings(), setup))
+        if (setupTriangle(s.v[0], s.v[1], s.v[2], settingsIn(s, fb), setup))
           rasterizeTriangle(setup, sink);
         break;
       }
@@ -178,7 +221,7 @@ std::vector<uint8_t> drawnInTiles(const std::vector<Step>& steps, int threads) {
   TiledRasterizer tiles(fb, threads);
   for (Step s : steps) {
     switch (s.kind) {
-      case Step::Triangle: tiles.triangle(s.v[0], s.v[1], s.v[2], triangleSettings(), sink); break;
+      case Step::Triangle: tiles.triangle(s.v[0], s.v[1], s.v[2], settingsIn(s, fb), sink); break;
       case Step::Line: tiles.line(s.v[0], s.v[1], lineSettings(), sink); break;
       case Step::Point: tiles.point(s.v[0], pointSettings(), sink); break;
       case Step::Clear:
