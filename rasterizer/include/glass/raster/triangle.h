@@ -19,6 +19,9 @@ namespace glass::raster {
 
 struct HiddenBlockOdds;  // hidden_block_odds.h (the rasterizer's own)
 
+// The tiled rasterizer keeps one copy of these per draw, not per triangle: a field added here must
+// also be compared in TileScene::drawSettingsFor (or, if it changes from triangle to triangle of a
+// draw as frontFacing and depthBias do, kept in the scene's triangle record).
 struct TriangleSettings {
   PixelRect bounds;            // framebuffer intersected with the scissor box
   int varyingCount = 0;
