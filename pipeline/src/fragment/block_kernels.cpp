@@ -7,10 +7,12 @@
 //   depth     the triangle walk computed it; the reference path's depth test after the early
 //             test passes for the same fragments (the stored value has not changed in between:
 //             a block holds each pixel once), so the kernel only stores it.
-//   stencil   with the stencil test on, the kernel runs the reference path's own function
-//             (stencil_depth_tests.h) on each covered pixel before shading; a block holds each
-//             pixel once, so testing all of them first and then shading the ones that passed
-//             gives what testing and shading one fragment after another gives.
+//   stencil   with the stencil test on, the kernel tests each covered pixel before shading, a
+//             row at a time, with the reference path's function worked lane by lane
+//             (stencil_depth_rows-inl.h: the same comparisons and stencil operations on the
+//             same values); a block holds each pixel once, so testing all of them first and then
+//             shading the ones that passed gives what testing and shading one fragment after
+//             another gives.
 //   varyings  the reference path (emitBlockFragments, rasterizer/src/triangle_rasterize.cpp)
 //             computes float((p_column + p_row) * (1 / (q_column + q_row))) with p_column =
 //             a0 + dx x, p_row = dy y, q_column = invW0 + invWdx x, q_row = invWdy y at the
@@ -49,6 +51,7 @@
 #include "core/simd_dispatch.h"
 #include "fragment/block_kernels.h"
 #include "fragment/blend_rows.h"
+#include "fragment/stencil_depth_rows-inl.h"
 #include "fragment/stencil_depth_tests.h"
 #include "fragment/color_conversion.h"
 #include "fragment/color_packing-inl.h"
@@ -349,22 +352,19 @@ void copyCoveredWords(void* to, const void* from, unsigned mask) {
 // Stores words[i] as the 4 bytes at row + 4 i for each bit i of mask.
 void storeCoveredWords(void* row, const uint32_t* words, unsigned mask) { copyCoveredWords(row, words, mask); }
 
-// The stencil and depth tests and their writes on each pixel of rowMask, in the reference
-// path's order and with its function (stencil_depth_tests.h); rowMask keeps, per row, the
-// pixels that passed both.
+// The stencil and depth tests and their writes on each pixel of rowMask, a row at a time, each
+// pixel as the reference path's function tests it (stencil_depth_rows-inl.h); rowMask keeps, per
+// row, the pixels that passed both.
 void testStencilAndDepthOfBlock(raster::Framebuffer& fb, const StencilDepthSettings& tests,
                                 const raster::CoveredBlock& block, uint8_t rowMask[kSize]) {
+  static_assert(stencil_depth_rows::kRowPixels == kSize);
   for (int j = 0; j < kSize; ++j) {
-    unsigned mask = rowMask[j];
+    if (rowMask[j] == 0) continue;
     const int y = block.by + j;
-    for (unsigned rest = mask; rest != 0; rest &= rest - 1) {
-      const int i = std::countr_zero(rest), x = block.bx + i;
-      uint8_t* stencil = tests.stencilTest ? fb.stencilAt(x, y) : nullptr;
-      uint32_t* depth = tests.depthTest ? fb.depthAt(x, y) : nullptr;
-      if (testStencilAndDepth(tests, stencil, depth, block.depth[j][i]) != StencilDepthOutcome::Passed)
-        mask &= ~(1u << i);
-    }
-    rowMask[j] = static_cast<uint8_t>(mask);
+    uint8_t* stencil = tests.stencilTest ? fb.stencilAt(block.bx, y) : nullptr;
+    uint32_t* depth = tests.depthTest ? fb.depthAt(block.bx, y) : nullptr;
+    rowMask[j] = static_cast<uint8_t>(
+        stencil_depth_rows::testStencilAndDepthRow(tests, stencil, depth, block.depth[j], rowMask[j]));
   }
 }
 
