@@ -125,9 +125,7 @@ struct Halves {
     case GL_ONE_MINUS_CONSTANT_COLOR: return hn::Set(d, kPairOfFull - constantHalf(constant, h));
     case GL_CONSTANT_ALPHA: return hn::Set(d, bothValues(constant[3]));
     case GL_ONE_MINUS_CONSTANT_ALPHA: return hn::Set(d, bothValues(255u - constant[3]));
-    case GL_SRC_ALPHA_SATURATE: {
-      return alphaComponent ? full : pairMin(d, s.alpha, hn::Sub(full, t.alpha));
-    }
+    case GL_SRC_ALPHA_SATURATE: return alphaComponent ? full : pairMin(d, s.alpha, hn::Sub(full, t.alpha));
     default: return hn::Zero(d);
   }
 }

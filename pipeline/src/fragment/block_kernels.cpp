@@ -55,6 +55,7 @@
 #include "fragment/stencil_depth_tests.h"
 #include "fragment/color_conversion.h"
 #include "fragment/color_packing-inl.h"
+#include "fragment/covered_pixels.h"
 #include "fragment/fog_hooks.h"
 #include "fragment/fog_state.h"
 #include "glass/raster/triangle.h"
@@ -79,8 +80,6 @@ constexpr int kSize = raster::CoveredBlock::kSize;
 using RowDoubles = hn::CappedTag<double, kSize>;
 using RowFloats = hn::CappedTag<float, kSize>;
 
-int firstBit(unsigned mask) { return std::countr_zero(mask); }
-int lastBit(unsigned mask) { return std::bit_width(mask) - 1; }
 
 // The perspective-correct values of the varyings `Slots` at the pixel centres of one block,
 // a row at a time: the column parts once per block, the row parts once per row, then the values
@@ -310,44 +309,6 @@ struct TexturingStage<KernelTexturing::Single2D> {
                                  varying::kTexCoord + 3>;
   using Texturing = QuadTexturing;
 };
-
-// Copies kWords pixels (4 bytes each) at pixel offset `offset`: a fixed size, one instruction.
-template <int kWords>
-void copyWordsAt(uint8_t* to, const uint8_t* from, int offset) {
-  std::memcpy(to + 4 * offset, from + 4 * offset, 4 * kWords);
-}
-
-// Copies the run of n pixels (1 <= n <= 8) in at most two fixed-size copies, the second
-// overlapping the first where n is not a power of two (the overlap is written twice with the
-// same values). Every byte read and written belongs to the run: the pixels beside it in the
-// colour or depth buffer may be another thread's, in the next tile, or past the row's end.
-void copyWordRun(uint8_t* to, const uint8_t* from, int n) {
-  if (n >= 4) {
-    copyWordsAt<4>(to, from, 0);
-    copyWordsAt<4>(to, from, n - 4);
-  } else if (n >= 2) {
-    copyWordsAt<2>(to, from, 0);
-    copyWordsAt<2>(to, from, n - 2);
-  } else {
-    copyWordsAt<1>(to, from, 0);
-  }
-}
-
-// Copies pixel i (4 bytes at 4 i, a depth value or an RGBA8 colour) from `from` to `to` for each
-// bit i of mask: a covered run without gaps (most rows) is one or two copies.
-void copyCoveredWords(void* to, const void* from, unsigned mask) {
-  auto* toBytes = static_cast<uint8_t*>(to);
-  const auto* fromBytes = static_cast<const uint8_t*>(from);
-  const int first = firstBit(mask), last = lastBit(mask);
-  if (mask >> first == (2u << (last - first)) - 1u) {
-    copyWordRun(toBytes + 4 * first, fromBytes + 4 * first, last - first + 1);
-    return;
-  }
-  for (unsigned rest = mask; rest != 0; rest &= rest - 1) {
-    const int i = std::countr_zero(rest);
-    std::memcpy(toBytes + 4 * i, fromBytes + 4 * i, 4);
-  }
-}
 
 // Stores words[i] as the 4 bytes at row + 4 i for each bit i of mask.
 void storeCoveredWords(void* row, const uint32_t* words, unsigned mask) { copyCoveredWords(row, words, mask); }

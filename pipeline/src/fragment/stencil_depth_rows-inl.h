@@ -20,10 +20,9 @@
 
 #include <hwy/highway.h>
 
-#include <bit>
 #include <cstdint>
-#include <cstring>
 
+#include "fragment/covered_pixels.h"
 #include "fragment/stencil_depth_tests.h"
 
 HWY_BEFORE_NAMESPACE();
@@ -67,17 +66,6 @@ inline Word stencilOperation(RowWords d, GLenum op, Word value, Word reference) 
   }
 }
 
-// Copies byte i (or 4-byte word i, for kBytes = 4) from `from` to `to` for each bit i of mask.
-template <int kBytes>
-inline void copyCovered(void* to, const void* from, unsigned mask) {
-  auto* toBytes = static_cast<uint8_t*>(to);
-  const auto* fromBytes = static_cast<const uint8_t*>(from);
-  for (unsigned rest = mask; rest != 0; rest &= rest - 1) {
-    const int i = std::countr_zero(rest);
-    std::memcpy(toBytes + kBytes * i, fromBytes + kBytes * i, kBytes);
-  }
-}
-
 // testStencilAndDepth(s, &stencil[i], &depth[i], fragmentDepth[i]) for each bit i of mask (of
 // kRowPixels), in any order; stencil is used only when s.stencilTest is on, depth only when
 // s.depthTest is. Returns the pixels of mask that passed both tests. A whole row is read and
@@ -94,8 +82,8 @@ inline unsigned testStencilAndDepthRow(const StencilDepthSettings& s, uint8_t* s
   uint8_t* stencilRow = stencil;
   uint32_t* depthRow = depth;
   if (!wholeRow) {
-    if (s.stencilTest) copyCovered<1>(coveredStencil, stencil, mask);
-    if (s.depthTest) copyCovered<4>(coveredDepth, depth, mask);
+    if (s.stencilTest) copyCoveredPixels<1>(coveredStencil, stencil, mask);
+    if (s.depthTest) copyCoveredWords(coveredDepth, depth, mask);
     stencilRow = coveredStencil;
     depthRow = coveredDepth;
   }
@@ -104,16 +92,14 @@ inline unsigned testStencilAndDepthRow(const StencilDepthSettings& s, uint8_t* s
   const Word maskedReference = hn::And(reference, valueMask);
   unsigned passed = 0;
   for (int i = 0; i < kRowPixels; i += lanes) {
-    // Pixels that fail the stencil test stop there: they get the stencil-fail operation.
-    WordMask stencilPasses = hn::FirstN(d, hn::Lanes(d));
-    Word value = hn::Zero(d);
-    if (s.stencilTest) {
-      value = hn::PromoteTo(d, hn::LoadU(bytes, stencilRow + i));
-      stencilPasses = passes(d, s.stencilFunc, maskedReference, hn::And(value, valueMask));
-    }
+    // Pixels that fail the stencil test stop there: they get the stencil-fail operation. A test
+    // that is off passes, as GL_ALWAYS does.
+    const Word value = s.stencilTest ? hn::PromoteTo(d, hn::LoadU(bytes, stencilRow + i)) : hn::Zero(d);
+    const WordMask stencilPasses =
+        passes(d, s.stencilTest ? s.stencilFunc : GL_ALWAYS, maskedReference, hn::And(value, valueMask));
     const Word fragment = hn::LoadU(d, fragmentDepth + i);
     const Word stored = s.depthTest ? hn::LoadU(d, depthRow + i) : hn::Zero(d);
-    const WordMask depthPasses = s.depthTest ? passes(d, s.depthFunc, fragment, stored) : hn::FirstN(d, hn::Lanes(d));
+    const WordMask depthPasses = passes(d, s.depthTest ? s.depthFunc : GL_ALWAYS, fragment, stored);
     const WordMask both = hn::And(stencilPasses, depthPasses);
     if (s.stencilTest) {
       const Word updated = hn::IfThenElse(
@@ -130,8 +116,8 @@ inline unsigned testStencilAndDepthRow(const StencilDepthSettings& s, uint8_t* s
     passed |= static_cast<unsigned>(bits[0]) << i;
   }
   if (!wholeRow) {
-    if (s.stencilTest) copyCovered<1>(stencil, coveredStencil, mask);
-    if (s.depthTest && s.depthMask) copyCovered<4>(depth, coveredDepth, mask & passed);
+    if (s.stencilTest) copyCoveredPixels<1>(stencil, coveredStencil, mask);
+    if (s.depthTest && s.depthMask) copyCoveredWords(depth, coveredDepth, mask & passed);
   }
   return mask & passed;
 }
