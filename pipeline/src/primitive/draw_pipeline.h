@@ -117,7 +117,9 @@ class DrawPipeline {
   // The offset of a polygon for a polygon mode whose offset is enabled, else 0.
   double polygonDepthBias(const ClipCorners& corners, bool offsetEnabled);
   // line_stage.cpp, point_stage.cpp: clip, viewport, rasterize.
-  void rasterizeSegment(raster::ClipVertex a, raster::ClipVertex b, double depthBias);
+  void rasterizeSegment(const raster::ClipVertex& a, const raster::ClipVertex& b, double depthBias);
+  // A segment inside the clip volume: viewport, rasterize.
+  void rasterizeUnclippedSegment(const raster::ClipVertex& a, const raster::ClipVertex& b, double depthBias);
   // Where the next segment's stipple counter starts (drawLine's StippleRun; a polygon's edges are
   // each Alone).
   void startStippleRun(StippleRun run);

@@ -9,17 +9,16 @@ namespace glass::gl {
 void DrawPipeline::drawLine(const PipelineVertex& a, const PipelineVertex& b,
                             const PipelineVertex& provoking, StippleRun stipple) {
   startStippleRun(stipple);
-  raster::ClipVertex va = a.clip, vb = b.clip;
   if (statistics_) {
     ++statistics_->lines;
-    const unsigned oa = raster::outcode(va, clip_), ob = raster::outcode(vb, clip_);
-    raster::ClipVertex ca = va, cb = vb;
+    const unsigned oa = raster::outcode(a.clip, clip_), ob = raster::outcode(b.clip, clip_);
+    raster::ClipVertex ca = a.clip, cb = b.clip;
     countClipping(oa | ob, oa & ob, (oa & ob) == 0 && ((oa | ob) == 0 || raster::clipLine(ca, cb, clip_)));
   }
-  if (flat_) {
-    useProvokingColors(provoking, false, va);
-    useProvokingColors(provoking, false, vb);
-  }
+  if (!flat_) return rasterizeSegment(a.clip, b.clip, 0.0);
+  raster::ClipVertex va = a.clip, vb = b.clip;
+  useProvokingColors(provoking, false, va);
+  useProvokingColors(provoking, false, vb);
   rasterizeSegment(va, vb, 0.0);
 }
 
@@ -31,10 +30,19 @@ void DrawPipeline::startStippleRun(StippleRun run) {
   stippleEndNeeded_ = run != StippleRun::Alone;
 }
 
-void DrawPipeline::rasterizeSegment(raster::ClipVertex a, raster::ClipVertex b, double depthBias) {
+// The vertices are copied only to be clipped: a copy of a whole vertex (with its 48 varyings)
+// per segment cost more than the rest of a short segment's path through this stage.
+void DrawPipeline::rasterizeSegment(const raster::ClipVertex& a, const raster::ClipVertex& b,
+                                    double depthBias) {
   const unsigned oa = raster::outcode(a, clip_), ob = raster::outcode(b, clip_);
   if (oa & ob) return;
-  if ((oa | ob) && !raster::clipLine(a, b, clip_)) return;
+  if ((oa | ob) == 0) return rasterizeUnclippedSegment(a, b, depthBias);
+  raster::ClipVertex ca = a, cb = b;
+  if (raster::clipLine(ca, cb, clip_)) rasterizeUnclippedSegment(ca, cb, depthBias);
+}
+
+void DrawPipeline::rasterizeUnclippedSegment(const raster::ClipVertex& a, const raster::ClipVertex& b,
+                                             double depthBias) {
   raster::WindowVertex wa, wb;
   if (!toWindow(viewport_, a, clip_.varyingCount, wa) ||
       !toWindow(viewport_, b, clip_.varyingCount, wb))

@@ -76,19 +76,29 @@ void beginPrimitive(Context& ctx, GLenum mode) {
 // only; strips and fans draw every edge (spec 2.6.2).
 namespace {
 
-// assembleVertices over vertexAt(0 .. count).
+// assembleVertices over vertexAt(0 .. count). Whole independent triangles and lines of the
+// batch are drawn from it directly; the other vertices go through assembleVertex, which keeps
+// copies of those a later vertex needs.
 template <class VertexAt>
 void assembleInOrder(Context& ctx, int count, VertexAt vertexAt) {
   PrimitiveAssembly& pa = ctx.assembly;
+  DrawPipeline& draw = *ctx.draw;
   int i = 0;
   if (pa.mode == GL_TRIANGLES) {
     for (; i < count && pa.vertexCount % 3 != 0; ++i) assembleVertex(ctx, vertexAt(i));  // a triangle begun before
-    DrawPipeline& draw = *ctx.draw;
     for (; i + 3 <= count; i += 3) {
       const PipelineVertex &a = vertexAt(i), &b = vertexAt(i + 1), &c = vertexAt(i + 2);
       pa.vertexCount += 3;
       if (FrameStatistics* statistics = draw.statistics()) statistics->vertices += 3;
       draw.drawTriangle(a, b, c, c, edgeBits(a.edgeFlag, b.edgeFlag, c.edgeFlag));
+    }
+  } else if (pa.mode == GL_LINES) {
+    for (; i < count && pa.vertexCount % 2 != 0; ++i) assembleVertex(ctx, vertexAt(i));  // a line begun before
+    for (; i + 2 <= count; i += 2) {
+      const PipelineVertex &a = vertexAt(i), &b = vertexAt(i + 1);
+      pa.vertexCount += 2;
+      if (FrameStatistics* statistics = draw.statistics()) statistics->vertices += 2;
+      draw.drawLine(a, b, b, DrawPipeline::StippleRun::Alone);
     }
   }
   for (; i < count; ++i) assembleVertex(ctx, vertexAt(i));
