@@ -179,22 +179,22 @@ void TileScene::addLine(const WindowVertex& a, const WindowVertex& b, const Line
       !isRasterizableCoordinate(b.x) || !isRasterizableCoordinate(b.y))
     return;
   hasPrimitives_ = true;
-  LineRecord r;
-  r.sink = &sink;
-  const float av[4] = {a.x, a.y, a.z, a.invW}, bv[4] = {b.x, b.y, b.z, b.invW};
-  std::copy(av, av + 4, r.a);
-  std::copy(bv, bv + 4, r.b);
-  r.settings = settings;
-  r.settings.varyingCount = std::clamp(settings.varyingCount, 0, kMaxVaryings);
-  r.settings.stippleCounter = nullptr;
-  r.stippleStart = stippleStart;
-  const int n = r.settings.varyingCount;
-
+  const int n = std::clamp(settings.varyingCount, 0, kMaxVaryings);
   const PixelRect reach = lineReach(a, b, settings);
   forTilesIn(reach.x0, reach.y0, int64_t{reach.x1} - 1, int64_t{reach.y1} - 1,
              [&](Bin& bin) {
                bin.order.push(*arena_, Kind::Line);
-               bin.lines.push(*arena_, r);
+               // Written in place, field by field: a record made on the stack and copied into
+               // each bin was read back with wide loads right after its narrow stores, and each
+               // such load waited for the stores to drain (a store-forwarding stall per bin).
+               LineRecord& r = *bin.lines.extend(*arena_, 1);
+               r.sink = &sink;
+               r.a[0] = a.x, r.a[1] = a.y, r.a[2] = a.z, r.a[3] = a.invW;
+               r.b[0] = b.x, r.b[1] = b.y, r.b[2] = b.z, r.b[3] = b.invW;
+               r.settings = settings;
+               r.settings.varyingCount = n;
+               r.settings.stippleCounter = nullptr;
+               r.stippleStart = stippleStart;
                // Both vertices' varyings in one run, as runTile takes them.
                float* varyings = bin.varyings.extend(*arena_, 2 * static_cast<size_t>(n));
                std::copy(a.varyings, a.varyings + n, varyings);
