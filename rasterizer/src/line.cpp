@@ -71,6 +71,9 @@ class LineRunWriter {
 
   void flush() {
     if (batch_.count == 0) return;
+    // interpolateLineRuns reads whole vectors of majors, up to 16 lanes past the count.
+    const int paddedCount = std::min((batch_.count + 15) / 16 * 16, LineRunBatch::kMaxRuns);
+    std::fill(majors_ + batch_.count, majors_ + paddedCount, 0);
     interpolateLineRuns(ends_, majors_, batch_);
     sink_.processLineRuns(batch_);
     batch_.count = 0;
@@ -80,7 +83,7 @@ class LineRunWriter {
   FragmentSink& sink_;
   bool xMajor_;
   LineRunEnds ends_;
-  int majors_[LineRunBatch::kMaxRuns] = {};  // those past the batch's count are read too
+  int majors_[LineRunBatch::kMaxRuns];  // flush() sets those past the count that are read
   LineRunBatch batch_;
 };
 
