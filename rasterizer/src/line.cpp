@@ -87,15 +87,11 @@ class LineRunWriter {
   LineRunBatch batch_;
 };
 
-// Draws the segment's fragments inside settings.bounds. The stipple counter starts at
-// stippleStart; when stippleEnd is set, it receives the counter after the whole segment.
-void drawLine(const WindowVertex& a, const WindowVertex& b, const LineSettings& settings,
-              int stippleStart, int* stippleEnd, FragmentSink& sink) {
-  if (!isRasterizableCoordinate(a.x) || !isRasterizableCoordinate(a.y) ||
-      !isRasterizableCoordinate(b.x) || !isRasterizableCoordinate(b.y))
-    return;
-  LineQuad quad;
-  if (!makeLineQuad(a.x, a.y, b.x, b.y, settings.width, settings.framebufferHeight, quad)) return;
+// Draws the fragments inside settings.bounds of the segment whose quad (lineQuadOf) is given.
+// The stipple counter starts at stippleStart; when stippleEnd is set, it receives the counter
+// after the whole segment.
+void drawLine(const LineQuad& quad, const WindowVertex& a, const WindowVertex& b,
+              const LineSettings& settings, int stippleStart, int* stippleEnd, FragmentSink& sink) {
   LineRunWriter writer(a, b, settings, quad.xMajor, sink);
 
   const PixelRect& r = settings.bounds;
@@ -125,16 +121,44 @@ void drawLine(const WindowVertex& a, const WindowVertex& b, const LineSettings& 
 
 }  // namespace
 
+bool lineQuadOf(const WindowVertex& a, const WindowVertex& b, const LineSettings& settings,
+                LineQuad& quad) {
+  if (!isRasterizableCoordinate(a.x) || !isRasterizableCoordinate(a.y) ||
+      !isRasterizableCoordinate(b.x) || !isRasterizableCoordinate(b.y))
+    return false;
+  return makeLineQuad(a.x, a.y, b.x, b.y, settings.width, settings.framebufferHeight, quad);
+}
+
+PixelRect lineQuadPixels(const LineQuad& quad, const PixelRect& bounds) {
+  // Pixel (x, y) has its centre at (256 x, 256 y) in the quad's fixed point, and the walk takes
+  // only centres inside the quad, so inside its corners' box.
+  const int64_t x0 = *std::min_element(quad.x, quad.x + 4), x1 = *std::max_element(quad.x, quad.x + 4);
+  const int64_t y0 = *std::min_element(quad.y, quad.y + 4), y1 = *std::max_element(quad.y, quad.y + 4);
+  const int64_t left = std::max<int64_t>(line_quad_detail::ceilDiv(x0, 256), bounds.x0);
+  const int64_t right = std::min<int64_t>(line_quad_detail::floorDiv(x1, 256) + 1, bounds.x1);
+  const int64_t bottom = std::max<int64_t>(line_quad_detail::ceilDiv(y0, 256), bounds.y0);
+  const int64_t top = std::min<int64_t>(line_quad_detail::floorDiv(y1, 256) + 1, bounds.y1);
+  if (left >= right || bottom >= top) return PixelRect{};
+  return PixelRect{static_cast<int>(left), static_cast<int>(bottom), static_cast<int>(right),
+                   static_cast<int>(top)};
+}
+
 void rasterizeLine(const WindowVertex& a, const WindowVertex& b, const LineSettings& settings,
                    FragmentSink& sink) {
+  LineQuad quad;
+  if (lineQuadOf(a, b, settings, quad)) rasterizeLine(quad, a, b, settings, sink);
+}
+
+void rasterizeLine(const LineQuad& quad, const WindowVertex& a, const WindowVertex& b,
+                   const LineSettings& settings, FragmentSink& sink) {
   const bool counted = settings.stippleFactor > 0 && settings.stippleCounter != nullptr;
-  drawLine(a, b, settings, counted ? *settings.stippleCounter : 0,
+  drawLine(quad, a, b, settings, counted ? *settings.stippleCounter : 0,
            counted ? settings.stippleCounter : nullptr, sink);
 }
 
-void rasterizeLineSection(const WindowVertex& a, const WindowVertex& b,
+void rasterizeLineSection(const LineQuad& quad, const WindowVertex& a, const WindowVertex& b,
                           const LineSettings& settings, int stippleStart, FragmentSink& sink) {
-  drawLine(a, b, settings, stippleStart, nullptr, sink);
+  drawLine(quad, a, b, settings, stippleStart, nullptr, sink);
 }
 
 }  // namespace glass::raster

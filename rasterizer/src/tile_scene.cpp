@@ -53,11 +53,6 @@ PixelRect reachRect(double x0, double y0, double x1, double y1, double reach, co
 
 }  // namespace
 
-PixelRect TileScene::lineReach(const WindowVertex& a, const WindowVertex& b, const LineSettings& settings) {
-  return reachRect(std::min(a.x, b.x), std::min(a.y, b.y), std::max(a.x, b.x), std::max(a.y, b.y),
-                   reachOf(settings.width), settings.bounds);
-}
-
 PixelRect TileScene::pointReach(const WindowVertex& v, const PointSettings& settings) {
   return reachRect(v.x, v.y, v.x, v.y, reachOf(settings.size), settings.bounds);
 }
@@ -171,17 +166,12 @@ void TileScene::addTriangle(const WindowVertex& a, const WindowVertex& b, const 
       if (!edgeFunctions.rejects(tx * kTileSize, ty * kTileSize, kTileSize, kTileSize)) addToBin(ty * tilesX_ + tx);
 }
 
-void TileScene::addLine(const WindowVertex& a, const WindowVertex& b, const LineSettings& settings,
-                        int stippleStart, FragmentSink& sink) {
-  // What rasterizeLine would refuse (a position that is not finite or beyond the fixed-point
-  // range) is not binned.
-  if (!isRasterizableCoordinate(a.x) || !isRasterizableCoordinate(a.y) ||
-      !isRasterizableCoordinate(b.x) || !isRasterizableCoordinate(b.y))
-    return;
+void TileScene::addLine(const LineQuad& quad, const PixelRect& pixels, const WindowVertex& a,
+                        const WindowVertex& b, const LineSettings& settings, int stippleStart,
+                        FragmentSink& sink) {
   hasPrimitives_ = true;
   const int n = std::clamp(settings.varyingCount, 0, kMaxVaryings);
-  const PixelRect reach = lineReach(a, b, settings);
-  forTilesIn(reach.x0, reach.y0, int64_t{reach.x1} - 1, int64_t{reach.y1} - 1,
+  forTilesIn(pixels.x0, pixels.y0, int64_t{pixels.x1} - 1, int64_t{pixels.y1} - 1,
              [&](Bin& bin) {
                bin.order.push(*arena_, Kind::Line);
                // Written in place, field by field: a record made on the stack and copied into
@@ -195,6 +185,7 @@ void TileScene::addLine(const WindowVertex& a, const WindowVertex& b, const Line
                r.settings.varyingCount = n;
                r.settings.stippleCounter = nullptr;
                r.stippleStart = stippleStart;
+               r.quad = quad;
                // Both vertices' varyings in one run, as runTile takes them.
                float* varyings = bin.varyings.extend(*arena_, 2 * static_cast<size_t>(n));
                std::copy(a.varyings, a.varyings + n, varyings);
@@ -296,7 +287,7 @@ void TileScene::runBin(int tile) const {
         const WindowVertex b = rebuildVertex(r.b, varyings + n, n);
         LineSettings settings = r.settings;
         settings.bounds = intersect(settings.bounds, rect);
-        rasterizeLineSection(a, b, settings, r.stippleStart, *r.sink);
+        rasterizeLineSection(r.quad, a, b, settings, r.stippleStart, *r.sink);
         break;
       }
       case Kind::Point: {

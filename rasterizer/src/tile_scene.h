@@ -25,6 +25,7 @@
 #include "glass/raster/triangle.h"
 #include "glass/raster/tiled_rasterizer.h"
 #include "hidden_block_odds.h"
+#include "line_quad.h"
 
 namespace glass::raster {
 
@@ -37,13 +38,14 @@ class TileScene {
   // shared by the threads instead of all falling to the submitting one.
   void addTriangle(const WindowVertex& a, const WindowVertex& b, const WindowVertex& c,
                    const TriangleSettings& settings, FragmentSink& sink);
-  // stippleStart: the line stipple counter at the line's first fragment.
-  void addLine(const WindowVertex& a, const WindowVertex& b, const LineSettings& settings,
-               int stippleStart, FragmentSink& sink);
+  // A line whose quad lineQuadOf made, to the bins of the tiles its pixels (lineQuadPixels) may
+  // be in. stippleStart: the line stipple counter at the line's first fragment.
+  void addLine(const LineQuad& quad, const PixelRect& pixels, const WindowVertex& a,
+               const WindowVertex& b, const LineSettings& settings, int stippleStart,
+               FragmentSink& sink);
   void addPoint(const WindowVertex& v, const PointSettings& settings, FragmentSink& sink);
-  // The pixels of its bounds a line or point may touch (all that the bins it goes to cover
-  // between them), generously: half its width or size and a margin for the ends and the snapping.
-  static PixelRect lineReach(const WindowVertex& a, const WindowVertex& b, const LineSettings& settings);
+  // The pixels of its bounds a point may touch (all that the bins it goes to cover between
+  // them), generously: half its size and a margin for the snapping.
   static PixelRect pointReach(const WindowVertex& v, const PointSettings& settings);
   // A clear of the framebuffer (glClear), run in each tile of its rectangle in order with the
   // primitives, so that the tile is cleared while it is in the cache of the thread drawing it.
@@ -93,12 +95,14 @@ class TileScene {
     double depthBias;
     bool frontFacing;
   };
-  // A line's vertices without their varyings, which follow in the bin's varyings (a's, b's).
+  // A line's vertices without their varyings, which follow in the bin's varyings (a's, b's),
+  // and its quad, made once when it was submitted rather than in every tile it reaches.
   struct LineRecord {
     FragmentSink* sink;
     float a[4], b[4];  // x, y, z, invW
     LineSettings settings;
     int stippleStart;
+    LineQuad quad;
   };
   struct PointRecord {
     FragmentSink* sink;

@@ -24,6 +24,7 @@
 #include <thread>
 #include <vector>
 
+#include "line_section.h"
 #include "tile_scene.h"
 
 namespace glass::raster {
@@ -301,9 +302,11 @@ void TiledRasterizer::triangle(const WindowVertex& a, const WindowVertex& b, con
 
 void TiledRasterizer::line(const WindowVertex& a, const WindowVertex& b,
                            const LineSettings& settings, FragmentSink& sink) {
+  LineQuad quad;
+  if (!lineQuadOf(a, b, settings, quad)) return;
+  const PixelRect pixels = lineQuadPixels(quad, settings.bounds);
   // Drawn at once, the line advances the stipple counter as the walk below does.
-  if (impl_->drawnAtOnce(TileScene::lineReach(a, b, settings), [&] { rasterizeLine(a, b, settings, sink); }))
-    return;
+  if (impl_->drawnAtOnce(pixels, [&] { rasterizeLine(quad, a, b, settings, sink); })) return;
   int stippleStart = 0;
   if (settings.stippleFactor > 0 && settings.stippleCounter != nullptr) {
     // The next segment of a strip continues this one's counter, so find where it ends now: walk
@@ -312,9 +315,11 @@ void TiledRasterizer::line(const WindowVertex& a, const WindowVertex& b,
     LineSettings walk = settings;
     walk.bounds = PixelRect{};
     DiscardingSink discard;
-    rasterizeLine(a, b, walk, discard);
+    rasterizeLine(quad, a, b, walk, discard);
   }
-  impl_->filling().addLine(a, b, settings, stippleStart, sink);
+  // Outside the bounds the counter was all there was to do.
+  if (pixels.x0 >= pixels.x1) return;
+  impl_->filling().addLine(quad, pixels, a, b, settings, stippleStart, sink);
   impl_->afterSubmit();
 }
 

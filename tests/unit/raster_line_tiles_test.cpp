@@ -102,11 +102,12 @@ class RandomLines {
   std::mt19937 rng_;
 };
 
-}  // namespace
-
-TEST_CASE("GL lines drawn tile by tile give the fragments of the whole segment, bit for bit") {
+// With one thread a segment within a tile's size is drawn at once and a longer one binned; with
+// two, every segment is binned, to the tiles its quad's pixels reach.
+void checkLinesDrawnTileByTile(int threads) {
+  CAPTURE(threads);
   Framebuffer framebuffer(kWidth, kHeight);
-  TiledRasterizer tiled(framebuffer, 1);
+  TiledRasterizer tiled(framebuffer, threads);
   RandomLines random(12345);
   const PixelRect window{0, 0, kWidth, kHeight};
   const PixelRect scissor{37, 23, 251, 177};
@@ -174,4 +175,11 @@ TEST_CASE("GL lines drawn tile by tile give the fragments of the whole segment, 
   CHECK(fragmentsCompared > 100000);
   CHECK(stippledSegments > 1000);
   CHECK(wideSegments > 1000);
+}
+
+}  // namespace
+
+TEST_CASE("GL lines drawn tile by tile give the fragments of the whole segment, bit for bit") {
+  checkLinesDrawnTileByTile(1);
+  checkLinesDrawnTileByTile(2);
 }
