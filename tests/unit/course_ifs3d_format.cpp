@@ -119,6 +119,26 @@ TEST_CASE("course homework 3: clouds of points read with counts, commas, comment
   CHECK_FALSE(c::parsePointCloud("1 2 inf\n").ok());
 }
 
+TEST_CASE("course homework 3: clouds from other tools: byte order mark, CR line ends, column names") {
+  // A spreadsheet's export: a byte order mark, a line of column names, CR LF.
+  const auto csv = c::parsePointCloud("\xEF\xBB\xBFx,y,z\r\n0,0,0\r\n0.25,0.5,1\r\n");
+  REQUIRE(csv.ok());
+  REQUIRE(csv.points.size() == 2);
+  CHECK(csv.points[1] == glm::dvec3(0.25, 0.5, 1));
+  // Lines ending in a lone CR; an error names the right line and column.
+  const auto mac = c::parsePointCloud("2\r0 0 0\r1 1 q\r");
+  REQUIRE(mac.errors.size() == 1);
+  CHECK(mac.errors[0].line == 3);
+  CHECK(mac.errors[0].column == 5);
+  // Column names are taken only before the points, and only as a whole line of names.
+  const auto late = c::parsePointCloud("0 0 0\nx y z\n");
+  REQUIRE(late.errors.size() == 1);
+  CHECK(late.errors[0].line == 2);
+  CHECK(c::parsePointCloud("x 1 z\n0 0 0\n").errors.size() == 1);
+  // A byte order mark anywhere else is not skipped.
+  CHECK_FALSE(c::parsePointCloud("0 0 0\n\xEF\xBB\xBF1 1 1\n").ok());
+}
+
 namespace {
 
 // The k-d tree's nearest point to p against a search of every point: the same index (the least

@@ -21,7 +21,7 @@ struct Field {
 std::vector<Field> splitFields(std::string_view line) {
   std::vector<Field> fields;
   std::size_t i = 0;
-  auto separator = [](char c) { return c == ' ' || c == '\t' || c == ',' || c == '\r'; };
+  auto separator = [](char c) { return c == ' ' || c == '\t' || c == ','; };
   while (i < line.size() && line[i] != '#') {
     if (separator(line[i])) {
       ++i;
@@ -45,6 +45,15 @@ std::optional<double> toNumber(std::string_view text) {
   return value;
 }
 
+// A line of column names, as spreadsheets and other tools write before their points ("x y z",
+// "X,Y,Z"): every field starts with a letter.
+bool isColumnNames(const std::vector<Field>& fields) {
+  return std::all_of(fields.begin(), fields.end(), [](const Field& f) {
+    const char c = f.text.front();
+    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z');
+  });
+}
+
 }  // namespace
 
 PointCloud parsePointCloud(std::string_view text) {
@@ -53,14 +62,20 @@ PointCloud parsePointCloud(std::string_view text) {
   int declaredLine = 0;
   bool sawData = false;
   int lineNumber = 0;
-  std::size_t start = 0;
+  // A UTF-8 byte order mark, which some Windows editors put first, is not part of the text.
+  std::size_t start = text.starts_with("\xEF\xBB\xBF") ? 3 : 0;
   while (start <= text.size()) {
-    std::size_t end = text.find('\n', start);
+    // Lines end in LF, CR LF or a lone CR (older Mac files).
+    std::size_t end = text.find_first_of("\r\n", start);
     if (end == std::string_view::npos) end = text.size();
+    std::size_t next = end + 1;
+    if (end < text.size() && text[end] == '\r' && next < text.size() && text[next] == '\n') ++next;
     const std::vector<Field> fields = splitFields(text.substr(start, end - start));
     ++lineNumber;
     if (!fields.empty()) {
-      if (!sawData && fields.size() == 1) {
+      if (!sawData && fields.size() == 3 && isColumnNames(fields)) {
+        // Column names before the points: not a point, and not data.
+      } else if (!sawData && fields.size() == 1) {
         // The count line some course files begin with.
         long long count = 0;
         const auto [ptr, ec] = std::from_chars(fields[0].text.data(), fields[0].text.data() + fields[0].text.size(), count);
@@ -96,7 +111,7 @@ PointCloud parsePointCloud(std::string_view text) {
       }
     }
     if (end == text.size()) break;
-    start = end + 1;
+    start = next;
   }
   if (!cloud.ok()) return cloud;
   if (cloud.points.empty()) {

@@ -1,7 +1,9 @@
 // Clouds of points in text files, as homework 3 gives them: one point `x y z` per line, the
 // numbers separated by spaces, tabs or commas; `#` starts a comment; an optional first line with
-// just the number of points. Bad lines are errors with their line and column; a cloud that is
-// small or not in (or near) the unit cube gets a warning, since the homework's clouds are.
+// just the number of points, or with three column names (`x,y,z`). Lines may end in LF, CR LF or
+// CR, and a UTF-8 byte order mark is skipped. Bad lines are errors with their line and column; a
+// cloud that is small or not in (or near) the unit cube gets a warning, since the homework's
+// clouds are.
 #pragma once
 
 #include <string>
