@@ -3,6 +3,8 @@
 #include <charconv>
 #include <cmath>
 
+#include "glass/geometry/byte_order_mark.h"
+
 namespace glass::geometry::ifs_text {
 
 void LineParser::error(int column, std::string message) {
@@ -73,7 +75,7 @@ std::vector<Token> tokenize(std::string_view line, int lineNumber, std::vector<I
 void forEachStatement(std::string_view text, std::vector<IfsParseError>& errors,
                       const std::function<void(const Token& keyword, LineParser& line)>& statement) {
   int lineNumber = 0;
-  std::size_t start = 0;
+  std::size_t start = byteOrderMarkLength(text);
   while (start <= text.size()) {
     std::size_t end = text.find('\n', start);
     if (end == std::string_view::npos) end = text.size();

@@ -1,9 +1,12 @@
 #include "glass/scene/source.h"
 
+#include "glass/geometry/byte_order_mark.h"
+
 namespace glass::scene {
 
 SourceFile::SourceFile(std::string path, std::string text, SourceLocation includedFrom)
     : path_(std::move(path)), text_(std::move(text)), includedFrom_(includedFrom) {
+  text_.erase(0, geometry::byteOrderMarkLength(text_));
   lineStarts_.push_back(0);
   for (std::size_t i = 0; i < text_.size(); ++i) {
     if (text_[i] == '\n') lineStarts_.push_back(i + 1);

@@ -69,6 +69,22 @@ TEST_CASE("course homework 3: .ifs3 errors give line and column, as the 2D forma
         "x.ifs3:1:21: error: colour components must lie in [0, 1]\n  map scale 0.5 color 2 0 0\n                      ^\n");
 }
 
+TEST_CASE("course homework 3: a byte order mark before an .ifs or .ifs3 file is skipped") {
+  const std::string bom = "\xEF\xBB\xBF";
+  const auto with = g::parseIfs3(bom + "map scale 0.5\nmap translate 0.5 0 0 scale 0.5\n");
+  const auto without = g::parseIfs3("map scale 0.5\nmap translate 0.5 0 0 scale 0.5\n");
+  REQUIRE(with.ok());
+  REQUIRE(with.ifs.maps.size() == without.ifs.maps.size());
+  CHECK(g::formatIfs3(with.ifs) == g::formatIfs3(without.ifs));
+  // Columns of the first line count from after the mark, as an editor shows them.
+  const auto bad = g::parseIfs3(bom + "map rotate 30 0 0 0\n");
+  REQUIRE_FALSE(bad.ok());
+  CHECK(bad.errors.front().column == 15);
+  REQUIRE(g::parseIfs(bom + "map scale 0.5\nmap translate 0.5 0 scale 0.5\n").ok());
+  // Only at the start of the file.
+  CHECK_FALSE(g::parseIfs3("map scale 0.5\n" + bom + "map scale 0.5\n").ok());
+}
+
 TEST_CASE("course homework 3: formatIfs3 writes what parseIfs3 reads back exactly") {
   const auto loaded = g::loadIfs3File(exampleFile("homework3.ifs3"));
   REQUIRE(loaded.ok());

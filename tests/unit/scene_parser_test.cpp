@@ -97,6 +97,21 @@ TEST_CASE("scene lexer: tokens, positions, comments, lists and continuations") {
   CHECK(tokens[17].text == "p");
 }
 
+TEST_CASE("scene lexer: a byte order mark before the first line is not part of the text") {
+  Diagnostics diagnostics;
+  SourceFile file("t.scene", "\xEF\xBB\xBFtranslate 1 2 3\n");
+  std::vector<Token> tokens = tokenize(file, diagnostics);
+  CHECK_FALSE(diagnostics.hasErrors());
+  REQUIRE(tokens.size() >= 1);
+  CHECK(tokens[0].text == "translate");
+  CHECK(tokens[0].where.column == 1);
+  CHECK(file.line(1) == "translate 1 2 3");
+  // Elsewhere it is a bad character, as any other.
+  SourceFile later("u.scene", "translate 1 2 3\n\xEF\xBB\xBF\n");
+  tokenize(later, diagnostics);
+  CHECK(diagnostics.hasErrors());
+}
+
 TEST_CASE("scene diagnostics: the caret lines up under tabs and underlines the token") {
   std::string messages = parseMessages("\ttranlate 1 0 0\n");
   CHECK(messages == "test.scene:1:2: error: unknown statement 'tranlate'; did you mean 'translate'?\n"

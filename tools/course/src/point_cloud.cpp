@@ -8,6 +8,8 @@
 #include <optional>
 #include <sstream>
 
+#include "glass/geometry/byte_order_mark.h"
+
 namespace glass::course {
 
 namespace {
@@ -62,8 +64,7 @@ PointCloud parsePointCloud(std::string_view text) {
   int declaredLine = 0;
   bool sawData = false;
   int lineNumber = 0;
-  // A UTF-8 byte order mark, which some Windows editors put first, is not part of the text.
-  std::size_t start = text.starts_with("\xEF\xBB\xBF") ? 3 : 0;
+  std::size_t start = geometry::byteOrderMarkLength(text);
   while (start <= text.size()) {
     // Lines end in LF, CR LF or a lone CR (older Mac files).
     std::size_t end = text.find_first_of("\r\n", start);
