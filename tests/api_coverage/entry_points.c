@@ -628,13 +628,14 @@ static const struct Entry entries[] = {
   ENTRY(glutStrokeLengthf),
   ENTRY(glutStrokeHeight),
   ENTRY(glutStrokeString),
-  /* GLUT 3.7 windows, menus, callbacks and state (59) */
+  /* GLUT 3.7 windows, menus, callbacks and state (60) */
   ENTRY(glutInit),
   ENTRY(glutInitWindowPosition),
   ENTRY(glutInitWindowSize),
   ENTRY(glutInitDisplayMode),
   ENTRY(glutMainLoop),
   ENTRY(glutCreateWindow),
+  ENTRY(glutCreateSubWindow),
   ENTRY(glutDestroyWindow),
   ENTRY(glutSetWindow),
   ENTRY(glutGetWindow),

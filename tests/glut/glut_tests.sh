@@ -143,6 +143,64 @@ close
   expect_text out.txt "window 2 closed; current window 2"
   probe snapshot.png same first.png
   ;;
+subwindows)
+  # Sub-windows: each draws with its own context into its rectangle of the main window (the
+  # blue one holding a red one of its own); the pointer's events go to the window under it, in
+  # that window's coordinates, a drag to the window it began in; keys to the window under the
+  # pointer; crossing from one window into another calls both entry callbacks.
+  run glut_subwindows "motion 50 150
+mouse left down 50 150
+motion 200 150
+mouse left up 200 150
+motion 200 150
+mouse left down 180 120
+mouse left up 180 120
+key x
+motion 5 5
+key y
+"
+  [ "$status" -eq 0 ] || fail "exited with $status"
+  printf '%s\n' "corner 5 at 270 170, a sub-window of no window: 0
+windows 1 2 3 4; parent of 4 is 3, 1 has 3 children
+reshape main 300 200
+entry window 1 left
+entry window 2 entered
+mouse window 2 button 0 down at 40 140
+motion window 2 at 190 140
+mouse window 2 button 0 up at 190 140
+entry window 2 left
+entry window 3 entered
+entry window 3 left
+entry window 4 entered
+mouse window 4 button 0 down at 10 10
+mouse window 4 button 0 up at 10 10
+key x window 4 at 10 10
+entry window 4 left
+entry window 1 entered
+key y window 1 at 5 5" >expected.txt
+  diff expected.txt out.txt >&2 || fail "the callbacks' calls differ from expected.txt"
+  # Grey main window, green sub-window with its white triangle low in it, blue one with red.
+  probe snapshot.png size 300 200 pixel 5 5 128 128 128 pixel 20 20 0 153 0 pixel 75 175 255 255 255 \
+    pixel 75 105 0 153 0 pixel 160 20 0 0 153 pixel 180 120 204 0 0 pixel 295 195 128 128 128 \
+    pixel 271 171 255 255 0 pixel 289 189 255 255 0 pixel 269 171 0 0 153 count 255 255 0 400 400
+  # Moved, hidden, the green one destroyed; then the main window reshaped, whose callback lays
+  # the sub-windows out again in the same pass.
+  run glut_subwindows "motion 180 120
+key p
+snapshot moved.png
+key h
+snapshot hidden.png
+key d
+snapshot destroyed.png
+reshape 400 300
+"
+  [ "$status" -eq 0 ] || fail "exited with $status"
+  probe moved.png pixel 180 120 0 0 153 pixel 220 40 204 0 0 count 204 0 0 2000 2000
+  probe hidden.png pixel 220 40 0 0 153 count 204 0 0 0 0 pixel 20 20 0 153 0
+  probe destroyed.png pixel 20 20 128 128 128 count 0 153 0 0 0
+  probe snapshot.png size 400 300 pixel 195 20 128 128 128 pixel 205 20 0 0 153 \
+    pixel 385 285 0 0 153 pixel 395 295 128 128 128
+  ;;
 errors)
   # freeglut's messages and exit status.
   run glut_glut_errors "" before-init

@@ -102,11 +102,94 @@ void dispatchKey(Window& window, const InputEvent& e) {
   }
 }
 
+bool isPointerOrKey(InputKind kind) {
+  switch (kind) {
+    case InputKind::Key:
+    case InputKind::KeyUp:
+    case InputKind::Special:
+    case InputKind::SpecialUp:
+    case InputKind::Button:
+    case InputKind::Wheel:
+    case InputKind::Motion: return true;
+    default: return false;
+  }
+}
+
+// The deepest visible window at (x, y) of `window` (y down): a sub-window there, topmost first,
+// or the window itself.
+Window& windowAt(Window& window, int x, int y) {
+  for (auto it = window.children.rbegin(); it != window.children.rend(); ++it) {
+    Window* child = findWindow(*it);
+    if (child && child->visible && x >= child->x && x < child->x + child->width &&
+        y >= child->y && y < child->y + child->height) {
+      return windowAt(*child, x - child->x, y - child->y);
+    }
+  }
+  return window;
+}
+
+void sendEntry(int id, int state) {
+  Window* window = findWindow(id);
+  if (!window || !window->callbacks.entry) return;
+  makeCurrent(*window);
+  window->callbacks.entry(state);
+}
+
+// A pointer or key event of a top-level window with sub-windows goes to the window under the
+// pointer, as X gives them to freeglut's sub-windows, in that window's coordinates: or, while a
+// button pressed there is held or a pop-up opened there is open, to that window. Moving from one
+// window to another tells the one left and the one entered (the entry callbacks). Returns the
+// window, with e made its event; null when the entry callbacks destroyed it.
+Window* windowUnderPointer(Window& top, InputEvent& e) {
+  const int topId = top.id;
+  if (e.kind == InputKind::Button || e.kind == InputKind::Motion) {
+    top.mouseX = e.x;  // keys and the wheel are given where the pointer is, in the top's terms
+    top.mouseY = e.y;
+    if (top.capturedBy == 0) {
+      const int over = top.pointerOver != 0 ? top.pointerOver : top.id;
+      const int entered = windowAt(top, e.x, e.y).id;
+      if (over != entered) {
+        top.pointerOver = entered;
+        sendEntry(over, GLUT_LEFT);
+        sendEntry(entered, GLUT_ENTERED);
+        if (!findWindow(topId)) return nullptr;
+      }
+    }
+  }
+  Window* target = findWindow(top.capturedBy);
+  if (!target) target = &windowAt(top, e.x, e.y);
+  int originX = 0, originY = 0;
+  originInTopLevel(*target, originX, originY);
+  e.window = target->id;
+  e.x -= originX;
+  e.y -= originY;
+  return target;
+}
+
+// The event's callbacks in `window` (the one it is for).
+void deliver(Window* window, const InputEvent& e);
+
 }  // namespace
 
-void dispatchInput(const InputEvent& e) {
-  Window* window = findWindow(e.window);
+void dispatchInput(const InputEvent& given) {
+  Window* window = findWindow(given.window);
   if (!window) return;
+  if (!isPointerOrKey(given.kind) || window->children.empty()) return deliver(window, given);
+  InputEvent e = given;
+  const int topId = window->id;
+  Window* target = windowUnderPointer(*window, e);
+  if (!target) return;
+  const int targetId = target->id;
+  deliver(target, e);
+  // The pointer stays with the window while a button is held or a pop-up is open there.
+  Window* top = findWindow(topId);
+  Window* after = findWindow(targetId);
+  if (top) top->capturedBy = after && (after->buttonsDown != 0 || !after->openMenus.empty()) ? targetId : 0;
+}
+
+namespace {
+
+void deliver(Window* window, const InputEvent& e) {
   switch (e.kind) {
     case InputKind::Key:
     case InputKind::KeyUp:
@@ -126,6 +209,7 @@ void dispatchInput(const InputEvent& e) {
       window->mouseY -= e.y - window->y;
       window->x = e.x;
       window->y = e.y;
+      if (window->parent) refreshScreen(*window);  // its parent shows it in the new place
       if (window->callbacks.position) {
         makeCurrent(*window);
         window->callbacks.position(e.x, e.y);
@@ -154,5 +238,7 @@ void dispatchInput(const InputEvent& e) {
       return;
   }
 }
+
+}  // namespace
 
 }  // namespace glass::glut

@@ -39,4 +39,20 @@ void makeCurrent(Window& window) {
   glassMakeCurrent(window.context);
 }
 
+void originInTopLevel(const Window& window, int& x, int& y) {
+  x = y = 0;
+  for (const Window* w = &window; w->parent != 0;) {
+    x += w->x;
+    y += w->y;
+    w = findWindow(w->parent);
+    if (!w) break;
+  }
+}
+
+Window& topLevelOf(Window& window) {
+  Window* top = &window;
+  while (Window* parent = findWindow(top->parent)) top = parent;
+  return *top;
+}
+
 }  // namespace glass::glut

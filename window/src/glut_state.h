@@ -47,7 +47,11 @@ struct OpenMenu {
 struct Window {
   int id = 0;
   std::string title;
-  int x = 0, y = 0;                // position on the screen
+  // A sub-window (glutCreateSubWindow) is a rectangle of its parent with a context of its own;
+  // its parent's picture shows it over the parent's own (children later in the list on top).
+  int parent = 0;                  // 0 for a top-level window
+  std::vector<int> children;       // sub-windows, bottom to top
+  int x = 0, y = 0;                // position on the screen (a sub-window: in its parent, y down)
   int width = 0, height = 0;
   unsigned displayMode = 0;
   bool doubleBuffered = false;
@@ -82,6 +86,11 @@ struct Window {
   // Mouse state, for motion versus passive motion and for the keyboard callbacks' x, y.
   int mouseX = 0, mouseY = 0;
   unsigned buttonsDown = 0;
+  // A top-level window's pointer: the window (itself or a sub-window) the pointer's events go
+  // to while a button is held or a pop-up is open there (0: the one under the pointer), and the
+  // one it was last over, for the entry callbacks.
+  int capturedBy = 0;
+  int pointerOver = 0;
 };
 
 struct MenuItem {
@@ -148,5 +157,10 @@ void destroyMenu(int id);
 
 // Makes the window current, and its context.
 void makeCurrent(Window& window);
+
+// The top-level window a window is part of (itself for a top-level window).
+Window& topLevelOf(Window& window);
+// Where the window's top-left corner is in its top-level window (0, 0 for a top-level window).
+void originInTopLevel(const Window& window, int& x, int& y);
 
 }  // namespace glass::glut

@@ -40,18 +40,25 @@ Run& run() {
   std::exit(1);
 }
 
+// The window named by the last `window N` line, else the last top-level window created (its
+// sub-windows get the events by where the pointer is, as a person's would).
 Window* target() {
   if (Window* chosen = findWindow(run().targetWindow)) return chosen;
   auto& windows = state().windows;
-  return windows.empty() ? nullptr : windows.rbegin()->second.get();
+  for (auto it = windows.rbegin(); it != windows.rend(); ++it) {
+    if (it->second->parent == 0) return it->second.get();
+  }
+  return nullptr;
 }
 
 std::string where(const ScriptLine& line) {
   return run().eventsPath + ":" + std::to_string(line.line) + ":1: ";
 }
 
-void writePicture(const Window& window, const std::string& path) {
-  if (!glassWritePixelsPNG(path.c_str(), window.width, window.height, window.screen.data())) {
+// The picture of the window's top-level window, sub-windows and pop-up included: what is seen.
+void writePicture(Window& window, const std::string& path) {
+  const Window& top = topLevelOf(window);
+  if (!glassWritePixelsPNG(path.c_str(), top.width, top.height, top.screen.data())) {
     failRun("glass: cannot write the snapshot '" + path + "'");
   }
 }

@@ -3,8 +3,8 @@
 //                                frames (default 1) have been shown and the events file is done,
 //                                then exit 0;
 //   GLASS_GLUT_EVENTS=file       input events replayed from the file, one per line.
-// The window the events go to and the snapshot shows is the last one created, or the one an
-// events file's `window N` names.
+// The window the events go to is the last top-level one created, or the one an events file's
+// `window N` names; the snapshot shows that window's top-level window, sub-windows included.
 #pragma once
 
 #include <cstdint>

@@ -49,35 +49,45 @@ void forEachWindow(Work&& work) {
   }
 }
 
-// Moves the program asked for (glutPositionWindow), told as the window system's moves are.
-void runMoves() {
-  forEachWindow([](Window& window) {
-    if (!window.movePending) return;
-    window.movePending = false;
-    InputEvent moved;
-    moved.kind = InputKind::Moved;
-    moved.window = window.id;
-    moved.x = window.requestedX;
-    moved.y = window.requestedY;
-    systemWindowPosition(window, moved.x, moved.y);
-    dispatchInput(moved);
-  });
+// The move the program asked for (glutPositionWindow), told as the window system's moves are.
+void runMove(Window& window) {
+  if (!window.movePending) return;
+  window.movePending = false;
+  InputEvent moved;
+  moved.kind = InputKind::Moved;
+  moved.window = window.id;
+  moved.x = window.requestedX;
+  moved.y = window.requestedY;
+  systemWindowPosition(window, moved.x, moved.y);
+  dispatchInput(moved);
+}
+
+void runReshape(Window& window) {
+  if (window.requestedWidth > 0) {
+    resizeWindow(window, window.requestedWidth, window.requestedHeight);
+    window.requestedWidth = window.requestedHeight = 0;
+  }
+  if (!window.reshapePending) return;
+  window.reshapePending = false;
+  makeCurrent(window);
+  if (window.callbacks.reshape) {
+    window.callbacks.reshape(window.width, window.height);
+  } else {
+    glViewport(0, 0, window.width, window.height);  // GLUT's default reshape (spec 7.2)
+  }
 }
 
 void runReshapes() {
+  forEachWindow([](Window& window) { runReshape(window); });
+}
+
+// Each window's move, then its reshape. A sub-window comes after its parent (its id is larger),
+// so what the parent's reshape callback asks of it (the layout of the classic programs' panes)
+// is done in the same pass, before the displays.
+void runMovesAndReshapes() {
   forEachWindow([](Window& window) {
-    if (window.requestedWidth > 0) {
-      resizeWindow(window, window.requestedWidth, window.requestedHeight);
-      window.requestedWidth = window.requestedHeight = 0;
-    }
-    if (!window.reshapePending) return;
-    window.reshapePending = false;
-    makeCurrent(window);
-    if (window.callbacks.reshape) {
-      window.callbacks.reshape(window.width, window.height);
-    } else {
-      glViewport(0, 0, window.width, window.height);  // GLUT's default reshape (spec 7.2)
-    }
+    runMove(window);
+    if (Window* still = findWindow(window.id)) runReshape(*still);
   });
 }
 
@@ -148,8 +158,7 @@ void runLoopPass() {
   for (const InputEvent& event : events) dispatchInput(event);
   runScriptStep();
   runDueTimers();
-  runMoves();
-  runReshapes();
+  runMovesAndReshapes();
   runDisplays();
   finishRunIfDone();
 }

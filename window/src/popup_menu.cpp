@@ -238,10 +238,7 @@ void drawPopupOverPicture(Window& window) {
              glassGetHeight(window.menuContext) != window.height) {
     glassResizeContext(window.menuContext, window.width, window.height);
   }
-  if (!window.menuContext) {  // out of memory: the picture without the pop-up
-    window.screen = window.shown;
-    return;
-  }
+  if (!window.menuContext) return;  // out of memory: the picture without the pop-up
   GlassContext* previous = glassGetCurrentContext();
   glassMakeCurrent(window.menuContext);
   glViewport(0, 0, window.width, window.height);
@@ -253,7 +250,7 @@ void drawPopupOverPicture(Window& window) {
   glLoadIdentity();
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
   glWindowPos2i(0, 0);
-  glDrawPixels(window.width, window.height, GL_RGBA, GL_UNSIGNED_BYTE, window.shown.data());
+  glDrawPixels(window.width, window.height, GL_RGBA, GL_UNSIGNED_BYTE, window.screen.data());
   for (const OpenMenu& open : window.openMenus) {
     if (const Menu* menu = findMenu(open.menu)) drawBox(*menu, open);
   }

@@ -18,7 +18,7 @@ void popupFollowPointer(Window& window, int x, int y);
 // opens, an entry closes the pop-up and calls the menu's callback. False, with `error`, when
 // there is no such entry.
 bool popupChooseEntry(Window& window, int index, std::string& error);
-// window.screen = window.shown with the open menus drawn over it.
+// Draws the open menus over window.screen (the picture with its sub-windows).
 void drawPopupOverPicture(Window& window);
 
 }  // namespace glass::glut

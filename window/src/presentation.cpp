@@ -1,5 +1,6 @@
 #include "presentation.h"
 
+#include <algorithm>
 #include <cstring>
 
 #include "glut_errors.h"
@@ -28,13 +29,39 @@ void presentWindow(Window& window) {
   refreshScreen(window);
 }
 
-void refreshScreen(Window& window) {
-  if (window.openMenus.empty()) {
-    window.screen = window.shown;
-  } else {
-    drawPopupOverPicture(window);
+namespace {
+
+// Copies the child's screen (RGBA8, bottom row first) into the parent's at the child's place
+// (x, y from the parent's top-left corner, y down), clipped to the parent.
+void drawChildOver(const Window& child, Window& parent) {
+  if (child.screen.size() != static_cast<size_t>(child.width) * child.height * 4) return;
+  const int left = std::max(child.x, 0), right = std::min(child.x + child.width, parent.width);
+  if (left >= right) return;
+  for (int row = 0; row < child.height; ++row) {
+    const int parentRowFromTop = child.y + (child.height - 1 - row);
+    if (parentRowFromTop < 0 || parentRowFromTop >= parent.height) continue;
+    const int parentRow = parent.height - 1 - parentRowFromTop;
+    const unsigned char* from = child.screen.data() + (static_cast<size_t>(row) * child.width + (left - child.x)) * 4;
+    unsigned char* to = parent.screen.data() + (static_cast<size_t>(parentRow) * parent.width + left) * 4;
+    std::memcpy(to, from, static_cast<size_t>(right - left) * 4);
   }
-  showOnScreen(window);
+}
+
+}  // namespace
+
+void refreshScreen(Window& window) {
+  // The window's picture, its visible sub-windows' screens over it, then its pop-up.
+  window.screen = window.shown;
+  for (int id : window.children) {
+    if (const Window* child = findWindow(id); child && child->visible) drawChildOver(*child, window);
+  }
+  if (!window.openMenus.empty()) drawPopupOverPicture(window);
+  // A sub-window is seen through its parent's screen.
+  if (Window* parent = findWindow(window.parent)) {
+    refreshScreen(*parent);
+  } else {
+    showOnScreen(window);
+  }
 }
 
 void resizeWindow(Window& window, int width, int height) {

@@ -40,8 +40,8 @@ std::optional<int> windowQuery(const Window& window, GLenum query) {
     case GLUT_WINDOW_ACCUM_ALPHA_SIZE: return kAccumulationBits;
     case GLUT_WINDOW_DOUBLEBUFFER: return window.doubleBuffered ? 1 : 0;
     case GLUT_WINDOW_RGBA: return 1;
-    case GLUT_WINDOW_PARENT:
-    case GLUT_WINDOW_NUM_CHILDREN:
+    case GLUT_WINDOW_PARENT: return window.parent;
+    case GLUT_WINDOW_NUM_CHILDREN: return static_cast<int>(window.children.size());
     case GLUT_WINDOW_COLORMAP_SIZE:
     case GLUT_WINDOW_NUM_SAMPLES:
     case GLUT_WINDOW_STEREO: return 0;

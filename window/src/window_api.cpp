@@ -5,7 +5,9 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <memory>
 #include <string>
+#include <vector>
 
 #include "glut_clock.h"
 #include "glut_errors.h"
@@ -91,9 +93,25 @@ void destroyWindow(int id) {
     window = findWindow(id);
     if (!window) return;
   }
+  // Its sub-windows go with it, the topmost first.
+  while (!window->children.empty()) {
+    destroyWindow(window->children.back());
+    window = findWindow(id);
+    if (!window) return;
+  }
+  if (Window* parent = findWindow(window->parent)) {
+    std::erase(parent->children, id);
+    if (parent->pointerOver == id) parent->pointerOver = 0;
+    Window& top = topLevelOf(*parent);
+    if (top.capturedBy == id) top.capturedBy = 0;
+    if (top.pointerOver == id) top.pointerOver = 0;
+  }
+  const int parentId = window->parent;
   const bool wasCurrent = s.currentWindow == id;
   freeWindow(*window);
   s.windows.erase(id);
+  // The parent no longer shows it.
+  if (Window* parent = findWindow(parentId)) refreshScreen(*parent);
   if (wasCurrent) {
     s.currentWindow = 0;
     glassMakeCurrent(nullptr);
@@ -184,8 +202,14 @@ void glutInitWarningFunc(void (*callback)(const char* fmt, va_list ap)) {
   state().warningFunc = callback;
 }
 
-int glutCreateWindow(const char* title) {
-  requireInitialised("glutCreateWindow");
+}  // extern "C"
+
+namespace glass::glut {
+namespace {
+
+// A window of the initial display mode with its context, at x, y (on the screen, or in the
+// parent for a sub-window), not yet registered.
+std::unique_ptr<Window> newWindow(const char* title, int x, int y, int width, int height) {
   State& s = state();
   // glass's framebuffer is RGBA; colour index, stereo and multisample visuals do not exist.
   if (s.initDisplayMode & (GLUT_INDEX | GLUT_STEREO | GLUT_MULTISAMPLE)) {
@@ -194,10 +218,10 @@ int glutCreateWindow(const char* title) {
   auto window = std::make_unique<Window>();
   window->id = s.nextWindowId++;
   window->title = title ? title : "";
-  window->x = s.initX;
-  window->y = s.initY;
-  window->width = s.initWidth;
-  window->height = s.initHeight;
+  window->x = x;
+  window->y = y;
+  window->width = width;
+  window->height = height;
   window->displayMode = s.initDisplayMode;
   window->doubleBuffered = (s.initDisplayMode & GLUT_DOUBLE) != 0;
   window->context = glassCreateContext(window->width, window->height);
@@ -205,10 +229,12 @@ int glutCreateWindow(const char* title) {
     fatalError("Unable to create OpenGL context for a %d x %d window", window->width,
                window->height);
   }
-  if (!createSystemWindow(*window)) {
-    glassDestroyContext(window->context);
-    fatalError("Unable to create a window: %s", "the window system refused it");
-  }
+  return window;
+}
+
+// Registers the window, makes it current and shows its (black) picture.
+int registerWindow(std::unique_ptr<Window> window) {
+  State& s = state();
   glassSetFlushCallback(window->context, presentOnFlush,
                         reinterpret_cast<void*>(static_cast<intptr_t>(window->id)));
   window->shown.assign(static_cast<size_t>(window->width) * window->height * 4, 0);
@@ -217,6 +243,47 @@ int glutCreateWindow(const char* title) {
   makeCurrent(created);
   refreshScreen(created);
   return created.id;
+}
+
+}  // namespace
+}  // namespace glass::glut
+
+extern "C" {
+
+int glutCreateWindow(const char* title) {
+  requireInitialised("glutCreateWindow");
+  State& s = state();
+  std::unique_ptr<Window> window = newWindow(title, s.initX, s.initY, s.initWidth, s.initHeight);
+  if (!createSystemWindow(*window)) {
+    glassDestroyContext(window->context);
+    fatalError("Unable to create a window: %s", "the window system refused it");
+  }
+  return registerWindow(std::move(window));
+}
+
+// GLUT 3.7 spec 4.2: a window inside `parent`, at x, y in the parent's coordinates (y down), with
+// the initial display mode; it has no title and no window of its own in the window system. As
+// freeglut: a parent that does not exist gives 0; a negative x or y counts from the parent's
+// right or bottom edge (to the sub-window's own far edge when its size is given), and a negative
+// width or height leaves that much of the parent beyond the sub-window.
+int glutCreateSubWindow(int parent, int x, int y, int width, int height) {
+  requireInitialised("glutCreateSubWindow");
+  Window* owner = findWindow(parent);
+  if (!owner) return 0;
+  auto placeAlong = [](int parentSize, int& start, int& size) {
+    if (start < 0) start = parentSize + start - (size >= 0 ? size : 0);
+    if (size < 0) size = parentSize - start + size;
+    if (size < 0) {
+      start += size;
+      size = -size;
+    }
+  };
+  placeAlong(owner->width, x, width);
+  placeAlong(owner->height, y, height);
+  std::unique_ptr<Window> window = newWindow("", x, y, width > 0 ? width : 1, height > 0 ? height : 1);
+  window->parent = parent;
+  owner->children.push_back(window->id);
+  return registerWindow(std::move(window));
 }
 
 void glutDestroyWindow(int window) {
@@ -278,6 +345,7 @@ void glutShowWindow(void) {
   window->visible = true;
   window->redisplayPending = true;
   showSystemWindow(*window, true);
+  if (window->parent) refreshScreen(*window);
 }
 
 void glutHideWindow(void) {
@@ -285,6 +353,7 @@ void glutHideWindow(void) {
   if (!window) return;
   window->visible = false;
   showSystemWindow(*window, false);
+  if (Window* parent = findWindow(window->parent)) refreshScreen(*parent);
 }
 
 void glutIconifyWindow(void) {
@@ -294,15 +363,33 @@ void glutIconifyWindow(void) {
   iconifySystemWindow(*window);
 }
 
-void glutPushWindow(void) { requireCurrentWindow("glutPushWindow"); }
+// A sub-window goes to the bottom (push) or the top (pop) of its siblings; a top-level window's
+// push has no effect under SDL.
+void glutPushWindow(void) {
+  Window* window = requireCurrentWindow("glutPushWindow");
+  if (!window) return;
+  if (Window* parent = findWindow(window->parent)) {
+    std::erase(parent->children, window->id);
+    parent->children.insert(parent->children.begin(), window->id);
+    refreshScreen(*parent);
+  }
+}
 
 void glutPopWindow(void) {
-  if (Window* window = requireCurrentWindow("glutPopWindow")) raiseSystemWindow(*window);
+  Window* window = requireCurrentWindow("glutPopWindow");
+  if (!window) return;
+  if (Window* parent = findWindow(window->parent)) {
+    std::erase(parent->children, window->id);
+    parent->children.push_back(window->id);
+    refreshScreen(*parent);
+    return;
+  }
+  raiseSystemWindow(*window);
 }
 
 void glutFullScreen(void) {
   Window* window = requireCurrentWindow("glutFullScreen");
-  if (!window || window->fullScreen) return;
+  if (!window || window->fullScreen || window->parent) return;  // sub-windows: as freeglut
   window->fullScreen = true;
   setSystemWindowFullScreen(*window, true);
 }
@@ -340,7 +427,11 @@ void glutSwapBuffers(void) {
 }
 
 void glutWarpPointer(int x, int y) {
-  if (Window* window = requireCurrentWindow("glutWarpPointer")) warpSystemPointer(*window, x, y);
+  Window* window = requireCurrentWindow("glutWarpPointer");
+  if (!window) return;
+  int originX = 0, originY = 0;
+  originInTopLevel(*window, originX, originY);
+  warpSystemPointer(topLevelOf(*window), originX + x, originY + y);
 }
 
 void glutSetCursor(int cursor) {

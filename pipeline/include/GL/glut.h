@@ -183,6 +183,7 @@ GLAPI void GLAPIENTRY glutMainLoop(void);
 
 /* Windows (spec 4): each its own glass context, made current with the window. */
 GLAPI int GLAPIENTRY glutCreateWindow(const char* title);
+GLAPI int GLAPIENTRY glutCreateSubWindow(int window, int x, int y, int width, int height);
 GLAPI void GLAPIENTRY glutDestroyWindow(int window);
 GLAPI void GLAPIENTRY glutSetWindow(int window);
 GLAPI int GLAPIENTRY glutGetWindow(void);
