@@ -628,11 +628,12 @@ static const struct Entry entries[] = {
   ENTRY(glutStrokeLengthf),
   ENTRY(glutStrokeHeight),
   ENTRY(glutStrokeString),
-  /* GLUT 3.7 windows, menus, callbacks and state (60) */
+  /* GLUT 3.7 windows, menus, callbacks and state (61) */
   ENTRY(glutInit),
   ENTRY(glutInitWindowPosition),
   ENTRY(glutInitWindowSize),
   ENTRY(glutInitDisplayMode),
+  ENTRY(glutInitDisplayString),
   ENTRY(glutMainLoop),
   ENTRY(glutCreateWindow),
   ENTRY(glutCreateSubWindow),

@@ -201,6 +201,30 @@ reshape 400 300
   probe snapshot.png size 400 300 pixel 195 20 128 128 128 pixel 205 20 0 0 153 \
     pixel 385 285 0 0 153 pixel 395 295 128 128 128
   ;;
+display_string)
+  # glutInitDisplayString: the words give glutInitDisplayMode's bits (GLUT_DOUBLE 2, GLUT_DEPTH
+  # 16, GLUT_STENCIL 32, GLUT_ACCUM 4, GLUT_ALPHA 8); numbers do not change glass's one
+  # configuration; "samples" alone (at most 4 by the specification) is met without multisampling.
+  run glut_display_string "" "rgb double depth>=16 stencil~2 acc samples"
+  [ "$status" -eq 0 ] || fail "exited with $status"
+  expect_text out.txt "mode 54"
+  expect_text out.txt "double-buffered 1"
+  run glut_display_string "" "	rgba  alpha single "
+  [ "$status" -eq 0 ] || fail "exited with $status"
+  expect_text out.txt "mode 8"
+  expect_text out.txt "double-buffered 0"
+  # A word GLUT does not know gets freeglut's warning; the others still count.
+  run glut_display_string "" "double bogus=3"
+  [ "$status" -eq 0 ] || fail "exited with $status"
+  expect_text err.txt "Display string token not recognized:  bogus=3"
+  expect_text out.txt "mode 2"
+  # What glass cannot have fails at glutCreateWindow, as the same bits of glutInitDisplayMode do.
+  for words in "index" "rgb samples>=2" "stereo"; do
+    run glut_display_string "" "$words"
+    [ "$status" -eq 1 ] || fail "'$words' exited with $status"
+    expect_text err.txt "FBConfig with necessary capabilities not found"
+  done
+  ;;
 errors)
   # freeglut's messages and exit status.
   run glut_glut_errors "" before-init

@@ -179,6 +179,7 @@ GLAPI void GLAPIENTRY glutInit(int* pargc, char** argv);
 GLAPI void GLAPIENTRY glutInitWindowPosition(int x, int y);
 GLAPI void GLAPIENTRY glutInitWindowSize(int width, int height);
 GLAPI void GLAPIENTRY glutInitDisplayMode(unsigned int displayMode);
+GLAPI void GLAPIENTRY glutInitDisplayString(const char* displayMode);
 GLAPI void GLAPIENTRY glutMainLoop(void);
 
 /* Windows (spec 4): each its own glass context, made current with the window. */
