@@ -628,7 +628,7 @@ static const struct Entry entries[] = {
   ENTRY(glutStrokeLengthf),
   ENTRY(glutStrokeHeight),
   ENTRY(glutStrokeString),
-  /* GLUT 3.7 windows, menus, callbacks and state (61) */
+  /* GLUT 3.7 windows, menus, callbacks and state (65) */
   ENTRY(glutInit),
   ENTRY(glutInitWindowPosition),
   ENTRY(glutInitWindowSize),
@@ -638,6 +638,10 @@ static const struct Entry entries[] = {
   ENTRY(glutCreateWindow),
   ENTRY(glutCreateSubWindow),
   ENTRY(glutDestroyWindow),
+  ENTRY(glutGameModeString),
+  ENTRY(glutEnterGameMode),
+  ENTRY(glutLeaveGameMode),
+  ENTRY(glutGameModeGet),
   ENTRY(glutSetWindow),
   ENTRY(glutGetWindow),
   ENTRY(glutSetWindowTitle),

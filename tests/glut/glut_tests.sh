@@ -225,6 +225,28 @@ display_string)
     expect_text err.txt "FBConfig with necessary capabilities not found"
   done
   ;;
+game_mode)
+  # Game mode: the asked size, depth and rate; the window at the screen's corner with a context
+  # of that size; entering again replaces the window; leaving destroys it (and with no window
+  # left the headless run has nothing to take a snapshot of).
+  run glut_game_mode "snapshot first.png
+key e
+" "320x240:16@75"
+  [ "$status" -eq 0 ] || fail "exited with $status"
+  printf '%s\n' "before: active 0 possible 1 320 x 240 depth 16 refresh 75 changed 0
+window 1, 320 x 240 at 0 0
+entered: active 1 possible 1 320 x 240 depth 16 refresh 75 changed 1
+window 2, 320 x 240 at 0 0
+entered: active 1 possible 1 320 x 240 depth 16 refresh 75 changed 1" >expected.txt
+  diff expected.txt out.txt >&2 || fail "game mode queries differ from expected.txt"
+  probe first.png size 320 240 pixel 5 5 0 0 153 pixel 160 120 255 0 0 count 255 0 0 19200 19200
+  probe snapshot.png same first.png
+  run glut_game_mode "key l
+" ":32"
+  expect_text out.txt "left: active 0 possible 1"
+  expect_text out.txt "depth 32"
+  expect_text err.txt "there is no window to take the snapshot of"
+  ;;
 errors)
   # freeglut's messages and exit status.
   run glut_glut_errors "" before-init

@@ -62,6 +62,7 @@ struct Window {
   void* userData = nullptr;
   int cursor = GLUT_CURSOR_INHERIT;  // a new window's cursor (GLUT 3.7 spec 4.13)
   bool fullScreen = false;
+  bool gameMode = false;            // the game mode window (game_mode.cpp): borderless at 0, 0
   bool visible = true;
 
   bool redisplayPending = true;     // a new window is drawn once it is shown (spec 4.1)
@@ -139,6 +140,10 @@ struct State {
   bool ignoreKeyRepeat = false;
   bool loopRunning = false;
   int modifiers = -1;           // valid inside input callbacks only; -1 elsewhere
+
+  // Game mode (glutGameModeString; -1: the screen's own), and its window while it is entered.
+  int gameModeWidth = -1, gameModeHeight = -1, gameModeDepth = -1, gameModeRefresh = -1;
+  int gameModeWindow = 0;
 
   void (*errorFunc)(const char*, va_list) = nullptr;
   void (*warningFunc)(const char*, va_list) = nullptr;

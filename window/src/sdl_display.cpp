@@ -378,8 +378,9 @@ bool displayIsHeadless() { return headless; }
 bool createSystemWindow(Window& window) {
   const int x = window.x >= 0 ? window.x : static_cast<int>(SDL_WINDOWPOS_UNDEFINED);
   const int y = window.y >= 0 ? window.y : static_cast<int>(SDL_WINDOWPOS_UNDEFINED);
+  // The game mode window covers the screen from its corner, without a border.
   window.sdlWindow = SDL_CreateWindow(shownTitle(window).c_str(), x, y, window.width, window.height,
-                                      SDL_WINDOW_RESIZABLE);
+                                      window.gameMode ? SDL_WINDOW_BORDERLESS : SDL_WINDOW_RESIZABLE);
   if (window.sdlWindow == nullptr) return false;
   // Where the window is (glutGet(GLUT_WINDOW_X)): the system's placement when the program asked
   // for none. A window manager that moves it later sends a move event, which updates it again.
@@ -488,6 +489,16 @@ void setSystemCursor(Window& window, int glutCursor) {
   SDL_Cursor*& cursor = cursors[shape];
   if (!cursor) cursor = SDL_CreateSystemCursor(shape);
   if (cursor) SDL_SetCursor(cursor);
+}
+
+void screenMode(int& bitsPerPixel, int& refreshRate) {
+  SDL_DisplayMode mode;
+  if (SDL_GetDesktopDisplayMode(0, &mode) != 0) {
+    bitsPerPixel = refreshRate = 0;
+    return;
+  }
+  bitsPerPixel = static_cast<int>(SDL_BITSPERPIXEL(mode.format));
+  refreshRate = mode.refresh_rate;
 }
 
 void screenSize(int& width, int& height, int& widthMM, int& heightMM) {

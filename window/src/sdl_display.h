@@ -37,6 +37,8 @@ void raiseSystemWindow(Window& window);
 void warpSystemPointer(Window& window, int x, int y);
 void setSystemCursor(Window& window, int glutCursor);
 void screenSize(int& width, int& height, int& widthMM, int& heightMM);
+// The screen's bits per pixel and refresh rate in Hz (0 when the system does not say).
+void screenMode(int& bitsPerPixel, int& refreshRate);
 
 // The window system's events since the last call, as GLUT input events (none when headless).
 void pollSystemEvents(std::vector<InputEvent>& events);

@@ -107,6 +107,7 @@ void destroyWindow(int id) {
     if (top.pointerOver == id) top.pointerOver = 0;
   }
   const int parentId = window->parent;
+  if (s.gameModeWindow == id) s.gameModeWindow = 0;
   const bool wasCurrent = s.currentWindow == id;
   freeWindow(*window);
   s.windows.erase(id);
@@ -246,19 +247,25 @@ int registerWindow(std::unique_ptr<Window> window) {
 }
 
 }  // namespace
+
+int createTopLevelWindow(const char* title, int x, int y, int width, int height, bool gameMode) {
+  std::unique_ptr<Window> window = newWindow(title, x, y, width, height);
+  window->gameMode = gameMode;
+  if (!createSystemWindow(*window)) {
+    glassDestroyContext(window->context);
+    fatalError("Unable to create a window: %s", "the window system refused it");
+  }
+  return registerWindow(std::move(window));
+}
+
 }  // namespace glass::glut
 
 extern "C" {
 
 int glutCreateWindow(const char* title) {
   requireInitialised("glutCreateWindow");
-  State& s = state();
-  std::unique_ptr<Window> window = newWindow(title, s.initX, s.initY, s.initWidth, s.initHeight);
-  if (!createSystemWindow(*window)) {
-    glassDestroyContext(window->context);
-    fatalError("Unable to create a window: %s", "the window system refused it");
-  }
-  return registerWindow(std::move(window));
+  const State& s = state();
+  return createTopLevelWindow(title, s.initX, s.initY, s.initWidth, s.initHeight, false);
 }
 
 // GLUT 3.7 spec 4.2: a window inside `parent`, at x, y in the parent's coordinates (y down), with

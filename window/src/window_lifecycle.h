@@ -5,6 +5,9 @@ namespace glass::glut {
 
 struct Window;
 
+// Makes a top-level window of the initial display mode, at x, y on the screen (negative: where
+// the system puts it), current; a game mode window has no border. Returns its id.
+int createTopLevelWindow(const char* title, int x, int y, int width, int height, bool gameMode);
 // Destroys the window: its close callback runs first (freeglut calls it for every destruction),
 // then its context and system window go.
 void destroyWindow(int id);

@@ -138,6 +138,15 @@ extern "C" {
 #define  GLUT_NORMAL                        0x0000
 #define  GLUT_OVERLAY                       0x0001
 
+/* glutGameModeGet queries. */
+#define  GLUT_GAME_MODE_ACTIVE              0x0000
+#define  GLUT_GAME_MODE_POSSIBLE            0x0001
+#define  GLUT_GAME_MODE_WIDTH               0x0002
+#define  GLUT_GAME_MODE_HEIGHT              0x0003
+#define  GLUT_GAME_MODE_PIXEL_DEPTH         0x0004
+#define  GLUT_GAME_MODE_REFRESH_RATE        0x0005
+#define  GLUT_GAME_MODE_DISPLAY_CHANGED     0x0006
+
 /* glutGetModifiers. */
 #define  GLUT_ACTIVE_SHIFT                  0x0001
 #define  GLUT_ACTIVE_CTRL                   0x0002
@@ -186,6 +195,11 @@ GLAPI void GLAPIENTRY glutMainLoop(void);
 GLAPI int GLAPIENTRY glutCreateWindow(const char* title);
 GLAPI int GLAPIENTRY glutCreateSubWindow(int window, int x, int y, int width, int height);
 GLAPI void GLAPIENTRY glutDestroyWindow(int window);
+/* Game mode (GLUT 3.7): a window covering the screen from its corner, without a border. */
+GLAPI void GLAPIENTRY glutGameModeString(const char* string);
+GLAPI int GLAPIENTRY glutEnterGameMode(void);
+GLAPI void GLAPIENTRY glutLeaveGameMode(void);
+GLAPI int GLAPIENTRY glutGameModeGet(GLenum query);
 GLAPI void GLAPIENTRY glutSetWindow(int window);
 GLAPI int GLAPIENTRY glutGetWindow(void);
 GLAPI void GLAPIENTRY glutSetWindowTitle(const char* title);
