@@ -247,6 +247,23 @@ entered: active 1 possible 1 320 x 240 depth 16 refresh 75 changed 1" >expected.
   expect_text out.txt "depth 32"
   expect_text err.txt "there is no window to take the snapshot of"
   ;;
+absent_features)
+  # Joysticks, spaceballs, tablets, overlays, colour maps, video resizing, multi-pointer input:
+  # the calls are there, the callbacks kept and never called, the queries say "none".
+  run glut_absent_features ""
+  [ "$status" -eq 0 ] || fail "exited with $status"
+  printf '%s\n' "asked 1.4 flags 0 profile 0
+overlay possible 0, colour -1, video resize 0, multisample values none 0
+proc glutSwapBuffers found, glActiveTexture found, gluPerspective missing, glutNoSuch missing
+device callbacks called 0 times" >expected.txt
+  diff expected.txt out.txt >&2 || fail "the answers differ from expected.txt"
+  expect_text err.txt "glutSetMenuFont: bitmap font"
+  # A context glass cannot make: freeglut's message, at glutCreateWindow.
+  run glut_absent_features "" core
+  [ "$status" -eq 1 ] || fail "core: exited with $status"
+  expect_text out.txt "asked 3.3 flags 0 profile 1"
+  expect_text err.txt "Unable to create OpenGL 3.3 context (flags 0, profile 1): glass provides OpenGL 1.4"
+  ;;
 errors)
   # freeglut's messages and exit status.
   run glut_glut_errors "" before-init

@@ -7,16 +7,6 @@
 
 using namespace glass::glut;
 
-namespace {
-
-// Stores a callback of the current window.
-template <class Callback>
-void setWindowCallback(const char* function, Callback WindowCallbacks::*member, Callback callback) {
-  if (Window* window = windowForCallback(function)) window->callbacks.*member = callback;
-}
-
-}  // namespace
-
 extern "C" {
 
 void glutDisplayFunc(void (*callback)(void)) {

@@ -34,6 +34,22 @@ struct WindowCallbacks {
   void (*windowStatus)(int) = nullptr;
   void (*position)(int, int) = nullptr;
   void (*close)() = nullptr;
+  // Kept and never called: glass knows no such devices or layers (device_callbacks.cpp,
+  // absent_layers.cpp).
+  void (*joystick)(unsigned int, int, int, int) = nullptr;
+  int joystickPollInterval = 0;
+  void (*spaceballMotion)(int, int, int) = nullptr;
+  void (*spaceballRotate)(int, int, int) = nullptr;
+  void (*spaceballButton)(int, int) = nullptr;
+  void (*buttonBox)(int, int) = nullptr;
+  void (*dials)(int, int) = nullptr;
+  void (*tabletMotion)(int, int) = nullptr;
+  void (*tabletButton)(int, int, int, int) = nullptr;
+  void (*multiEntry)(int, int) = nullptr;
+  void (*multiButton)(int, int, int, int, int) = nullptr;
+  void (*multiMotion)(int, int, int) = nullptr;
+  void (*multiPassive)(int, int, int) = nullptr;
+  void (*overlayDisplay)() = nullptr;
 };
 
 // The pop-up that is open in a window: the chain of menus from the one attached to the button
@@ -141,6 +157,12 @@ struct State {
   bool loopRunning = false;
   int modifiers = -1;           // valid inside input callbacks only; -1 elsewhere
 
+  // glutInitContextVersion, glutInitContextFlags, glutInitContextProfile (context_version.cpp).
+  int contextMajor = 1, contextMinor = 0, contextFlags = 0, contextProfile = 0;
+  // Kept and never called (device_callbacks.cpp).
+  void (*initContext)() = nullptr;
+  void (*appStatus)(int) = nullptr;
+
   // Game mode (glutGameModeString; -1: the screen's own), and its window while it is entered.
   int gameModeWidth = -1, gameModeHeight = -1, gameModeDepth = -1, gameModeRefresh = -1;
   int gameModeWindow = 0;
@@ -162,6 +184,14 @@ void destroyMenu(int id);
 
 // Makes the window current, and its context.
 void makeCurrent(Window& window);
+
+// Stores a callback of the current window; with none, windowForCallback's warning
+// (glut_errors.h).
+Window* windowForCallback(const char* function);
+template <class Callback>
+void setWindowCallback(const char* function, Callback WindowCallbacks::*member, Callback callback) {
+  if (Window* window = windowForCallback(function)) window->callbacks.*member = callback;
+}
 
 // The top-level window a window is part of (itself for a top-level window).
 Window& topLevelOf(Window& window);

@@ -2,6 +2,7 @@
 // from 1 in the order they were added, as glutChangeToMenuEntry and glutRemoveMenuItem count them.
 #include <GL/freeglut.h>
 
+#include <cstdint>
 #include <memory>
 
 #include "glut_errors.h"
@@ -156,6 +157,21 @@ void* glutGetMenuData(void) {
 
 void glutSetMenuData(void* data) {
   if (Menu* menu = requireCurrentMenu("glutSetMenuData")) menu->userData = data;
+}
+
+// freeglut: the font of a menu's entries, a bitmap font (a stroke font or an unknown one is
+// refused with freeglut's warning, and the menu keeps its font).
+void glutSetMenuFont(int menuID, void* font) {
+  requireInitialised("glutSetMenuFont");
+  Menu* menu = findMenu(menuID);
+  if (!menu) return;
+  if (glutBitmapHeight(font) <= 0) {
+    warning("glutSetMenuFont: bitmap font 0x%08lx not found. Make sure you're not passing a "
+            "stroke font. Ignoring...",
+            static_cast<unsigned long>(reinterpret_cast<uintptr_t>(font)));
+    return;
+  }
+  menu->font = font;
 }
 
 // Called when the current menu is destroyed (glutDestroyMenu, or GLUT's end).

@@ -91,6 +91,10 @@ int glutGet(GLenum query) {
     case GLUT_INIT_WINDOW_WIDTH: return s.initWidth;
     case GLUT_INIT_WINDOW_HEIGHT: return s.initHeight;
     case GLUT_INIT_DISPLAY_MODE: return static_cast<int>(s.initDisplayMode);
+    case GLUT_INIT_MAJOR_VERSION: return s.contextMajor;
+    case GLUT_INIT_MINOR_VERSION: return s.contextMinor;
+    case GLUT_INIT_FLAGS: return s.contextFlags;
+    case GLUT_INIT_PROFILE: return s.contextProfile;
     case GLUT_ACTION_ON_WINDOW_CLOSE: return s.actionOnWindowClose;
     case GLUT_RENDERING_CONTEXT: return GLUT_CREATE_NEW_CONTEXT;
     case GLUT_DIRECT_RENDERING: return GLUT_FORCE_DIRECT_CONTEXT;

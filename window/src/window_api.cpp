@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "context_version.h"
 #include "glut_clock.h"
 #include "glut_errors.h"
 #include "glut_state.h"
@@ -216,6 +217,7 @@ std::unique_ptr<Window> newWindow(const char* title, int x, int y, int width, in
   if (s.initDisplayMode & (GLUT_INDEX | GLUT_STEREO | GLUT_MULTISAMPLE)) {
     fatalError("FBConfig with necessary capabilities not found");
   }
+  requireContextGlassHas();
   auto window = std::make_unique<Window>();
   window->id = s.nextWindowId++;
   window->title = title ? title : "";

@@ -81,6 +81,49 @@ GLAPI void GLAPIENTRY glutSetMenuData(void* data);
 GLAPI void GLAPIENTRY glutInitErrorFunc(void (*callback)(const char* fmt, va_list ap));
 GLAPI void GLAPIENTRY glutInitWarningFunc(void (*callback)(const char* fmt, va_list ap));
 
+/* The OpenGL version, flags and profile a new window's context is to have. glass is OpenGL 1.4:
+ * asking for more, a core profile or a forward-compatible context makes glutCreateWindow fail
+ * with freeglut's message. glutGet tells what was asked. */
+#define  GLUT_INIT_MAJOR_VERSION            0x0200
+#define  GLUT_INIT_MINOR_VERSION            0x0201
+#define  GLUT_INIT_FLAGS                    0x0202
+#define  GLUT_INIT_PROFILE                  0x0203
+#define  GLUT_DEBUG                         0x0001
+#define  GLUT_FORWARD_COMPATIBLE            0x0002
+#define  GLUT_CORE_PROFILE                  0x0001
+#define  GLUT_COMPATIBILITY_PROFILE         0x0002
+GLAPI void GLAPIENTRY glutInitContextVersion(int majorVersion, int minorVersion);
+GLAPI void GLAPIENTRY glutInitContextFlags(int flags);
+GLAPI void GLAPIENTRY glutInitContextProfile(int profile);
+
+/* A GL or GLUT function of glass by name (NULL for others). */
+typedef void (*GLUTproc)();
+GLAPI GLUTproc GLAPIENTRY glutGetProcAddress(const char* procName);
+
+/* The values glass's windows can have for a display mode bit (glutGetModeValues with
+ * GLUT_AUX or GLUT_MULTISAMPLE): none, since they have no aux buffers or multisampling. */
+GLAPI int* GLAPIENTRY glutGetModeValues(GLenum mode, int* size);
+
+/* The font of a menu's entries: one of the GLUT_BITMAP_* fonts. */
+GLAPI void GLAPIENTRY glutSetMenuFont(int menuID, void* font);
+
+/* Multi-pointer input, mobile applications' pause and resume, and contexts made again, which
+ * glass's desktop windows do not have: the callbacks are kept and never called. */
+#define GLUT_APPSTATUS_PAUSE                0x0001
+#define GLUT_APPSTATUS_RESUME               0x0002
+GLAPI void GLAPIENTRY glutMultiEntryFunc(void (*callback)(int, int));
+GLAPI void GLAPIENTRY glutMultiButtonFunc(void (*callback)(int, int, int, int, int));
+GLAPI void GLAPIENTRY glutMultiMotionFunc(void (*callback)(int, int, int));
+GLAPI void GLAPIENTRY glutMultiPassiveFunc(void (*callback)(int, int, int));
+GLAPI void GLAPIENTRY glutInitContextFunc(void (*callback)(void));
+GLAPI void GLAPIENTRY glutAppStatusFunc(void (*callback)(int));
+
+/* Shader attributes for the shapes of OpenGL 3 core contexts; glass's shapes are drawn with the
+ * fixed-function arrays, so these have no effect. */
+GLAPI void GLAPIENTRY glutSetVertexAttribCoord3(GLint attrib);
+GLAPI void GLAPIENTRY glutSetVertexAttribNormal(GLint attrib);
+GLAPI void GLAPIENTRY glutSetVertexAttribTexCoord2(GLint attrib);
+
 #ifdef __cplusplus
 }
 #endif

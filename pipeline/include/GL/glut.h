@@ -138,6 +138,23 @@ extern "C" {
 #define  GLUT_NORMAL                        0x0000
 #define  GLUT_OVERLAY                       0x0001
 
+/* glutGetColor components. */
+#define  GLUT_RED                           0x0000
+#define  GLUT_GREEN                         0x0001
+#define  GLUT_BLUE                          0x0002
+
+/* glutVideoResizeGet queries. */
+#define  GLUT_VIDEO_RESIZE_POSSIBLE         0x0384
+#define  GLUT_VIDEO_RESIZE_IN_USE           0x0385
+#define  GLUT_VIDEO_RESIZE_X_DELTA          0x0386
+#define  GLUT_VIDEO_RESIZE_Y_DELTA          0x0387
+#define  GLUT_VIDEO_RESIZE_WIDTH_DELTA      0x0388
+#define  GLUT_VIDEO_RESIZE_HEIGHT_DELTA     0x0389
+#define  GLUT_VIDEO_RESIZE_X                0x038A
+#define  GLUT_VIDEO_RESIZE_Y                0x038B
+#define  GLUT_VIDEO_RESIZE_WIDTH            0x038C
+#define  GLUT_VIDEO_RESIZE_HEIGHT           0x038D
+
 /* glutGameModeGet queries. */
 #define  GLUT_GAME_MODE_ACTIVE              0x0000
 #define  GLUT_GAME_MODE_POSSIBLE            0x0001
@@ -250,6 +267,36 @@ GLAPI void GLAPIENTRY glutSpecialUpFunc(void (*callback)(int, int, int));
 GLAPI void GLAPIENTRY glutMenuStateFunc(void (*callback)(int));
 GLAPI void GLAPIENTRY glutMenuStatusFunc(void (*callback)(int, int, int));
 GLAPI void GLAPIENTRY glutWindowStatusFunc(void (*callback)(int));
+/* Devices glass knows none of (glutDeviceGet says so): their callbacks are kept and never called. */
+GLAPI void GLAPIENTRY glutJoystickFunc(void (*callback)(unsigned int, int, int, int), int pollInterval);
+GLAPI void GLAPIENTRY glutForceJoystickFunc(void);
+GLAPI void GLAPIENTRY glutSpaceballMotionFunc(void (*callback)(int, int, int));
+GLAPI void GLAPIENTRY glutSpaceballRotateFunc(void (*callback)(int, int, int));
+GLAPI void GLAPIENTRY glutSpaceballButtonFunc(void (*callback)(int, int));
+GLAPI void GLAPIENTRY glutButtonBoxFunc(void (*callback)(int, int));
+GLAPI void GLAPIENTRY glutDialsFunc(void (*callback)(int, int));
+GLAPI void GLAPIENTRY glutTabletMotionFunc(void (*callback)(int, int));
+GLAPI void GLAPIENTRY glutTabletButtonFunc(void (*callback)(int, int, int, int));
+
+/* Overlays, colour maps and video resizing, which glass's RGBA windows do not have: as freeglut,
+ * glutLayerGet(GLUT_OVERLAY_POSSIBLE) is 0, the overlay calls do nothing (the overlay display
+ * callback is kept and never called), glutGetColor gives -1 and glutVideoResizeGet 0. */
+GLAPI void GLAPIENTRY glutEstablishOverlay(void);
+GLAPI void GLAPIENTRY glutRemoveOverlay(void);
+GLAPI void GLAPIENTRY glutUseLayer(GLenum layer);
+GLAPI void GLAPIENTRY glutPostOverlayRedisplay(void);
+GLAPI void GLAPIENTRY glutPostWindowOverlayRedisplay(int window);
+GLAPI void GLAPIENTRY glutShowOverlay(void);
+GLAPI void GLAPIENTRY glutHideOverlay(void);
+GLAPI void GLAPIENTRY glutOverlayDisplayFunc(void (*callback)(void));
+GLAPI void GLAPIENTRY glutSetColor(int color, GLfloat red, GLfloat green, GLfloat blue);
+GLAPI GLfloat GLAPIENTRY glutGetColor(int color, int component);
+GLAPI void GLAPIENTRY glutCopyColormap(int window);
+GLAPI int GLAPIENTRY glutVideoResizeGet(GLenum query);
+GLAPI void GLAPIENTRY glutSetupVideoResizing(void);
+GLAPI void GLAPIENTRY glutStopVideoResizing(void);
+GLAPI void GLAPIENTRY glutVideoResize(int x, int y, int width, int height);
+GLAPI void GLAPIENTRY glutVideoPan(int x, int y, int width, int height);
 
 /* State (spec 9). */
 GLAPI int GLAPIENTRY glutGet(GLenum query);

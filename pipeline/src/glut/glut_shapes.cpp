@@ -1,6 +1,6 @@
 // The GLUT geometry entry points (GLUT 3.7 specification, chapter 11, and freeglut's
 // cylinder, rhombic dodecahedron and Sierpinski sponge). Sizes arrive as double and are used in float, as freeglut does.
-#include <GL/glut.h>
+#include <GL/freeglut.h>
 
 #include "glut/shape_mesh.h"
 
@@ -57,5 +57,11 @@ void glutSolidSierpinskiSponge(int levels, double offset[3], GLdouble scale) {
 void glutWireSierpinskiSponge(int levels, double offset[3], GLdouble scale) {
   if (offset) drawShapeMesh(shapes::sierpinskiSpongeMesh(levels, offset, toFloat(scale), true));
 }
+
+// freeglut draws its shapes through these shader attributes in OpenGL 3 core contexts; glass's
+// shapes go through the fixed-function arrays, so the attributes are not used.
+void glutSetVertexAttribCoord3(GLint) {}
+void glutSetVertexAttribNormal(GLint) {}
+void glutSetVertexAttribTexCoord2(GLint) {}
 
 }  // extern "C"
