@@ -174,6 +174,13 @@ void deliver(Window* window, const InputEvent& e);
 void dispatchInput(const InputEvent& given) {
   Window* window = findWindow(given.window);
   if (!window) return;
+  if (given.kind == InputKind::Entry && !window->children.empty()) {
+    // The pointer left the top-level window from the window it was over (a sub-window, maybe),
+    // or entered it: over the top-level window until it moves.
+    Window* over = findWindow(window->pointerOver);
+    window->pointerOver = 0;
+    if (given.buttonState == GLUT_LEFT && over) return deliver(over, given);
+  }
   if (!isPointerOrKey(given.kind) || window->children.empty()) return deliver(window, given);
   InputEvent e = given;
   const int topId = window->id;

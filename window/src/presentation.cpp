@@ -34,7 +34,10 @@ namespace {
 // Copies the child's screen (RGBA8, bottom row first) into the parent's at the child's place
 // (x, y from the parent's top-left corner, y down), clipped to the parent.
 void drawChildOver(const Window& child, Window& parent) {
-  if (child.screen.size() != static_cast<size_t>(child.width) * child.height * 4) return;
+  if (child.screen.size() != static_cast<size_t>(child.width) * child.height * 4 ||
+      parent.screen.size() != static_cast<size_t>(parent.width) * parent.height * 4) {
+    return;
+  }
   const int left = std::max(child.x, 0), right = std::min(child.x + child.width, parent.width);
   if (left >= right) return;
   for (int row = 0; row < child.height; ++row) {
