@@ -71,8 +71,8 @@ class LineRunWriter {
 
   void flush() {
     if (batch_.count == 0) return;
-    // interpolateLineRuns reads whole vectors of majors, up to 16 lanes past the count.
-    const int paddedCount = std::min((batch_.count + 15) / 16 * 16, LineRunBatch::kMaxRuns);
+    // interpolateLineRuns reads whole vectors of majors, up to kLineRunLanes past the count.
+    const int paddedCount = (batch_.count + kLineRunLanes - 1) / kLineRunLanes * kLineRunLanes;
     std::fill(majors_ + batch_.count, majors_ + paddedCount, 0);
     interpolateLineRuns(ends_, majors_, batch_);
     sink_.processLineRuns(batch_);

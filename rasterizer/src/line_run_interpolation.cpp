@@ -28,7 +28,7 @@ namespace hn = hwy::HWY_NAMESPACE;
 
 void InterpolateLineRuns(const LineRunEnds& ends, const int* majors, LineRunBatch& batch) {
   constexpr int kRuns = LineRunBatch::kMaxRuns;
-  const hn::CappedTag<double, 16> d;  // kMaxRuns is a multiple of any count of lanes
+  const hn::CappedTag<double, kLineRunLanes> d;
   const hn::Rebind<int32_t, decltype(d)> d32;
   const hn::Rebind<float, decltype(d)> f32;
   const int lanes = static_cast<int>(hn::Lanes(d));

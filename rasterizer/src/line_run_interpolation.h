@@ -20,6 +20,10 @@ struct LineRunEnds {
   const float* varyingsB;
 };
 
+// The most runs interpolated as one vector (a divisor of LineRunBatch::kMaxRuns).
+inline constexpr int kLineRunLanes = 16;
+static_assert(LineRunBatch::kMaxRuns % kLineRunLanes == 0);
+
 // For runs r < batch.count, at major coordinates majors[r], sets batch.depth[r] and
 // batch.varyings[k][r] for k < batch.varyingCount:
 //   t = (majors[r] + 0.5 - start) / length, clamped to [0, 1] where (1 - t) qa + t qb <= 0 (or
@@ -27,8 +31,8 @@ struct LineRunEnds {
 //   wa = (1 - t) qa, wb = t qb, q = wa + wb;
 //   depth = depthValue((1 - t) za + t zb + depthBias);
 //   varying k = float((wa / q) a_k + (wb / q) b_k).
-// `majors` holds kMaxRuns entries: those past batch.count are read (any values) and their
-// results, written past count, are not used.
+// `majors` holds kMaxRuns entries: those up to the next multiple of kLineRunLanes past
+// batch.count are read (any values) and their results, written past count, are not used.
 void interpolateLineRuns(const LineRunEnds& ends, const int* majors, LineRunBatch& batch);
 
 // The same with the copy compiled for `target` (tests; the target must run here).

@@ -15,10 +15,10 @@ PixelRect intersect(const PixelRect& a, const PixelRect& b) {
   return {std::max(a.x0, b.x0), std::max(a.y0, b.y0), std::min(a.x1, b.x1), std::min(a.y1, b.y1)};
 }
 
-// The pixels a line or point may touch lie within `reach` pixels of its vertices' window
-// positions: half the (rounded) width or size, plus a margin for the diamond-exit ends and the
-// snapping to 1/256 pixel. Being generous only costs a bin entry that draws nothing.
-double reachOf(float widthOrSize) { return std::ceil(std::max(1.0f, widthOrSize)) * 0.5 + 2.0; }
+// The pixels a point may touch lie within `reach` pixels of its window position: half the
+// (rounded) size, plus a margin for the snapping to 1/256 pixel. Being generous only costs a bin
+// entry that draws nothing. (Lines are binned by their quad's pixels, lineQuadPixels.)
+double reachOf(float size) { return std::ceil(std::max(1.0f, size)) * 0.5 + 2.0; }
 
 // floor(v), clamped to +-2^31 so that it is defined for every double: converting NaN, an infinity
 // or a value beyond int64_t's range is undefined behaviour. NaN gives the low end. The callers

@@ -318,7 +318,7 @@ void TiledRasterizer::line(const WindowVertex& a, const WindowVertex& b,
     rasterizeLine(quad, a, b, walk, discard);
   }
   // Outside the bounds the counter was all there was to do.
-  if (pixels.x0 >= pixels.x1) return;
+  if (pixels.empty()) return;
   impl_->filling().addLine(quad, pixels, a, b, settings, stippleStart, sink);
   impl_->afterSubmit();
 }

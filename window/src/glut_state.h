@@ -78,7 +78,6 @@ struct Window {
   void* userData = nullptr;
   int cursor = GLUT_CURSOR_INHERIT;  // a new window's cursor (GLUT 3.7 spec 4.13)
   bool fullScreen = false;
-  bool gameMode = false;            // the game mode window (game_mode.cpp): borderless at 0, 0
   bool visible = true;
 
   bool redisplayPending = true;     // a new window is drawn once it is shown (spec 4.1)

@@ -375,12 +375,11 @@ void closeDisplay() {
 
 bool displayIsHeadless() { return headless; }
 
-bool createSystemWindow(Window& window) {
+bool createSystemWindow(Window& window, bool borderless) {
   const int x = window.x >= 0 ? window.x : static_cast<int>(SDL_WINDOWPOS_UNDEFINED);
   const int y = window.y >= 0 ? window.y : static_cast<int>(SDL_WINDOWPOS_UNDEFINED);
-  // The game mode window covers the screen from its corner, without a border.
   window.sdlWindow = SDL_CreateWindow(shownTitle(window).c_str(), x, y, window.width, window.height,
-                                      window.gameMode ? SDL_WINDOW_BORDERLESS : SDL_WINDOW_RESIZABLE);
+                                      borderless ? SDL_WINDOW_BORDERLESS : SDL_WINDOW_RESIZABLE);
   if (window.sdlWindow == nullptr) return false;
   // Where the window is (glutGet(GLUT_WINDOW_X)): the system's placement when the program asked
   // for none. A window manager that moves it later sends a move event, which updates it again.

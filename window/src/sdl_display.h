@@ -20,7 +20,8 @@ void closeDisplay();
 // True when windows are not seen by anyone (the dummy or offscreen driver).
 bool displayIsHeadless();
 
-bool createSystemWindow(Window& window);
+// A borderless one for game mode (game_mode.cpp).
+bool createSystemWindow(Window& window, bool borderless);
 void destroySystemWindow(Window& window);
 // Copies window.screen to the window's surface.
 void showOnScreen(Window& window);

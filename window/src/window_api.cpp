@@ -102,7 +102,6 @@ void destroyWindow(int id) {
   }
   if (Window* parent = findWindow(window->parent)) {
     std::erase(parent->children, id);
-    if (parent->pointerOver == id) parent->pointerOver = 0;
     Window& top = topLevelOf(*parent);
     if (top.capturedBy == id) top.capturedBy = 0;
     if (top.pointerOver == id) top.pointerOver = 0;
@@ -235,6 +234,17 @@ std::unique_ptr<Window> newWindow(const char* title, int x, int y, int width, in
   return window;
 }
 
+// Puts a sub-window on top of its siblings or under them, and shows the parent so; false for a
+// top-level window.
+bool restackSubWindow(Window& window, bool onTop) {
+  Window* parent = findWindow(window.parent);
+  if (!parent) return false;
+  std::erase(parent->children, window.id);
+  parent->children.insert(onTop ? parent->children.end() : parent->children.begin(), window.id);
+  refreshScreen(*parent);
+  return true;
+}
+
 // Registers the window, makes it current and shows its (black) picture.
 int registerWindow(std::unique_ptr<Window> window) {
   State& s = state();
@@ -252,8 +262,7 @@ int registerWindow(std::unique_ptr<Window> window) {
 
 int createTopLevelWindow(const char* title, int x, int y, int width, int height, bool gameMode) {
   std::unique_ptr<Window> window = newWindow(title, x, y, width, height);
-  window->gameMode = gameMode;
-  if (!createSystemWindow(*window)) {
+  if (!createSystemWindow(*window, gameMode)) {
     glassDestroyContext(window->context);
     fatalError("Unable to create a window: %s", "the window system refused it");
   }
@@ -375,25 +384,12 @@ void glutIconifyWindow(void) {
 // A sub-window goes to the bottom (push) or the top (pop) of its siblings; a top-level window's
 // push has no effect under SDL.
 void glutPushWindow(void) {
-  Window* window = requireCurrentWindow("glutPushWindow");
-  if (!window) return;
-  if (Window* parent = findWindow(window->parent)) {
-    std::erase(parent->children, window->id);
-    parent->children.insert(parent->children.begin(), window->id);
-    refreshScreen(*parent);
-  }
+  if (Window* window = requireCurrentWindow("glutPushWindow")) restackSubWindow(*window, false);
 }
 
 void glutPopWindow(void) {
   Window* window = requireCurrentWindow("glutPopWindow");
-  if (!window) return;
-  if (Window* parent = findWindow(window->parent)) {
-    std::erase(parent->children, window->id);
-    parent->children.push_back(window->id);
-    refreshScreen(*parent);
-    return;
-  }
-  raiseSystemWindow(*window);
+  if (window && !restackSubWindow(*window, true)) raiseSystemWindow(*window);
 }
 
 void glutFullScreen(void) {

@@ -76,30 +76,39 @@ void beginPrimitive(Context& ctx, GLenum mode) {
 // only; strips and fans draw every edge (spec 2.6.2).
 namespace {
 
+// The independent primitives of `corners` vertices each (GL_TRIANGLES, GL_LINES) that lie whole
+// in vertexAt(0 .. count), each given to draw(first vertex's index) straight from the batch;
+// the vertices of one begun in an earlier batch go through assembleVertex first. Returns the
+// index of the first vertex left over.
+template <class VertexAt, class Draw>
+int assembleWholePrimitives(Context& ctx, int count, int corners, VertexAt vertexAt, Draw draw) {
+  PrimitiveAssembly& pa = ctx.assembly;
+  int i = 0;
+  for (; i < count && pa.vertexCount % corners != 0; ++i) assembleVertex(ctx, vertexAt(i));
+  for (; i + corners <= count; i += corners) {
+    pa.vertexCount += corners;
+    if (FrameStatistics* statistics = ctx.draw->statistics()) statistics->vertices += corners;
+    draw(i);
+  }
+  return i;
+}
+
 // assembleVertices over vertexAt(0 .. count). Whole independent triangles and lines of the
 // batch are drawn from it directly; the other vertices go through assembleVertex, which keeps
 // copies of those a later vertex needs.
 template <class VertexAt>
 void assembleInOrder(Context& ctx, int count, VertexAt vertexAt) {
-  PrimitiveAssembly& pa = ctx.assembly;
   DrawPipeline& draw = *ctx.draw;
   int i = 0;
-  if (pa.mode == GL_TRIANGLES) {
-    for (; i < count && pa.vertexCount % 3 != 0; ++i) assembleVertex(ctx, vertexAt(i));  // a triangle begun before
-    for (; i + 3 <= count; i += 3) {
-      const PipelineVertex &a = vertexAt(i), &b = vertexAt(i + 1), &c = vertexAt(i + 2);
-      pa.vertexCount += 3;
-      if (FrameStatistics* statistics = draw.statistics()) statistics->vertices += 3;
+  if (ctx.assembly.mode == GL_TRIANGLES) {
+    i = assembleWholePrimitives(ctx, count, 3, vertexAt, [&](int k) {
+      const PipelineVertex &a = vertexAt(k), &b = vertexAt(k + 1), &c = vertexAt(k + 2);
       draw.drawTriangle(a, b, c, c, edgeBits(a.edgeFlag, b.edgeFlag, c.edgeFlag));
-    }
-  } else if (pa.mode == GL_LINES) {
-    for (; i < count && pa.vertexCount % 2 != 0; ++i) assembleVertex(ctx, vertexAt(i));  // a line begun before
-    for (; i + 2 <= count; i += 2) {
-      const PipelineVertex &a = vertexAt(i), &b = vertexAt(i + 1);
-      pa.vertexCount += 2;
-      if (FrameStatistics* statistics = draw.statistics()) statistics->vertices += 2;
-      draw.drawLine(a, b, b, DrawPipeline::StippleRun::Alone);
-    }
+    });
+  } else if (ctx.assembly.mode == GL_LINES) {
+    i = assembleWholePrimitives(ctx, count, 2, vertexAt, [&](int k) {
+      draw.drawLine(vertexAt(k), vertexAt(k + 1), vertexAt(k + 1), DrawPipeline::StippleRun::Alone);
+    });
   }
   for (; i < count; ++i) assembleVertex(ctx, vertexAt(i));
 }
