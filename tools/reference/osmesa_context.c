@@ -64,6 +64,25 @@ int glassGetWidth(const GlassContext *ctx) { return ctx ? ctx->width : 0; }
 
 int glassGetHeight(const GlassContext *ctx) { return ctx ? ctx->height : 0; }
 
+/* A new OSMesa context, in GL's initial state, sharing the old one's display lists and texture
+ * objects and rendering into the same colour buffer. Its depth, stencil and accumulation
+ * buffers are new: glass keeps theirs, but the frames this serves clear them first. */
+int glassResetContext(GlassContext *ctx) {
+  OSMesaContext fresh;
+  if (!ctx) return 0;
+  if (ctx == current_context) glFinish();
+  fresh = OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 16, ctx->osmesa);
+  if (!fresh) return 0;
+  if (ctx == current_context &&
+      OSMesaMakeCurrent(fresh, ctx->pixels, GL_UNSIGNED_BYTE, ctx->width, ctx->height) != GL_TRUE) {
+    OSMesaDestroyContext(fresh);
+    return 0;
+  }
+  OSMesaDestroyContext(ctx->osmesa);
+  ctx->osmesa = fresh;
+  return 1;
+}
+
 /* OSMesa renders into ctx->pixels, RGBA bottom row first, complete once drawing is finished. */
 const unsigned char *glassGetColorBuffer(const GlassContext *ctx) {
   if (!ctx) return NULL;

@@ -53,6 +53,15 @@ GLASS_API int glassGetHeight(const GlassContext *ctx);
  * rows packed without padding. Valid until the context is destroyed. NULL for a NULL context. */
 GLASS_API const unsigned char *glassGetColorBuffer(const GlassContext *ctx);
 
+/* Puts ctx back in GL's initial state, every value as a new context of its size has it, and
+ * keeps what a program draws frame after frame with: its display lists and named texture
+ * objects, the contents of its buffers, its flush callback and its teaching view. For drawing
+ * independent frames in one context without making a new one each time (glass view does), so
+ * that each frame starts as it would in a new context. If ctx is current on the calling thread it
+ * stays current; it must not be current on another thread. 1 on success; 0 on a NULL context or
+ * no memory, and then nothing changed. */
+GLASS_API int glassResetContext(GlassContext *ctx);
+
 /* For window systems (glass's GLUT): the hooks a window needs to show a context's picture. */
 
 /* Gives the framebuffer a new size, as a window's resize does; GL state (matrices, viewport,

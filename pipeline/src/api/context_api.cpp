@@ -2,6 +2,7 @@
 // of window systems (resizing, the flush callback), and switching the teaching view.
 #include <glass/context.h>
 
+#include <memory>
 #include <new>
 #include <optional>
 
@@ -12,8 +13,9 @@
 #include "teaching/teaching_view.h"
 
 struct GlassContext {
-  glass::gl::Context gl;
-  GlassContext(int width, int height) : gl(width, height) {}
+  // Held by pointer: glassResetContext puts a context in its initial state in its place.
+  std::unique_ptr<glass::gl::Context> gl;
+  GlassContext(int width, int height) : gl(std::make_unique<glass::gl::Context>(width, height)) {}
 };
 
 namespace {
@@ -34,7 +36,7 @@ GlassContext* glassCreateContext(int width, int height) {
 
 int glassMakeCurrent(GlassContext* ctx) {
   currentGlassContext = ctx;
-  glass::gl::setCurrentContext(ctx ? &ctx->gl : nullptr);
+  glass::gl::setCurrentContext(ctx ? ctx->gl.get() : nullptr);
   return 1;
 }
 
@@ -46,29 +48,29 @@ void glassDestroyContext(GlassContext* ctx) {
 
 int glassWritePNG(GlassContext* ctx, const char* path) {
   if (!ctx) return 0;
-  glass::gl::finishQueuedDrawing(ctx->gl);
-  if (const unsigned char* view = glass::gl::presentTeachingView(ctx->gl)) {
-    return glass::gl::writeRGBAPixelsPNG(view, ctx->gl.framebuffer.width(),
-                                         ctx->gl.framebuffer.height(), path) ? 1 : 0;
+  glass::gl::finishQueuedDrawing(*ctx->gl);
+  if (const unsigned char* view = glass::gl::presentTeachingView(*ctx->gl)) {
+    return glass::gl::writeRGBAPixelsPNG(view, ctx->gl->framebuffer.width(),
+                                         ctx->gl->framebuffer.height(), path) ? 1 : 0;
   }
-  return glass::gl::writeColorBufferPNG(ctx->gl.framebuffer, path) ? 1 : 0;
+  return glass::gl::writeColorBufferPNG(ctx->gl->framebuffer, path) ? 1 : 0;
 }
 
 GlassContext* glassGetCurrentContext(void) { return currentGlassContext; }
 
-int glassGetWidth(const GlassContext* ctx) { return ctx ? ctx->gl.framebuffer.width() : 0; }
-int glassGetHeight(const GlassContext* ctx) { return ctx ? ctx->gl.framebuffer.height() : 0; }
+int glassGetWidth(const GlassContext* ctx) { return ctx ? ctx->gl->framebuffer.width() : 0; }
+int glassGetHeight(const GlassContext* ctx) { return ctx ? ctx->gl->framebuffer.height() : 0; }
 
 const unsigned char* glassGetColorBuffer(const GlassContext* ctx) {
   if (!ctx) return nullptr;
   // The caller reads the pixels: queued draws must be in them. Finishing queued work changes no
   // GL state, so the context stays logically const.
-  glass::gl::finishQueuedDrawing(const_cast<GlassContext*>(ctx)->gl);
+  glass::gl::finishQueuedDrawing(*const_cast<GlassContext*>(ctx)->gl);
   // With GLASS_VIEW the reader sees the view's picture (teaching/teaching_view.h).
-  if (const unsigned char* view = glass::gl::presentTeachingView(const_cast<GlassContext*>(ctx)->gl)) {
+  if (const unsigned char* view = glass::gl::presentTeachingView(*const_cast<GlassContext*>(ctx)->gl)) {
     return view;
   }
-  return ctx->gl.framebuffer.colorAt(0, 0);
+  return ctx->gl->framebuffer.colorAt(0, 0);
 }
 
 int glassResizeContext(GlassContext* ctx, int width, int height) {
@@ -77,7 +79,20 @@ int glassResizeContext(GlassContext* ctx, int width, int height) {
     return 0;
   }
   try {
-    glass::gl::resizeFramebuffer(ctx->gl, width, height);
+    glass::gl::resizeFramebuffer(*ctx->gl, width, height);
+  } catch (...) {  // no memory, or no threads for the rasterizer: the context is as it was
+    return 0;
+  }
+  return 1;
+}
+
+int glassResetContext(GlassContext* ctx) {
+  if (!ctx) return 0;
+  try {
+    std::unique_ptr<glass::gl::Context> fresh = glass::gl::contextInInitialState(*ctx->gl);
+    const bool current = glass::gl::currentContext() == ctx->gl.get();
+    ctx->gl = std::move(fresh);
+    if (current) glass::gl::setCurrentContext(ctx->gl.get());
   } catch (...) {  // no memory, or no threads for the rasterizer: the context is as it was
     return 0;
   }
@@ -87,10 +102,10 @@ int glassResizeContext(GlassContext* ctx, int width, int height) {
 void glassSetFlushCallback(GlassContext* ctx, GlassFlushCallback callback, void* userData) {
   if (!ctx) return;
   if (!callback) {
-    ctx->gl.afterFlush = nullptr;
+    ctx->gl->afterFlush = nullptr;
     return;
   }
-  ctx->gl.afterFlush = [ctx, callback, userData](glass::gl::Context&) { callback(ctx, userData); };
+  ctx->gl->afterFlush = [ctx, callback, userData](glass::gl::Context&) { callback(ctx, userData); };
 }
 
 int glassWritePixelsPNG(const char* path, int width, int height, const unsigned char* rgba) {
@@ -105,15 +120,15 @@ int glassSetView(GlassContext* ctx, const char* name) {
     if (!view) return 0;
   }
   // Between glBegin and glEnd the draw under way holds the view's canvas.
-  if (ctx->gl.assembly.active) return 0;
+  if (ctx->gl->assembly.active) return 0;
   // The rasterizer's threads write into the canvas a queued draw holds: they must be done.
-  glass::gl::finishQueuedDrawing(ctx->gl);
-  glass::gl::setTeachingView(ctx->gl, view);
+  glass::gl::finishQueuedDrawing(*ctx->gl);
+  glass::gl::setTeachingView(*ctx->gl, view);
   return 1;
 }
 
 const char* glassGetView(const GlassContext* ctx) {
   if (!ctx) return nullptr;
-  const std::optional<glass::gl::TeachingView> view = glass::gl::teachingViewOf(ctx->gl);
+  const std::optional<glass::gl::TeachingView> view = glass::gl::teachingViewOf(*ctx->gl);
   return view ? glass::gl::teachingViewName(*view) : nullptr;
 }

@@ -40,6 +40,30 @@ void resizeFramebuffer(Context& ctx, int width, int height) {
   std::vector<int16_t>().swap(ctx.accumulation.buffer);
 }
 
+std::unique_ptr<Context> contextInInitialState(Context& previous) {
+  finishQueuedDrawing(previous);
+  // Everything that can throw comes first, while previous is untouched: the fresh context with a
+  // framebuffer of one pixel, its view, then its draw pipeline over the framebuffer taken over.
+  auto fresh = std::make_unique<Context>(1, 1);
+  setTeachingView(*fresh, teachingViewOf(previous));
+  std::swap(fresh->framebuffer, previous.framebuffer);
+  try {
+    fresh->draw = std::make_unique<DrawPipeline>(*fresh);
+  } catch (...) {
+    std::swap(fresh->framebuffer, previous.framebuffer);
+    throw;
+  }
+  const int width = fresh->framebuffer.width(), height = fresh->framebuffer.height();
+  fresh->transform.viewport = Viewport{0, 0, width, height};
+  fresh->fragment.scissor = ScissorBox{0, 0, width, height};
+  fresh->buffers = previous.buffers;
+  fresh->lists.lists = previous.lists.lists;
+  fresh->texture.names = previous.texture.names;
+  fresh->accumulation.buffer = std::move(previous.accumulation.buffer);
+  fresh->afterFlush = std::move(previous.afterFlush);
+  return fresh;
+}
+
 namespace {
 // Every GL call reads this. In a shared library the default (general-dynamic) model asks
 // __tls_get_addr for it each time; the initial-exec model is one load from the thread pointer.

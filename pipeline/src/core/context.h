@@ -105,6 +105,14 @@ struct Context {
 // included, is unchanged. Throws (std::bad_alloc, std::system_error for the threads), leaving the context as it was.
 void resizeFramebuffer(Context& ctx, int width, int height);
 
+// A context in GL's initial state, as a new context of previous's size is, that takes over what
+// outlives a frame: previous's framebuffer and accumulation buffer (their contents kept), its
+// display lists and texture objects (as a context sharing them would), which ancillary buffers
+// it has, its flush callback and its teaching view. The queued drawing of previous is finished
+// first; previous is left with a 1 x 1 framebuffer, to be destroyed. Throws (std::bad_alloc,
+// std::system_error for the threads), leaving previous as it was.
+std::unique_ptr<Context> contextInInitialState(Context& previous);
+
 // The context current on the calling thread (glassMakeCurrent), or nullptr.
 Context* currentContext();
 void setCurrentContext(Context* ctx);
