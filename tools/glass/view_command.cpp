@@ -18,6 +18,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
+#include <memory>
 #include <string>
 #include <vector>
 #include "glass/geometry/portable_math.h"
@@ -111,6 +112,9 @@ struct Viewer {
   scene::Program overridden;
   bool overriddenValid = false;
   int overriddenFrame = -1;
+  // Draws the program of programToDraw(), keeping its context, textures and compiled
+  // definitions from frame to frame; made again when that program changes.
+  std::unique_ptr<scene::FrameRenderer> renderer;
 
   const view::WalkerBody body;
 };
@@ -197,6 +201,7 @@ double walkingNearPlane(int width, int height) {
 const scene::Program &programToDraw() {
   if (!viewer.overrides.any()) return viewer.program;
   if (!viewer.overriddenValid || viewer.overriddenFrame != viewer.frame) {
+    viewer.renderer.reset();
     viewer.overridden = view::withOverrides(viewer.program, viewer.overrides, viewer.frame);
     viewer.overriddenValid = true;
     viewer.overriddenFrame = viewer.frame;
@@ -204,7 +209,10 @@ const scene::Program &programToDraw() {
   return viewer.overridden;
 }
 
-void overridesChanged() { viewer.overriddenValid = false; }
+void overridesChanged() {
+  viewer.overriddenValid = false;
+  viewer.renderer.reset();
+}
 
 bool readScene() {
   scene::Diagnostics diagnostics;
@@ -215,6 +223,7 @@ bool readScene() {
     return false;
   }
   diagnostics.print(std::cerr);
+  viewer.renderer.reset();
   viewer.program = std::move(program);
   viewer.haveProgram = true;
   overridesChanged();
@@ -227,7 +236,8 @@ bool readScene() {
   return true;
 }
 
-// The frame drawn by the scene library into an image, then into the window with glDrawPixels.
+// The frame drawn by the scene library into an image (in a context of its own, kept from frame
+// to frame), then into the window with glDrawPixels.
 void display() {
   const auto start = std::chrono::steady_clock::now();
   const int window = glutGetWindow();
@@ -241,9 +251,13 @@ void display() {
   options.camera = viewer.sceneCameraKnown ? &viewer.camera : nullptr;
   scene::RenderedFrame rendered;
   scene::Diagnostics diagnostics;
-  const bool drawn = viewer.haveProgram &&
-                     scene::renderFrame(programToDraw(), viewer.frame, options, rendered, diagnostics);
-  glutSetWindow(window);  // renderFrame drew in a context of its own
+  bool drawn = false;
+  if (viewer.haveProgram) {
+    const scene::Program &program = programToDraw();
+    if (!viewer.renderer) viewer.renderer = std::make_unique<scene::FrameRenderer>(program);
+    drawn = viewer.renderer->render(viewer.frame, options, rendered, diagnostics);
+  }
+  glutSetWindow(window);  // the renderer drew in a context of its own
   if (!drawn && viewer.lastRoundingPress != 0) {
     // A radius the model cannot take (docs/scene-format.md, `round`): said on stderr, then back
     // to the last radius it took; the picture shown stays.

@@ -124,6 +124,8 @@ private:
   // depth is drawn into the frame's depth buffer and copied from there.
   int shadowMapSize(const TextureDefinition &texture) const;
   void makeDepthTexture(const TextureDefinition &texture);
+  // The shadow maps' textures of kept resources, empty again as uploadTextures leaves them.
+  void remakeDepthTextures();
   // M = bias x gluPerspective(light) x gluLookAt(light), column-major, computed by the GL's own
   // matrix calls on the texture stack (which is left as it was).
   void lightTextureMatrix(const LightView &light, GLdouble m[16]);

@@ -129,8 +129,16 @@ double Interpreter::Executor::widthScale() const { return std::sqrt(options_.sca
 
 void Interpreter::Executor::drawFrame() {
   setUpFrame();
-  uploadTextures();
-  compileDefinitions();
+  FrameResources *kept = options_.resources;
+  if (kept != nullptr && kept->made) {
+    textures_ = kept->textures;
+    listBase_ = kept->listBase;
+    remakeDepthTextures();
+  } else {
+    uploadTextures();
+    compileDefinitions();
+    if (kept != nullptr) *kept = FrameResources{true, textures_, listBase_};
+  }
   execute(program_.statements);
   // Leave nothing pending: GL errors of the last statements are reported, and drawing finishes.
   glFinish();
@@ -200,6 +208,15 @@ void Interpreter::Executor::uploadTextures() {
   }
   glBindTexture(GL_TEXTURE_2D, 0);
   glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+}
+
+void Interpreter::Executor::remakeDepthTextures() {
+  for (std::size_t i = 0; i < program_.textures.size(); ++i) {
+    if (!program_.textures[i].depth) continue;
+    glBindTexture(GL_TEXTURE_2D, textures_[i]);
+    makeDepthTexture(program_.textures[i]);
+  }
+  glBindTexture(GL_TEXTURE_2D, 0);
 }
 
 void Interpreter::Executor::compileDefinitions() {

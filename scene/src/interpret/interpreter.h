@@ -7,14 +7,28 @@
 #include "glass/scene/program.h"
 #include "glass/scene/frame_values.h"
 
+#include <GL/gl.h>
+
 #include <iosfwd>
 #include <memory>
+#include <vector>
 
 namespace glass::scene {
 
 class VertexTracer;
 struct ViewCamera;
 struct SceneCamera;
+
+// What a frame makes in its context besides the picture: the texture objects of the program's
+// textures and the display lists of its definitions. A frame given those an earlier frame of the
+// same program made in the same context, with the same parameter values and options, uses them
+// instead of making them again (FrameRenderer, glass/scene/render.h); a shadow map's texture is
+// made again each frame, since its depth is the frame's own.
+struct FrameResources {
+  bool made = false;
+  std::vector<GLuint> textures; // program.textures[i]'s texture object
+  GLuint listBase = 0;          // definition i is display list listBase + i; 0: not compiled
+};
 
 struct InterpreterOptions {
   // Pixel measures in the scene (viewport, scissor, line width, point size) are in pixels of the
@@ -34,6 +48,8 @@ struct InterpreterOptions {
   // camera is reported (glass/scene/render.h).
   const ViewCamera *camera = nullptr;
   SceneCamera *sceneCamera = nullptr;
+  // Textures and definitions kept from an earlier frame in this context, or null: made anew.
+  FrameResources *resources = nullptr;
   // Where warnings about the GL go (a missing extension); null: into the diagnostics only.
 };
 
@@ -44,8 +60,8 @@ public:
   Interpreter(const Interpreter &) = delete;
   Interpreter &operator=(const Interpreter &) = delete;
 
-  // Draws frame `frame` into the current context, which must be fresh (GL's initial state) and
-  // of the size the frame is drawn at. Returns false when a GL error or a bad value stopped it;
+  // Draws frame `frame` into the current context, which must be in GL's initial state (new, or
+  // reset by glassResetContext) and of the size the frame is drawn at. Returns false when a GL error or a bad value stopped it;
   // the messages are in `diagnostics`.
   bool drawFrame(int frame, Diagnostics &diagnostics);
 

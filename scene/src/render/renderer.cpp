@@ -1,4 +1,5 @@
-// One frame: a fresh context, the interpreter, the read-back, the teaching views, supersampling.
+// One frame: its context (new, or kept from the frame before and reset), the interpreter, the
+// read-back, the teaching views, supersampling.
 #include "gl_api.h"
 #include "glass/scene/render.h"
 #include "interpret/interpreter.h"
@@ -7,39 +8,69 @@
 
 #include <glass/context.h>
 
+#include <type_traits>
 #include <utility>
+#include <variant>
 
 namespace glass::scene {
 
 namespace {
 
-// Owns the GL context of one frame.
-class FrameContext {
-public:
-  FrameContext(int width, int height) : context_(glassCreateContext(width, height)) {
-    if (context_ != nullptr && glassMakeCurrent(context_) == 0) {
-      glassDestroyContext(context_);
-      context_ = nullptr;
-    }
-  }
-  ~FrameContext() {
-    if (context_ != nullptr) {
-      glassMakeCurrent(nullptr);
-      glassDestroyContext(context_);
-    }
-  }
-  FrameContext(const FrameContext &) = delete;
-  FrameContext &operator=(const FrameContext &) = delete;
-  bool ok() const { return context_ != nullptr; }
+// Whether a definition sets the camera: compiled into a display list, it would keep the viewer's
+// camera of the frame it was compiled in.
+bool definitionsSetTheCamera(const Program &program) {
+  const auto setsCamera = [](const Statement &statement) {
+    return std::visit(
+        [](const auto &body) {
+          using T = std::decay_t<decltype(body)>;
+          return std::is_same_v<T, Perspective> || std::is_same_v<T, Frustum> || std::is_same_v<T, Ortho> ||
+                 std::is_same_v<T, LookAt>;
+        },
+        statement.body);
+  };
+  for (const Definition &definition : program.definitions)
+    for (const Statement &statement : definition.body)
+      if (setsCamera(statement)) return true;
+  return false;
+}
 
-private:
-  GlassContext *context_;
+// What the kept textures and display lists were made for: another size, view or parameter value
+// makes them again.
+struct FrameKey {
+  int width = 0, height = 0;
+  View view = View::Color;
+  std::vector<std::vector<double>> values;
+  bool operator==(const FrameKey &) const = default;
+};
+
+// Releases the context current on this thread when the frame is over.
+struct ReleaseCurrent {
+  ~ReleaseCurrent() { glassMakeCurrent(nullptr); }
 };
 
 } // namespace
 
+struct FrameRenderer::Kept {
+  GlassContext *context = nullptr;
+  FrameResources resources;
+  FrameKey key;
+  ~Kept() { glassDestroyContext(context); }
+};
+
+FrameRenderer::FrameRenderer(const Program &program) : program_(program) {}
+
+FrameRenderer::~FrameRenderer() = default;
+
 bool renderFrame(const Program &program, int frame, const RenderOptions &options, RenderedFrame &result,
                  Diagnostics &diagnostics) {
+  FrameRenderer renderer(program);
+  return renderer.render(frame, options, result, diagnostics);
+}
+
+bool FrameRenderer::render(int frame, const RenderOptions &options, RenderedFrame &result, Diagnostics &diagnostics) {
+  // Until this frame has been drawn whole, nothing is kept for the next.
+  std::unique_ptr<Kept> drawing = std::move(kept_);
+  const Program &program = program_;
   const int width = options.width > 0 ? options.width : program.width;
   const int height = options.height > 0 ? options.height : program.height;
   const int factor = options.supersample < 1 ? 1 : options.supersample;
@@ -53,9 +84,26 @@ bool renderFrame(const Program &program, int frame, const RenderOptions &options
     return false;
   }
   const int w = static_cast<int>(drawWidth), h = static_cast<int>(drawHeight);
-  FrameContext context(w, h);
-  if (!context.ok()) {
-    diagnostics.error({}, "cannot create a " + std::to_string(w) + "x" + std::to_string(h) + " GL context");
+  // The vertex trace needs every vertex sent (definitions not compiled), and a definition that
+  // sets the camera would keep an old one: such frames keep nothing.
+  const bool keepable = options.traceVertex < 0 && !definitionsSetTheCamera(program);
+  FrameKey key{w, h, options.view, evaluateParameters(program, frame).values};
+  if (drawing && keepable && drawing->key == key && glassResetContext(drawing->context)) {
+    ++framesKept_;
+  } else {
+    drawing.reset();
+    auto fresh = std::make_unique<Kept>();
+    fresh->context = glassCreateContext(w, h);
+    if (fresh->context == nullptr) {
+      diagnostics.error({}, "cannot create a " + std::to_string(w) + "x" + std::to_string(h) + " GL context");
+      return false;
+    }
+    fresh->key = std::move(key);
+    drawing = std::move(fresh);
+  }
+  ReleaseCurrent release;
+  if (glassMakeCurrent(drawing->context) == 0) {
+    diagnostics.error({}, "cannot make the " + std::to_string(w) + "x" + std::to_string(h) + " GL context current");
     return false;
   }
 
@@ -70,6 +118,7 @@ bool renderFrame(const Program &program, int frame, const RenderOptions &options
   interpreterOptions.compileDefinitions = options.traceVertex < 0;
   interpreterOptions.camera = options.camera;
   interpreterOptions.sceneCamera = options.sceneCamera;
+  interpreterOptions.resources = keepable ? &drawing->resources : nullptr;
   Interpreter interpreter(program, interpreterOptions);
   if (!interpreter.drawFrame(frame, diagnostics)) return false;
 
@@ -112,6 +161,7 @@ bool renderFrame(const Program &program, int frame, const RenderOptions &options
     return false;
   }
   result.image = boxDownsample(std::move(image), factor);
+  if (keepable) kept_ = std::move(drawing);
   return true;
 }
 

@@ -1,4 +1,4 @@
-// Rendering a parsed scene to pictures: one frame at a time, in a fresh GL context each, with
+// Rendering a parsed scene to pictures: one frame at a time, each as in a new GL context, with
 // supersampling and the teaching views. Uses glass/context.h to make the context and glReadPixels
 // to read it back, so it works on glass and, in the reference build, on Mesa.
 #pragma once
@@ -6,6 +6,7 @@
 #include "glass/scene/diagnostics.h"
 #include "glass/scene/program.h"
 
+#include <memory>
 #include <string>
 
 namespace glass::scene {
@@ -55,10 +56,36 @@ struct RenderedFrame {
 // The largest framebuffer side a context accepts.
 constexpr int kMaxFramebufferSide = 16384;
 
-// Draws frame `frame` (0-based) of the program. Returns false with messages in `diagnostics`
-// on a GL error, a failing context or an unsupported view.
+// Draws frame `frame` (0-based) of the program in a new context. Returns false with messages in
+// `diagnostics` on a GL error, a failing context or an unsupported view.
 bool renderFrame(const Program &program, int frame, const RenderOptions &options, RenderedFrame &result,
                  Diagnostics &diagnostics);
+
+// Draws frames of one program one after another (glass view draws with one): each is the
+// picture renderFrame draws, byte for byte, but the GL context is kept from frame to frame and
+// put back in GL's initial state (glassResetContext), and so are the program's textures and its
+// definitions compiled into display lists, as long as the frame is drawn at the same size, with
+// the same view and the same parameter values (the camera may change). A frame that fails
+// leaves nothing kept. The program must outlive the renderer and stay unchanged.
+class FrameRenderer {
+public:
+  explicit FrameRenderer(const Program &program);
+  ~FrameRenderer();
+  FrameRenderer(const FrameRenderer &) = delete;
+  FrameRenderer &operator=(const FrameRenderer &) = delete;
+
+  // As renderFrame.
+  bool render(int frame, const RenderOptions &options, RenderedFrame &result, Diagnostics &diagnostics);
+
+  // How many of the frames rendered so far used the kept context and resources (for tests).
+  int framesKept() const { return framesKept_; }
+
+private:
+  struct Kept;
+  const Program &program_;
+  std::unique_ptr<Kept> kept_;
+  int framesKept_ = 0;
+};
 
 // Writes the picture (alpha left out) as PNG, JPEG, BMP or TGA, chosen by the file name's
 // extension. The file is written whole or not at all: a temporary file in the same directory is
