@@ -398,7 +398,7 @@ void applyFogRow(const FogState& fog, const float* c, unsigned mask, float color
 }
 
 template <bool kWriteDepth, bool kWriteColor, KernelTexturing kTexturing, bool kFog, KernelCoverage kCoverage>
-void shadeBlock(Context& ctx, const KernelPixelOps& ops, const KernelTexture& texture,
+void shadeBlock(Context& ctx, const KernelPixelOps& ops, const KernelTexture& texture, [[maybe_unused]] const FogState& fog,
                 const raster::TriangleSetup& setup, const raster::CoveredBlock& block) {
   raster::Framebuffer& fb = ctx.framebuffer;
   const int bx = block.bx, by = block.by;
@@ -440,7 +440,7 @@ void shadeBlock(Context& ctx, const KernelPixelOps& ops, const KernelTexture& te
       }
       if constexpr (kFog) {
         fogCoordinate->computeRow(j);
-        applyFogRow(ctx.fog, fogCoordinate->row(0), mask, color);
+        applyFogRow(fog, fogCoordinate->row(0), mask, color);
       }
       if constexpr (kCoverage != KernelCoverage::None) weighAlphaRow(coverage[j], color);
       alignas(64) uint32_t words[kSize];

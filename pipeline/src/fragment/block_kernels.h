@@ -24,6 +24,7 @@
 namespace glass::gl {
 
 struct Context;
+struct FogState;
 
 // What the texturing stage does for a kernel.
 enum class KernelTexturing : uint8_t {
@@ -69,8 +70,8 @@ struct KernelPixelOps {
 };
 
 // Shades and writes the pixels of one covered block of a triangle (`texture` is read by the
-// kernels that texture).
-using BlockKernel = void (*)(Context& ctx, const KernelPixelOps& ops, const KernelTexture& texture,
+// kernels that texture, `fog` by those that fog).
+using BlockKernel = void (*)(Context& ctx, const KernelPixelOps& ops, const KernelTexture& texture, const FogState& fog,
                              const raster::TriangleSetup& setup, const raster::CoveredBlock& block);
 
 // The kernel compiled for the key.

@@ -86,8 +86,7 @@ float fogFactor(const FogState& fog, float c) {
   return f < 0.0f ? 0.0f : (f > 1.0f ? 1.0f : f);
 }
 
-void applyFog(const Context& ctx, const raster::Fragment& fragment, float color[4]) {
-  const FogState& fog = ctx.fog;
+void applyFog(const FogState& fog, const raster::Fragment& fragment, float color[4]) {
   const float f = fogFactor(fog, fragment.varyings[varying::kFogCoordinate]);
   for (int i = 0; i < 3; ++i) color[i] = f * color[i] + (1.0f - f) * fog.color[i];
 }

@@ -30,7 +30,8 @@ struct FogState;
 float fogFactor(const FogState& fog, float c);
 
 // Per fragment, after texturing and colour sum: blends color towards the fog colour. The
-// fragment's interpolated fog coordinate is fragment.varyings[8].
-void applyFog(const Context& ctx, const raster::Fragment& fragment, float color[4]);
+// fragment's interpolated fog coordinate is fragment.varyings[8]. `fog` is the draw's copy of
+// the fog state (FragmentProcessor::prepare), so that queued draws keep theirs.
+void applyFog(const FogState& fog, const raster::Fragment& fragment, float color[4]);
 
 }  // namespace glass::gl

@@ -18,6 +18,8 @@ struct FogState {
   // GL_COLOR_SUM (OpenGL 1.4, spec 3.9): adds the secondary colour without lighting too. Its
   // attribute group is the fog's (table 6.21).
   bool colorSum = false;
+
+  bool operator==(const FogState&) const = default;
 };
 
 }  // namespace glass::gl

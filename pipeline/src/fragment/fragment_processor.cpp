@@ -35,6 +35,7 @@ void FragmentProcessor::prepare(Context& ctx, bool phong) {
   s_.colorSum = lighting ? separateSpecularColor(ctx) : ctx.fog.colorSum;
   s_.secondaryVarying = s_.colorSum && !phong;
   s_.fog = fogEnabled(ctx);
+  if (s_.fog) s_.fogState = ctx.fog;
 
   s_.alphaTest = f.alphaTest && f.alphaFunc != GL_ALWAYS;
   s_.alphaFunc = f.alphaFunc;
@@ -163,7 +164,7 @@ bool FragmentProcessor::shadeBlock(const raster::TriangleSetup& setup, const ras
   // The kernel relies on the walk's early depth test, and a weighing one on the shape's payload.
   if (kernelNeedsEarlyDepth_ && setup.earlyDepth.buffer == nullptr) return false;
   if (coverage != KernelCoverage::None && setup.payload == nullptr) return false;
-  kernel(*ctx_, pixelOps_, kernelTexture_, setup, block);
+  kernel(*ctx_, pixelOps_, kernelTexture_, s_.fogState, setup, block);
   return true;
 }
 
@@ -210,7 +211,7 @@ void FragmentProcessor::processFragments(const raster::FragmentBatch& batch,
     }
     if (s_.texturing) applyTexturing(ctx, batch, i, color);
     if (s_.colorSum) applyColorSum(secondary, color);
-    if (s_.fog) applyFog(ctx, fragment, color);
+    if (s_.fog) applyFog(s_.fogState, fragment, color);
     if (coverage) color[3] *= coverage[i];
 
     // Chapter 4.1: the tests, in order. The scissor test was the rasterizer's bounds.

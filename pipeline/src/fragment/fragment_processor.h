@@ -16,6 +16,7 @@
 #include <optional>
 
 #include "fragment/blending.h"
+#include "fragment/fog_state.h"
 #include "fragment/block_kernels.h"
 #include "fragment/line_kernels.h"
 #include "fragment/stencil_depth_tests.h"
@@ -53,10 +54,10 @@ class FragmentProcessor final : public raster::FragmentSink {
   // (line_kernels.h), or the reference path when there is none.
   void processLineRuns(const raster::LineRunBatch& batch) override;
 
-  // Texturing, fog and per-fragment lighting read their GL state from the context for each
-  // fragment, not from a copy made by prepare(): while fragments of such a draw are queued,
-  // that state must not change.
-  bool readsContextState() const { return s_.texturing || s_.fog || s_.phong; }
+  // Texturing and per-fragment lighting read their GL state from the context for each fragment,
+  // not from a copy made by prepare(): while fragments of such a draw are queued, that state
+  // must not change. (Fog reads the copy in its settings.)
+  bool readsContextState() const { return s_.texturing || s_.phong; }
   // Whether every fragment's colour goes to its pixel as it comes (converted to bytes) and
   // nothing else happens: fast paths allowed, and no lighting, texturing, colour sum, fog, test,
   // blending, logic op or mask. glDrawPixels's fast path writes the bytes itself then.
@@ -78,6 +79,7 @@ class FragmentProcessor final : public raster::FragmentSink {
     bool secondaryVarying = false;  // separate specular colour in varyings 4-7
     bool colorSum = false;          // lit with separate specular, or unlit with GL_COLOR_SUM
     bool fog = false;
+    FogState fogState;  // the fog's parameters when fog is on (a copy: queued draws keep theirs)
 
     bool alphaTest = false;
     GLenum alphaFunc = GL_ALWAYS;

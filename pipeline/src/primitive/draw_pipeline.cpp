@@ -40,19 +40,26 @@ void DrawPipeline::prepare() {
   Context& ctx = ctx_;
   prepareVertexStage(ctx, vertex_);
 
-  // Queued fragments of earlier draws still go through fragments_ (and polygonStipple_), so
-  // those change only when nothing is queued: a draw whose fragments are treated differently
-  // first finishes the queued ones. Draws with the same settings, the common case of many
-  // glBegin/glEnd pairs, keep queuing.
+  // Queued primitives of earlier draws still go through their stages, which change only when
+  // nothing is queued: a draw whose fragments are treated as a queued draw's shares its stage
+  // (the common case of many glBegin/glEnd pairs), another takes a free one, or finishes the
+  // queued draws first when none is free.
   FragmentProcessor fragments;
   fragments.prepare(ctx, vertex_.phong);
   // (A queued glClear calls no sink, so it need not be finished first.)
-  if (tiles_.primitivesQueued() && !fragments.sameSettings(fragments_)) tiles_.finish();
-  if (!tiles_.primitivesQueued()) {
-    fragments_ = fragments;
-    polygonStipple_.prepare(ctx.raster.polygonStipplePattern, fragments_);
+  if (!tiles_.primitivesQueued()) stagesInUse_ = 0;
+  stage_ = 0;
+  while (stage_ < stagesInUse_ && !stages_[stage_].processor.sameSettings(fragments)) ++stage_;
+  if (stage_ == stagesInUse_) {
+    if (stagesInUse_ == kFragmentStages) {
+      tiles_.finish();
+      stage_ = stagesInUse_ = 0;
+    }
+    ++stagesInUse_;
+    stage().processor = fragments;
+    stage().polygonStipple.prepare(ctx.raster.polygonStipplePattern, stage().processor);
   }
-  drawReadsContext_ = fragments_.readsContextState() || ctx.raster.polygonStipple;
+  drawReadsContext_ = stage().processor.readsContextState() || ctx.raster.polygonStipple;
 
   clip_.userPlaneMask = vertex_.clipPlaneMask;
   clip_.varyingCount = vertex_.varyingCount;
@@ -113,7 +120,7 @@ void DrawPipeline::prepare() {
   flat_ = r.shadeModel == GL_FLAT;
   stippleCounter_ = 0;
 
-  polygonSink_ = r.polygonStipple ? static_cast<raster::FragmentSink*>(&polygonStipple_) : &fragments_;
+  polygonSink_ = r.polygonStipple ? static_cast<raster::FragmentSink*>(&stage().polygonStipple) : &stage().processor;
   recording_ = ctx.renderMode.mode != GL_RENDER;
   lineReset_ = false;
   if (recording_) recorder_.prepare(ctx, vertex_.texturing);
@@ -126,7 +133,7 @@ void DrawPipeline::finishIfReadingContext() {
 void DrawPipeline::finishQueuedWork() { tiles_.finish(); }
 
 void DrawPipeline::beforeColorMaterialChange() {
-  if (fragments_.readsLighting()) tiles_.waitForThreads();
+  if (stage().processor.readsLighting()) tiles_.waitForThreads();
 }
 
 void finishQueuedDrawing(Context& ctx) {

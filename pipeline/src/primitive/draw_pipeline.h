@@ -23,8 +23,11 @@
 //   - draws whose fragment stage reads GL state by reference for each fragment: texturing (the
 //     texture objects are changed in place), fog and per-fragment lighting;
 //   - polygon-stippled draws (the filter reads the pattern in the context).
-// A draw whose fragment settings differ from those of the queued draws first finishes them
-// (prepare), since there is one FragmentProcessor. Everything that reads or writes the
+// Each queued primitive points at the fragment stage of its draw (FragmentStage: the processor
+// and the filters before it). A draw whose settings match none of the queued draws' takes a
+// stage of its own, so that a frame that changes its depth, stencil or blend state from draw to
+// draw keeps the threads busy; when all kFragmentStages are taken, the queued draws are finished
+// first (prepare). Everything that reads or writes the
 // framebuffer outside a draw (glClear, glReadPixels, glCopyTexImage, pixel rectangles, bitmaps,
 // glAccum, glFinish, glFlush, glassWritePNG, ...) calls finishQueuedDrawing first
 // (primitive/queued_drawing.h), and the pipeline's destructor finishes what is left.
@@ -140,9 +143,22 @@ class DrawPipeline {
   // `produced` is what the cut one became (primitive_statistics.cpp).
   void countClipping(unsigned outcodeUnion, unsigned outcodeIntersection, int produced);
 
+  // The fragment stage of a draw: its processor, and the filters that pass fragments on to it.
+  struct FragmentStage {
+    FragmentProcessor processor;
+    PolygonStippleFilter polygonStipple;
+    // The sinks of antialiased lines' and points' triangles, whose fragments carry their shape.
+    CoverageFilter<SmoothLineCoverage> smoothLines{processor};
+    CoverageFilter<SmoothPointCoverage> smoothPoints{processor};
+  };
+  static constexpr int kFragmentStages = 8;
+  FragmentStage& stage() { return stages_[stage_]; }
+
   Context& ctx_;
   VertexStageSetup vertex_;
-  FragmentProcessor fragments_;
+  FragmentStage stages_[kFragmentStages];
+  int stage_ = 0;        // the current draw's
+  int stagesInUse_ = 0;  // stages [0, stagesInUse_) hold the settings of queued draws
   raster::ClipSettings clip_;
   ViewportTransform viewport_;
   raster::TriangleSettings triangleSettings_;
@@ -161,11 +177,7 @@ class DrawPipeline {
   // Whether the segment being drawn must leave stippleCounter_ where it ends (a next segment goes
   // on from there): otherwise the rasterizer need not walk the whole segment to count it.
   bool stippleEndNeeded_ = true;
-  PolygonStippleFilter polygonStipple_;
-  raster::FragmentSink* polygonSink_ = &fragments_;  // polygonStipple_ when stippling
-  // The sinks of antialiased lines' and points' triangles, whose fragments carry their shape.
-  CoverageFilter<SmoothLineCoverage> smoothLineSink_{fragments_};
-  CoverageFilter<SmoothPointCoverage> smoothPointSink_{fragments_};
+  raster::FragmentSink* polygonSink_ = &stages_[0].processor;  // or its polygonStipple
   bool recording_ = false;   // GL_SELECT or GL_FEEDBACK: primitives go to recorder_
   bool lineReset_ = false;   // the next recorded line starts a new line (GL_LINE_RESET_TOKEN)
   PrimitiveRecorder recorder_;

@@ -56,7 +56,7 @@ void DrawPipeline::rasterizeUnclippedSegment(const raster::ClipVertex& a, const 
   lineSettings_.depthBias = depthBias;
   // A segment whose counter nobody goes on from starts at 0 (it was just restarted): no counter.
   lineSettings_.stippleCounter = stippleEndNeeded_ ? &stippleCounter_ : nullptr;
-  tiles_.line(wa, wb, lineSettings_, fragments_);
+  tiles_.line(wa, wb, lineSettings_, stage().processor);
 }
 
 }  // namespace glass::gl

@@ -42,7 +42,7 @@ void DrawPipeline::rasterizeVertexPoint(const raster::ClipVertex& v, double dept
   if (smoothPoints_) return rasterizeSmoothPoint(w, size, depthBias);  // smooth_stage.cpp
   pointSettings_.size = size;
   pointSettings_.depthBias = depthBias;
-  tiles_.point(w, pointSettings_, fragments_);
+  tiles_.point(w, pointSettings_, stage().processor);
 }
 
 }  // namespace glass::gl

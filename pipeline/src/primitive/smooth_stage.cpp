@@ -77,7 +77,7 @@ void DrawPipeline::rasterizeSmoothDash(const raster::WindowVertex& a,
   if (!makeSmoothLine(reversed ? b : a, reversed ? a : b, width, ctx_.framebuffer.height(),
                       vertex_.varyingCount, shape))
     return;
-  queueShape(tiles_, shape, triangleSettings_, depthBias, smoothLineSink_);
+  queueShape(tiles_, shape, triangleSettings_, depthBias, stage().smoothLines);
 }
 
 void DrawPipeline::rasterizeSmoothPoint(const raster::WindowVertex& w, float size,
@@ -85,7 +85,7 @@ void DrawPipeline::rasterizeSmoothPoint(const raster::WindowVertex& w, float siz
   SmoothPointShape shape;
   makeSmoothPoint(w, smoothPointRadius(size, pointDistanceAttenuated_), ctx_.framebuffer.height(),
                   vertex_.varyingCount, shape);
-  queueShape(tiles_, shape, triangleSettings_, depthBias, smoothPointSink_);
+  queueShape(tiles_, shape, triangleSettings_, depthBias, stage().smoothPoints);
 }
 
 }  // namespace glass::gl
