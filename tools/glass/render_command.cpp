@@ -264,6 +264,7 @@ int runRender(const std::vector<std::string> &args) {
   auto discard = [&] {
     for (const auto &[temporary, final] : written) std::filesystem::remove(temporary);
   };
+  scene::FrameRenderer renderer(program);  // one context for all the frames
   for (int frame = first; frame <= last; ++frame) {
     if (progress) {
       std::cerr << "\rglass render: drawing frame " << frame;
@@ -272,7 +273,7 @@ int runRender(const std::vector<std::string> &args) {
       std::cerr << "..." << std::flush;
     }
     scene::RenderedFrame rendered;
-    if (!scene::renderFrame(program, frame, request->options, rendered, diagnostics)) {
+    if (!renderer.render(frame, request->options, rendered, diagnostics)) {
       if (progress) std::cerr << "\n";
       diagnostics.print(std::cerr);
       discard();

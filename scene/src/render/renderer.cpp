@@ -34,14 +34,23 @@ bool definitionsSetTheCamera(const Program &program) {
   return false;
 }
 
-// What the kept textures and display lists were made for: another size, view or parameter value
-// makes them again.
+// What the kept context was made for (its size), and its textures and display lists (the size,
+// the view and the parameter values: any other makes them again).
 struct FrameKey {
   int width = 0, height = 0;
   View view = View::Color;
   std::vector<std::vector<double>> values;
   bool operator==(const FrameKey &) const = default;
 };
+
+// Deletes the texture objects and display lists an earlier frame made in the current context,
+// which is to make them anew.
+void forgetResources(FrameResources &resources, const Program &program) {
+  if (!resources.textures.empty())
+    glDeleteTextures(static_cast<GLsizei>(resources.textures.size()), resources.textures.data());
+  if (resources.listBase != 0) glDeleteLists(resources.listBase, static_cast<GLsizei>(program.definitions.size()));
+  resources = FrameResources{};
+}
 
 // Releases the context current on this thread when the frame is over.
 struct ReleaseCurrent {
@@ -85,11 +94,14 @@ bool FrameRenderer::render(int frame, const RenderOptions &options, RenderedFram
   }
   const int w = static_cast<int>(drawWidth), h = static_cast<int>(drawHeight);
   // The vertex trace needs every vertex sent (definitions not compiled), and a definition that
-  // sets the camera would keep an old one: such frames keep nothing.
+  // sets the camera would keep an old one: such frames make their textures and lists anew.
   const bool keepable = options.traceVertex < 0 && !definitionsSetTheCamera(program);
   FrameKey key{w, h, options.view, evaluateParameters(program, frame).values};
-  if (drawing && keepable && drawing->key == key && glassResetContext(drawing->context)) {
-    ++framesKept_;
+  // A context of the frame's size is kept (and reset); its textures and lists too when the frame
+  // would make them the same.
+  bool keepResources = false;
+  if (drawing && drawing->key.width == w && drawing->key.height == h && glassResetContext(drawing->context)) {
+    keepResources = keepable && drawing->key == key && drawing->resources.made;
   } else {
     drawing.reset();
     auto fresh = std::make_unique<Kept>();
@@ -98,13 +110,18 @@ bool FrameRenderer::render(int frame, const RenderOptions &options, RenderedFram
       diagnostics.error({}, "cannot create a " + std::to_string(w) + "x" + std::to_string(h) + " GL context");
       return false;
     }
-    fresh->key = std::move(key);
     drawing = std::move(fresh);
   }
+  drawing->key = std::move(key);
   ReleaseCurrent release;
   if (glassMakeCurrent(drawing->context) == 0) {
     diagnostics.error({}, "cannot make the " + std::to_string(w) + "x" + std::to_string(h) + " GL context current");
     return false;
+  }
+  if (keepResources) {
+    ++framesKept_;
+  } else {
+    forgetResources(drawing->resources, program);
   }
 
   VertexTracer tracer(options.traceVertex);
@@ -118,7 +135,7 @@ bool FrameRenderer::render(int frame, const RenderOptions &options, RenderedFram
   interpreterOptions.compileDefinitions = options.traceVertex < 0;
   interpreterOptions.camera = options.camera;
   interpreterOptions.sceneCamera = options.sceneCamera;
-  interpreterOptions.resources = keepable ? &drawing->resources : nullptr;
+  interpreterOptions.resources = &drawing->resources;
   Interpreter interpreter(program, interpreterOptions);
   if (!interpreter.drawFrame(frame, diagnostics)) return false;
 
@@ -161,7 +178,7 @@ bool FrameRenderer::render(int frame, const RenderOptions &options, RenderedFram
     return false;
   }
   result.image = boxDownsample(std::move(image), factor);
-  if (keepable) kept_ = std::move(drawing);
+  kept_ = std::move(drawing);
   return true;
 }
 

@@ -61,12 +61,13 @@ constexpr int kMaxFramebufferSide = 16384;
 bool renderFrame(const Program &program, int frame, const RenderOptions &options, RenderedFrame &result,
                  Diagnostics &diagnostics);
 
-// Draws frames of one program one after another (glass view draws with one): each is the
-// picture renderFrame draws, byte for byte, but the GL context is kept from frame to frame and
-// put back in GL's initial state (glassResetContext), and so are the program's textures and its
-// definitions compiled into display lists, as long as the frame is drawn at the same size, with
-// the same view and the same parameter values (the camera may change). A frame that fails
-// leaves nothing kept. The program must outlive the renderer and stay unchanged.
+// Draws frames of one program one after another (glass view and glass render --frames draw with
+// one): each is the picture renderFrame draws, byte for byte, but the GL context is kept from
+// frame to frame while the size stays the same, put back in GL's initial state
+// (glassResetContext) before each frame, and so are the program's textures and its definitions
+// compiled into display lists while the view and the parameter values stay the same too (the
+// camera may change). A frame that fails leaves nothing kept. The program must outlive the
+// renderer and stay unchanged.
 class FrameRenderer {
 public:
   explicit FrameRenderer(const Program &program);
@@ -77,7 +78,7 @@ public:
   // As renderFrame.
   bool render(int frame, const RenderOptions &options, RenderedFrame &result, Diagnostics &diagnostics);
 
-  // How many of the frames rendered so far used the kept context and resources (for tests).
+  // How many of the frames rendered so far used kept textures and display lists (for tests).
   int framesKept() const { return framesKept_; }
 
 private:
