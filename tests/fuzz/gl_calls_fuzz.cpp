@@ -632,11 +632,26 @@ void listAndModeCall(ByteReader &in) {
   }
 }
 
+// Every client array points into the arrays buffer, so that enabling one the input never
+// pointed anywhere reads that buffer rather than address 0 (which would be the program's fault in
+// any GL): at the start, and after glassResetContext.
+void pointArraysAtBuffer() {
+  void *arrays = memory->arrays.data();
+  glVertexPointer(4, GL_FLOAT, 0, arrays);
+  glNormalPointer(GL_FLOAT, 0, arrays);
+  glColorPointer(4, GL_FLOAT, 0, arrays);
+  glIndexPointer(GL_FLOAT, 0, arrays);
+  glTexCoordPointer(4, GL_FLOAT, 0, arrays);
+  glEdgeFlagPointer(0, arrays);
+  glFogCoordPointer(GL_FLOAT, 0, arrays);
+  glSecondaryColorPointer(3, GL_FLOAT, 0, arrays);
+}
+
 void gluAndGlutCall(ByteReader &in) {
   // Tessellation counts and subdivisions stay small enough to draw quickly.
   const GLint slices = in.size() % 40;
   const GLint stacks = in.size() % 40;
-  switch (in.below(8)) {
+  switch (in.below(9)) {
   case 0: {
     GLUquadric *quadric = gluNewQuadric();
     gluQuadricDrawStyle(quadric, in.enumFrom(kEnums, kEnumCount));
@@ -726,6 +741,14 @@ void gluAndGlutCall(ByteReader &in) {
     default: glutWireCube(in.real()); break;
     }
     break;
+  case 7: {
+    // The context back in its initial state (glassResetContext), lists, textures and pixels
+    // kept, even between glBegin and glEnd; its arrays point into the buffer again.
+    GlassContext *current = glassGetCurrentContext();
+    glassResetContext(current);
+    pointArraysAtBuffer();
+    break;
+  }
   default: {
     // A second context: switch to it, draw, switch back; creation refuses bad sizes.
     GlassContext *current = glassGetCurrentContext();
@@ -750,18 +773,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size
   ByteReader in(data, size);
   GlassContext *context = glassCreateContext(48, 40);
   if (context == nullptr || !glassMakeCurrent(context)) return 0;
-  // Every client array starts out pointing into the arrays buffer, so that enabling one the
-  // input never pointed anywhere reads that buffer rather than address 0 (which would be the
-  // program's fault in any GL).
-  void *arrays = buffers.arrays.data();
-  glVertexPointer(4, GL_FLOAT, 0, arrays);
-  glNormalPointer(GL_FLOAT, 0, arrays);
-  glColorPointer(4, GL_FLOAT, 0, arrays);
-  glIndexPointer(GL_FLOAT, 0, arrays);
-  glTexCoordPointer(4, GL_FLOAT, 0, arrays);
-  glEdgeFlagPointer(0, arrays);
-  glFogCoordPointer(GL_FLOAT, 0, arrays);
-  glSecondaryColorPointer(3, GL_FLOAT, 0, arrays);
+  pointArraysAtBuffer();
   // A bound on the calls per input keeps each run short.
   for (int calls = 0; calls < 400 && !in.done(); ++calls) {
     switch (in.below(10)) {
