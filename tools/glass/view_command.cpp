@@ -223,7 +223,6 @@ bool readScene() {
     return false;
   }
   diagnostics.print(std::cerr);
-  viewer.renderer.reset();
   viewer.program = std::move(program);
   viewer.haveProgram = true;
   overridesChanged();

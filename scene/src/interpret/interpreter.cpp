@@ -77,8 +77,7 @@ Interpreter::Interpreter(const Program &program, const InterpreterOptions &optio
 
 Interpreter::~Interpreter() = default;
 
-bool Interpreter::drawFrame(int frame, Diagnostics &diagnostics) {
-  FrameValues values = evaluateParameters(program_, frame);
+bool Interpreter::drawFrame(const FrameValues &values, Diagnostics &diagnostics) {
   int errorsBefore = diagnostics.errorCount();
   try {
     Executor executor(program_, options_, values, diagnostics);

@@ -60,10 +60,11 @@ public:
   Interpreter(const Interpreter &) = delete;
   Interpreter &operator=(const Interpreter &) = delete;
 
-  // Draws frame `frame` into the current context, which must be in GL's initial state (new, or
-  // reset by glassResetContext) and of the size the frame is drawn at. Returns false when a GL error or a bad value stopped it;
-  // the messages are in `diagnostics`.
-  bool drawFrame(int frame, Diagnostics &diagnostics);
+  // Draws the frame whose parameter values are `values` (evaluateParameters) into the current
+  // context, which must be in GL's initial state (new, or reset by glassResetContext) and of
+  // the size the frame is drawn at. Returns false when a GL error or a bad value stopped it; the
+  // messages are in `diagnostics`.
+  bool drawFrame(const FrameValues &values, Diagnostics &diagnostics);
 
   class Executor; // the statement-by-statement part (executor.h)
 

@@ -66,7 +66,8 @@ struct FrameRenderer::Kept {
   ~Kept() { glassDestroyContext(context); }
 };
 
-FrameRenderer::FrameRenderer(const Program &program) : program_(program) {}
+FrameRenderer::FrameRenderer(const Program &program)
+    : program_(program), definitionsSetCamera_(definitionsSetTheCamera(program)) {}
 
 FrameRenderer::~FrameRenderer() = default;
 
@@ -95,8 +96,9 @@ bool FrameRenderer::render(int frame, const RenderOptions &options, RenderedFram
   const int w = static_cast<int>(drawWidth), h = static_cast<int>(drawHeight);
   // The vertex trace needs every vertex sent (definitions not compiled), and a definition that
   // sets the camera would keep an old one: such frames make their textures and lists anew.
-  const bool keepable = options.traceVertex < 0 && !definitionsSetTheCamera(program);
-  FrameKey key{w, h, options.view, evaluateParameters(program, frame).values};
+  const bool keepable = options.traceVertex < 0 && !definitionsSetCamera_;
+  const FrameValues values = evaluateParameters(program, frame);
+  FrameKey key{w, h, options.view, values.values};
   // A context of the frame's size is kept (and reset); its textures and lists too when the frame
   // would make them the same.
   bool keepResources = false;
@@ -137,7 +139,7 @@ bool FrameRenderer::render(int frame, const RenderOptions &options, RenderedFram
   interpreterOptions.sceneCamera = options.sceneCamera;
   interpreterOptions.resources = &drawing->resources;
   Interpreter interpreter(program, interpreterOptions);
-  if (!interpreter.drawFrame(frame, diagnostics)) return false;
+  if (!interpreter.drawFrame(values, diagnostics)) return false;
 
   if (options.traceVertex >= 0) {
     result.trace = tracer.found() ? tracer.report()

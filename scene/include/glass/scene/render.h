@@ -84,6 +84,7 @@ public:
 private:
   struct Kept;
   const Program &program_;
+  bool definitionsSetCamera_;  // compiled, they would keep the camera of the frame they were compiled in
   std::unique_ptr<Kept> kept_;
   int framesKept_ = 0;
 };
