@@ -100,12 +100,12 @@ double atanUnit(double t) {
 }
 
 // ln m for sqrt(1/2) <= m < sqrt(2): 2 atanh s with s = (m - 1) / (m + 1), |s| <= 0.172:
-// 2 (s + s^3/3 + ... + s^23/23).
-double lnReduced(double m) {
+// 2 (s + s^3/3 + ... + s^lastOdd/lastOdd).
+double lnReduced(double m, int lastOdd) {
   const double s = (m - 1.0) / (m + 1.0);
   const double z = s * s;
   double sum = 0.0;
-  for (int n = kLog2SeriesLastOdd; n >= 3; n -= 2) sum = z * (sum + kInverseOdd.value[n]);
+  for (int n = lastOdd; n >= 3; n -= 2) sum = z * (sum + kInverseOdd.value[n]);
   return 2.0 * (s + s * sum);
 }
 
@@ -204,7 +204,10 @@ double exp2(double x) {
   return scaleByPowerOfTwo(expReduced((x - k) * kLn2), static_cast<int>(k));
 }
 
-double log2(double x) {
+namespace {
+
+// log2 x with the series of ln m to 1/lastOdd.
+double log2Series(double x, int lastOdd) {
   if (std::isnan(x) || x < 0.0) return kNaN;
   if (x == 0.0) return -kInfinity;
   if (std::isinf(x)) return x;
@@ -221,8 +224,13 @@ double log2(double x) {
     m *= 0.5;
     ++e;
   }
-  return e + lnReduced(m) * kLog2E;
+  return e + lnReduced(m, lastOdd) * kLog2E;
 }
+
+}  // namespace
+
+double log2(double x) { return log2Series(x, kLog2SeriesLastOdd); }
+float log2(float x) { return static_cast<float>(log2Series(static_cast<double>(x), kLog2FloatSeriesLastOdd)); }
 
 double pow(double x, double y) {
   if (x == 1.0 || y == 0.0) return 1.0;

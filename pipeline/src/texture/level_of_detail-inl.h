@@ -1,8 +1,8 @@
 // The level of detail of several pixel quads at once: lambda[i] is what
 // levelOfDetailFromSquaredScale (texture/texture_lod.h) gives for rhoSquared[i], bit for bit.
 //
-// That function takes log2 of rho^2 rounded to float, through portable::log2, a series of
-// a dozen dependent double operations with a division, and it runs once per 2x2 quad of every
+// That function takes log2 of rho^2 rounded to float, through portable::log2(float), a series
+// of a dozen dependent double operations with a division, and it runs once per 2x2 quad of every
 // mipmapped pixel; here the quads of a row are lanes of one vector, worked with the same IEEE
 // operations in the same order (portable_math.h describes them): the float rho^2 widened to
 // double, split into exponent and mantissa by its bits, the mantissa moved into [sqrt(1/2),
@@ -39,7 +39,8 @@ namespace hn = hwy::HWY_NAMESPACE;
 
 constexpr int kQuads = 4;  // the quads of a block's quad row
 
-// portable::log2(x) for lanes holding positive, finite, normal doubles.
+// portable::log2(float) before its rounding to float, for lanes holding positive, finite,
+// normal doubles.
 template <class D, class V>
 V log2Lanes(D d, V x) {
   const hn::RebindToUnsigned<D> du;
@@ -56,7 +57,7 @@ V log2Lanes(D d, V x) {
   const auto s = hn::Div(hn::Sub(m, one), hn::Add(m, one));
   const auto z = hn::Mul(s, s);
   auto sum = hn::Zero(d);
-  for (int n = portable::kLog2SeriesLastOdd; n >= 3; n -= 2) sum = hn::Mul(z, hn::Add(sum, hn::Set(d, 1.0 / n)));
+  for (int n = portable::kLog2FloatSeriesLastOdd; n >= 3; n -= 2) sum = hn::Mul(z, hn::Add(sum, hn::Set(d, 1.0 / n)));
   const auto ln = hn::Mul(hn::Set(d, 2.0), hn::Add(s, hn::Mul(s, sum)));
   return hn::Add(hn::ConvertTo(d, exponent), hn::Mul(ln, hn::Set(d, portable::kLog2E)));
 }
