@@ -3,12 +3,13 @@
 // sampleMagnified) gives for pixel i, bit for bit.
 //
 // The common case of textured drawing -- LINEAR filtering within power-of-two GL_REPEAT levels,
-// one level or two mixed (GL_LINEAR_MIPMAP_LINEAR) -- runs on vectors of pixels: one lane per
-// pixel, the same IEEE operations in the same order as Sampler2D's sampleLinear and bilinear
-// (texel coordinate, floor, weights, the four-texel sum left to right, the scale by 1/255, the
-// mix of two levels), so every lane gives the scalar result's bits on every SIMD target. The
-// pixels of a row may read different levels (a lambda per 2x2 quad): they are taken one level
-// pair at a time.
+// one level or two mixed (GL_LINEAR_MIPMAP_LINEAR) -- runs on vectors of pixels: one 32-bit lane
+// per pixel for the coordinates (the same IEEE operations as Sampler2D's sampleLinear), then the
+// fixed-point filter of texel_filter.h in 16-bit lanes, two components of a pixel in each 32-bit
+// lane (red and blue, green and alpha: a texel's bytes masked 0x00FF00FF), so that one
+// multiplication serves two components. Integer arithmetic gives the scalar result's bits on
+// every SIMD target. The pixels of a row may read different levels (a lambda per 2x2 quad): they
+// are taken one level pair at a time.
 // Pixels outside that case (NEAREST filters, other wrap modes, sides not a power of two,
 // coordinates beyond 2^20 texels, NaN) take Sampler2D itself.
 //
@@ -40,27 +41,6 @@ namespace hn = hwy::HWY_NAMESPACE;
 
 constexpr int kRowPixels = 8;
 using RowTag = hn::CappedTag<float, kRowPixels>;
-
-// Component c of packed RGBA8 texels (the bytes in memory order R, G, B, A) as floats.
-template <int kComponent, class V>
-auto componentOf(V words) {
-  constexpr int kShift = std::endian::native == std::endian::little ? 8 * kComponent : 24 - 8 * kComponent;
-  const RowTag f;
-  const hn::RebindToUnsigned<RowTag> u;
-  const hn::RebindToSigned<RowTag> i;
-  return hn::ConvertTo(f, hn::BitCast(i, hn::And(hn::ShiftRight<kShift>(words), hn::Set(u, 0xFFu))));
-}
-
-// The four-texel sum of one component, left to right as in Sampler2D::bilinear, scaled to [0, 1].
-template <int kComponent, class VF, class VU>
-VF bilinearComponent(const VF (&weight)[4], const VU (&words)[4]) {
-  const RowTag f;
-  auto sum = hn::Mul(weight[0], componentOf<kComponent>(words[0]));
-  sum = hn::Add(sum, hn::Mul(weight[1], componentOf<kComponent>(words[1])));
-  sum = hn::Add(sum, hn::Mul(weight[2], componentOf<kComponent>(words[2])));
-  sum = hn::Add(sum, hn::Mul(weight[3], componentOf<kComponent>(words[3])));
-  return hn::Mul(sum, hn::Set(f, 1.0f / 255.0f));
-}
 
 // The texel words at `offsets` (in texels) of an RGBA8 image, one per lane.
 template <class VI>
@@ -125,19 +105,90 @@ HWY_INLINE bool texelWordsFromOneRow(const Sampler2D::Level& level, M activeLane
   }
 }
 
+// Filtered texels of a row in texel_filter's fixed point, two components per 32-bit word:
+// masked[i] those of the texel word masked 0x00FF00FF, shifted[i] those of the word shifted
+// right by 8 (see inMaskedWord).
+struct FixedRow {
+  alignas(64) uint32_t masked[kRowPixels];
+  alignas(64) uint32_t shifted[kRowPixels];
+};
+
+// Operations on both 16-bit halves of each 32-bit lane: the lanes seen as twice as many 16-bit
+// lanes, or, for one-lane vectors (which have no such view), the two halves worked apart.
+#if HWY_TARGET == HWY_SCALAR
+template <class VU, class Op>
+HWY_INLINE VU eachHalf(VU a, VU b, Op op) {
+  const uint32_t x = hn::GetLane(a), y = hn::GetLane(b);
+  const uint32_t low = op(x & 0xFFFFu, y & 0xFFFFu) & 0xFFFFu, high = op(x >> 16, y >> 16) & 0xFFFFu;
+  return hn::Set(hn::DFromV<VU>(), low | high << 16);
+}
+template <class VU>
+HWY_INLINE VU halvesMul(VU a, VU b) { return eachHalf(a, b, [](uint32_t x, uint32_t y) { return x * y; }); }
+template <class VU>
+HWY_INLINE VU halvesMulHigh(VU a, VU b) { return eachHalf(a, b, [](uint32_t x, uint32_t y) { return x * y >> 16; }); }
+template <class VU>
+HWY_INLINE VU halvesAdd(VU a, VU b) { return eachHalf(a, b, [](uint32_t x, uint32_t y) { return x + y; }); }
+template <class VU>
+HWY_INLINE VU halvesSub(VU a, VU b) { return eachHalf(a, b, [](uint32_t x, uint32_t y) { return x - y; }); }
+#else
+template <class VU, class Op>
+HWY_INLINE VU asHalves(VU a, VU b, Op op) {
+  const hn::Repartition<uint16_t, hn::DFromV<VU>> d16;
+  return hn::BitCast(hn::DFromV<VU>(), op(hn::BitCast(d16, a), hn::BitCast(d16, b)));
+}
+template <class VU>
+HWY_INLINE VU halvesMul(VU a, VU b) { return asHalves(a, b, [](auto x, auto y) { return hn::Mul(x, y); }); }
+template <class VU>
+HWY_INLINE VU halvesMulHigh(VU a, VU b) { return asHalves(a, b, [](auto x, auto y) { return hn::MulHigh(x, y); }); }
+template <class VU>
+HWY_INLINE VU halvesAdd(VU a, VU b) { return asHalves(a, b, [](auto x, auto y) { return hn::Add(x, y); }); }
+template <class VU>
+HWY_INLINE VU halvesSub(VU a, VU b) { return asHalves(a, b, [](auto x, auto y) { return hn::Sub(x, y); }); }
+#endif
+
+// texel_filter::mixFixed on the halves, whose weights w are in `weights`' halves:
+// x0 + floor(x1 w / 65536) - floor(x0 w / 65536), each product's high half.
+template <class VU>
+HWY_INLINE VU mixHalves(VU x0, VU x1, VU weights) {
+  return halvesSub(halvesAdd(x0, halvesMulHigh(x1, weights)), halvesMulHigh(x0, weights));
+}
+
+// texel_filter::mixTexels on the halves: t0 (256 - a) + t1 a, with a (and 256 - a) in both
+// halves of each lane.
+template <class VU>
+HWY_INLINE VU mixTexelHalves(VU t0, VU t1, VU a, VU notA) {
+  return halvesAdd(halvesMul(t0, notA), halvesMul(t1, a));
+}
+
+// A per-lane value v (below 2^16) in both 16-bit halves of its lane.
+template <class VU>
+HWY_INLINE VU inBothHalves(VU v) {
+  return hn::Or(v, hn::ShiftLeft<16>(v));
+}
+
+// Where a texel word's components land in FixedRow (bytes in memory order R, G, B, A): the
+// word masked 0x00FF00FF holds the components of bytes 0 and 2, the word shifted right by 8 and
+// masked those of bytes 1 and 3; component c is in the low half of one of them or the high.
+constexpr bool kLittleEndian = std::endian::native == std::endian::little;
+constexpr bool inMaskedWord(int c) { return (kLittleEndian ? c : 3 - c) % 2 == 0; }
+constexpr bool inHighHalf(int c) { return (kLittleEndian ? c : 3 - c) >= 2; }
+
 // Sampler2D's LINEAR lookup in a power-of-two GL_REPEAT level, for the pixels `i .. i + lanes
 // - 1` of the row whose bits are set in `lanes` and whose texel coordinates are below 2^20 in
-// magnitude (the others would need keepInIntRange's reduction): writes out[c] for them and
-// returns them.
+// magnitude (the others would need keepInIntRange's reduction): writes out's words for them
+// and returns them.
 inline unsigned bilinearRow(const Sampler2D::Level& level, const float* s, const float* t, unsigned lanes,
-                            float out[4][kRowPixels]) {
+                            FixedRow& out) {
   const RowTag f;
   const hn::RebindToSigned<RowTag> di;
+  const hn::RebindToUnsigned<RowTag> du;
   const int kLanes = static_cast<int>(hn::Lanes(f));
-  const auto half = hn::Set(f, 0.5f), one = hn::Set(f, 1.0f), limit = hn::Set(f, 1048576.0f);
+  const auto half = hn::Set(f, 0.5f), limit = hn::Set(f, 1048576.0f), fixedScale = hn::Set(f, 256.0f);
   const auto widthF = hn::Set(f, level.widthF), heightF = hn::Set(f, level.heightF);
   const auto widthMask = hn::Set(di, level.width - 1), heightMask = hn::Set(di, level.height - 1);
   const auto width = hn::Set(di, level.width);
+  const auto byteMask = hn::Set(du, 0x00FF00FFu);
+  const auto weightMask = hn::Set(di, 255);
   unsigned done = 0;
   for (int i = 0; i < kRowPixels; i += kLanes) {
     const auto uScaled = hn::Mul(hn::Load(f, s + i), widthF);
@@ -148,24 +199,21 @@ inline unsigned bilinearRow(const Sampler2D::Level& level, const float* s, const
     uint8_t inRangeBits[8] = {};
     hn::StoreMaskBits(f, inRange, inRangeBits);
     done |= static_cast<unsigned>(inRangeBits[0]) << i;
-    // Other lanes compute with 0 instead, so that no conversion overflows and every texel read
-    // is inside the image.
-    const auto u = hn::Sub(hn::IfThenElseZero(inRange, uScaled), half);
-    const auto v = hn::Sub(hn::IfThenElseZero(inRange, vScaled), half);
-    // floorToInt: truncate, then one less where the truncation rounded up.
-    auto floorOf = [&](auto x) {
+    // texel_filter::fixedCoordinate. Other lanes compute with 0 instead, so that no conversion
+    // overflows and every texel read is inside the image.
+    auto fixedCoordinate = [&](auto scaled) {
+      const auto x = hn::Add(hn::Mul(hn::Sub(hn::IfThenElseZero(inRange, scaled), half), fixedScale), half);
+      // floorToInt: truncate, then one less where the truncation rounded up.
       const auto truncated = hn::ConvertTo(di, x);
       const auto roundedUp = hn::RebindMask(di, hn::Gt(hn::ConvertTo(f, truncated), x));
       return hn::IfThenElse(roundedUp, hn::Sub(truncated, hn::Set(di, 1)), truncated);
     };
-    const auto uWhole = floorOf(u), vWhole = floorOf(v);
-    const auto alpha = hn::Sub(u, hn::ConvertTo(f, uWhole));
-    const auto beta = hn::Sub(v, hn::ConvertTo(f, vWhole));
-    const auto i0 = hn::And(uWhole, widthMask);
+    const auto u = fixedCoordinate(uScaled), v = fixedCoordinate(vScaled);
+    const auto i0 = hn::And(hn::ShiftRight<8>(u), widthMask);
     const auto i1 = hn::And(hn::Add(i0, hn::Set(di, 1)), widthMask);
-    const auto j0 = hn::And(vWhole, heightMask);
+    const auto j0 = hn::And(hn::ShiftRight<8>(v), heightMask);
     const auto j1 = hn::And(hn::Add(j0, hn::Set(di, 1)), heightMask);
-    decltype(hn::Zero(hn::RebindToUnsigned<RowTag>())) words[4];
+    decltype(hn::Zero(du)) words[4];
     if (!texelWordsFromOneRow(level, inRange, i0, j0, words)) {
       const auto row0 = j0 * width, row1 = j1 * width;
       words[0] = texelWords(level.texels, hn::Add(row0, i0));
@@ -173,13 +221,15 @@ inline unsigned bilinearRow(const Sampler2D::Level& level, const float* s, const
       words[2] = texelWords(level.texels, hn::Add(row1, i0));
       words[3] = texelWords(level.texels, hn::Add(row1, i1));
     }
-    const auto notAlpha = hn::Sub(one, alpha), notBeta = hn::Sub(one, beta);
-    const decltype(hn::Zero(f)) weight[4] = {hn::Mul(notAlpha, notBeta), hn::Mul(alpha, notBeta),
-                                             hn::Mul(notAlpha, beta), hn::Mul(alpha, beta)};
-    hn::Store(bilinearComponent<0>(weight, words), f, out[0] + i);
-    hn::Store(bilinearComponent<1>(weight, words), f, out[1] + i);
-    hn::Store(bilinearComponent<2>(weight, words), f, out[2] + i);
-    hn::Store(bilinearComponent<3>(weight, words), f, out[3] + i);
+    const auto a = inBothHalves(hn::BitCast(du, hn::And(u, weightMask)));
+    const auto notA = hn::Sub(hn::Set(du, 0x01000100u), a);
+    const auto rowWeight = hn::ShiftLeft<8>(inBothHalves(hn::BitCast(du, hn::And(v, weightMask))));
+    auto filter = [&](auto component) {  // component(word): two components in the halves
+      return mixHalves(mixTexelHalves(component(words[0]), component(words[1]), a, notA),
+                       mixTexelHalves(component(words[2]), component(words[3]), a, notA), rowWeight);
+    };
+    hn::Store(filter([&](auto w) { return hn::And(w, byteMask); }), du, out.masked + i);
+    hn::Store(filter([&](auto w) { return hn::And(hn::ShiftRight<8>(w), byteMask); }), du, out.shifted + i);
   }
   return done;
 }
@@ -188,25 +238,34 @@ inline unsigned bilinearRow(const Sampler2D::Level& level, const float* s, const
 // both levels power-of-two GL_REPEAT): first level, then the second and the mix where
 // choice.mixes and weight2[i] != 0 ... as Sampler2D::sampleChosen. Returns the pixels done.
 inline unsigned sampleLevelPair(const Sampler2D& sampler, const Sampler2D::LevelChoice& choice,
-                                const float* s, const float* t, const float* weight2, unsigned lanes,
+                                const float* s, const float* t, const uint32_t* weight2, unsigned lanes,
                                 unsigned mixedLanes, float texel[4][kRowPixels]) {
-  unsigned done = bilinearRow(sampler.level(choice.level1), s, t, lanes, texel);
+  FixedRow first;
+  unsigned done = bilinearRow(sampler.level(choice.level1), s, t, lanes, first);
   const unsigned mixed = mixedLanes & done;
-  if (mixed == 0) return done;
-  alignas(64) float second[4][kRowPixels];
-  const unsigned bothDone = bilinearRow(sampler.level(choice.level2), s, t, mixed, second);
+  FixedRow second;
+  const unsigned bothDone = mixed == 0 ? 0 : bilinearRow(sampler.level(choice.level2), s, t, mixed, second);
   done &= ~(mixed & ~bothDone);  // a pixel whose second level fell outside takes Sampler2D
   const RowTag f;
+  const hn::RebindToSigned<RowTag> di;
+  const hn::RebindToUnsigned<RowTag> du;
   const int kLanes = static_cast<int>(hn::Lanes(f));
+  const auto scale = hn::Set(f, 1.0f / 65280.0f);
+  const auto lowHalf = hn::Set(du, 0xFFFFu);
   for (int i = 0; i < kRowPixels; i += kLanes) {
-    const uint8_t mixBits[8] = {static_cast<uint8_t>(bothDone >> i)};
-    const auto mixesHere = hn::LoadMaskBits(f, mixBits);
-    const auto w2 = hn::Load(f, weight2 + i);
-    const auto w1 = hn::Sub(hn::Set(f, 1.0f), w2);
+    auto masked = hn::Load(du, first.masked + i), shifted = hn::Load(du, first.shifted + i);
+    if (bothDone != 0) {
+      const uint8_t mixBits[8] = {static_cast<uint8_t>(bothDone >> i)};
+      const auto mixesHere = hn::RebindMask(du, hn::LoadMaskBits(f, mixBits));
+      const auto w = inBothHalves(hn::Load(du, weight2 + i));
+      masked = hn::IfThenElse(mixesHere, mixHalves(masked, hn::Load(du, second.masked + i), w), masked);
+      shifted = hn::IfThenElse(mixesHere, mixHalves(shifted, hn::Load(du, second.shifted + i), w), shifted);
+    }
     for (int c = 0; c < 4; ++c) {
-      const auto a = hn::Load(f, texel[c] + i), b = hn::Load(f, second[c] + i);
-      // (1 - w2) first + w2 second, as Sampler2D::sampleChosen mixes the two levels.
-      hn::Store(hn::IfThenElse(mixesHere, hn::Add(hn::Mul(w1, a), hn::Mul(w2, b)), a), f, texel[c] + i);
+      const auto pair = inMaskedWord(c) ? masked : shifted;
+      const auto fixed = inHighHalf(c) ? hn::ShiftRight<16>(pair) : hn::And(pair, lowHalf);
+      // texel_filter::unitFromFixed (the value is below 2^16: converted as signed).
+      hn::Store(hn::Mul(hn::ConvertTo(f, hn::BitCast(di, fixed)), scale), f, texel[c] + i);
     }
   }
   return done;
@@ -220,7 +279,7 @@ constexpr int kRowQuads = kRowPixels / 2;
 inline void sampleRow(const Sampler2D& sampler, const float* s, const float* t,
                       const Sampler2D::LevelChoice* quadChoice, unsigned mask, float texel[4][kRowPixels]) {
   // The quads of one level pair at a time (most rows read one pair).
-  alignas(64) float weight2[kRowPixels] = {};
+  alignas(64) uint32_t weight2[kRowPixels] = {};
   unsigned done = 0;
   unsigned restQuads = 0;  // bit k: quad k has a pixel in mask not yet grouped
   for (int k = 0; k < kRowQuads; ++k)
@@ -236,7 +295,7 @@ inline void sampleRow(const Sampler2D& sampler, const float* s, const float* t,
       const unsigned pixels = (3u << (2 * k)) & mask;
       lanes |= pixels;
       if (quad.mixes) mixedLanes |= pixels;
-      weight2[2 * k] = weight2[2 * k + 1] = quad.weight2;
+      weight2[2 * k] = weight2[2 * k + 1] = static_cast<uint32_t>(quad.weight2);
     }
     restQuads &= ~pairQuads;
     const bool vectorRoute = pair.linear && sampler.level(pair.level1).repeatsByMask &&

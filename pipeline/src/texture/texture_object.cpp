@@ -1,6 +1,7 @@
 #include "texture/texture_object.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "texture/texture_lod.h"
 #include "texture/texture_sampler.h"
@@ -38,7 +39,10 @@ void TextureObject::updateCompleteness() {
       return;
   }
   borderTexel(*this, sampling.border);
-  for (float& c : sampling.border) c *= 255.0f;
+  for (int c = 0; c < 4; ++c) {
+    sampling.border[c] = std::round(sampling.border[c] * 255.0f);
+    sampling.borderBytes[c] = static_cast<uint8_t>(sampling.border[c]);
+  }
   sampling.switchOverPoint = magnificationSwitchOverPoint(params.minFilter, params.magFilter);
   if (!isMipmapFilter(params.minFilter)) {
     complete = true;

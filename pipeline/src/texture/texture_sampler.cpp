@@ -1,10 +1,13 @@
 #include "texture/texture_sampler.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdint>
 
 #include "texture/depth_comparison.h"
 #include "texture/texel_addressing.h"
+#include "texture/texel_filter.h"
 
 namespace glass::gl {
 namespace {
@@ -13,125 +16,178 @@ struct LevelLookup {
   const TextureImage* image;
   GLenum wrapS, wrapT;
   bool twoD;
-  const float* border;  // the border texel, components in [0, 255]
-  int slice = 0;        // the slice of a 3D image the 2D lookups read
-  const DepthLookup* depth = nullptr;  // a depth texture's values or comparisons
+  const TextureObject::Sampling* sampling;  // the border texel
+  int slice = 0;                            // the slice of a 3D image the 2D lookups read
 };
 
-// Texel (i, j) with components in [0, 255] (the scale to [0, 1] is applied once per lookup).
-const float* fetchTexel(const LevelLookup& l, int i, int j, float scratch[4]) {
-  if (l.depth != nullptr) return depthTexel(*l.depth, *l.image, i, j, scratch);
-  if (i < 0 || i >= l.image->width || j < 0 || j >= l.image->height) return l.border;
-  const uint8_t* texel = l.image->texel(i, j, l.slice);
-  for (int c = 0; c < 4; ++c) scratch[c] = static_cast<float>(texel[c]);
-  return scratch;
+// A colour lookup's result: components in texel_filter's fixed point (0 .. 65280 for 0 .. 1).
+using FixedTexel = std::array<int, 4>;
+
+// Texel (i, j) of a colour image, or the border texel outside it.
+const uint8_t* colourTexel(const LevelLookup& l, int i, int j) {
+  if (i < 0 || i >= l.image->width || j < 0 || j >= l.image->height) return l.sampling->borderBytes;
+  return l.image->texel(i, j, l.slice);
 }
 
-void sampleNearest(const LevelLookup& l, float s, float t, float out[4]) {
+FixedTexel nearestColour(const LevelLookup& l, float s, float t) {
   const int width = l.image->width;
-  const float u = texelCoordinate(s, width, l.wrapS);
-  const int i = wrapTexelIndex(static_cast<int>(std::floor(u)), width, l.wrapS, false);
+  const int i = wrapTexelIndex(floorToInt(texelCoordinate(s, width, l.wrapS)), width, l.wrapS, false);
   int j = 0;
   if (l.twoD) {
     const int height = l.image->height;
-    const float v = texelCoordinate(t, height, l.wrapT);
-    j = wrapTexelIndex(static_cast<int>(std::floor(v)), height, l.wrapT, false);
+    j = wrapTexelIndex(floorToInt(texelCoordinate(t, height, l.wrapT)), height, l.wrapT, false);
   }
-  float scratch[4];
-  const float* texel = fetchTexel(l, i, j, scratch);
-  for (int c = 0; c < 4; ++c) out[c] = texel[c] * (1.0f / 255.0f);
+  const uint8_t* texel = colourTexel(l, i, j);
+  FixedTexel out;
+  for (int c = 0; c < 4; ++c) out[c] = texel_filter::fixedOfTexel(texel[c]);
+  return out;
 }
 
-void sampleLinear(const LevelLookup& l, float s, float t, float out[4]) {
-  const int width = l.image->width;
-  const float u = texelCoordinate(s, width, l.wrapS) - 0.5f;
-  const float uFloor = std::floor(u);
-  const float alpha = u - uFloor;
-  int i0, i1;
-  wrapTexelPair(static_cast<int>(uFloor), width, l.wrapS, &i0, &i1);
-  float a[4], b[4];
+// The start of the LINEAR pair along one axis and its 8-bit weight (texel_filter.h).
+struct LinearPair {
+  int i0, i1, weight;
+};
+LinearPair linearPair(float s, int size, GLenum mode) {
+  const int fixed = texel_filter::fixedCoordinate(texelCoordinate(s, size, mode) - 0.5f);
+  LinearPair p;
+  wrapTexelPair(texel_filter::wholeTexel(fixed), size, mode, &p.i0, &p.i1);
+  p.weight = texel_filter::subtexelWeight(fixed);
+  return p;
+}
+
+FixedTexel linearColour(const LevelLookup& l, float s, float t) {
+  using texel_filter::mixTexels;
+  const LinearPair u = linearPair(s, l.image->width, l.wrapS);
+  FixedTexel out;
   if (!l.twoD) {
-    const float* t0 = fetchTexel(l, i0, 0, a);
-    const float* t1 = fetchTexel(l, i1, 0, b);
-    for (int c = 0; c < 4; ++c) out[c] = ((1.0f - alpha) * t0[c] + alpha * t1[c]) * (1.0f / 255.0f);
-    return;
+    const uint8_t* t0 = colourTexel(l, u.i0, 0);
+    const uint8_t* t1 = colourTexel(l, u.i1, 0);
+    for (int c = 0; c < 4; ++c) out[c] = mixTexels(t0[c], t1[c], u.weight);
+    return out;
   }
-  const int height = l.image->height;
-  const float v = texelCoordinate(t, height, l.wrapT) - 0.5f;
-  const float vFloor = std::floor(v);
-  const float beta = v - vFloor;
-  int j0, j1;
-  wrapTexelPair(static_cast<int>(vFloor), height, l.wrapT, &j0, &j1);
-  const float w00 = (1.0f - alpha) * (1.0f - beta), w10 = alpha * (1.0f - beta);
-  const float w01 = (1.0f - alpha) * beta, w11 = alpha * beta;
-  if (l.depth == nullptr && i0 >= 0 && i1 >= 0 && j0 >= 0 && j1 >= 0 && i0 < width && i1 < width && j0 < height && j1 < height) {
-    // All four texels inside the image (always so except near a CLAMP or CLAMP_TO_BORDER edge):
-    // read the bytes directly.
-    const uint8_t* p00 = l.image->texel(i0, j0, l.slice);
-    const uint8_t* p10 = l.image->texel(i1, j0, l.slice);
-    const uint8_t* p01 = l.image->texel(i0, j1, l.slice);
-    const uint8_t* p11 = l.image->texel(i1, j1, l.slice);
-    for (int c = 0; c < 4; ++c)
-      out[c] = (w00 * p00[c] + w10 * p10[c] + w01 * p01[c] + w11 * p11[c]) * (1.0f / 255.0f);
-    return;
-  }
-  float c00[4], c10[4], c01[4], c11[4];
-  const float* t00 = fetchTexel(l, i0, j0, c00);
-  const float* t10 = fetchTexel(l, i1, j0, c10);
-  const float* t01 = fetchTexel(l, i0, j1, c01);
-  const float* t11 = fetchTexel(l, i1, j1, c11);
+  const LinearPair v = linearPair(t, l.image->height, l.wrapT);
+  const uint8_t* t00 = colourTexel(l, u.i0, v.i0);
+  const uint8_t* t10 = colourTexel(l, u.i1, v.i0);
+  const uint8_t* t01 = colourTexel(l, u.i0, v.i1);
+  const uint8_t* t11 = colourTexel(l, u.i1, v.i1);
   for (int c = 0; c < 4; ++c)
-    out[c] = (w00 * t00[c] + w10 * t10[c] + w01 * t01[c] + w11 * t11[c]) * (1.0f / 255.0f);
+    out[c] = texel_filter::mixFixed(mixTexels(t00[c], t10[c], u.weight), mixTexels(t01[c], t11[c], u.weight),
+                                    texel_filter::rowWeight(v.weight));
+  return out;
+}
+
+FixedTexel mixColours(const FixedTexel& a, const FixedTexel& b, int weight) {
+  FixedTexel out;
+  for (int c = 0; c < 4; ++c) out[c] = texel_filter::mixFixed(a[c], b[c], weight);
+  return out;
 }
 
 // A 3D lookup (spec 3.8.8 with the third axis): NEAREST reads slice k = wrap(floor(w)),
 // LINEAR mixes the bilinear lookups of slices k0 = wrap(floor(w - 1/2)) and k1 = wrap(k0 + 1) by
 // gamma = frac(w - 1/2), w = r * depth; a slice outside the image is the border colour.
-void sampleVolume(LevelLookup l, bool linear, float s, float t, float r, GLenum wrapR,
-                  float out[4]) {
+FixedTexel volumeColour(LevelLookup l, bool linear, float s, float t, float r, GLenum wrapR) {
   const int depth = l.image->depth;
-  auto sampleSlice = [&](int k, float result[4]) {
+  auto sampleSlice = [&](int k) {
     if (k < 0 || k >= depth) {
-      for (int c = 0; c < 4; ++c) result[c] = l.border[c] * (1.0f / 255.0f);
-      return;
+      FixedTexel border;
+      for (int c = 0; c < 4; ++c) border[c] = texel_filter::fixedOfTexel(l.sampling->borderBytes[c]);
+      return border;
     }
     l.slice = k;
-    if (linear) {
-      sampleLinear(l, s, t, result);
-    } else {
-      sampleNearest(l, s, t, result);
-    }
+    return linear ? linearColour(l, s, t) : nearestColour(l, s, t);
   };
-  if (!linear) {
-    const float w = texelCoordinate(r, depth, wrapR);
-    sampleSlice(wrapTexelIndex(static_cast<int>(std::floor(w)), depth, wrapR, false), out);
-    return;
-  }
-  const float w = texelCoordinate(r, depth, wrapR) - 0.5f;
-  const float wFloor = std::floor(w);
-  const float gamma = w - wFloor;
-  int k0, k1;
-  wrapTexelPair(static_cast<int>(wFloor), depth, wrapR, &k0, &k1);
-  float a[4], b[4];
-  sampleSlice(k0, a);
-  sampleSlice(k1, b);
-  for (int c = 0; c < 4; ++c) out[c] = (1.0f - gamma) * a[c] + gamma * b[c];
+  if (!linear) return sampleSlice(wrapTexelIndex(floorToInt(texelCoordinate(r, depth, wrapR)), depth, wrapR, false));
+  const LinearPair w = linearPair(r, depth, wrapR);
+  return mixColours(sampleSlice(w.i0), sampleSlice(w.i1), texel_filter::rowWeight(w.weight));
 }
 
-void sampleLevel(const TextureObject& texture, int face, int level, bool linear, float s, float t,
-                 float r, float out[4]) {
-  DepthLookup depth;
-  const bool isDepth = depthLookupOf(texture, r, &depth);
+FixedTexel levelColour(const TextureObject& texture, int face, int level, bool linear, float s, float t, float r) {
   const LevelLookup l{&texture.image(face, level), texture.params.wrapS, texture.params.wrapT,
-                      texture.target != GL_TEXTURE_1D, texture.sampling.border, 0,
-                      isDepth ? &depth : nullptr};
-  if (texture.target == GL_TEXTURE_3D) {
-    sampleVolume(l, linear, s, t, r, texture.params.wrapR, out);
-  } else if (linear) {
-    sampleLinear(l, s, t, out);
-  } else {
-    sampleNearest(l, s, t, out);
+                      texture.target != GL_TEXTURE_1D, &texture.sampling};
+  if (texture.target == GL_TEXTURE_3D) return volumeColour(l, linear, s, t, r, texture.params.wrapR);
+  return linear ? linearColour(l, s, t) : nearestColour(l, s, t);
+}
+
+// Depth textures (1D or 2D) filter their values in float: texel values are depths or comparison
+// results (depth_comparison.h), components in [0, 255].
+void depthNearest(const DepthLookup& d, const TextureImage& image, bool twoD, GLenum wrapS, GLenum wrapT,
+                  float s, float t, float out[4]) {
+  const int i = wrapTexelIndex(floorToInt(texelCoordinate(s, image.width, wrapS)), image.width, wrapS, false);
+  const int j = twoD ? wrapTexelIndex(floorToInt(texelCoordinate(t, image.height, wrapT)), image.height, wrapT, false) : 0;
+  float scratch[4];
+  const float* texel = depthTexel(d, image, i, j, scratch);
+  for (int c = 0; c < 4; ++c) out[c] = texel[c] * (1.0f / 255.0f);
+}
+
+void depthLinear(const DepthLookup& d, const TextureImage& image, bool twoD, GLenum wrapS, GLenum wrapT,
+                 float s, float t, float out[4]) {
+  const float u = texelCoordinate(s, image.width, wrapS) - 0.5f;
+  const float uFloor = std::floor(u);
+  const float alpha = u - uFloor;
+  int i0, i1;
+  wrapTexelPair(static_cast<int>(uFloor), image.width, wrapS, &i0, &i1);
+  float a[4], b[4];
+  if (!twoD) {
+    const float* t0 = depthTexel(d, image, i0, 0, a);
+    const float* t1 = depthTexel(d, image, i1, 0, b);
+    for (int c = 0; c < 4; ++c) out[c] = ((1.0f - alpha) * t0[c] + alpha * t1[c]) * (1.0f / 255.0f);
+    return;
   }
+  const float v = texelCoordinate(t, image.height, wrapT) - 0.5f;
+  const float vFloor = std::floor(v);
+  const float beta = v - vFloor;
+  int j0, j1;
+  wrapTexelPair(static_cast<int>(vFloor), image.height, wrapT, &j0, &j1);
+  const float w00 = (1.0f - alpha) * (1.0f - beta), w10 = alpha * (1.0f - beta);
+  const float w01 = (1.0f - alpha) * beta, w11 = alpha * beta;
+  float c00[4], c10[4], c01[4], c11[4];
+  const float* t00 = depthTexel(d, image, i0, j0, c00);
+  const float* t10 = depthTexel(d, image, i1, j0, c10);
+  const float* t01 = depthTexel(d, image, i0, j1, c01);
+  const float* t11 = depthTexel(d, image, i1, j1, c11);
+  for (int c = 0; c < 4; ++c)
+    out[c] = (w00 * t00[c] + w10 * t10[c] + w01 * t01[c] + w11 * t11[c]) * (1.0f / 255.0f);
+}
+
+void depthLevel(const TextureObject& texture, const DepthLookup& d, int level, bool linear, float s, float t,
+                float out[4]) {
+  const bool twoD = texture.target != GL_TEXTURE_1D;
+  (linear ? depthLinear : depthNearest)(d, texture.image(0, level), twoD, texture.params.wrapS,
+                                        texture.params.wrapT, s, t, out);
+}
+
+// The levels a lookup reads (spec 3.8.8 and 3.8.9): one level, or two mixed by weight2.
+struct LevelsRead {
+  int level1, level2 = -1;
+  float weight2 = 0.0f;
+  bool linear;
+};
+LevelsRead levelsRead(const TextureObject& texture, float lambda) {
+  const SamplerParameters& p = texture.params;
+  if (lambda <= texture.sampling.switchOverPoint) return {p.baseLevel, -1, 0.0f, p.magFilter == GL_LINEAR};
+  if (p.minFilter == GL_NEAREST || p.minFilter == GL_LINEAR) return {p.baseLevel, -1, 0.0f, p.minFilter == GL_LINEAR};
+  const bool linearWithinLevel = p.minFilter == GL_LINEAR_MIPMAP_NEAREST || p.minFilter == GL_LINEAR_MIPMAP_LINEAR;
+  const MipmapLevels m = selectMipmapLevels(lambda, p.minFilter, p.baseLevel, texture.lastLevel);
+  const bool mixes = m.level2 != m.level1 && m.weight2 != 0.0f;
+  return {m.level1, mixes ? m.level2 : -1, m.weight2, linearWithinLevel};
+}
+
+void sampleLevels(const TextureObject& texture, const LevelsRead& read, float s, float t, float out[4], int face,
+                  float r) {
+  DepthLookup depth;
+  if (depthLookupOf(texture, r, &depth)) {
+    depthLevel(texture, depth, read.level1, read.linear, s, t, out);
+    if (read.level2 < 0) return;
+    float second[4];
+    depthLevel(texture, depth, read.level2, read.linear, s, t, second);
+    for (int c = 0; c < 4; ++c) out[c] = (1.0f - read.weight2) * out[c] + read.weight2 * second[c];
+    return;
+  }
+  FixedTexel colour = levelColour(texture, face, read.level1, read.linear, s, t, r);
+  if (read.level2 >= 0)
+    colour = mixColours(colour, levelColour(texture, face, read.level2, read.linear, s, t, r),
+                        texel_filter::levelWeight(read.weight2));
+  for (int c = 0; c < 4; ++c) out[c] = texel_filter::unitFromFixed(colour[c]);
 }
 
 }  // namespace
@@ -152,34 +208,13 @@ void borderTexel(const TextureObject& texture, float out[4]) {
 
 void sampleTextureMagnified(const TextureObject& texture, float s, float t, float out[4],
                             int face, float r) {
-  sampleLevel(texture, face, texture.params.baseLevel, texture.params.magFilter == GL_LINEAR, s, t,
-              r, out);
+  const LevelsRead base{texture.params.baseLevel, -1, 0.0f, texture.params.magFilter == GL_LINEAR};
+  sampleLevels(texture, base, s, t, out, face, r);
 }
 
 void sampleTexture(const TextureObject& texture, float s, float t, float lambda, float out[4],
                    int face, float r) {
-  const SamplerParameters& p = texture.params;
-  if (lambda <= texture.sampling.switchOverPoint) {
-    sampleTextureMagnified(texture, s, t, out, face, r);
-    return;
-  }
-  switch (p.minFilter) {
-    case GL_NEAREST:
-      sampleLevel(texture, face, p.baseLevel, false, s, t, r, out);
-      return;
-    case GL_LINEAR:
-      sampleLevel(texture, face, p.baseLevel, true, s, t, r, out);
-      return;
-    default:
-      break;
-  }
-  const bool linearWithinLevel = p.minFilter == GL_LINEAR_MIPMAP_NEAREST || p.minFilter == GL_LINEAR_MIPMAP_LINEAR;
-  const MipmapLevels m = selectMipmapLevels(lambda, p.minFilter, p.baseLevel, texture.lastLevel);
-  sampleLevel(texture, face, m.level1, linearWithinLevel, s, t, r, out);
-  if (m.level2 == m.level1 || m.weight2 == 0.0f) return;
-  float second[4];
-  sampleLevel(texture, face, m.level2, linearWithinLevel, s, t, r, second);
-  for (int c = 0; c < 4; ++c) out[c] = (1.0f - m.weight2) * out[c] + m.weight2 * second[c];
+  sampleLevels(texture, levelsRead(texture, lambda), s, t, out, face, r);
 }
 
 }  // namespace glass::gl
