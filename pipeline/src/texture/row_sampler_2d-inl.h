@@ -105,14 +105,6 @@ HWY_INLINE bool texelWordsFromOneRow(const Sampler2D::Level& level, M activeLane
   }
 }
 
-// Filtered texels of a row in texel_filter's fixed point, two components per 32-bit word:
-// masked[i] those of the texel word masked 0x00FF00FF, shifted[i] those of the word shifted
-// right by 8 (see inMaskedWord).
-struct FixedRow {
-  alignas(64) uint32_t masked[kRowPixels];
-  alignas(64) uint32_t shifted[kRowPixels];
-};
-
 // Operations on both 16-bit halves of each 32-bit lane: the lanes seen as twice as many 16-bit
 // lanes, or, for one-lane vectors (which have no such view), the two halves worked apart.
 #if HWY_TARGET == HWY_SCALAR
@@ -173,93 +165,104 @@ constexpr bool kLittleEndian = std::endian::native == std::endian::little;
 constexpr bool inMaskedWord(int c) { return (kLittleEndian ? c : 3 - c) % 2 == 0; }
 constexpr bool inHighHalf(int c) { return (kLittleEndian ? c : 3 - c) >= 2; }
 
-// Sampler2D's LINEAR lookup in a power-of-two GL_REPEAT level, for the pixels `i .. i + lanes
-// - 1` of the row whose bits are set in `lanes` and whose texel coordinates are below 2^20 in
-// magnitude (the others would need keepInIntRange's reduction): writes out's words for them
-// and returns them.
-inline unsigned bilinearRow(const Sampler2D::Level& level, const float* s, const float* t, unsigned lanes,
-                            FixedRow& out) {
+// A level's LINEAR lookups for one vector of the row's pixels: the coordinates scaled to the
+// level, s * width and t * height, and the lanes to look up (their coordinates below 2^20 in
+// magnitude; the others compute with 0 instead, so that no conversion overflows and every texel
+// read is inside the image). Writes the filtered texels, two components per lane in each of
+// `masked` (the components of the texel word masked 0x00FF00FF) and `shifted` (of the word
+// shifted right by 8): Sampler2D's sampleLinear in a power-of-two GL_REPEAT level.
+template <class VF, class M, class VU>
+HWY_INLINE void filterLevel(const Sampler2D::Level& level, VF uScaled, VF vScaled, M active, VU& masked,
+                            VU& shifted) {
   const RowTag f;
   const hn::RebindToSigned<RowTag> di;
   const hn::RebindToUnsigned<RowTag> du;
-  const int kLanes = static_cast<int>(hn::Lanes(f));
-  const auto half = hn::Set(f, 0.5f), limit = hn::Set(f, 1048576.0f), fixedScale = hn::Set(f, 256.0f);
-  const auto widthF = hn::Set(f, level.widthF), heightF = hn::Set(f, level.heightF);
+  const auto half = hn::Set(f, 0.5f);
+  // texel_filter::fixedCoordinate, then floorToInt: truncate, then one less where the
+  // truncation rounded up.
+  auto fixedCoordinate = [&](VF scaled) {
+    const auto x = hn::Add(hn::Mul(hn::Sub(hn::IfThenElseZero(active, scaled), half), hn::Set(f, 256.0f)), half);
+    const auto truncated = hn::ConvertTo(di, x);
+    const auto roundedUp = hn::RebindMask(di, hn::Gt(hn::ConvertTo(f, truncated), x));
+    return hn::IfThenElse(roundedUp, hn::Sub(truncated, hn::Set(di, 1)), truncated);
+  };
+  const auto u = fixedCoordinate(uScaled), v = fixedCoordinate(vScaled);
   const auto widthMask = hn::Set(di, level.width - 1), heightMask = hn::Set(di, level.height - 1);
-  const auto width = hn::Set(di, level.width);
-  const auto byteMask = hn::Set(du, 0x00FF00FFu);
-  const auto weightMask = hn::Set(di, 255);
-  unsigned done = 0;
-  for (int i = 0; i < kRowPixels; i += kLanes) {
-    const auto uScaled = hn::Mul(hn::Load(f, s + i), widthF);
-    const auto vScaled = hn::Mul(hn::Load(f, t + i), heightF);
-    const uint8_t laneBits[8] = {static_cast<uint8_t>(lanes >> i)};
-    const auto inRange = hn::And(hn::LoadMaskBits(f, laneBits),
-                                 hn::And(hn::Lt(hn::Abs(uScaled), limit), hn::Lt(hn::Abs(vScaled), limit)));
-    uint8_t inRangeBits[8] = {};
-    hn::StoreMaskBits(f, inRange, inRangeBits);
-    done |= static_cast<unsigned>(inRangeBits[0]) << i;
-    // texel_filter::fixedCoordinate. Other lanes compute with 0 instead, so that no conversion
-    // overflows and every texel read is inside the image.
-    auto fixedCoordinate = [&](auto scaled) {
-      const auto x = hn::Add(hn::Mul(hn::Sub(hn::IfThenElseZero(inRange, scaled), half), fixedScale), half);
-      // floorToInt: truncate, then one less where the truncation rounded up.
-      const auto truncated = hn::ConvertTo(di, x);
-      const auto roundedUp = hn::RebindMask(di, hn::Gt(hn::ConvertTo(f, truncated), x));
-      return hn::IfThenElse(roundedUp, hn::Sub(truncated, hn::Set(di, 1)), truncated);
-    };
-    const auto u = fixedCoordinate(uScaled), v = fixedCoordinate(vScaled);
-    const auto i0 = hn::And(hn::ShiftRight<8>(u), widthMask);
-    const auto i1 = hn::And(hn::Add(i0, hn::Set(di, 1)), widthMask);
-    const auto j0 = hn::And(hn::ShiftRight<8>(v), heightMask);
-    const auto j1 = hn::And(hn::Add(j0, hn::Set(di, 1)), heightMask);
-    decltype(hn::Zero(du)) words[4];
-    if (!texelWordsFromOneRow(level, inRange, i0, j0, words)) {
-      const auto row0 = j0 * width, row1 = j1 * width;
-      words[0] = texelWords(level.texels, hn::Add(row0, i0));
-      words[1] = texelWords(level.texels, hn::Add(row0, i1));
-      words[2] = texelWords(level.texels, hn::Add(row1, i0));
-      words[3] = texelWords(level.texels, hn::Add(row1, i1));
-    }
-    const auto a = inBothHalves(hn::BitCast(du, hn::And(u, weightMask)));
-    const auto notA = hn::Sub(hn::Set(du, 0x01000100u), a);
-    const auto rowWeight = hn::ShiftLeft<8>(inBothHalves(hn::BitCast(du, hn::And(v, weightMask))));
-    auto filter = [&](auto component) {  // component(word): two components in the halves
-      return mixHalves(mixTexelHalves(component(words[0]), component(words[1]), a, notA),
-                       mixTexelHalves(component(words[2]), component(words[3]), a, notA), rowWeight);
-    };
-    hn::Store(filter([&](auto w) { return hn::And(w, byteMask); }), du, out.masked + i);
-    hn::Store(filter([&](auto w) { return hn::And(hn::ShiftRight<8>(w), byteMask); }), du, out.shifted + i);
+  const auto i0 = hn::And(hn::ShiftRight<8>(u), widthMask);
+  const auto i1 = hn::And(hn::Add(i0, hn::Set(di, 1)), widthMask);
+  const auto j0 = hn::And(hn::ShiftRight<8>(v), heightMask);
+  const auto j1 = hn::And(hn::Add(j0, hn::Set(di, 1)), heightMask);
+  VU words[4];
+  if (!texelWordsFromOneRow(level, active, i0, j0, words)) {
+    const auto width = hn::Set(di, level.width);
+    const auto row0 = hn::Mul(j0, width), row1 = hn::Mul(j1, width);
+    words[0] = texelWords(level.texels, hn::Add(row0, i0));
+    words[1] = texelWords(level.texels, hn::Add(row0, i1));
+    words[2] = texelWords(level.texels, hn::Add(row1, i0));
+    words[3] = texelWords(level.texels, hn::Add(row1, i1));
   }
-  return done;
+  const auto weightMask = hn::Set(di, 255);
+  const auto a = inBothHalves(hn::BitCast(du, hn::And(u, weightMask)));
+  const auto notA = hn::Sub(hn::Set(du, 0x01000100u), a);
+  const auto rowWeight = hn::ShiftLeft<8>(inBothHalves(hn::BitCast(du, hn::And(v, weightMask))));
+  auto filter = [&](auto component) {  // component(word): two components in the halves
+    return mixHalves(mixTexelHalves(component(words[0]), component(words[1]), a, notA),
+                     mixTexelHalves(component(words[2]), component(words[3]), a, notA), rowWeight);
+  };
+  const auto byteMask = hn::Set(du, 0x00FF00FFu);
+  masked = filter([&](VU w) { return hn::And(w, byteMask); });
+  shifted = filter([&](VU w) { return hn::And(hn::ShiftRight<8>(w), byteMask); });
 }
 
 // The lookups of the pixels of `lanes`, which all read the levels of `choice` (a LINEAR one,
-// both levels power-of-two GL_REPEAT): first level, then the second and the mix where
-// choice.mixes and weight2[i] != 0 ... as Sampler2D::sampleChosen. Returns the pixels done.
+// both levels power-of-two GL_REPEAT), as Sampler2D::sampleChosen: the first level, then for
+// the pixels of mixedLanes the second and the mix by weight2[i]. Both levels are looked up in
+// one pass over the row's vectors. Returns the pixels done: those whose coordinates are below
+// 2^20 texels in magnitude (in both levels where they mix); the others take Sampler2D.
 inline unsigned sampleLevelPair(const Sampler2D& sampler, const Sampler2D::LevelChoice& choice,
                                 const float* s, const float* t, const uint32_t* weight2, unsigned lanes,
                                 unsigned mixedLanes, float texel[4][kRowPixels]) {
-  FixedRow first;
-  unsigned done = bilinearRow(sampler.level(choice.level1), s, t, lanes, first);
-  const unsigned mixed = mixedLanes & done;
-  FixedRow second;
-  const unsigned bothDone = mixed == 0 ? 0 : bilinearRow(sampler.level(choice.level2), s, t, mixed, second);
-  done &= ~(mixed & ~bothDone);  // a pixel whose second level fell outside takes Sampler2D
   const RowTag f;
   const hn::RebindToSigned<RowTag> di;
   const hn::RebindToUnsigned<RowTag> du;
   const int kLanes = static_cast<int>(hn::Lanes(f));
+  const Sampler2D::Level& first = sampler.level(choice.level1);
+  const Sampler2D::Level& second = sampler.level(choice.level2);
+  const auto limit = hn::Set(f, 1048576.0f);
+  auto inRange = [&](auto uScaled, auto vScaled) {
+    return hn::And(hn::Lt(hn::Abs(uScaled), limit), hn::Lt(hn::Abs(vScaled), limit));
+  };
+  auto laneMask = [&](unsigned bits, int i) {
+    const uint8_t laneBits[8] = {static_cast<uint8_t>(bits >> i)};
+    return hn::LoadMaskBits(f, laneBits);
+  };
+  auto maskBits = [&](auto mask, int i) {
+    uint8_t bits[8] = {};
+    hn::StoreMaskBits(f, mask, bits);
+    return static_cast<unsigned>(bits[0]) << i;
+  };
   const auto scale = hn::Set(f, 1.0f / 65280.0f);
   const auto lowHalf = hn::Set(du, 0xFFFFu);
+  unsigned done = 0;
   for (int i = 0; i < kRowPixels; i += kLanes) {
-    auto masked = hn::Load(du, first.masked + i), shifted = hn::Load(du, first.shifted + i);
-    if (bothDone != 0) {
-      const uint8_t mixBits[8] = {static_cast<uint8_t>(bothDone >> i)};
-      const auto mixesHere = hn::RebindMask(du, hn::LoadMaskBits(f, mixBits));
+    const auto sv = hn::Load(f, s + i), tv = hn::Load(f, t + i);
+    const auto uScaled = hn::Mul(sv, hn::Set(f, first.widthF)), vScaled = hn::Mul(tv, hn::Set(f, first.heightF));
+    const auto active = hn::And(laneMask(lanes, i), inRange(uScaled, vScaled));
+    decltype(hn::Zero(du)) masked, shifted;
+    filterLevel(first, uScaled, vScaled, active, masked, shifted);
+    done |= maskBits(active, i);
+    const auto mixing = hn::And(active, laneMask(mixedLanes, i));
+    if (!hn::AllFalse(f, mixing)) {
+      const auto uScaled2 = hn::Mul(sv, hn::Set(f, second.widthF));
+      const auto vScaled2 = hn::Mul(tv, hn::Set(f, second.heightF));
+      const auto mixes = hn::And(mixing, inRange(uScaled2, vScaled2));
+      done &= ~(maskBits(mixing, i) & ~maskBits(mixes, i));  // outside in the second level: Sampler2D
+      decltype(hn::Zero(du)) masked2, shifted2;
+      filterLevel(second, uScaled2, vScaled2, mixes, masked2, shifted2);
       const auto w = inBothHalves(hn::Load(du, weight2 + i));
-      masked = hn::IfThenElse(mixesHere, mixHalves(masked, hn::Load(du, second.masked + i), w), masked);
-      shifted = hn::IfThenElse(mixesHere, mixHalves(shifted, hn::Load(du, second.shifted + i), w), shifted);
+      const auto mixesHere = hn::RebindMask(du, mixes);
+      masked = hn::IfThenElse(mixesHere, mixHalves(masked, masked2, w), masked);
+      shifted = hn::IfThenElse(mixesHere, mixHalves(shifted, shifted2, w), shifted);
     }
     for (int c = 0; c < 4; ++c) {
       const auto pair = inMaskedWord(c) ? masked : shifted;
