@@ -1,11 +1,12 @@
-// The GL the scene library speaks: GL/gl.h, GL/glu.h and GL/glut.h of whichever implementation
-// the library is built against (glass's own headers, or the system's Mesa headers for the
-// reference renderer). Nothing else of the implementation is used.
+// The GL the scene library speaks: GL/gl.h, GL/glu.h and GL/freeglut.h (GLUT with freeglut's
+// shapes) of whichever implementation the library is built against (glass's own headers, or the
+// system's Mesa and freeglut headers for the reference renderer). Nothing else of the
+// implementation is used.
 #pragma once
 
 #include <GL/gl.h>
 #include <GL/glu.h>
-#include <GL/glut.h>
+#include <GL/freeglut.h>
 
 // glass extension GL_WIN_phong_shading (docs/scene-format.md, `shade_model phong`). Mesa's
 // headers lack the name; Mesa rejects the value and the interpreter falls back to smooth shading.

@@ -608,7 +608,11 @@ static const struct Entry entries[] = {
   ENTRY(glutWireIcosahedron),
   ENTRY(glutSolidTeapot),
   ENTRY(glutWireTeapot),
-  /* freeglut's further geometry (6) */
+  /* freeglut's further geometry (10) */
+  ENTRY(glutSolidTeacup),
+  ENTRY(glutWireTeacup),
+  ENTRY(glutSolidTeaspoon),
+  ENTRY(glutWireTeaspoon),
   ENTRY(glutSolidCylinder),
   ENTRY(glutWireCylinder),
   ENTRY(glutSolidRhombicDodecahedron),

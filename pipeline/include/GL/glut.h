@@ -338,6 +338,13 @@ GLAPI void GLAPIENTRY glutWireSierpinskiSponge(int num_levels, double offset[3],
  * triangles with texture coordinates; 10 x 10 wire, as line strips). */
 GLAPI void GLAPIENTRY glutSolidTeapot(GLdouble size);
 GLAPI void GLAPIENTRY glutWireTeapot(GLdouble size);
+/* freeglut's teacup and teaspoon from the same teaset, tessellated as freeglut does, to the
+ * teapot's scale for the same size: the cup upright on its saucer about the origin (y up, handle
+ * towards -x), the spoon lying along the z axis, its bowl towards -z. */
+GLAPI void GLAPIENTRY glutSolidTeacup(GLdouble size);
+GLAPI void GLAPIENTRY glutWireTeacup(GLdouble size);
+GLAPI void GLAPIENTRY glutSolidTeaspoon(GLdouble size);
+GLAPI void GLAPIENTRY glutWireTeaspoon(GLdouble size);
 
 /* The fonts: handles that are the addresses of these variables, declared and defined as freeglut
  * does on Unix (freeglut_std.h), so that a program written for freeglut compiles unchanged. */

@@ -17,7 +17,7 @@ struct ShapeMesh {
   };
   std::vector<float> positions;
   std::vector<float> normals;
-  std::vector<float> texCoords;  // s, t per vertex, or empty (only the solid teapot has them)
+  std::vector<float> texCoords;  // s, t per vertex, or empty (only the solid teaset has them)
   std::vector<Draw> draws;
 
   int vertexCount() const { return static_cast<int>(positions.size() / 3); }
@@ -48,9 +48,11 @@ ShapeMesh coneMesh(float base, float height, int slices, int stacks, bool wire);
 ShapeMesh cylinderMesh(float radius, float height, int slices, int stacks, bool wire);
 ShapeMesh torusMesh(float innerRadius, float outerRadius, int sides, int rings, bool wire);
 
-// The Utah teapot exactly as freeglut 3 tessellates it (teapot_mesh.cpp): 8 x 8 points per patch
+// The Utah teaset exactly as freeglut 3 tessellates it (teaset_mesh.cpp): 8 x 8 points per patch
 // as triangles with texture coordinates (solid), 10 x 10 as line strips (wire).
 ShapeMesh teapotMesh(float size, bool wire);
+ShapeMesh teacupMesh(float size, bool wire);
+ShapeMesh teaspoonMesh(float size, bool wire);
 
 // Sends the mesh to the current GL context as glBegin/glNormal3fv/glVertex3fv/glEnd.
 void drawShapeMesh(const ShapeMesh& mesh);

@@ -68,6 +68,8 @@ void Interpreter::Executor::run(const GlutShape &s) {
   case K::Cone: s.wire ? glutWireCone(a, b, s.slices, s.stacks) : glutSolidCone(a, b, s.slices, s.stacks); break;
   case K::Torus: s.wire ? glutWireTorus(a, b, s.slices, s.stacks) : glutSolidTorus(a, b, s.slices, s.stacks); break;
   case K::Teapot: s.wire ? glutWireTeapot(a) : glutSolidTeapot(a); break;
+  case K::Teacup: s.wire ? glutWireTeacup(a) : glutSolidTeacup(a); break;
+  case K::Teaspoon: s.wire ? glutWireTeaspoon(a) : glutSolidTeaspoon(a); break;
   case K::Tetrahedron: s.wire ? glutWireTetrahedron() : glutSolidTetrahedron(); break;
   case K::Octahedron: s.wire ? glutWireOctahedron() : glutSolidOctahedron(); break;
   case K::Dodecahedron: s.wire ? glutWireDodecahedron() : glutSolidDodecahedron(); break;

@@ -122,8 +122,8 @@ void Parser::parseGlutShape(StatementReader &r) {
     shape.sizes = {positive(r, "inner (tube) radius"), positive(r, "outer (ring) radius")};
     shape.slices = r.integer("sides", 3, kMaxDivisions);
     shape.stacks = r.integer("rings", 3, kMaxDivisions);
-  } else if (kind == "teapot") {
-    shape.kind = K::Teapot;
+  } else if (kind == "teapot" || kind == "teacup" || kind == "teaspoon") {
+    shape.kind = kind == "teapot" ? K::Teapot : (kind == "teacup" ? K::Teacup : K::Teaspoon);
     shape.sizes = {positive(r, "size")};
   } else if (kind == "tetrahedron") {
     shape.kind = K::Tetrahedron;

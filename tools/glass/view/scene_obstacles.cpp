@@ -223,9 +223,11 @@ private:
   }
   // freeglut 3's shapes: the cube of side `size`, spheres, the cone along +z from its base at
   // z = 0, the torus about z, the Platonic solids inside their circumscribed spheres (radius 1,
-  // the dodecahedron's sqrt 3) and the teapot of size s within x in [-1.5 s, 1.7625 s],
-  // y in [-0.7875 s, 0.7875 s], z in [-s, s] (pipeline/src/glut/teapot_mesh.cpp's scaling of
-  // Newell's data).
+  // the dodecahedron's sqrt 3), and the teaset within its control points' boxes as
+  // pipeline/src/glut/teaset_mesh.cpp scales them: the teapot of size s within x in
+  // [-1.5 s, 1.7625 s], y in [-0.7875 s, 0.7875 s], z in [-s, s]; the teacup (scaled by s / 5)
+  // within x and z in [-0.705 s, 0.705 s], y in [-0.3025 s, 0.3706 s]; the teaspoon within
+  // x in [-0.1008 s, 0.1008 s], y in [-0.0693 s, 0.0693 s], z in [-0.1558 s, 0.705 s].
   void visit(const scene::GlutShape &s) {
     using Kind = scene::GlutShape::Kind;
     if (s.wire) return; // lines
@@ -242,6 +244,10 @@ private:
       case Kind::Icosahedron: addCentredBox(1, 1, 1); break;
       case Kind::Dodecahedron: addCentredBox(std::sqrt(3.0), std::sqrt(3.0), std::sqrt(3.0)); break;
       case Kind::Teapot: addLocalBox({-1.5 * a, -0.7875 * a, -a}, {1.7625 * a, 0.7875 * a, a}); break;
+      case Kind::Teacup: addLocalBox({-0.705 * a, -0.3025 * a, -0.705 * a}, {0.705 * a, 0.3706 * a, 0.705 * a}); break;
+      case Kind::Teaspoon:
+        addLocalBox({-0.1008 * a, -0.0693 * a, -0.1558 * a}, {0.1008 * a, 0.0693 * a, 0.705 * a});
+        break;
     }
   }
   // The exam's torus about the y axis.

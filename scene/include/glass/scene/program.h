@@ -165,7 +165,7 @@ struct Cylinder { Number base, top, height; int slices = 32, stacks = 1; Quadric
 struct Disk { Number inner, outer; int slices = 32, loops = 1; QuadricStyle style; };
 struct PartialDisk { Number inner, outer; int slices = 32, loops = 1; Number start, sweep; QuadricStyle style; };
 struct GlutShape {                                          // glutSolid* / glutWire*
-  enum class Kind { Cube, Sphere, Cone, Torus, Tetrahedron, Octahedron, Dodecahedron, Icosahedron, Teapot };
+  enum class Kind { Cube, Sphere, Cone, Torus, Tetrahedron, Octahedron, Dodecahedron, Icosahedron, Teapot, Teacup, Teaspoon };
   Kind kind = Kind::Cube;
   bool wire = false;
   Numbers sizes; // cube: size; sphere: radius; cone: base, height; torus: inner, outer; teapot: size

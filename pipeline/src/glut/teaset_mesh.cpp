@@ -1,91 +1,26 @@
-// The Utah teapot as freeglut 3 builds it, so that glutSolidTeapot and glutWireTeapot draw the
-// same triangles and lines with glass as with freeglut (Mesa's reference images use freeglut).
-//
-// The data: Newell's teapot in the arrangement freeglut 3 uses: ten bicubic patches over 129
-// control points (z up, standing on z = 0). The rim, the two body patches, the two lid patches
-// and the bottom cover one quadrant and are copied into the other three by turning about the
-// vertical axis; the handle and spout patches cover one side and are mirrored to the other.
+// The Utah teaset as freeglut 3 builds it, so that glutSolidTeapot, glutSolidTeacup,
+// glutSolidTeaspoon and their wire forms draw the same triangles and lines with glass as with
+// freeglut (Mesa's reference images use freeglut). The patches are glut/teaset_data.h's.
 //
 // The arithmetic follows freeglut's, in float and in the same order, because the pictures are
 // compared pixel by pixel: control points are turned to y up and scaled first,
-//   (x, y, z) -> (x * size / 2, (z - 1.575) * size / 2, -y * size / 2),
-// then each patch is evaluated on an n x n grid (n = 8 solid, 10 wire) from tabulated Bernstein
-// polynomials and their derivatives; the normal is the normalized cross product of the two
-// partial derivatives (along the patch's second index, then its first); the copies turn or
-// mirror the evaluated points and normals. Solid grid quads become triangles (a, b, c), (a, c, d)
-// with a = (r, c), b = (r + 1, c), c = (r + 1, c + 1), d = (r, c + 1); the wire teapot is line
-// strips along each grid direction, all patches' first direction first.
+//   (x, y, z) -> (x * scale / 2, (z - centre height) * scale / 2, -y * scale / 2),
+// (scale = size for the teapot, size / 2.5 for the teacup and the teaspoon) then each patch is
+// evaluated on an n x n grid (n = 8 solid, 10 wire) from tabulated Bernstein polynomials and
+// their derivatives; the normal is the normalized cross product of the two partial derivatives
+// (along the patch's second index, then its first); the copies turn or mirror the evaluated
+// points and normals. Solid grid quads become triangles (a, b, c), (a, c, d) with a = (r, c),
+// b = (r + 1, c), c = (r + 1, c + 1), d = (r, c + 1); the wire forms are line strips along each
+// grid direction, all patches' first direction first.
 #include <cmath>
 #include <cstddef>
 
 #include "glut/shape_mesh.h"
+#include "glut/teaset_data.h"
 
 namespace glass::gl::glut {
 
 namespace {
-
-constexpr int kPatchCount = 10;
-constexpr int kTurnedPatches = 6;  // the first six are copied into all four quadrants
-constexpr float kCentreHeight = 1.575f;
-
-constexpr int kPatches[kPatchCount][16] = {
-    {0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15},                  // rim
-    {12, 13, 14, 15, 16, 17, 18, 19, 20, 21, 22, 23, 24, 25, 26, 27},        // body
-    {24, 25, 26, 27, 28, 29, 30, 31, 32, 33, 34, 35, 36, 37, 38, 39},
-    {40, 41, 42, 40, 43, 44, 45, 46, 47, 47, 47, 47, 48, 49, 50, 51},        // lid
-    {48, 49, 50, 51, 52, 53, 54, 55, 56, 57, 58, 59, 60, 61, 62, 63},
-    {64, 64, 64, 64, 65, 66, 67, 68, 69, 70, 71, 72, 39, 38, 37, 36},        // bottom
-    {73, 74, 75, 76, 77, 78, 79, 80, 81, 82, 83, 84, 85, 86, 87, 88},        // handle
-    {85, 86, 87, 88, 89, 90, 91, 92, 93, 94, 95, 96, 97, 98, 99, 100},
-    {101, 102, 103, 104, 105, 106, 107, 108, 109, 110, 111, 112, 113, 114, 115, 116},  // spout
-    {113, 114, 115, 116, 117, 118, 119, 120, 121, 122, 123, 124, 125, 126, 127, 128},
-};
-
-constexpr float kControlPoints[129][3] = {
-    {1.4f, 0.0f, 2.4f}, {1.4f, -0.784f, 2.4f}, {0.784f, -1.4f, 2.4f},
-    {0.0f, -1.4f, 2.4f}, {1.3375f, 0.0f, 2.53125f}, {1.3375f, -0.749f, 2.53125f},
-    {0.749f, -1.3375f, 2.53125f}, {0.0f, -1.3375f, 2.53125f}, {1.4375f, 0.0f, 2.53125f},
-    {1.4375f, -0.805f, 2.53125f}, {0.805f, -1.4375f, 2.53125f}, {0.0f, -1.4375f, 2.53125f},
-    {1.5f, 0.0f, 2.4f}, {1.5f, -0.84f, 2.4f}, {0.84f, -1.5f, 2.4f},
-    {0.0f, -1.5f, 2.4f}, {1.75f, 0.0f, 1.875f}, {1.75f, -0.98f, 1.875f},
-    {0.98f, -1.75f, 1.875f}, {0.0f, -1.75f, 1.875f}, {2.0f, 0.0f, 1.35f},
-    {2.0f, -1.12f, 1.35f}, {1.12f, -2.0f, 1.35f}, {0.0f, -2.0f, 1.35f},
-    {2.0f, 0.0f, 0.9f}, {2.0f, -1.12f, 0.9f}, {1.12f, -2.0f, 0.9f},
-    {0.0f, -2.0f, 0.9f}, {2.0f, 0.0f, 0.45f}, {2.0f, -1.12f, 0.45f},
-    {1.12f, -2.0f, 0.45f}, {0.0f, -2.0f, 0.45f}, {1.5f, 0.0f, 0.225f},
-    {1.5f, -0.84f, 0.225f}, {0.84f, -1.5f, 0.225f}, {0.0f, -1.5f, 0.225f},
-    {1.5f, 0.0f, 0.15f}, {1.5f, -0.84f, 0.15f}, {0.84f, -1.5f, 0.15f},
-    {0.0f, -1.5f, 0.15f}, {0.0f, 0.0f, 3.15f}, {0.0f, -0.002f, 3.15f},
-    {0.002f, 0.0f, 3.15f}, {0.8f, 0.0f, 3.15f}, {0.8f, -0.45f, 3.15f},
-    {0.45f, -0.8f, 3.15f}, {0.0f, -0.8f, 3.15f}, {0.0f, 0.0f, 2.85f},
-    {0.2f, 0.0f, 2.7f}, {0.2f, -0.112f, 2.7f}, {0.112f, -0.2f, 2.7f},
-    {0.0f, -0.2f, 2.7f}, {0.4f, 0.0f, 2.55f}, {0.4f, -0.224f, 2.55f},
-    {0.224f, -0.4f, 2.55f}, {0.0f, -0.4f, 2.55f}, {1.3f, 0.0f, 2.55f},
-    {1.3f, -0.728f, 2.55f}, {0.728f, -1.3f, 2.55f}, {0.0f, -1.3f, 2.55f},
-    {1.3f, 0.0f, 2.4f}, {1.3f, -0.728f, 2.4f}, {0.728f, -1.3f, 2.4f},
-    {0.0f, -1.3f, 2.4f}, {0.0f, 0.0f, 0.0f}, {0.0f, -1.425f, 0.0f},
-    {0.798f, -1.425f, 0.0f}, {1.425f, -0.798f, 0.0f}, {1.425f, 0.0f, 0.0f},
-    {0.0f, -1.5f, 0.075f}, {0.84f, -1.5f, 0.075f}, {1.5f, -0.84f, 0.075f},
-    {1.5f, 0.0f, 0.075f}, {-1.6f, 0.0f, 2.025f}, {-1.6f, -0.3f, 2.025f},
-    {-1.5f, -0.3f, 2.25f}, {-1.5f, 0.0f, 2.25f}, {-2.3f, 0.0f, 2.025f},
-    {-2.3f, -0.3f, 2.025f}, {-2.5f, -0.3f, 2.25f}, {-2.5f, 0.0f, 2.25f},
-    {-2.7f, 0.0f, 2.025f}, {-2.7f, -0.3f, 2.025f}, {-3.0f, -0.3f, 2.25f},
-    {-3.0f, 0.0f, 2.25f}, {-2.7f, 0.0f, 1.8f}, {-2.7f, -0.3f, 1.8f},
-    {-3.0f, -0.3f, 1.8f}, {-3.0f, 0.0f, 1.8f}, {-2.7f, 0.0f, 1.575f},
-    {-2.7f, -0.3f, 1.575f}, {-3.0f, -0.3f, 1.35f}, {-3.0f, 0.0f, 1.35f},
-    {-2.5f, 0.0f, 1.125f}, {-2.5f, -0.3f, 1.125f}, {-2.65f, -0.3f, 0.9375f},
-    {-2.65f, 0.0f, 0.9375f}, {-2.0f, 0.0f, 0.9f}, {-2.0f, -0.3f, 0.9f},
-    {-1.9f, -0.3f, 0.6f}, {-1.9f, 0.0f, 0.6f}, {1.7f, 0.0f, 1.425f},
-    {1.7f, -0.66f, 1.425f}, {1.7f, -0.66f, 0.6f}, {1.7f, 0.0f, 0.6f},
-    {2.6f, 0.0f, 1.425f}, {2.6f, -0.66f, 1.425f}, {3.1f, -0.66f, 0.825f},
-    {3.1f, 0.0f, 0.825f}, {2.3f, 0.0f, 2.1f}, {2.3f, -0.25f, 2.1f},
-    {2.4f, -0.25f, 2.025f}, {2.4f, 0.0f, 2.025f}, {2.7f, 0.0f, 2.4f},
-    {2.7f, -0.25f, 2.4f}, {3.3f, -0.25f, 2.4f}, {3.3f, 0.0f, 2.4f},
-    {2.8f, 0.0f, 2.475f}, {2.8f, -0.25f, 2.475f}, {3.525f, -0.25f, 2.49375f},
-    {3.525f, 0.0f, 2.49375f}, {2.9f, 0.0f, 2.475f}, {2.9f, -0.15f, 2.475f},
-    {3.45f, -0.15f, 2.5125f}, {3.45f, 0.0f, 2.5125f}, {2.8f, 0.0f, 2.4f},
-    {2.8f, -0.15f, 2.4f}, {3.2f, -0.15f, 2.4f}, {3.2f, 0.0f, 2.4f},
-};
 
 // The cubic Bernstein polynomials B_i(x) and their derivatives at the n grid values x = s/(n-1).
 struct BernsteinTable {
@@ -183,25 +118,27 @@ void appendMirrored(ShapeMesh& mesh, const Grid& points, const Grid& normals, in
     }
 }
 
-}  // namespace
-
-ShapeMesh teapotMesh(float size, bool wire) {
+// The mesh of one piece at `scale`, as freeglut's fghTeaset makes it.
+ShapeMesh teasetMesh(const TeasetPiece& piece, float scale, bool wire) {
   const int n = wire ? 10 : 8;
   const BernsteinTable bernstein = bernsteinTable(n);
+  constexpr int kTurnedPatches = 6;  // with turnsAndMirrors, the first six go into all four quadrants
   ShapeMesh mesh;
   Grid points, normals;
-  for (int p = 0; p < kPatchCount; ++p) {
+  for (int p = 0; p < static_cast<int>(piece.patches.size()); ++p) {
     float cp[4][4][3];
     for (int i = 0; i < 16; ++i) {
-      const float* source = kControlPoints[kPatches[p][i]];
-      cp[i / 4][i % 4][0] = source[0] * size / 2.0f;
-      cp[i / 4][i % 4][1] = (source[2] - kCentreHeight) * size / 2.0f;
-      cp[i / 4][i % 4][2] = -source[1] * size / 2.0f;
+      const float* source = piece.controlPoints[static_cast<std::size_t>(piece.patches[static_cast<std::size_t>(p)][i])];
+      cp[i / 4][i % 4][0] = source[0] * scale / 2.0f;
+      cp[i / 4][i % 4][1] = (source[2] - piece.centreHeight) * scale / 2.0f;
+      cp[i / 4][i % 4][2] = -source[1] * scale / 2.0f;
     }
     evaluatePatch(cp, n, bernstein, points, normals);
-    if (p == 3) fixCollapsedRow(normals, n, 1.0f);
-    if (p == 5) fixCollapsedRow(normals, n, -1.0f);
-    if (p < kTurnedPatches) {
+    if (piece.fixesCollapsedRows && p == 3) fixCollapsedRow(normals, n, 1.0f);
+    if (piece.fixesCollapsedRows && p == 5) fixCollapsedRow(normals, n, -1.0f);
+    if (!piece.turnsAndMirrors) {
+      appendTurned(mesh, points, normals, 0);
+    } else if (p < kTurnedPatches) {
       for (int turn = 0; turn < 4; ++turn) appendTurned(mesh, points, normals, turn);
     } else {
       appendTurned(mesh, points, normals, 0);
@@ -244,5 +181,11 @@ ShapeMesh teapotMesh(float size, bool wire) {
   mesh.draws.push_back(std::move(triangles));
   return mesh;
 }
+
+}  // namespace
+
+ShapeMesh teapotMesh(float size, bool wire) { return teasetMesh(kTeapot, size, wire); }
+ShapeMesh teacupMesh(float size, bool wire) { return teasetMesh(kTeacup, size / 2.5f, wire); }
+ShapeMesh teaspoonMesh(float size, bool wire) { return teasetMesh(kTeaspoon, size / 2.5f, wire); }
 
 }  // namespace glass::gl::glut
