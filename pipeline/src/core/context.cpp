@@ -9,9 +9,40 @@
 
 namespace glass::gl {
 
+namespace {
+
+// Swaps `other` in as ctx's framebuffer and makes the draw pipeline over it (its tiles cover the
+// framebuffer it is made for); if that throws, swaps back, and ctx keeps what it had.
+void drawIntoFramebuffer(Context& ctx, raster::Framebuffer& other) {
+  std::swap(ctx.framebuffer, other);
+  try {
+    ctx.draw = std::make_unique<DrawPipeline>(ctx);
+  } catch (...) {
+    std::swap(ctx.framebuffer, other);
+    throw;
+  }
+}
+
+}  // namespace
+
 Context::Context(int width, int height)
     : framebuffer(width, height), draw(std::make_unique<DrawPipeline>(*this)) {
+  startInInitialState();
+}
+
+Context::Context(raster::Framebuffer& taken) : framebuffer(1, 1) {
+  drawIntoFramebuffer(*this, taken);
+  try {
+    startInInitialState();
+  } catch (...) {
+    std::swap(framebuffer, taken);
+    throw;
+  }
+}
+
+void Context::startInInitialState() {
   // Spec 2.11.1 and 4.1.2: the viewport and the scissor box start as the whole window.
+  const int width = framebuffer.width(), height = framebuffer.height();
   transform.viewport = Viewport{0, 0, width, height};
   fragment.scissor = ScissorBox{0, 0, width, height};
   attachTeachingViewFromEnvironment(*this);
@@ -28,34 +59,23 @@ Context::~Context() {
 
 void resizeFramebuffer(Context& ctx, int width, int height) {
   finishQueuedDrawing(ctx);
-  // The draw pipeline's tiles cover the framebuffer it is made for: it is made again after.
   raster::Framebuffer resized(width, height);
-  std::swap(ctx.framebuffer, resized);
-  try {
-    ctx.draw = std::make_unique<DrawPipeline>(ctx);
-  } catch (...) {
-    std::swap(ctx.framebuffer, resized);
-    throw;
-  }
+  drawIntoFramebuffer(ctx, resized);
   std::vector<int16_t>().swap(ctx.accumulation.buffer);
 }
 
 std::unique_ptr<Context> contextInInitialState(Context& previous) {
   finishQueuedDrawing(previous);
-  // Everything that can throw comes first, while previous is untouched: the fresh context with a
-  // framebuffer of one pixel, its view, then its draw pipeline over the framebuffer taken over.
-  auto fresh = std::make_unique<Context>(1, 1);
-  setTeachingView(*fresh, teachingViewOf(previous));
-  std::swap(fresh->framebuffer, previous.framebuffer);
+  // Everything that can throw comes first, while previous is untouched but for its framebuffer,
+  // which the fresh context gives back if it throws: the fresh context over that framebuffer
+  // (one draw pipeline, made once), then its view.
+  auto fresh = std::make_unique<Context>(previous.framebuffer);
   try {
-    fresh->draw = std::make_unique<DrawPipeline>(*fresh);
+    setTeachingView(*fresh, teachingViewOf(previous));
   } catch (...) {
     std::swap(fresh->framebuffer, previous.framebuffer);
     throw;
   }
-  const int width = fresh->framebuffer.width(), height = fresh->framebuffer.height();
-  fresh->transform.viewport = Viewport{0, 0, width, height};
-  fresh->fragment.scissor = ScissorBox{0, 0, width, height};
   fresh->buffers = previous.buffers;
   fresh->lists.lists = previous.lists.lists;
   fresh->texture.names = previous.texture.names;

@@ -63,6 +63,9 @@ class DrawPipeline;
 
 struct Context {
   Context(int width, int height);  // throws std::bad_alloc when memory runs out
+  // A context in the initial state drawing into `framebuffer`, which it takes; if the
+  // constructor throws (std::bad_alloc), `framebuffer` is left as it was.
+  explicit Context(raster::Framebuffer& framebuffer);
   ~Context();
   Context(const Context&) = delete;
   Context& operator=(const Context&) = delete;
@@ -97,6 +100,10 @@ struct Context {
   // glassSetFlushCallback): called by glFlush and glFinish once the queued drawing is in the
   // framebuffer, with the context current.
   std::function<void(Context&)> afterFlush;
+
+ private:
+  // The viewport and scissor box over the framebuffer, and what the environment attaches.
+  void startInInitialState();
 };
 
 // Gives the context a framebuffer of another size (OSMesaMakeCurrent to a buffer of another
