@@ -158,9 +158,10 @@ HWY_INLINE VU inBothHalves(VU v) {
   return hn::Or(v, hn::ShiftLeft<16>(v));
 }
 
-// Where a texel word's components land in FixedRow (bytes in memory order R, G, B, A): the
-// word masked 0x00FF00FF holds the components of bytes 0 and 2, the word shifted right by 8 and
-// masked those of bytes 1 and 3; component c is in the low half of one of them or the high.
+// Where a texel word's components land in filterLevel's results (bytes in memory order R, G, B,
+// A): the word masked 0x00FF00FF (`masked`) holds the components of bytes 0 and 2, the word
+// shifted right by 8 and masked (`shifted`) those of bytes 1 and 3; component c is in the low
+// half of one of them or the high.
 constexpr bool kLittleEndian = std::endian::native == std::endian::little;
 constexpr bool inMaskedWord(int c) { return (kLittleEndian ? c : 3 - c) % 2 == 0; }
 constexpr bool inHighHalf(int c) { return (kLittleEndian ? c : 3 - c) >= 2; }
