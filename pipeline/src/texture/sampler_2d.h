@@ -91,7 +91,6 @@ class Sampler2D {
                         wrapS_ == GL_REPEAT && wrapT_ == GL_REPEAT && powerOfTwo};
     }
     std::memcpy(borderBytes_, texture.sampling.borderBytes, sizeof borderBytes_);
-    border_ = texelLanes(borderBytes_) * texel_filter::kWeightOne;
   }
 
   // The levels a lookup reads and how (sampleTexture's choice, section 3.8.8): level1 alone, or
@@ -160,8 +159,8 @@ class Sampler2D {
     const float v = coordinate(t, level.height, level.heightF, wrapT_);
     const int i = wrapTexelIndex(floorToInt(u), level.width, wrapS_, false);
     const int j = wrapTexelIndex(floorToInt(v), level.height, wrapT_, false);
-    if (i < 0 || i >= level.width || j < 0 || j >= level.height) return border_;
-    return texelLanes(texelAt(level, i, j)) * texel_filter::kWeightOne;
+    const bool inside = i >= 0 && i < level.width && j >= 0 && j < level.height;
+    return texelLanes(inside ? texelAt(level, i, j) : borderBytes_) * texel_filter::kWeightOne;
   }
 
   // Inline for the common case (see repeatsByMask), a call for the others.
@@ -214,8 +213,7 @@ class Sampler2D {
   float switchOverPoint_;
   bool magnifyLinear_, linearWithinLevel_, mipmapped_;
   Level levels_[kMaxTextureLevels] = {};
-  FixedLanes border_;         // the border texel, in fixed point
-  uint8_t borderBytes_[4];  // and as bytes
+  uint8_t borderBytes_[4];  // the border texel
 };
 
 }  // namespace glass::gl

@@ -38,11 +38,9 @@ void TextureObject::updateCompleteness() {
         f.internalFormat != b.internalFormat || f.border != b.border)
       return;
   }
-  borderTexel(*this, sampling.border);
-  for (int c = 0; c < 4; ++c) {
-    sampling.border[c] = std::round(sampling.border[c] * 255.0f);
-    sampling.borderBytes[c] = static_cast<uint8_t>(sampling.border[c]);
-  }
+  float border[4];
+  borderTexel(*this, border);
+  for (int c = 0; c < 4; ++c) sampling.borderBytes[c] = static_cast<uint8_t>(std::round(border[c] * 255.0f));
   sampling.switchOverPoint = magnificationSwitchOverPoint(params.minFilter, params.magFilter);
   if (!isMipmapFilter(params.minFilter)) {
     complete = true;

@@ -71,9 +71,8 @@ struct TextureObject : std::enable_shared_from_this<TextureObject> {
   // Values every lookup needs, derived from the parameters and the base level's format by
   // updateCompleteness() so that they are not recomputed per fragment.
   struct Sampling {
-    // The border texel as a colour texel: components rounded to 8 bits (as the texels of
-    // the images are), as floats in [0, 255] and as bytes.
-    float border[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+    // The border texel as a colour texel: components rounded to 8 bits, as the texels of the
+    // images are.
     uint8_t borderBytes[4] = {0, 0, 0, 0};
     float switchOverPoint = 0.0f;                 // c of spec 3.8.9
   } sampling;

@@ -29,6 +29,13 @@ const uint8_t* colourTexel(const LevelLookup& l, int i, int j) {
   return l.image->texel(i, j, l.slice);
 }
 
+// A whole texel (or the border's) as a filtered value.
+FixedTexel unfilteredTexel(const uint8_t* texel) {
+  FixedTexel out;
+  for (int c = 0; c < 4; ++c) out[c] = texel_filter::fixedOfTexel(texel[c]);
+  return out;
+}
+
 FixedTexel nearestColour(const LevelLookup& l, float s, float t) {
   const int width = l.image->width;
   const int i = wrapTexelIndex(floorToInt(texelCoordinate(s, width, l.wrapS)), width, l.wrapS, false);
@@ -37,10 +44,7 @@ FixedTexel nearestColour(const LevelLookup& l, float s, float t) {
     const int height = l.image->height;
     j = wrapTexelIndex(floorToInt(texelCoordinate(t, height, l.wrapT)), height, l.wrapT, false);
   }
-  const uint8_t* texel = colourTexel(l, i, j);
-  FixedTexel out;
-  for (int c = 0; c < 4; ++c) out[c] = texel_filter::fixedOfTexel(texel[c]);
-  return out;
+  return unfilteredTexel(colourTexel(l, i, j));
 }
 
 // The start of the LINEAR pair along one axis and its 8-bit weight (texel_filter.h).
@@ -88,11 +92,7 @@ FixedTexel mixColours(const FixedTexel& a, const FixedTexel& b, int weight) {
 FixedTexel volumeColour(LevelLookup l, bool linear, float s, float t, float r, GLenum wrapR) {
   const int depth = l.image->depth;
   auto sampleSlice = [&](int k) {
-    if (k < 0 || k >= depth) {
-      FixedTexel border;
-      for (int c = 0; c < 4; ++c) border[c] = texel_filter::fixedOfTexel(l.sampling->borderBytes[c]);
-      return border;
-    }
+    if (k < 0 || k >= depth) return unfilteredTexel(l.sampling->borderBytes);
     l.slice = k;
     return linear ? linearColour(l, s, t) : nearestColour(l, s, t);
   };
