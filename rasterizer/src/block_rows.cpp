@@ -2,7 +2,7 @@
 // (hwy/foreach_target.h re-includes this file per target).
 //
 // What each lane computes, and why every target gives the same bits:
-//   coverage   the three edge values at the pixel centre, as 64-bit integers: the row's start
+//   coverage   the three (four) edge values at the pixel centre, as 64-bit integers: the row's start
 //              plus the column's step (both exact), OR-ed; the centre is inside when the sign
 //              bit is clear (edge_functions.h: "E + bias - 1 >= 0" for all three).
 //   depth      depthValue(column + row) of depth_value.h: one double addition, the clamps to
@@ -35,14 +35,15 @@ namespace hn = hwy::HWY_NAMESPACE;
 
 constexpr int kSize = BlockRows::kSize;
 
-// Bit i: column i's centre of the current row is inside the three edges.
-unsigned rowCoverage(const BlockRows& rows, const int64_t rowStart[3]) {
+// Bit i: column i's centre of the current row is inside the kEdges edges.
+template <int kEdges>
+unsigned rowCoverage(const BlockRows& rows, const int64_t rowStart[kEdges]) {
   const hn::CappedTag<int64_t, kSize> d;
   const int lanes = static_cast<int>(hn::Lanes(d));
   unsigned outside = 0;
   for (int i = 0; i < kSize; i += lanes) {
     auto any = hn::Zero(d);
-    for (int k = 0; k < 3; ++k)
+    for (int k = 0; k < kEdges; ++k)
       any = hn::Or(any, hn::Add(hn::Set(d, rowStart[k]), hn::LoadU(d, rows.columnStep[k] + i)));
     uint8_t bits[8] = {};
     hn::StoreMaskBits(d, hn::Lt(any, hn::Zero(d)), bits);
@@ -97,18 +98,18 @@ unsigned rowDepthPasses(const BlockRows& rows, const PassingOrders& passing, int
   return ((less & passing.less) | (equal & passing.equal) | (greater & passing.greater)) & rows.columns;
 }
 
-}  // namespace
-
-bool CoverBlockRows(const BlockRows& rows, CoveredBlock& block) {
+template <int kEdges>
+bool coverRows(const BlockRows& rows, CoveredBlock& block) {
   std::memset(block.rowMask, 0, sizeof block.rowMask);
-  int64_t rowStart[3] = {rows.rowStart[0], rows.rowStart[1], rows.rowStart[2]};
+  int64_t rowStart[kEdges];
+  for (int k = 0; k < kEdges; ++k) rowStart[k] = rows.rowStart[k];
   const PassingOrders passing(rows.compare);
   bool any = false;
   for (int j = rows.firstRow; j < rows.endRow; ++j) {
     unsigned mask = rows.columns;
     if (!rows.accepted) {
-      mask &= rowCoverage(rows, rowStart);
-      for (int k = 0; k < 3; ++k) rowStart[k] += rows.stepY[k];
+      mask &= rowCoverage<kEdges>(rows, rowStart);
+      for (int k = 0; k < kEdges; ++k) rowStart[k] += rows.stepY[k];
     }
     if (mask == 0) continue;
     if (rows.depthColumn != nullptr) {
@@ -121,6 +122,12 @@ bool CoverBlockRows(const BlockRows& rows, CoveredBlock& block) {
     any |= mask != 0;
   }
   return any;
+}
+
+}  // namespace
+
+bool CoverBlockRows(const BlockRows& rows, CoveredBlock& block) {
+  return rows.edgeCount == 4 ? coverRows<4>(rows, block) : coverRows<3>(rows, block);
 }
 
 void BlockDepthRange(const uint32_t* stored, ptrdiff_t stride, int rowCount, uint32_t& lowest,

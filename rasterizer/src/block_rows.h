@@ -1,5 +1,5 @@
 // The rows of one 8x8 block of the triangle walk (triangle_rasterize.cpp): which pixel centres
-// are inside the three edges, their depths, and the early depth test, the eight columns of a row
+// are inside the three edges (a quadrilateral's four), their depths, and the early depth test, the eight columns of a row
 // as lanes of vectors. Compiled for every SIMD target (glass/raster/simd_target.h); each gives
 // the reference's values to the bit (integers for the edges, one IEEE operation per lane for the
 // depth), which the unit test block_rows compares pixel by pixel against a plain evaluation.
@@ -16,12 +16,15 @@ namespace glass::raster {
 
 struct BlockRows {
   static constexpr int kSize = CoveredBlock::kSize;
-  // Edge k at the centre of pixel (bx + i, by + j) is rowStart[k] + columnStep[k][i] for row
-  // j = firstRow; each next row adds stepY[k]. columnStep[k][i] = i * (edge k's step in x).
-  int64_t rowStart[3];
+  static constexpr int kMaxEdges = 4;
+  // Edge k (k < edgeCount: 3, or 4 for a quadrilateral) at the centre of pixel (bx + i, by + j)
+  // is rowStart[k] + columnStep[k][i] for row j = firstRow; each next row adds stepY[k].
+  // columnStep[k][i] = i * (edge k's step in x).
+  int edgeCount = 3;
+  int64_t rowStart[kMaxEdges];
   const int64_t (*columnStep)[kSize];
-  int64_t stepY[3];
-  bool accepted;      // every centre of the block is inside all three edges: no coverage test
+  int64_t stepY[kMaxEdges];
+  bool accepted;      // every centre of the block is inside all the edges: no coverage test
   unsigned columns;   // the columns of the triangle's box: bits [i0, i1)
   int firstRow, endRow;  // the rows of the triangle's box: [j0, j1)
   // The depth at the centre of pixel (bx + i, by + j) is depthValue(depthColumn[i] + depthRow[j]);

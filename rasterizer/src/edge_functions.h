@@ -1,4 +1,5 @@
-// A triangle's three edge functions, evaluated at pixel centres with the fill rule applied.
+// A triangle's three edge functions (or a convex quadrilateral's four), evaluated at pixel
+// centres with the fill rule applied.
 //
 // Setup gives E_i(X, Y) = A_i X + B_i Y + C_i in 24.8 fixed point (triangle.h). At the centre of
 // pixel (px, py), X = 256 px + 128 and Y = 256 py + 128, so
@@ -7,7 +8,7 @@
 // an edge is covered only when the edge owns its centres (A > 0, or A == 0 and B > 0; see
 // triangle_rasterize.cpp). "E > 0, or E == 0 on an owning edge" is "E + bias - 1 >= 0" with bias
 // 1 on owning edges, so the functions here include that -1 on the other edges, and a pixel is
-// inside when all three values are non-negative.
+// inside when all three (four) values are non-negative.
 //
 // Everything is exact 64-bit integer arithmetic (|A|, |B| < 2^28, pixel indices < 2^20), so the
 // value at a pixel is the same whichever way it is reached: by steps across a block or directly.
@@ -21,11 +22,15 @@
 
 namespace glass::raster {
 
+// The kEdges edge functions of a setup whose edgeCount is kEdges: 3 for a triangle, 4 for a
+// convex quadrilateral (setupQuad).
+template <int kEdges = 3>
 struct PixelEdgeFunctions {
-  int64_t stepX[3], stepY[3], atOrigin[3];  // E_i(px, py) = stepX px + stepY py + atOrigin
+  static_assert(kEdges <= TriangleSetup::kMaxEdges);
+  int64_t stepX[kEdges], stepY[kEdges], atOrigin[kEdges];  // E_i(px, py) = stepX px + stepY py + atOrigin
 
   explicit PixelEdgeFunctions(const TriangleSetup& setup) {
-    for (int i = 0; i < 3; ++i) {
+    for (int i = 0; i < kEdges; ++i) {
       const int64_t a = setup.edgeA[i], b = setup.edgeB[i];
       const bool ownsCentres = a > 0 || (a == 0 && b > 0);
       stepX[i] = a * kSubpixelOne;
@@ -49,7 +54,7 @@ struct PixelEdgeFunctions {
 
   // No pixel centre of the rectangle is inside: some edge is negative at all of them.
   bool rejects(int px, int py, int w, int h) const {
-    for (int i = 0; i < 3; ++i)
+    for (int i = 0; i < kEdges; ++i)
       if (maxOver(i, px, py, w, h) < 0) return true;
     return false;
   }

@@ -60,6 +60,7 @@ PixelRect TileScene::pointReach(const WindowVertex& v, const PointSettings& sett
 void TileScene::Bin::reset() {
   order.reset();
   triangles.reset();
+  quads.reset();
   lines.reset();
   points.reset();
   clears.reset();
@@ -121,13 +122,24 @@ void TileScene::addTriangle(const WindowVertex& a, const WindowVertex& b, const 
                             const TriangleSettings& settings, FragmentSink& sink) {
   TriangleSetup edges;  // the edge functions and the box alone
   if (!setupTriangleEdges(a, b, c, settings.bounds, edges)) return;
-  hasPrimitives_ = true;
+  addPolygon<3>({&a, &b, &c}, edges, settings, sink);
+}
 
-  TriangleRecord r;
+void TileScene::addQuad(const WindowVertex& v0, const WindowVertex& v1, const WindowVertex& v2,
+                        const WindowVertex& v3, const TriangleSettings& settings, FragmentSink& sink) {
+  TriangleSetup edges;
+  if (!setupQuadEdges(v0, v1, v2, v3, settings.bounds, edges)) return;
+  addPolygon<4>({&v0, &v1, &v2, &v3}, edges, settings, sink);
+}
+
+template <int kCorners>
+void TileScene::addPolygon(const WindowVertex* const (&corners)[kCorners], const TriangleSetup& edges,
+                           const TriangleSettings& settings, FragmentSink& sink) {
+  hasPrimitives_ = true;
+  PolygonRecord<kCorners> r;
   r.sink = &sink;
-  const WindowVertex* const vertices[3] = {&a, &b, &c};
-  for (int i = 0; i < 3; ++i) {
-    const WindowVertex& v = *vertices[i];
+  for (int i = 0; i < kCorners; ++i) {
+    const WindowVertex& v = *corners[i];
     const float position[4] = {v.x, v.y, v.z, v.invW};
     std::copy(position, position + 4, r.position[i]);
   }
@@ -139,18 +151,19 @@ void TileScene::addTriangle(const WindowVertex& a, const WindowVertex& b, const 
 
   const auto addToBin = [&](int tile) {
     Bin& bin = binOf(tile);
-    bin.order.push(*arena_, Kind::Triangle);
-    bin.triangles.push(*arena_, r);
-    // The three vertices' varyings in one run, then the payload, as runTile takes them.
-    float* varyings = bin.varyings.extend(*arena_, 3 * n + payload);
-    for (int i = 0; i < 3; ++i) std::copy(vertices[i]->varyings, vertices[i]->varyings + n, varyings + i * n);
-    std::copy(settings.payload, settings.payload + payload, varyings + 3 * n);
+    bin.order.push(*arena_, kCorners == 3 ? Kind::Triangle : Kind::Quad);
+    auto& records = recordsOf<kCorners>(bin);
+    records.push(*arena_, r);
+    // The corners' varyings in one run, then the payload, as runTile takes them.
+    float* varyings = bin.varyings.extend(*arena_, kCorners * n + payload);
+    for (int i = 0; i < kCorners; ++i) std::copy(corners[i]->varyings, corners[i]->varyings + n, varyings + i * n);
+    std::copy(settings.payload, settings.payload + payload, varyings + kCorners * n);
     // A new record lands on cache lines nobody has touched yet, and with hundreds of bins filled
     // in turn each write would otherwise wait for its line; by the time the bin's next
     // primitive arrives, the lines are there.
-    bin.triangles.prefetchNext(1);
-    bin.varyings.prefetchNext(3 * n + payload);
-    bytes_ += 1 + sizeof(TriangleRecord) + sizeof(float) * (3 * n + payload);
+    records.prefetchNext(1);
+    bin.varyings.prefetchNext(kCorners * n + payload);
+    bytes_ += 1 + sizeof r + sizeof(float) * (kCorners * n + payload);
   };
   const PixelRect& box = edges.box;
   const int firstTileX = box.x0 / kTileSize, lastTileX = (box.x1 - 1) / kTileSize;
@@ -160,7 +173,7 @@ void TileScene::addTriangle(const WindowVertex& a, const WindowVertex& b, const 
   // Otherwise to the tiles its box overlaps, except those no pixel centre of which is inside:
   // the coverage walk would reject every block of such a tile anyway. This matters for large
   // triangles, whose box holds many tiles the triangle misses.
-  const PixelEdgeFunctions edgeFunctions(edges);
+  const PixelEdgeFunctions<kCorners> edgeFunctions(edges);
   for (int ty = firstTileY; ty <= lastTileY; ++ty)
     for (int tx = firstTileX; tx <= lastTileX; ++tx)
       if (!edgeFunctions.rejects(tx * kTileSize, ty * kTileSize, kTileSize, kTileSize)) addToBin(ty * tilesX_ + tx);
@@ -246,39 +259,51 @@ void TileScene::runTileNow(int tile) {
   if (activeTiles_.empty()) clear();
 }
 
+template <int kCorners>
+void TileScene::runPolygon(const PolygonRecord<kCorners>& r, BinList<float>::Reader& varyingRuns, const PixelRect& rect,
+                           const Bin& bin) const {
+  TriangleSettings settings = *r.drawSettings;
+  settings.depthBias = r.depthBias;
+  settings.frontFacing = r.frontFacing;
+  const int n = settings.varyingCount;
+  const float* varyings =
+      varyingRuns.take(kCorners * static_cast<size_t>(n) + static_cast<size_t>(settings.payloadCount));
+  WindowVertex v[kCorners];
+  for (int i = 0; i < kCorners; ++i) v[i] = rebuildVertex(r.position[i], varyings + i * n, n);
+  settings.bounds = intersect(settings.bounds, rect);
+  if (settings.payloadCount > 0) settings.payload = varyings + kCorners * n;
+  // The same setup as the whole polygon's, its box cut to the tile (the edges and planes depend
+  // on the vertices alone).
+  TriangleSetup setup;
+  if constexpr (kCorners == 3) {
+    if (!setupTriangle(v[0], v[1], v[2], settings, setup)) return;
+  } else {
+    if (!setupQuad(v[0], v[1], v[2], v[3], settings, setup)) return;
+  }
+  setup.privateRect = rect;  // this thread owns the tile
+  setup.hiddenBlockOdds = &bin.hiddenBlockOdds;
+  rasterizeTriangle(setup, *r.sink);
+}
+
 void TileScene::runBin(int tile) const {
   const PixelRect rect = tileRect(tile);
   const Bin& bin = bins_[static_cast<size_t>(tile)];
   // Each list is read front to back; `order` says which list the next primitive comes from.
   BinList<Kind>::Reader order(bin.order);
   BinList<TriangleRecord>::Reader triangles(bin.triangles);
+  BinList<QuadRecord>::Reader quads(bin.quads);
   BinList<LineRecord>::Reader lines(bin.lines);
   BinList<PointRecord>::Reader points(bin.points);
   BinList<ClearRequest>::Reader clears(bin.clears);
   BinList<float>::Reader varyingRuns(bin.varyings);
   for (size_t k = 0; k < bin.order.size(); ++k) {
     switch (*order.take(1)) {
-      case Kind::Triangle: {
-        const TriangleRecord& r = *triangles.take(1);
-        TriangleSettings settings = *r.drawSettings;
-        settings.depthBias = r.depthBias;
-        settings.frontFacing = r.frontFacing;
-        const int n = settings.varyingCount;
-        const float* varyings = varyingRuns.take(3 * static_cast<size_t>(n) + static_cast<size_t>(settings.payloadCount));
-        const WindowVertex a = rebuildVertex(r.position[0], varyings, n);
-        const WindowVertex b = rebuildVertex(r.position[1], varyings + n, n);
-        const WindowVertex c = rebuildVertex(r.position[2], varyings + 2 * n, n);
-        settings.bounds = intersect(settings.bounds, rect);
-        if (settings.payloadCount > 0) settings.payload = varyings + 3 * n;
-        // The same setup as the whole triangle's, its box cut to the tile (the edges and planes
-        // depend on the vertices alone).
-        TriangleSetup setup;
-        if (!setupTriangle(a, b, c, settings, setup)) break;
-        setup.privateRect = rect;  // this thread owns the tile
-        setup.hiddenBlockOdds = &bin.hiddenBlockOdds;
-        rasterizeTriangle(setup, *r.sink);
+      case Kind::Triangle:
+        runPolygon(*triangles.take(1), varyingRuns, rect, bin);
         break;
-      }
+      case Kind::Quad:
+        runPolygon(*quads.take(1), varyingRuns, rect, bin);
+        break;
       case Kind::Line: {
         const LineRecord& r = *lines.take(1);
         const int n = r.settings.varyingCount;

@@ -38,6 +38,9 @@ class TileScene {
   // shared by the threads instead of all falling to the submitting one.
   void addTriangle(const WindowVertex& a, const WindowVertex& b, const WindowVertex& c,
                    const TriangleSettings& settings, FragmentSink& sink);
+  // A convex quadrilateral that quadIsConvex accepts, binned and set up (setupQuad) likewise.
+  void addQuad(const WindowVertex& v0, const WindowVertex& v1, const WindowVertex& v2, const WindowVertex& v3,
+               const TriangleSettings& settings, FragmentSink& sink);
   // A line whose quad lineQuadOf made, to the bins of the tiles its pixels (lineQuadPixels) may
   // be in. stippleStart: the line stipple counter at the line's first fragment.
   void addLine(const LineQuad& quad, const PixelRect& pixels, const WindowVertex& a,
@@ -84,17 +87,21 @@ class TileScene {
   void clear();
 
  private:
-  // A triangle as it was given, for setupTriangle: its vertices without their varyings, which
-  // follow in the bin's varyings (a's, b's, c's), and its settings: those of its draw, kept once
-  // in the scene (drawSettings), and the two that change from triangle to triangle of a draw.
-  // (A full copy of the settings in every record made a record 136 bytes instead of 80.)
-  struct TriangleRecord {
+  // A triangle (or quadrilateral) as it was given, for setupTriangle (setupQuad): its vertices
+  // without their varyings, which follow in the bin's varyings (a's, b's, c's), and its settings:
+  // those of its draw, kept once in the scene (drawSettings), and the two that change from
+  // triangle to triangle of a draw. (A full copy of the settings in every record made a
+  // triangle's record 136 bytes instead of 80.)
+  template <int kCorners>
+  struct PolygonRecord {
     FragmentSink* sink;
-    float position[3][4];  // x, y, z, invW of a, b and c
+    float position[kCorners][4];  // x, y, z, invW of each corner
     const TriangleSettings* drawSettings;  // its frontFacing and depthBias are not used
     double depthBias;
     bool frontFacing;
   };
+  using TriangleRecord = PolygonRecord<3>;
+  using QuadRecord = PolygonRecord<4>;
   // A line's vertices without their varyings, which follow in the bin's varyings (a's, b's),
   // and its quad, made once when it was submitted rather than in every tile it reaches.
   struct LineRecord {
@@ -109,11 +116,12 @@ class TileScene {
     float v[4];
     PointSettings settings;
   };
-  enum class Kind : uint8_t { Triangle, Line, Point, Clear };
+  enum class Kind : uint8_t { Triangle, Quad, Line, Point, Clear };
 
   struct Bin {
     BinList<Kind> order;  // which list the next primitive comes from
     BinList<TriangleRecord> triangles;
+    BinList<QuadRecord> quads;
     BinList<LineRecord> lines;
     BinList<PointRecord> points;
     BinList<ClearRequest> clears;
@@ -129,6 +137,20 @@ class TileScene {
   template <typename AddToBin>
   void forTilesIn(int64_t x0, int64_t y0, int64_t x1, int64_t y1, AddToBin add);
   void runBin(int tile) const;
+  // Sets up and rasterizes a triangle's or quadrilateral's record in the tile `rect` of `bin`,
+  // its varyings (and payload) taken from varyingRuns.
+  template <int kCorners>
+  void runPolygon(const PolygonRecord<kCorners>& r, BinList<float>::Reader& varyingRuns, const PixelRect& rect,
+                  const Bin& bin) const;
+  // addTriangle and addQuad: the corners, and the edges and box setupTriangleEdges
+  // (setupQuadEdges) made of them.
+  template <int kCorners>
+  void addPolygon(const WindowVertex* const (&corners)[kCorners], const TriangleSetup& edges,
+                  const TriangleSettings& settings, FragmentSink& sink);
+  template <int kCorners>
+  BinList<PolygonRecord<kCorners>>& recordsOf(Bin& bin) {
+    if constexpr (kCorners == 3) return bin.triangles; else return bin.quads;
+  }
   // The scene's copy of a triangle's settings but frontFacing and depthBias (which its record
   // keeps), the payload's place left out: the last one stored when it matches, else a new one.
   const TriangleSettings& drawSettingsFor(const TriangleSettings& settings);

@@ -300,6 +300,17 @@ void TiledRasterizer::triangle(const WindowVertex& a, const WindowVertex& b, con
   impl_->afterSubmit();
 }
 
+void TiledRasterizer::quad(const WindowVertex& v0, const WindowVertex& v1, const WindowVertex& v2,
+                           const WindowVertex& v3, const TriangleSettings& settings, FragmentSink& sink) {
+  if (!quadIsConvex(v0, v1, v2, v3)) {
+    triangle(v0, v1, v2, settings, sink);
+    triangle(v2, v3, v0, settings, sink);
+    return;
+  }
+  impl_->filling().addQuad(v0, v1, v2, v3, settings, sink);
+  impl_->afterSubmit();
+}
+
 void TiledRasterizer::line(const WindowVertex& a, const WindowVertex& b,
                            const LineSettings& settings, FragmentSink& sink) {
   LineQuad quad;

@@ -7,8 +7,9 @@
 // the blocks anywhere. Starting at the box rather than on a fixed grid puts most small triangles
 // in one block, where a grid of multiples of 8 cuts most of them into two to four.
 //
-// Fill rule. A pixel is covered when its centre is strictly inside all three edges, or exactly on
-// an edge that owns its centres. Of two triangles sharing an edge exactly one owns it: the edge
+// Fill rule. A pixel is covered when its centre is strictly inside all three edges (all four of
+// a convex quadrilateral, setupQuad), or exactly on an edge that owns its centres. Of two
+// triangles sharing an edge exactly one owns it: the edge
 // owns its centres when it is a left edge (the interior lies to its right: A > 0) or a bottom edge
 // (horizontal with the interior above it: A == 0, B > 0), in GL window coordinates where y points
 // up. This is the "top-left" rule of raster systems whose rows run downwards, seen from GL's
@@ -176,11 +177,12 @@ bool blockHidden(const TriangleSetup& setup, const BlockDepth& depth, const Fram
 }
 
 // The walk of rasterizeTriangle for one early depth comparison (kEarly false: no early test),
-// for a large triangle (a box of 32 x 32 pixels or more) or a small one.
-template <bool kEarly, DepthCompare kCompare, bool kLarge>
+// for a large triangle (a box of 32 x 32 pixels or more) or a small one, of kEdges edges (4: a
+// convex quadrilateral, setupQuad).
+template <bool kEarly, DepthCompare kCompare, bool kLarge, int kEdges>
 void walkTriangle(const TriangleSetup& setup, FragmentSink& sink) {
   const PixelRect& box = setup.box;
-  const PixelEdgeFunctions edges(setup);
+  const PixelEdgeFunctions<kEdges> edges(setup);
   const Framebuffer* earlyDepth = setup.earlyDepth.buffer;
   HiddenBlockOdds* const odds = setup.hiddenBlockOdds;
   constexpr bool kOrdering = nearerPasses(kCompare) || fartherPasses(kCompare);
@@ -188,11 +190,12 @@ void walkTriangle(const TriangleSetup& setup, FragmentSink& sink) {
 
   // What the block rows (block_rows.h) take from the triangle, the same for every block; each
   // block sets the rest. Edge k's step from column 0 of a block to column i is i * stepX[k].
-  alignas(64) int64_t columnSteps[3][kBlockSize];
-  for (int k = 0; k < 3; ++k)
+  alignas(64) int64_t columnSteps[kEdges][kBlockSize];
+  for (int k = 0; k < kEdges; ++k)
     for (int i = 0; i < kBlockSize; ++i) columnSteps[k][i] = edges.stepX[k] * i;
   BlockRows rows;
-  for (int k = 0; k < 3; ++k) rows.stepY[k] = edges.stepY[k];
+  rows.edgeCount = kEdges;
+  for (int k = 0; k < kEdges; ++k) rows.stepY[k] = edges.stepY[k];
   rows.columnStep = columnSteps;
   rows.storedStride = earlyDepth != nullptr ? earlyDepth->width() : 0;
   rows.compare = kCompare;
@@ -205,7 +208,7 @@ void walkTriangle(const TriangleSetup& setup, FragmentSink& sink) {
       const int x0 = std::max(bx, box.x0), x1 = std::min(bx + kBlockSize, box.x1);
       if (edges.rejects(bx, by, kBlockSize, kBlockSize)) continue;
       bool accepted = true;
-      for (int i = 0; i < 3; ++i)
+      for (int i = 0; i < kEdges; ++i)
         if (edges.minOver(i, bx, by, kBlockSize, kBlockSize) < 0) accepted = false;
 
       const int i0 = x0 - bx, i1 = x1 - bx;
@@ -231,7 +234,7 @@ void walkTriangle(const TriangleSetup& setup, FragmentSink& sink) {
 
       // Coverage and depth, row by row; a fragment that fails the early depth test goes no
       // further.
-      for (int k = 0; k < 3; ++k) rows.rowStart[k] = edges.at(k, bx, y0);
+      for (int k = 0; k < kEdges; ++k) rows.rowStart[k] = edges.at(k, bx, y0);
       rows.accepted = accepted;
       rows.columns = columnMask(i0, i1);
       rows.firstRow = y0 - by;
@@ -306,15 +309,31 @@ namespace {
 
 // walkTriangle for the triangle's size: the blocks of a large triangle repay the look at their
 // stored depths whole, a small one's are only tested for being hidden (hidden_block_odds.h).
-template <bool kEarly, DepthCompare kCompare>
+template <bool kEarly, DepthCompare kCompare, int kEdges>
 void walkBySize(const TriangleSetup& setup, FragmentSink& sink) {
   if constexpr (!kEarly) {
-    walkTriangle<false, kCompare, true>(setup, sink);  // without the early test the size decides nothing
+    walkTriangle<false, kCompare, true, kEdges>(setup, sink);  // without the early test the size decides nothing
   } else {
     const PixelRect& box = setup.box;
     if (box.x1 - box.x0 >= 4 * kBlockSize && box.y1 - box.y0 >= 4 * kBlockSize)
-      return walkTriangle<true, kCompare, true>(setup, sink);
-    walkTriangle<true, kCompare, false>(setup, sink);
+      return walkTriangle<true, kCompare, true, kEdges>(setup, sink);
+    walkTriangle<true, kCompare, false, kEdges>(setup, sink);
+  }
+}
+
+template <int kEdges>
+void walkByDepthTest(const TriangleSetup& setup, FragmentSink& sink) {
+  if (setup.earlyDepth.buffer == nullptr) return walkBySize<false, DepthCompare::Always, kEdges>(setup, sink);
+  switch (setup.earlyDepth.compare) {
+    case DepthCompare::Never: return;  // every fragment fails
+    case DepthCompare::Less: return walkBySize<true, DepthCompare::Less, kEdges>(setup, sink);
+    case DepthCompare::Equal: return walkBySize<true, DepthCompare::Equal, kEdges>(setup, sink);
+    case DepthCompare::LessEqual: return walkBySize<true, DepthCompare::LessEqual, kEdges>(setup, sink);
+    case DepthCompare::Greater: return walkBySize<true, DepthCompare::Greater, kEdges>(setup, sink);
+    case DepthCompare::NotEqual: return walkBySize<true, DepthCompare::NotEqual, kEdges>(setup, sink);
+    case DepthCompare::GreaterEqual:
+      return walkBySize<true, DepthCompare::GreaterEqual, kEdges>(setup, sink);
+    case DepthCompare::Always: return walkBySize<false, DepthCompare::Always, kEdges>(setup, sink);
   }
 }
 
@@ -322,18 +341,8 @@ void walkBySize(const TriangleSetup& setup, FragmentSink& sink) {
 
 void rasterizeTriangle(const TriangleSetup& setup, FragmentSink& sink) {
   if (setup.box.empty()) return;
-  if (setup.earlyDepth.buffer == nullptr) return walkBySize<false, DepthCompare::Always>(setup, sink);
-  switch (setup.earlyDepth.compare) {
-    case DepthCompare::Never: return;  // every fragment fails
-    case DepthCompare::Less: return walkBySize<true, DepthCompare::Less>(setup, sink);
-    case DepthCompare::Equal: return walkBySize<true, DepthCompare::Equal>(setup, sink);
-    case DepthCompare::LessEqual: return walkBySize<true, DepthCompare::LessEqual>(setup, sink);
-    case DepthCompare::Greater: return walkBySize<true, DepthCompare::Greater>(setup, sink);
-    case DepthCompare::NotEqual: return walkBySize<true, DepthCompare::NotEqual>(setup, sink);
-    case DepthCompare::GreaterEqual:
-      return walkBySize<true, DepthCompare::GreaterEqual>(setup, sink);
-    case DepthCompare::Always: return walkBySize<false, DepthCompare::Always>(setup, sink);
-  }
+  if (setup.edgeCount == 4) return walkByDepthTest<4>(setup, sink);
+  walkByDepthTest<3>(setup, sink);
 }
 
 }  // namespace glass::raster

@@ -12,6 +12,9 @@
 // depend on the order in which the caller gave them: a clockwise triangle covers exactly the
 // pixels of the same triangle given counter-clockwise.
 //
+// A convex quadrilateral (setupQuad) has the four edge functions of its corners, made the same
+// way, and the planes of its first triangle.
+//
 // Planes. Depth and the perspective-correct attributes are planes in window x, y fitted through
 // the snapped vertex positions: window z (affine in x, y after the perspective division), and for
 // each varying a, a/w and 1/w (both affine in x, y; spec 3.5.1, equation 3.8), so that at a pixel
@@ -70,15 +73,15 @@ bool snapTriangle(const WindowVertex& a, const WindowVertex& b, const WindowVert
   return true;
 }
 
-// The box, clipped to the bounds, and the edge functions: integer arithmetic only. False when
-// the box is empty.
-bool setEdges(const SnappedTriangle& t, const PixelRect& bounds, TriangleSetup& setup) {
-  const int64_t* X = t.X;
-  const int64_t* Y = t.Y;
+// The box, clipped to the bounds, and the edge functions of the counter-clockwise polygon X, Y
+// of n corners (3 or 4): integer arithmetic only. False when the box is empty.
+template <int n>
+bool setEdges(const int64_t (&X)[n], const int64_t (&Y)[n], const PixelRect& bounds, TriangleSetup& setup) {
+  static_assert(n <= TriangleSetup::kMaxEdges);
   // Pixels whose centre 256 i + 128 lies within [min X, max X] (and the same in y); arithmetic
   // shifts are floor divisions, also for negative coordinates.
-  const int64_t minX = std::min({X[0], X[1], X[2]}), maxX = std::max({X[0], X[1], X[2]});
-  const int64_t minY = std::min({Y[0], Y[1], Y[2]}), maxY = std::max({Y[0], Y[1], Y[2]});
+  const int64_t minX = *std::min_element(X, X + n), maxX = *std::max_element(X, X + n);
+  const int64_t minY = *std::min_element(Y, Y + n), maxY = *std::max_element(Y, Y + n);
   PixelRect box;
   box.x0 = std::max<int64_t>(bounds.x0, (minX - kSubpixelHalf + kSubpixelOne - 1) >> kSubpixelBits);
   box.y0 = std::max<int64_t>(bounds.y0, (minY - kSubpixelHalf + kSubpixelOne - 1) >> kSubpixelBits);
@@ -87,13 +90,48 @@ bool setEdges(const SnappedTriangle& t, const PixelRect& bounds, TriangleSetup& 
   if (box.empty()) return false;
   setup.box = box;
 
-  for (int i = 0; i < 3; ++i) {
-    const int j = (i + 1) % 3;
+  setup.edgeCount = n;
+  for (int i = 0; i < n; ++i) {
+    const int j = (i + 1) % n;
     setup.edgeA[i] = Y[i] - Y[j];
     setup.edgeB[i] = X[j] - X[i];
     setup.edgeC[i] = X[i] * Y[j] - Y[i] * X[j];
   }
   return true;
+}
+
+bool setEdges(const SnappedTriangle& t, const PixelRect& bounds, TriangleSetup& setup) {
+  return setEdges(t.X, t.Y, bounds, setup);
+}
+
+// A quadrilateral's corners snapped to the subpixel grid and put in counter-clockwise order;
+// false unless they make a strictly convex quadrilateral (every corner turning the same way,
+// none straight), which also makes both its triangles non-degenerate.
+struct SnappedQuad {
+  int64_t X[4], Y[4];
+};
+
+bool snapQuad(const WindowVertex* const (&v)[4], SnappedQuad& q) {
+  for (const WindowVertex* p : v)
+    if (!isRasterizableCoordinate(p->x) || !isRasterizableCoordinate(p->y)) return false;
+  for (int i = 0; i < 4; ++i) {
+    q.X[i] = snapToSubpixel(v[i]->x);
+    q.Y[i] = snapToSubpixel(v[i]->y);
+  }
+  // Coordinates below 2^28 in magnitude: differences below 2^29, products below 2^58.
+  int positive = 0, negative = 0;
+  for (int i = 0; i < 4; ++i) {
+    const int j = (i + 1) % 4, k = (i + 2) % 4;
+    const int64_t turn = (q.X[j] - q.X[i]) * (q.Y[k] - q.Y[j]) - (q.Y[j] - q.Y[i]) * (q.X[k] - q.X[j]);
+    positive += turn > 0;
+    negative += turn < 0;
+  }
+  if (negative == 4) {  // clockwise: go round the other way
+    std::swap(q.X[1], q.X[3]);
+    std::swap(q.Y[1], q.Y[3]);
+    return true;
+  }
+  return positive == 4;
 }
 
 // The depth and attribute planes (the divisions of setup), the signed area, and the settings the
@@ -156,6 +194,25 @@ bool setupTriangle(const WindowVertex& a, const WindowVertex& b, const WindowVer
   SnappedTriangle t;
   if (!snapTriangle(a, b, c, t) || !setEdges(t, settings.bounds, setup)) return false;
   setPlanes(t, settings, setup);
+  return true;
+}
+
+bool quadIsConvex(const WindowVertex& v0, const WindowVertex& v1, const WindowVertex& v2, const WindowVertex& v3) {
+  SnappedQuad q;
+  return snapQuad({&v0, &v1, &v2, &v3}, q);
+}
+
+bool setupQuadEdges(const WindowVertex& v0, const WindowVertex& v1, const WindowVertex& v2,
+                    const WindowVertex& v3, const PixelRect& bounds, TriangleSetup& setup) {
+  SnappedQuad q;
+  return snapQuad({&v0, &v1, &v2, &v3}, q) && setEdges(q.X, q.Y, bounds, setup);
+}
+
+bool setupQuad(const WindowVertex& v0, const WindowVertex& v1, const WindowVertex& v2, const WindowVertex& v3,
+               const TriangleSettings& settings, TriangleSetup& setup) {
+  SnappedTriangle first;
+  if (!setupQuadEdges(v0, v1, v2, v3, settings.bounds, setup) || !snapTriangle(v0, v1, v2, first)) return false;
+  setPlanes(first, settings, setup);
   return true;
 }
 

@@ -1,5 +1,6 @@
 // The block rows of the triangle walk (rasterizer/src/block_rows.h) on every SIMD target this
-// processor runs, against a plain evaluation of each pixel: the edge functions at its centre,
+// processor runs, for triangles and convex quadrilaterals, against a plain evaluation of each
+// pixel: the edge functions at its centre,
 // depthValue of its depth, passesDepthCompare against the stored value. And the stored depth
 // range of whole block rows against std::min and std::max.
 #include <doctest/doctest.h>
@@ -42,7 +43,7 @@ double someDepthPart(std::mt19937_64& random) {
 TEST_CASE("block rows give each pixel's coverage, depth and early test on every SIMD target") {
   std::mt19937_64 random(20261205);
   constexpr int kFramebufferWidth = 32, kFramebufferHeight = 24;
-  long pixels = 0, covered = 0, passed = 0, onEdges = 0, mismatches = 0;
+  long pixels = 0, covered = 0, passed = 0, onEdges = 0, mismatches = 0, quads = 0;
   int targets = 0;
   for (int t = 0; t < static_cast<int>(SimdTarget::Count); ++t) {
     const auto target = static_cast<SimdTarget>(t);
@@ -51,22 +52,53 @@ TEST_CASE("block rows give each pixel's coverage, depth and early test on every 
     for (int round = 0; round < 3000; ++round) {
       // A triangle around the block at (8, 8), up to a few blocks wide, with its corners on
       // pixel centres and corners half the time, so that edges pass exactly through centres
-      // (the fill rule's ties) in every direction.
+      // (the fill rule's ties) in every direction; every third round a convex quadrilateral,
+      // its corners on a circle.
       std::uniform_real_distribution<float> position(0.0f, 24.0f);
-      glass::raster::WindowVertex v[3] = {};
-      const bool onGrid = round % 2 == 0;
-      for (auto& vertex : v) {
-        vertex.x = onGrid ? static_cast<float>(random() % 49) / 2.0f : position(random);
-        vertex.y = onGrid ? static_cast<float>(random() % 49) / 2.0f : position(random);
+      glass::raster::WindowVertex v[4] = {};
+      const bool onGrid = round % 2 == 0, quad = round % 3 == 2;
+      if (quad) {
+        double angles[4];
+        for (double& a : angles) a = std::uniform_real_distribution<double>(0.0, 6.283185307179586)(random);
+        std::sort(angles, angles + 4);
+        for (int c = 0; c < 4; ++c) {
+          const float x = static_cast<float>(12.0 + 12.0 * std::cos(angles[c]));
+          const float y = static_cast<float>(12.0 + 12.0 * std::sin(angles[c]));
+          v[c].x = onGrid ? std::round(2.0f * x) / 2.0f : x;
+          v[c].y = onGrid ? std::round(2.0f * y) / 2.0f : y;
+        }
+      } else {
+        for (auto& vertex : v) {
+          vertex.x = onGrid ? static_cast<float>(random() % 49) / 2.0f : position(random);
+          vertex.y = onGrid ? static_cast<float>(random() % 49) / 2.0f : position(random);
+        }
       }
       glass::raster::TriangleSettings settings;
       settings.bounds = {0, 0, kFramebufferWidth, kFramebufferHeight};
       glass::raster::TriangleSetup setup;
-      if (!glass::raster::setupTriangle(v[0], v[1], v[2], settings, setup)) continue;
-      const glass::raster::PixelEdgeFunctions edges(setup);
-      alignas(64) int64_t columnSteps[3][kSize];
-      for (int k = 0; k < 3; ++k)
-        for (int i = 0; i < kSize; ++i) columnSteps[k][i] = edges.stepX[k] * i;
+      if (quad ? !glass::raster::setupQuad(v[0], v[1], v[2], v[3], settings, setup)
+               : !glass::raster::setupTriangle(v[0], v[1], v[2], settings, setup))
+        continue;
+      const int edgeCount = setup.edgeCount;
+      quads += quad;
+      // The edge functions at pixel centres, of the triangle's three edges or the quadrilateral's four.
+      int64_t stepX[4], stepY[4], atOrigin[4];
+      auto takeEdges = [&](const auto& functions) {
+        for (int k = 0; k < edgeCount; ++k) {
+          stepX[k] = functions.stepX[k];
+          stepY[k] = functions.stepY[k];
+          atOrigin[k] = functions.atOrigin[k];
+        }
+      };
+      if (quad) {
+        takeEdges(glass::raster::PixelEdgeFunctions<4>(setup));
+      } else {
+        takeEdges(glass::raster::PixelEdgeFunctions<3>(setup));
+      }
+      auto edgeAt = [&](int k, int x, int y) { return stepX[k] * x + stepY[k] * y + atOrigin[k]; };
+      alignas(64) int64_t columnSteps[4][kSize];
+      for (int k = 0; k < edgeCount; ++k)
+        for (int i = 0; i < kSize; ++i) columnSteps[k][i] = stepX[k] * i;
 
       const int bx = 8, by = 8;
       const int i0 = static_cast<int>(random() % kSize), i1 = i0 + 1 + static_cast<int>(random() % (kSize - i0));
@@ -85,9 +117,10 @@ TEST_CASE("block rows give each pixel's coverage, depth and early test on every 
         }
 
       BlockRows rows;
-      for (int k = 0; k < 3; ++k) {
-        rows.rowStart[k] = edges.at(k, bx, by + j0);
-        rows.stepY[k] = edges.stepY[k];
+      rows.edgeCount = edgeCount;
+      for (int k = 0; k < edgeCount; ++k) {
+        rows.rowStart[k] = edgeAt(k, bx, by + j0);
+        rows.stepY[k] = stepY[k];
       }
       rows.columnStep = columnSteps;
       rows.accepted = random() % 8 == 0;  // as if every centre were inside: the mask is the box's
@@ -114,8 +147,8 @@ TEST_CASE("block rows give each pixel's coverage, depth and early test on every 
           bool inside = rows.accepted;
           if (!inside) {
             inside = true;
-            for (int k = 0; k < 3; ++k) {
-              const int64_t e = edges.at(k, bx + i, by + j);
+            for (int k = 0; k < edgeCount; ++k) {
+              const int64_t e = edgeAt(k, bx + i, by + j);
               if (e < 0) inside = false;
               if (e == 0 || e == -1) ++onEdges;  // a centre on an edge, owned or not
             }
@@ -139,6 +172,7 @@ TEST_CASE("block rows give each pixel's coverage, depth and early test on every 
     }
   }
   CHECK(targets >= 1);
+  CHECK(quads > 500 * targets);
   // The cases are not degenerate: many pixels covered, many of those passing, many not.
   CHECK(covered > pixels / 8);
   CHECK(passed > covered / 8);

@@ -9,7 +9,8 @@
 //
 // Lines. A segment from p0 to p1 (length L, direction d, unit normal n) of width w is drawn as the
 // rectangle p0 - d/2 .. p1 + d/2 along d and -h .. h along n, h = 1 for w <= 1 and w/2 + 1/2
-// otherwise, split into two triangles along a diagonal and filled by the triangle rule. A fragment
+// otherwise, split into two triangles along a diagonal and filled by the triangle rule (glass
+// fills both at once, as a quadrilateral with the planes of the first: TiledRasterizer::quad). A fragment
 // whose centre is at distance a from the segment's midpoint along d and at distance b from the
 // segment's line has coverage, with l = L/2 + 1/2,
 //   c = clamp(h - |b|, 0, 1) * clamp(l - |a|, 0, 1) * min(L / l, 1)
@@ -56,9 +57,11 @@ struct SmoothLineCoverage {
 };
 
 struct SmoothLineShape : SmoothLineCoverage {
-  // The rectangle's corners, and the two triangles Mesa splits it into.
+  // The rectangle's corners, and their order round it (kBoundary[0] to [3]), which starts at a
+  // corner of the diagonal Mesa splits it along: into triangles (0, 1, 2) and (3, 1, 0), which
+  // are (kBoundary[0], [1], [2]) and ([2], [3], [0]) as TiledRasterizer::quad takes them.
   raster::WindowVertex corners[4];
-  static constexpr int kTriangles[2][3] = {{0, 1, 2}, {3, 1, 0}};
+  static constexpr int kBoundary[4] = {0, 2, 1, 3};
 };
 
 // Builds the rectangle of a smooth segment a -> b of the given width in window coordinates
@@ -80,9 +83,10 @@ struct SmoothPointCoverage {
 };
 
 struct SmoothPointShape : SmoothPointCoverage {
-  // The square's corners, and the two triangles Mesa splits it into.
+  // The square's corners, and their order round it, as SmoothLineShape's: Mesa splits it into
+  // triangles (0, 1, 2) and (0, 2, 3).
   raster::WindowVertex corners[4];
-  static constexpr int kTriangles[2][3] = {{0, 1, 2}, {0, 2, 3}};
+  static constexpr int kBoundary[4] = {0, 1, 2, 3};
 };
 
 // The half-side r of a smooth point of the given size: perVertexSize is true when the size comes

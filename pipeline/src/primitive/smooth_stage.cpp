@@ -1,8 +1,11 @@
 // Antialiased lines and points (GL_LINE_SMOOTH, GL_POINT_SMOOTH): the rectangle or square of
 // smooth_coverage.h, rasterized as two triangles by the triangle rule, each fragment carrying its
-// coverage to the fragment stage. The triangles are queued with the draw's other primitives
-// (tiled_rasterizer.h), each carrying its shape's coverage parameters as its payload, so they
-// are drawn tile by tile like any triangle, in submission order per pixel. A stippled smooth line
+// coverage to the fragment stage. The two triangles are one quadrilateral of the tiled rasterizer
+// (tiled_rasterizer.h), set up and walked once: they share every block along their diagonal,
+// which drawn apart each triangle's fragments went through the fragment kernels separately
+// (the smooth_lines frame took twice as long). The quadrilateral is queued with the draw's other
+// primitives, carrying its shape's coverage parameters as its payload, so it is drawn tile by
+// tile like any triangle, in submission order per pixel. A stippled smooth line
 // is first cut into its dashes (stipple_dashes.h).
 #include <algorithm>
 #include <cmath>
@@ -17,7 +20,8 @@
 namespace glass::gl {
 namespace {
 
-// Queues the shape's two triangles, each with the shape's Coverage as its payload, for `sink`.
+// Queues the shape's rectangle (TiledRasterizer::quad: its two triangles in one pass) with the
+// shape's Coverage as its payload, for `sink`.
 template <class Coverage, class Shape>
 void queueShape(raster::TiledRasterizer& tiles, const Shape& shape, raster::TriangleSettings settings,
                 double depthBias, CoverageFilter<Coverage>& sink) {
@@ -29,8 +33,8 @@ void queueShape(raster::TiledRasterizer& tiles, const Shape& shape, raster::Tria
   settings.frontFacing = true;
   settings.payload = payload;
   settings.payloadCount = CoverageFilter<Coverage>::kPayloadFloats;
-  for (const auto& t : Shape::kTriangles)
-    tiles.triangle(shape.corners[t[0]], shape.corners[t[1]], shape.corners[t[2]], settings, sink);
+  const auto& corner = [&](int i) -> const raster::WindowVertex& { return shape.corners[Shape::kBoundary[i]]; };
+  tiles.quad(corner(0), corner(1), corner(2), corner(3), settings, sink);
 }
 
 // The window vertex at t along a -> b, every value linear in window coordinates (as Mesa's

@@ -68,6 +68,12 @@ class TiledRasterizer {
   // small primitive is drawn before the call returns (see above).
   void triangle(const WindowVertex& a, const WindowVertex& b, const WindowVertex& c,
                 const TriangleSettings& settings, FragmentSink& sink);
+  // A convex quadrilateral v0 v1 v2 v3 whose values are one plane (an antialiased line's or
+  // point's rectangle): drawn as setupQuad and rasterizeTriangle would draw it, in one pass, when
+  // quadIsConvex accepts it; otherwise as the triangles (v0, v1, v2) and (v2, v3, v0). It is
+  // always binned (a thin, blended shape reads and writes pixels the tile keeps in the cache).
+  void quad(const WindowVertex& v0, const WindowVertex& v1, const WindowVertex& v2, const WindowVertex& v3,
+            const TriangleSettings& settings, FragmentSink& sink);
   // settings.stippleCounter, when set, is advanced now, as rasterizeLine would advance it.
   void line(const WindowVertex& a, const WindowVertex& b, const LineSettings& settings,
             FragmentSink& sink);

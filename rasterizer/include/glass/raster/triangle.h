@@ -46,8 +46,11 @@ inline constexpr int kMaxTrianglePayload = 8;
 struct TriangleSetup {
   // Edge functions E_i(x, y) = A_i * x + B_i * y + C_i in 24.8 fixed point (x, y are window
   // coordinates times 256), oriented so the interior is E_i > 0 (or E_i == 0 on an edge that owns
-  // its centres: A_i > 0, or A_i == 0 and B_i > 0).
-  int64_t edgeA[3], edgeB[3], edgeC[3];
+  // its centres: A_i > 0, or A_i == 0 and B_i > 0). A triangle has three; a convex quadrilateral
+  // (setupQuad) four.
+  static constexpr int kMaxEdges = 4;
+  int64_t edgeA[kMaxEdges], edgeB[kMaxEdges], edgeC[kMaxEdges];
+  int edgeCount = 3;
   PixelRect box;                 // pixels that can be covered, already clipped to the bounds
   double z0, zdx, zdy;           // window depth plane at pixel centres, bias included
   AttributePlanes planes;
@@ -76,6 +79,25 @@ bool setupTriangle(const WindowVertex& a, const WindowVertex& b, const WindowVer
 // divisions): what the tiled rasterizer needs to bin a triangle, whose planes its tiles compute.
 bool setupTriangleEdges(const WindowVertex& a, const WindowVertex& b, const WindowVertex& c,
                         const PixelRect& bounds, TriangleSetup& setup);
+
+// A convex quadrilateral v0 v1 v2 v3 (its corners in order round it, either way), drawn as the
+// two triangles (v0, v1, v2) and (v2, v3, v0) would be drawn in one pass, with the depth and
+// attribute planes of the first (setupTriangle(v0, v1, v2)'s, to the bit) for all its pixels:
+// for a quadrilateral whose values are one plane, as an antialiased line's or point's rectangle
+// (smooth_coverage.h), whose triangles share every 8x8 block along their diagonal. A pixel is
+// covered when its centre is inside the four edges, by the triangles' fill rule: exactly the
+// pixels of the two triangles (the rule decides a centre on v0 or v2 for the two edges there as
+// for the triangles' four: a convex corner is owned when both its edges own their centres).
+// Returns false, drawing nothing, when the snapped corners do not make a strictly convex
+// quadrilateral (quadIsConvex: then draw the two triangles) or the box is empty.
+bool setupQuad(const WindowVertex& v0, const WindowVertex& v1, const WindowVertex& v2, const WindowVertex& v3,
+               const TriangleSettings& settings, TriangleSetup& setup);
+// setupQuad's edges and box alone (as setupTriangleEdges): what binning needs.
+bool setupQuadEdges(const WindowVertex& v0, const WindowVertex& v1, const WindowVertex& v2,
+                    const WindowVertex& v3, const PixelRect& bounds, TriangleSetup& setup);
+// Whether the snapped corners make a strictly convex quadrilateral of two non-degenerate
+// triangles, so that setupQuad may draw it (within the rasterizable coordinates).
+bool quadIsConvex(const WindowVertex& v0, const WindowVertex& v1, const WindowVertex& v2, const WindowVertex& v3);
 
 // Emits every covered pixel of the setup to the sink, one batch per 8x8 block.
 void rasterizeTriangle(const TriangleSetup& setup, FragmentSink& sink);
