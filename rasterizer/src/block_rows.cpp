@@ -37,7 +37,7 @@ constexpr int kSize = BlockRows::kSize;
 
 // Bit i: column i's centre of the current row is inside the kEdges edges.
 template <int kEdges>
-unsigned rowCoverage(const BlockRows& rows, const int64_t rowStart[kEdges]) {
+HWY_INLINE unsigned rowCoverage(const BlockRows& rows, const int64_t rowStart[kEdges]) {
   const hn::CappedTag<int64_t, kSize> d;
   const int lanes = static_cast<int>(hn::Lanes(d));
   unsigned outside = 0;
@@ -53,7 +53,7 @@ unsigned rowCoverage(const BlockRows& rows, const int64_t rowStart[kEdges]) {
 }
 
 // Row j's depths, all eight columns, into z.
-void rowDepths(const BlockRows& rows, int j, uint32_t z[kSize]) {
+HWY_INLINE void rowDepths(const BlockRows& rows, int j, uint32_t z[kSize]) {
   const hn::CappedTag<double, kSize> d;
   const int lanes = static_cast<int>(hn::Lanes(d));
   const auto row = hn::Set(d, rows.depthRow[j]);
@@ -73,7 +73,8 @@ struct PassingOrders {
 
 // Bit i: column i's depth z[i] passes the early test against the stored row (columns in
 // rows.columns only; the others give 0).
-unsigned rowDepthPasses(const BlockRows& rows, const PassingOrders& passing, int j, const uint32_t z[kSize]) {
+HWY_INLINE unsigned rowDepthPasses(const BlockRows& rows, const PassingOrders& passing, int j,
+                                   const uint32_t z[kSize]) {
   const hn::CappedTag<int32_t, kSize> d;
   const int lanes = static_cast<int>(hn::Lanes(d));
   const uint32_t* stored = rows.stored + j * rows.storedStride;

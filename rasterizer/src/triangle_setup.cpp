@@ -80,8 +80,13 @@ bool setEdges(const int64_t (&X)[n], const int64_t (&Y)[n], const PixelRect& bou
   static_assert(n <= TriangleSetup::kMaxEdges);
   // Pixels whose centre 256 i + 128 lies within [min X, max X] (and the same in y); arithmetic
   // shifts are floor divisions, also for negative coordinates.
-  const int64_t minX = *std::min_element(X, X + n), maxX = *std::max_element(X, X + n);
-  const int64_t minY = *std::min_element(Y, Y + n), maxY = *std::max_element(Y, Y + n);
+  int64_t minX = X[0], maxX = X[0], minY = Y[0], maxY = Y[0];
+  for (int i = 1; i < n; ++i) {
+    minX = std::min(minX, X[i]);
+    maxX = std::max(maxX, X[i]);
+    minY = std::min(minY, Y[i]);
+    maxY = std::max(maxY, Y[i]);
+  }
   PixelRect box;
   box.x0 = std::max<int64_t>(bounds.x0, (minX - kSubpixelHalf + kSubpixelOne - 1) >> kSubpixelBits);
   box.y0 = std::max<int64_t>(bounds.y0, (minY - kSubpixelHalf + kSubpixelOne - 1) >> kSubpixelBits);
@@ -136,7 +141,8 @@ bool snapQuad(const WindowVertex* const (&v)[4], SnappedQuad& q) {
 
 // The depth and attribute planes (the divisions of setup), the signed area, and the settings the
 // rasterizer passes on.
-void setPlanes(const SnappedTriangle& t, const TriangleSettings& settings, TriangleSetup& setup) {
+[[gnu::always_inline]] inline void setPlanes(const SnappedTriangle& t, const TriangleSettings& settings,
+                                             TriangleSetup& setup) {
   const WindowVertex* const* v = t.v;
   // Planes in pixel units, through the snapped positions (exact in double).
   double x[3], y[3];
