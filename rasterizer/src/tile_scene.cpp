@@ -126,9 +126,8 @@ void TileScene::addTriangle(const WindowVertex& a, const WindowVertex& b, const 
 }
 
 void TileScene::addQuad(const WindowVertex& v0, const WindowVertex& v1, const WindowVertex& v2,
-                        const WindowVertex& v3, const TriangleSettings& settings, FragmentSink& sink) {
-  TriangleSetup edges;
-  if (!setupQuadEdges(v0, v1, v2, v3, settings.bounds, edges)) return;
+                        const WindowVertex& v3, const TriangleSetup& edges, const TriangleSettings& settings,
+                        FragmentSink& sink) {
   addPolygon<4>({&v0, &v1, &v2, &v3}, edges, settings, sink);
 }
 

@@ -38,9 +38,11 @@ class TileScene {
   // shared by the threads instead of all falling to the submitting one.
   void addTriangle(const WindowVertex& a, const WindowVertex& b, const WindowVertex& c,
                    const TriangleSettings& settings, FragmentSink& sink);
-  // A convex quadrilateral that quadIsConvex accepts, binned and set up (setupQuad) likewise.
+  // A convex quadrilateral, binned and set up (setupQuad) likewise; `edges` are what
+  // setupQuadEdges made of its corners (the caller has them: it decided by them that the corners
+  // are a quadrilateral).
   void addQuad(const WindowVertex& v0, const WindowVertex& v1, const WindowVertex& v2, const WindowVertex& v3,
-               const TriangleSettings& settings, FragmentSink& sink);
+               const TriangleSetup& edges, const TriangleSettings& settings, FragmentSink& sink);
   // A line whose quad lineQuadOf made, to the bins of the tiles its pixels (lineQuadPixels) may
   // be in. stippleStart: the line stipple counter at the line's first fragment.
   void addLine(const LineQuad& quad, const PixelRect& pixels, const WindowVertex& a,

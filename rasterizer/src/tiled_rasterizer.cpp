@@ -302,13 +302,18 @@ void TiledRasterizer::triangle(const WindowVertex& a, const WindowVertex& b, con
 
 void TiledRasterizer::quad(const WindowVertex& v0, const WindowVertex& v1, const WindowVertex& v2,
                            const WindowVertex& v3, const TriangleSettings& settings, FragmentSink& sink) {
+  TriangleSetup edges;  // the edge functions and the box alone, as for binning a triangle
+  if (setupQuadEdges(v0, v1, v2, v3, settings.bounds, edges)) {
+    impl_->filling().addQuad(v0, v1, v2, v3, edges, settings, sink);
+    impl_->afterSubmit();
+    return;
+  }
+  // Refused: corners that snap to no strictly convex quadrilateral are drawn as the two
+  // triangles; a quadrilateral outside the bounds draws nothing, and its triangles neither.
   if (!quadIsConvex(v0, v1, v2, v3)) {
     triangle(v0, v1, v2, settings, sink);
     triangle(v2, v3, v0, settings, sink);
-    return;
   }
-  impl_->filling().addQuad(v0, v1, v2, v3, settings, sink);
-  impl_->afterSubmit();
 }
 
 void TiledRasterizer::line(const WindowVertex& a, const WindowVertex& b,
