@@ -19,6 +19,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <bit>
 #include <condition_variable>
 #include <mutex>
 #include <thread>
@@ -263,6 +264,7 @@ struct TiledRasterizer::Impl {
     // they are thin and blended, each reading and writing pixels the tile keeps in the cache for
     // the next; drawn at once, the smooth_lines frame took 4% longer (smooth_stage.cpp).
     if (settings.payload != nullptr) return false;
+    if (scatteredWith(a)) return false;
     TriangleSetup setup;
     if (!setupTriangle(a, b, c, settings, setup)) return true;  // nothing to draw, binned or not
     if (!drawsAtOnce(setup.box)) return false;
@@ -274,7 +276,29 @@ struct TiledRasterizer::Impl {
     return true;
   }
 
+  // Whether the small triangles lately submitted, `a` the corner of the latest, are scattered: most
+  // of the last 64 lie in another tile than the one before them. Then they are binned after all:
+  // drawn at once, each would fetch its rows of both buffers from memory (and wait for them:
+  // prefetching them a few triangles ahead did not help), while a tile's bin runs with the
+  // tile's rows in the cache. 250,000 triangles scattered over 1920 x 1080 took 116 ms a frame
+  // binned against 132 at once; the triangles of a mesh, each next to the one before, are
+  // faster at once (lit spheres 46 ms against 54 binned).
+  bool scatteredWith(const WindowVertex& a) {
+    const float right = static_cast<float>(framebuffer.width() - 1), top = static_cast<float>(framebuffer.height() - 1);
+    // NaN and negative coordinates count as 0.
+    const int x = static_cast<int>(a.x > 0.0f ? std::min(a.x, right) : 0.0f);
+    const int y = static_cast<int>(a.y > 0.0f ? std::min(a.y, top) : 0.0f);
+    const int tile = filling().tileAt(x, y);
+    tileChanges = tileChanges << 1 | (tile != lastSmallTriangleTile ? 1u : 0u);
+    lastSmallTriangleTile = tile;
+    return std::popcount(tileChanges) > 32;
+  }
+
   const Framebuffer& framebuffer;
+  // The tile of the last small triangle's first corner, and bit i: whether the small triangle i
+  // submissions ago lay in another tile than the one before it (scatteredWith).
+  int lastSmallTriangleTile = -1;
+  uint64_t tileChanges = 0;
   TileScene scenes[2];
   int fillingIndex = 0;
   Flight flight;

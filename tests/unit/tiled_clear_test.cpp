@@ -8,9 +8,13 @@
 // which must still reach each pixel in order. Each triangle has settings of its own, as draws
 // change them (bounds cut by a scissor box, how many varyings, which way it faces, its depth
 // offset, whether depth is used and tested early), often the same as the triangle before, as
-// within a draw: a bin keeps the settings of a run of triangles once.
+// within a draw: a bin keeps the settings of a run of triangles once. With one thread, small
+// triangles scattered over the window are binned after all, and those of a mesh (each next to the
+// one before) drawn at once: long runs of both, interleaved with clears and lines, must give the
+// same bytes too.
 #include <doctest/doctest.h>
 
+#include <cmath>
 #include <cstring>
 #include <random>
 #include <vector>
@@ -163,6 +167,54 @@ std::vector<Step> randomProgram(unsigned seed) {
   return steps;
 }
 
+// A small triangle (within `size` x `size` pixels) about (cx, cy).
+void placeSmall(WindowVertex (&v)[3], float cx, float cy, float size, std::mt19937& random) {
+  std::uniform_real_distribution<float> near(-0.5f * size, 0.5f * size);
+  for (WindowVertex& vertex : v) vertex = coloured(cx + near(random), cy + near(random), random);
+}
+
+// Runs of small triangles, scattered over the window, then walking across it as a mesh's do (each
+// a few pixels from the one before), then scattered again, with a clear or a line now and then.
+std::vector<Step> scatteredThenMeshProgram(unsigned seed) {
+  std::mt19937 random(seed);
+  std::uniform_real_distribution<float> x(-10.0f, kWidth + 10.0f), y(-10.0f, kHeight + 10.0f);
+  std::uniform_real_distribution<float> stepAlong(-3.0f, 4.0f);
+  std::uniform_int_distribution<int> percent(0, 99), byte(0, 255);
+  std::vector<Step> steps;
+  float meshX = 5.0f, meshY = 5.0f;
+  bool earlyDepthTest = false;
+  TriangleSettings triangle = triangleSettings();
+  for (int i = 0; i < 600; ++i) {
+    Step s{};
+    const int p = percent(random);
+    if (p < 4) {
+      s.kind = Step::Clear;
+      s.clear.rect = randomRect(random);
+      s.clear.clearColor = s.clear.clearDepth = true;
+      for (uint8_t& c : s.clear.color) c = static_cast<uint8_t>(byte(random));
+      for (bool& m : s.clear.colorMask) m = true;
+      s.clear.depth = static_cast<uint32_t>(byte(random)) << 16;
+    } else if (p < 8) {
+      s.kind = Step::Line;
+      placeSmall(s.v, x(random), y(random), 30.0f, random);
+    } else {
+      s.kind = Step::Triangle;
+      if (i >= 200 && i < 400) {  // the mesh: across the window row by row
+        meshX += stepAlong(random);
+        if (meshX > kWidth) meshX = 0.0f, meshY += 7.0f;
+        placeSmall(s.v, meshX, std::fmod(meshY, static_cast<float>(kHeight)), 8.0f, random);
+      } else {
+        placeSmall(s.v, x(random), y(random), 12.0f, random);
+      }
+      if (p < 10) triangle = newDrawSettings(random, earlyDepthTest);
+      s.triangle = triangle;
+      s.earlyDepthTest = earlyDepthTest;
+    }
+    steps.push_back(s);
+  }
+  return steps;
+}
+
 LineSettings lineSettings() {
   LineSettings s;
   s.bounds = PixelRect{0, 0, kWidth, kHeight};
@@ -248,6 +300,18 @@ TEST_CASE("clears queued in tiles give the bytes of clearing in order, at any th
   }
 }
 
+TEST_CASE("small triangles scattered, then a mesh's, then scattered: the bytes of drawing in order") {
+  for (unsigned seed = 1; seed <= 3; ++seed) {
+    const std::vector<Step> steps = scatteredThenMeshProgram(seed);
+    const std::vector<uint8_t> expected = drawnInOrder(steps);
+    for (const int threads : {1, 2}) {
+      CAPTURE(seed);
+      CAPTURE(threads);
+      CHECK(drawnInTiles(steps, threads) == expected);
+    }
+  }
+}
+
 TEST_CASE("a tiled rasterizer with only clears queued holds no primitive") {
   Framebuffer fb(kWidth, kHeight);
   WritingSink sink(fb);
@@ -289,6 +353,31 @@ TEST_CASE("one thread: a small triangle that runs every queued bin leaves nothin
   CHECK_FALSE(tiles.idle());
   CHECK(tiles.primitivesQueued());
   tiles.finish();
+  CHECK(tiles.idle());
+  CHECK_FALSE(tiles.primitivesQueued());
+}
+
+// Small triangles scattered over the window are binned (each drawn at once would fetch its rows
+// from memory); a mesh's, each in the tile of the one before, are drawn at once again.
+TEST_CASE("one thread: scattered small triangles are binned, a mesh's drawn at once") {
+  Framebuffer fb(kWidth, kHeight);
+  WritingSink sink(fb);
+  TiledRasterizer tiles(fb, 1);
+  std::mt19937 random(7);
+  auto smallAt = [&](float cx, float cy) {
+    WindowVertex v[3];
+    placeSmall(v, cx, cy, 10.0f, random);
+    tiles.triangle(v[0], v[1], v[2], triangleSettings(), sink);
+  };
+  // Corners of the window in turn: every triangle in another tile than the one before.
+  const float corners[4][2] = {{10, 10}, {kWidth - 10, 10}, {kWidth - 10, kHeight - 10}, {10, kHeight - 10}};
+  for (int i = 0; i < 100; ++i) smallAt(corners[i % 4][0], corners[i % 4][1]);
+  CHECK(tiles.primitivesQueued());
+  tiles.finish();
+  CHECK(tiles.idle());
+  // 100 about one spot: once most of the last 64 stayed in their tile, drawn at once, after that
+  // tile's bin (the only one with anything queued).
+  for (int i = 0; i < 100; ++i) smallAt(100.0f + 0.1f * static_cast<float>(i), 100.0f);
   CHECK(tiles.idle());
   CHECK_FALSE(tiles.primitivesQueued());
 }

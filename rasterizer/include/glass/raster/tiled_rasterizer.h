@@ -29,7 +29,9 @@
 // With one thread (no workers) a triangle, line or point whose pixels lie within a tile's size
 // each way is not binned: it is drawn when it is submitted, after the bins of the tiles it
 // overlaps have run, so the order per pixel holds. Binning a small primitive costs more than the
-// tiles' cache gains for it; large primitives and clears are still binned.
+// tiles' cache gains for it; large primitives and clears are still binned, and so are small
+// triangles while most of the recent ones lie in another tile than the one before them
+// (scattered over the window, each drawn at once would fetch its rows from memory).
 //
 // The sink of a primitive is called later (or at once, as above), from any of the threads, for
 // different tiles at the same time: it must not change state of its own, and whatever it reads (GL state, textures)
