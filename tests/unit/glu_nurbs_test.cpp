@@ -5,7 +5,6 @@
 #include <GL/gl.h>
 #include <GL/glu.h>
 
-#include <cmath>
 #include <vector>
 
 #include "glass/geometry/nurbs.h"
@@ -194,20 +193,21 @@ TEST_CASE("Tessellator mode: a surface sampled by domain distance, with normals"
   squareSurface(n.nurb);
   gluEndSurface(n.nurb);
   CHECK(n.result.errors.empty());
-  CHECK(n.result.begins == std::vector<GLenum>{GL_TRIANGLES});
-  CHECK(n.result.vertices.size() == 4 * 2 * 2 * 3);
+  // One quad strip per row of the 4 x 2 grid, as glEvalMesh2(GL_FILL) draws it.
+  CHECK(n.result.begins == std::vector<GLenum>{GL_QUAD_STRIP, GL_QUAD_STRIP});
+  CHECK(n.result.ends == 2);
+  REQUIRE(n.result.vertices.size() == 2 * (4 + 1) * 2);
   CHECK(n.result.normals.size() == n.result.vertices.size());
-  CHECK(triangleArea(n.result) == doctest::Approx(1.0));
+  // Row j alternates between v = j / 2 and v = (j + 1) / 2, u running from 0 to 1.
+  for (size_t k = 0; k < n.result.vertices.size(); ++k) {
+    const size_t row = k / 10, column = (k % 10) / 2, upper = k % 2;
+    CHECK(n.result.vertices[k][0] == doctest::Approx(column / 4.0));
+    CHECK(n.result.vertices[k][1] == doctest::Approx((row + upper) / 2.0));
+    CHECK(n.result.vertices[k][2] == 0.0f);
+  }
   for (const auto& normal : n.result.normals) {
     CHECK(normal[2] == doctest::Approx(1.0f));
   }
-  bool onGrid = true;
-  for (const auto& v : n.result.vertices) {
-    onGrid &= std::fabs(v[0] * 4 - std::round(v[0] * 4)) < 1e-6f;
-    onGrid &= std::fabs(v[1] * 2 - std::round(v[1] * 2)) < 1e-6f;
-    onGrid &= v[2] == 0.0f;
-  }
-  CHECK(onGrid);
 }
 
 TEST_CASE("Tessellator mode: trimming keeps the region left of the loops") {

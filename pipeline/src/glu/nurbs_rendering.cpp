@@ -13,8 +13,9 @@
 // and colours are computed by the GL. Trimmed surfaces: each grid cell that a trimming loop
 // crosses is cut to the trimmed region with the polygon tessellator (the region kept lies to the
 // left of the loops: counter-clockwise outer loops, clockwise holes) and its triangles are drawn
-// with glEvalCoord2f. In GLU_NURBS_TESSELLATOR mode the same triangles (or lines) are evaluated
-// here and reported through the GLU_NURBS_* callbacks instead.
+// with glEvalCoord2f. In GLU_NURBS_TESSELLATOR mode the same primitives (quad strips for whole
+// grids, triangles, lines) are evaluated here and reported through the GLU_NURBS_* callbacks
+// instead.
 //
 // GLU_OUTLINE_POLYGON draws the tessellation's edges, GLU_OUTLINE_PATCH the boundaries of the
 // pieces, or of the trimming loops of a trimmed surface.
@@ -135,6 +136,10 @@ class SurfaceOutput {
       outlineRectangle(p, nu, nv);
       return;
     }
+    if (nurb_.displayMode == GLU_FILL) {
+      quadStrips(p, nu, nv);
+      return;
+    }
     std::vector<DomainPoint> triangles;
     for (int i = 0; i < nu; ++i) {
       for (int j = 0; j < nv; ++j) cellTriangles(p, nu, nv, i, j, triangles);
@@ -191,6 +196,23 @@ class SurfaceOutput {
   }
 
  private:
+  // The grid as the renderer mode's glEvalMesh2(GL_FILL) draws it (spec 5.1): one quad strip for
+  // every row of cells, its vertices alternating between the row's lower and upper edges. SGI's
+  // GLU reports quad strips too, so a program that draws what the callbacks report gets the same
+  // quadrilaterals (and the same edges in glPolygonMode GL_LINE) as the renderer mode draws.
+  void quadStrips(const BezierSurfacePiece& p, int nu, int nv) {
+    for (int j = 0; j < nv; ++j) {
+      const double v0 = p.v0 + (p.v1 - p.v0) * j / nv, v1 = p.v0 + (p.v1 - p.v0) * (j + 1) / nv;
+      callBegin(GL_QUAD_STRIP);
+      for (int i = 0; i <= nu; ++i) {
+        const double u = p.u0 + (p.u1 - p.u0) * i / nu;
+        callVertex({u, v0});
+        callVertex({u, v1});
+      }
+      callEnd();
+    }
+  }
+
   // The piece's four sides.
   void outlineRectangle(const BezierSurfacePiece& p, int nu, int nv) {
     if (renderer_) {
