@@ -80,13 +80,18 @@ WindowVertex coloured(float x, float y, std::mt19937& random) {
 
 // A step's three vertices, coloured: anywhere in and about the window, or (half of the time)
 // within a box of `small` x `small` pixels there, which one thread draws at once.
+// A small triangle (within `size` x `size` pixels) about (cx, cy).
+void placeSmall(WindowVertex (&v)[3], float cx, float cy, float size, std::mt19937& random) {
+  std::uniform_real_distribution<float> near(-0.5f * size, 0.5f * size);
+  for (WindowVertex& vertex : v) vertex = coloured(cx + near(random), cy + near(random), random);
+}
+
 void placeVertices(WindowVertex (&v)[3], float small, std::mt19937& random) {
   std::uniform_real_distribution<float> x(-40.0f, kWidth + 40.0f), y(-40.0f, kHeight + 40.0f);
-  std::uniform_real_distribution<float> near(-0.5f * small, 0.5f * small);
   const bool within = std::uniform_int_distribution<int>(0, 1)(random) == 1;
   const float cx = x(random), cy = y(random);
-  for (WindowVertex& vertex : v)
-    vertex = within ? coloured(cx + near(random), cy + near(random), random) : coloured(x(random), y(random), random);
+  if (within) return placeSmall(v, cx, cy, small, random);
+  for (WindowVertex& vertex : v) vertex = coloured(x(random), y(random), random);
 }
 
 TriangleSettings triangleSettings() {
@@ -165,12 +170,6 @@ std::vector<Step> randomProgram(unsigned seed) {
     steps.push_back(s);
   }
   return steps;
-}
-
-// A small triangle (within `size` x `size` pixels) about (cx, cy).
-void placeSmall(WindowVertex (&v)[3], float cx, float cy, float size, std::mt19937& random) {
-  std::uniform_real_distribution<float> near(-0.5f * size, 0.5f * size);
-  for (WindowVertex& vertex : v) vertex = coloured(cx + near(random), cy + near(random), random);
 }
 
 // Runs of small triangles, scattered over the window, then walking across it as a mesh's do (each
