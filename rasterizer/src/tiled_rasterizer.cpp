@@ -19,7 +19,6 @@
 
 #include <algorithm>
 #include <atomic>
-#include <bit>
 #include <condition_variable>
 #include <mutex>
 #include <thread>
@@ -289,16 +288,22 @@ struct TiledRasterizer::Impl {
     const int x = static_cast<int>(a.x > 0.0f ? std::min(a.x, right) : 0.0f);
     const int y = static_cast<int>(a.y > 0.0f ? std::min(a.y, top) : 0.0f);
     const int tile = filling().tileAt(x, y);
-    tileChanges = tileChanges << 1 | (tile != lastSmallTriangleTile ? 1u : 0u);
+    const uint64_t changed = tile != lastSmallTriangleTile ? 1u : 0u;
+    // The count follows the history as it shifts (std::popcount is a library call on the
+    // baseline x86-64 target, which has no POPCNT instruction).
+    recentTileChanges += static_cast<int>(changed) - static_cast<int>(tileChanges >> 63);
+    tileChanges = tileChanges << 1 | changed;
     lastSmallTriangleTile = tile;
-    return std::popcount(tileChanges) > 32;
+    return recentTileChanges > 32;
   }
 
   const Framebuffer& framebuffer;
   // The tile of the last small triangle's first corner, and bit i: whether the small triangle i
-  // submissions ago lay in another tile than the one before it (scatteredWith).
+  // submissions ago lay in another tile than the one before it (scatteredWith), and how many of
+  // the 64 bits are set.
   int lastSmallTriangleTile = -1;
   uint64_t tileChanges = 0;
+  int recentTileChanges = 0;
   TileScene scenes[2];
   int fillingIndex = 0;
   Flight flight;
