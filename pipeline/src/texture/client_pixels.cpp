@@ -220,6 +220,11 @@ GLenum checkTexelFormatAndType(GLenum format, GLenum type) {
   return checkPixelFormatAndType(format, type);
 }
 
+GLenum checkTexImageFormatAndType(GLenum format, GLenum type) {
+  if (format == GL_COLOR_INDEX) return checkPixelFormatAndType(format, type);
+  return checkTexelFormatAndType(format, type);
+}
+
 GLenum checkPixelFormatAndType(GLenum format, GLenum type) {
   FormatComponents components{};
   const bool indexOrDepth =

@@ -28,6 +28,11 @@ using PixelLayout = PixelPacking;
 // match the format, table 3.8).
 GLenum checkTexelFormatAndType(GLenum format, GLenum type);
 
+// The same for the data of glTexImage and glTexSubImage, which may also be colour indices
+// (OpenGL 1.4, section 3.8.1: the groups are processed as for DrawPixels, where an index becomes
+// RGBA through the GL_PIXEL_MAP_I_TO_* maps), GL_BITMAP included (section 3.6.4).
+GLenum checkTexImageFormatAndType(GLenum format, GLenum type);
+
 // The layout of slice `slice` of a 3D image of `height` rows (spec 3.8.1: slices are
 // GL_UNPACK_IMAGE_HEIGHT rows apart, or `height` when that is 0, after GL_UNPACK_SKIP_IMAGES
 // slices).

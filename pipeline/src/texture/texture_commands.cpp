@@ -7,6 +7,8 @@
 #include "core/context.h"
 #include "core/errors.h"
 #include "fragment/buffer_selection.h"
+#include "pixels/imaging_pipeline.h"
+#include "pixels/pixel_transfer.h"
 #include "texture/depth_texture.h"
 #include "texture/mipmap_generation.h"
 #include "texture/texture_pixel_transfer.h"
@@ -106,7 +108,7 @@ void unpackBlock(const void* pixels, int dimensions, int width, int height, int 
 GLenum checkImageFormat(GLenum target, GLint internalFormat, GLenum format, GLenum type) {
   const bool depthData = format == GL_DEPTH_COMPONENT;
   const GLenum e =
-      depthData ? checkPixelFormatAndType(format, type) : checkTexelFormatAndType(format, type);
+      depthData ? checkPixelFormatAndType(format, type) : checkTexImageFormatAndType(format, type);
   if (e != GL_NO_ERROR) return e;
   if (depthData != isDepthInternalFormat(internalFormat)) return GL_INVALID_OPERATION;
   if (depthData && !takesDepthImages(target)) return GL_INVALID_OPERATION;
@@ -134,11 +136,29 @@ UnpackedImage readClientImage(const Context& ctx, const void* pixels, int dimens
   if (format == GL_DEPTH_COMPONENT) {
     unpackDepthTexels(pixels, width, height, type, unpackLayout(ctx), ctx.pixelTransfer.depthScale,
                       ctx.pixelTransfer.depthBias, image.depthTexels);
+  } else if (format == GL_COLOR_INDEX) {
+    const PixelLayout layout = unpackLayout(ctx);
+    image.indices.resize(static_cast<size_t>(width) * static_cast<size_t>(height) *
+                         static_cast<size_t>(depth));
+    for (int k = 0; k < depth; ++k) {
+      const PixelLayout slice = dimensions == 3 ? sliceLayout(layout, height, k) : layout;
+      for (int j = 0; j < height; ++j) {
+        unpackIndexRow(pixels, width, j, type, slice,
+                       &image.indices[(static_cast<size_t>(k) * static_cast<size_t>(height) +
+                                       static_cast<size_t>(j)) * static_cast<size_t>(width)]);
+      }
+    }
   } else {
     image.groups = unpackColorGroups(pixels, dimensions, width, height, depth, format, type,
                                      unpackLayout(ctx));
   }
   return image;
+}
+
+// Whether colour data of this format goes through transferredTexels: always for colour indices,
+// which only the transfer operations turn into RGBA; for RGBA data when an operation is active.
+bool takesTransferPath(const Context& ctx, GLenum format) {
+  return format == GL_COLOR_INDEX || textureTransferActive(ctx);
 }
 
 // The texels of a texture image command's data through the pixel transfer operations, border
@@ -153,6 +173,21 @@ bool transferredTexels(Context& ctx, int dimensions, const void* pixels,
   const UnpackedImage& client = unpacked ? *unpacked : read;
   if (format == GL_DEPTH_COMPONENT) {
     texels = client.depthTexels;
+    return true;
+  }
+  if (format == GL_COLOR_INDEX) {
+    // Spec 3.6.5: indices are shifted and offset, then become RGBA through the
+    // GL_PIXEL_MAP_I_TO_* maps (clamped); the imaging operations, if any, follow.
+    RgbaImage groups;
+    groups.width = *width;
+    groups.height = *height * depth;
+    groups.rgba.resize(static_cast<size_t>(groups.count()) * 4);
+    colorIndicesToRGBA(ctx.pixelTransfer, client.indices.data(), groups.count(), groups.rgba.data());
+    if (imagingActive(ctx.imaging) && !transferConvertedColorImage(ctx.imaging, groups, dimensions))
+      return false;
+    *width = groups.width;
+    *height = groups.height / depth;
+    storeTexelGroups(groups, base, texels);
     return true;
   }
   if (!textureTransferActive(ctx)) {
@@ -328,7 +363,7 @@ void texImage(Context& ctx, const TexImageArguments& a, const void* pixels, cons
           static_cast<size_t>(w) * static_cast<size_t>(h) * static_cast<size_t>(d) * 4, 0);
       const int fullHeight = a.dimensions >= 2 ? a.height : 1;
       const int fullDepth = a.dimensions == 3 ? a.depth : 1;
-      if (unpacked || (pixels != nullptr && !depthImage && textureTransferActive(ctx))) {
+      if (unpacked || (pixels != nullptr && !depthImage && takesTransferPath(ctx, a.format))) {
         int fullWidth = a.width, transferredHeight = fullHeight;
         std::vector<uint8_t> full;
         if (!transferredTexels(ctx, a.dimensions, pixels, unpacked, a.format, a.type, base,
@@ -392,7 +427,7 @@ void texSubImage(Context& ctx, const TexSubImageArguments& a, const void* pixels
   TextureObject& texture = *target.texture;
   TextureImage& image = texture.image(target.face, a.level);
   if (GLenum e = a.format == GL_DEPTH_COMPONENT ? checkPixelFormatAndType(a.format, a.type)
-                                                 : checkTexelFormatAndType(a.format, a.type);
+                                                 : checkTexImageFormatAndType(a.format, a.type);
       e != GL_NO_ERROR)
     return recordError(ctx, e);
   if (!image.defined()) return recordError(ctx, GL_INVALID_OPERATION);
@@ -417,7 +452,7 @@ void texSubImage(Context& ctx, const TexSubImageArguments& a, const void* pixels
     // The block's size after the pixel transfer (a GL_REDUCE convolution makes it smaller).
     int width = a.width, rows = height;
     std::vector<uint8_t> texels;
-    if (unpacked || (!image.isDepth() && textureTransferActive(ctx))) {
+    if (unpacked || (!image.isDepth() && takesTransferPath(ctx, a.format))) {
       if (!transferredTexels(ctx, a.dimensions, pixels, unpacked, a.format, a.type, image.base,
                              &width, &rows, depth, texels))
         return;  // a histogram or minmax sink took the groups

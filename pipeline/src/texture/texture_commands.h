@@ -56,6 +56,7 @@ struct TexImageArguments {
 struct UnpackedImage {
   RgbaImage groups;                  // colour data: width x (height * depth) groups
   std::vector<uint8_t> depthTexels;  // GL_DEPTH_COMPONENT data
+  std::vector<int32_t> indices;      // GL_COLOR_INDEX data: width x (height * depth) indices
 };
 using UnpackedTexels = std::shared_ptr<const UnpackedImage>;
 UnpackedTexels unpackForDisplayList(const Context& ctx, const TexImageArguments& args, const void* pixels);
