@@ -76,7 +76,9 @@ class FragmentEmitter {
       for (int k = 0; k < 4; ++k)
         prototype_.varyings[varying::texCoordSlot(u) + k] = r.texCoord[u][k];
     }
-    prototype_.varyings[varying::kFogCoordinate] = r.distance;
+    // A fog coordinate taken as the raster distance may be negative; fog uses its magnitude, as
+    // for vertices (fragment/fog_hooks.h, fogCoordinate).
+    prototype_.varyings[varying::kFogCoordinate] = std::fabs(r.distance);
   }
   ~FragmentEmitter() { flush(); }
   FragmentEmitter(const FragmentEmitter&) = delete;

@@ -62,11 +62,14 @@ void setRasterPosition(Context& ctx, const float object[4]) {
   r.window[3] = clip[3];
   r.valid = true;
 
-  // Spec 2.13: the raster distance is the distance from the eye to the position.
+  // Spec 2.13: the raster distance is the distance from the eye to the position, or with
+  // GL_FOG_COORDINATE_SOURCE GL_FOG_COORDINATE the current fog coordinate (OpenGL 1.4).
   float eye[4];
   transformVector4(setup.modelview, object, eye);
   const float w = eye[3] != 0.0f ? eye[3] : 1.0f;
-  r.distance = std::sqrt(eye[0] * eye[0] + eye[1] * eye[1] + eye[2] * eye[2]) / std::fabs(w);
+  r.distance = ctx.fog.coordinateSource == GL_FOG_COORDINATE
+                   ? ctx.current.fogCoord
+                   : std::sqrt(eye[0] * eye[0] + eye[1] * eye[1] + eye[2] * eye[2]) / std::fabs(w);
 
   const float* varyings = vertex.clip.varyings;
   for (int k = 0; k < 4; ++k) {
@@ -88,7 +91,9 @@ void setWindowPosition(Context& ctx, float x, float y, float z) {
   r.window[2] = static_cast<float>(n + std::clamp(static_cast<double>(z), 0.0, 1.0) * (f - n));
   r.window[3] = 1.0f;
   r.valid = true;
-  r.distance = 0.0f;
+  // Spec 2.13 (glWindowPos): the current fog coordinate with GL_FOG_COORDINATE_SOURCE
+  // GL_FOG_COORDINATE, otherwise 0.
+  r.distance = ctx.fog.coordinateSource == GL_FOG_COORDINATE ? ctx.current.fogCoord : 0.0f;
   for (int k = 0; k < 4; ++k) {
     r.color[k] = std::clamp(ctx.current.color[k], 0.0f, 1.0f);
   }
