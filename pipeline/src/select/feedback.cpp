@@ -6,7 +6,7 @@ namespace glass::gl {
 
 void writeFeedbackValue(Context& ctx, float value) {
   FeedbackState& f = ctx.renderMode.feedback;
-  if (f.written < f.bufferSize) f.buffer[f.written] = value;
+  if (f.written < f.bufferSize && f.buffer != nullptr) f.buffer[f.written] = value;
   ++f.written;
 }
 

@@ -44,7 +44,7 @@ void glSelectBuffer(GLsizei size, GLuint* buffer) {
     if (ctx.renderMode.mode == GL_SELECT) return recordError(ctx, GL_INVALID_OPERATION);
     SelectionState& s = ctx.renderMode.selection;
     s.buffer = buffer;
-    s.bufferSize = buffer ? size : 0;
+    s.bufferSize = size;  // queried as given; nothing is stored through a null buffer
     s.bufferGiven = true;
     s.written = 0;
   });
@@ -61,7 +61,7 @@ void glFeedbackBuffer(GLsizei size, GLenum type, GLfloat* buffer) {
     if (ctx.renderMode.mode == GL_FEEDBACK) return recordError(ctx, GL_INVALID_OPERATION);
     glass::gl::FeedbackState& f = ctx.renderMode.feedback;
     f.buffer = buffer;
-    f.bufferSize = buffer ? size : 0;
+    f.bufferSize = size;  // queried as given; nothing is stored through a null buffer
     f.bufferGiven = true;
     f.type = type;
     f.written = 0;

@@ -9,7 +9,7 @@ namespace glass::gl {
 namespace {
 
 void writeSelectionValue(SelectionState& s, GLuint value) {
-  if (s.written < s.bufferSize) s.buffer[s.written] = value;
+  if (s.written < s.bufferSize && s.buffer != nullptr) s.buffer[s.written] = value;
   ++s.written;
 }
 
