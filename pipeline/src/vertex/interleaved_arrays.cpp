@@ -71,7 +71,9 @@ void glInterleavedArrays(GLenum format, GLsizei stride, const GLvoid* pointer) {
     const int str = stride != 0 ? stride : layout->stride;
     const auto* p = static_cast<const unsigned char*>(pointer);
     glass::gl::ArrayState& a = ctx.arrays;
-    a.edgeFlag.enabled = false;  // (and the colour index array, which glass does not have)
+    // Spec 2.8: glInterleavedArrays disables the edge flag and colour index arrays.
+    a.edgeFlag.enabled = false;
+    a.index.enabled = false;
     // The texture coordinates go to the client active unit's array (spec 2.8).
     setArray(a.texCoord[a.clientActiveUnit], layout->texCoordSize > 0, layout->texCoordSize,
              GL_FLOAT, str, p);
