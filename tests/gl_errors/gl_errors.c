@@ -2007,6 +2007,85 @@ static void more_texture_and_raster_state(void) {
   }
 }
 
+static void restored_and_evaluated_state(void) {
+  section("state restored by glPopAttrib, current values and evaluation (6.1.14, 5.1)");
+  {
+    const GLfloat position[4] = {1, 2, 3, 1};
+    const GLfloat other[4] = {0, 0, 1, 0};
+    const GLfloat emission[4] = {0.5f, 0.25f, 0, 1};
+    GLfloat v[4] = {0, 0, 0, 0};
+    E(glTranslatef(1, 0, 0); glLightfv(GL_LIGHT3, GL_POSITION, position); glLoadIdentity());
+    E(glGetLightfv(GL_LIGHT3, GL_POSITION, v));
+    values_f("GL_LIGHT3 GL_POSITION", v, 4);
+    E(glPushAttrib(GL_LIGHTING_BIT); glLightfv(GL_LIGHT3, GL_POSITION, other);
+      glMaterialfv(GL_FRONT, GL_EMISSION, emission); glPopAttrib());
+    E(glGetLightfv(GL_LIGHT3, GL_POSITION, v));
+    values_f("GL_LIGHT3 GL_POSITION after glPopAttrib", v, 4);
+    E(glGetMaterialfv(GL_FRONT, GL_EMISSION, v));
+    values_f("GL_FRONT GL_EMISSION after glPopAttrib", v, 4);
+  }
+  E(glWindowPos2i(7, 9); glPushAttrib(GL_CURRENT_BIT); glWindowPos2i(20, 30); glEdgeFlag(GL_FALSE); glPopAttrib());
+  QF(GL_CURRENT_RASTER_POSITION, 4);
+  QB(GL_EDGE_FLAG, 1);
+  {
+    const GLdouble plane[4] = {0, 1, 0, 0};
+    GLdouble got[4] = {0, 0, 0, 0};
+    GLfloat shown[4];
+    E(glPushAttrib(GL_TRANSFORM_BIT); glClipPlane(GL_CLIP_PLANE4, plane); glEnable(GL_CLIP_PLANE4);
+      glEnable(GL_RESCALE_NORMAL); glPopAttrib());
+    QE(GL_CLIP_PLANE4);
+    QE(GL_RESCALE_NORMAL);
+    E(glGetClipPlane(GL_CLIP_PLANE4, got));
+    for (int i = 0; i < 4; ++i) shown[i] = (GLfloat)got[i];
+    values_f("GL_CLIP_PLANE4 after glPopAttrib", shown, 4);
+  }
+  {
+    const GLfloat plane[4] = {1, 1, 0, 0};
+    GLfloat v[4] = {0, 0, 0, 0};
+    GLint mode = 0;
+    E(glPushAttrib(GL_TEXTURE_BIT); glTexGenfv(GL_S, GL_OBJECT_PLANE, plane); glTexGeni(GL_S, GL_TEXTURE_GEN_MODE, GL_EYE_LINEAR);
+      glEnable(GL_TEXTURE_GEN_S); glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_DECAL); glPopAttrib());
+    E(glGetTexGenfv(GL_S, GL_OBJECT_PLANE, v));
+    values_f("GL_S GL_OBJECT_PLANE after glPopAttrib", v, 4);
+    QE(GL_TEXTURE_GEN_S);
+    E(glGetTexEnviv(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, &mode));
+    value_i("GL_TEXTURE_ENV_MODE after glPopAttrib", mode);
+  }
+  E(glPushClientAttrib(GL_CLIENT_PIXEL_STORE_BIT); glPixelStorei(GL_PACK_ALIGNMENT, 1); glPixelStorei(GL_UNPACK_SKIP_ROWS, 3);
+    glPopClientAttrib());
+  QI(GL_PACK_ALIGNMENT, 1);
+  QI(GL_UNPACK_SKIP_ROWS, 1);
+  {
+    static const GLfloat colours[8] = {1, 0, 0, 1, 0, 0, 1, 1};
+    static const GLfloat vertices[2] = {0.25f, 0.75f};
+    E(glColor4f(0.5f, 0.5f, 0.5f, 0.5f); glMap1f(GL_MAP1_COLOR_4, 0, 1, 4, 2, colours); glEnable(GL_MAP1_COLOR_4));
+    E(glMap1f(GL_MAP1_VERTEX_3, 0, 1, 3, 1, vertices));
+    E(glBegin(GL_POINTS); glEvalCoord1f(0.25f); glEnd());
+    QF(GL_CURRENT_COLOR, 4);
+    E(glDisable(GL_MAP1_COLOR_4); glColor4f(1, 1, 1, 1));
+  }
+  {
+    GLfloat v[4] = {0, 0, 0, 0};
+    E(glColorMaterial(GL_FRONT, GL_SPECULAR); glEnable(GL_COLOR_MATERIAL); glColor4f(0.1f, 0.2f, 0.3f, 0.4f);
+      glDisable(GL_COLOR_MATERIAL));
+    E(glGetMaterialfv(GL_FRONT, GL_SPECULAR, v));
+    values_f("GL_FRONT GL_SPECULAR from glColor", v, 4);
+    E(glColorMaterial(GL_FRONT_AND_BACK, GL_AMBIENT_AND_DIFFUSE); glColor4f(1, 1, 1, 1));
+  }
+  {
+    static GLuint hits[16];
+    E(glSelectBuffer(16, hits); glRenderMode(GL_SELECT); glInitNames(); glPushName(4); glRasterPos2f(0, 0);
+      glLoadName(5); glRasterPos2f(3, 0); glLoadName(6); glWindowPos2i(1, 1); glLoadName(7);
+      glBitmap(0, 0, 0, 0, 1, 1, NULL));
+    value_i("hits from raster positions", glRenderMode(GL_RENDER));
+    for (int i = 0; i < 8; ++i) {
+      char name[32];
+      snprintf(name, sizeof name, "hit word %d", i);
+      value_i(name, (long)hits[i]);
+    }
+  }
+}
+
 static void script(void) {
   state_and_enables();
   matrices();
@@ -2034,6 +2113,7 @@ static void script(void) {
   interleaved_formats();
   feedback_formats();
   more_texture_and_raster_state();
+  restored_and_evaluated_state();
 }
 
 int main(void) {
