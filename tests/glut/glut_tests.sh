@@ -403,6 +403,45 @@ window_position)
   expect_text out.txt "cursor 100"
   if grep -F "missing enum" err.txt >/dev/null; then fail "glutGet warned about its own query"; fi
   ;;
+callback_order)
+  # As freeglut on X: a window that appears away from (0, 0) is told its position before its
+  # first reshape (freeglut takes X's first ConfigureNotify for a move from (0, 0)), and closing
+  # a pop-up without a choice draws the window again (freeglut's pop-ups are windows of their
+  # own; taking one away exposes the program's window). xvfb_differential.sh checks the same
+  # against freeglut itself.
+  run glut_timer_window "key q
+"
+  [ "$status" -eq 0 ] || fail "timer_window exited with $status"
+  first_two=$(grep -v '^glutGet' out.txt | head -n 2 | tr '\n' ' ')
+  [ "$first_two" = "position 10 10 reshape 300 200 " ] ||
+    fail "not the position, then the reshape: $(cat out.txt)"
+  run glut_spin_menu "mouse right down 30 30
+mouse right up 30 30
+mouse left down 250 200
+mouse left up 250 200
+key q
+"
+  [ "$status" -eq 0 ] || fail "spin_menu exited with $status"
+  grep -A 1 "menu status 0 at 250 200" out.txt | tail -n 1 | grep -q "^display angle 0" ||
+    fail "no display after the pop-up closed: $(cat out.txt)"
+  ;;
+key_repeat)
+  # glutIgnoreKeyRepeat is the current window's (GLUT 3.7, freeglut), glutSetKeyRepeat all
+  # windows', on by default, as freeglut answers glutDeviceGet. (The repeats themselves, as a
+  # release and a press each, need a held key: xvfb_differential.sh, case key_repeat.)
+  run glut_key_repeat "window 1
+key g
+key i
+key r
+key R
+key q
+"
+  [ "$status" -eq 0 ] || fail "key_repeat exited with $status"
+  expect_text out.txt "ignore key repeat 0, key repeat 1; in the second window: ignore key repeat 0"
+  expect_text out.txt "ignore key repeat 1, key repeat 1; in the second window: ignore key repeat 0"
+  expect_text out.txt "ignore key repeat 1, key repeat 0; in the second window: ignore key repeat 0"
+  [ "$(grep -c "key repeat 1;" out.txt)" -eq 3 ] || fail "not back on: $(cat out.txt)"
+  ;;
 *)
   fail "unknown case $case_name"
   ;;

@@ -81,6 +81,9 @@ void dispatchMotion(Window& window, const InputEvent& e) {
 }
 
 void dispatchKey(Window& window, const InputEvent& e) {
+  // A held key's repeats, dropped for every window by glutSetKeyRepeat(GLUT_KEY_REPEAT_OFF) and
+  // for this one by glutIgnoreKeyRepeat (freeglut 3's rule).
+  if (e.repeat && (state().keyRepeat == GLUT_KEY_REPEAT_OFF || window.ignoreKeyRepeat)) return;
   window.mouseX = e.x;
   window.mouseY = e.y;
   const WindowCallbacks& c = window.callbacks;
@@ -174,6 +177,10 @@ void deliver(Window* window, const InputEvent& e);
 void dispatchInput(const InputEvent& given) {
   Window* window = findWindow(given.window);
   if (!window) return;
+  // Input after a resize the program asked for: the system's expose of it, if any, has come.
+  if (isPointerOrKey(given.kind) && given.kind != InputKind::Motion) {
+    window->resizeExposeAwaited = false;
+  }
   if (given.kind == InputKind::Entry && !window->children.empty()) {
     // The pointer left the top-level window from the window it was over (a sub-window, maybe),
     // or entered it: over the top-level window until it moves.
@@ -240,6 +247,11 @@ void deliver(Window* window, const InputEvent& e) {
       if (window->visible) window->redisplayPending = true;
       return;
     case InputKind::Exposed:
+      if (window->resizeExposeAwaited) {
+        window->resizeExposeAwaited = false;
+        refreshScreen(*window);
+        return;
+      }
       window->redisplayPending = true;
       refreshScreen(*window);
       return;

@@ -79,6 +79,7 @@ struct Window {
   int cursor = GLUT_CURSOR_INHERIT;  // a new window's cursor (GLUT 3.7 spec 4.13)
   bool fullScreen = false;
   bool visible = true;
+  bool ignoreKeyRepeat = false;  // glutIgnoreKeyRepeat: this window's (GLUT 3.7)
 
   bool redisplayPending = true;     // a new window is drawn once it is shown (spec 4.1)
   bool reshapePending = true;       // and told its size first
@@ -86,6 +87,9 @@ struct Window {
   int requestedWidth = 0, requestedHeight = 0;  // glutReshapeWindow, applied by the loop
   bool movePending = false;                     // glutPositionWindow, reported by the loop
   int requestedX = 0, requestedY = 0;
+  // The window system's expose of a size the program asked for, still to come: the window was
+  // drawn at that size already, in the pass that made the change (see runReshape).
+  bool resizeExposeAwaited = false;
   bool inDisplayCallback = false;
   bool presentedInDisplay = false;  // glFlush/glFinish or glutSwapBuffers inside display
 
@@ -152,7 +156,7 @@ struct State {
   uint64_t nextTimerOrder = 0;
 
   int actionOnWindowClose = 0;  // GLUT_ACTION_EXIT
-  bool ignoreKeyRepeat = false;
+  int keyRepeat = GLUT_KEY_REPEAT_ON;  // glutSetKeyRepeat, for all windows (freeglut's fgState)
   bool loopRunning = false;
   int modifiers = -1;           // valid inside input callbacks only; -1 elsewhere
 

@@ -29,6 +29,7 @@ struct InputEvent {
   int x = 0, y = 0;  // the pointer in window coordinates (y down), or the new position
   int width = 0, height = 0;
   int modifiers = 0;  // GLUT_ACTIVE_* held at the time
+  bool repeat = false;  // a key's auto-repeat (its release and press), not the user's own
 };
 
 }  // namespace glass::glut

@@ -15,7 +15,6 @@
 #include "headless_run.h"
 #include "presentation.h"
 #include "sdl_display.h"
-#include "sdl_display.h"
 #include "window_lifecycle.h"
 
 namespace glass::glut {
@@ -64,8 +63,15 @@ void runMove(Window& window) {
 
 void runReshape(Window& window) {
   if (window.requestedWidth > 0) {
+    const bool changes =
+        window.width != window.requestedWidth || window.height != window.requestedHeight;
     resizeWindow(window, window.requestedWidth, window.requestedHeight);
     window.requestedWidth = window.requestedHeight = 0;
+    // freeglut reshapes and draws a window on X's ConfigureNotify, which comes with the expose
+    // of the new size, and draws it once for both. glass reshapes it at once, so the expose that
+    // follows is of a picture already drawn at that size: it only shows it again (event_dispatch).
+    window.resizeExposeAwaited =
+        changes && window.sdlWindow && !window.parent && !displayIsHeadless();
   }
   if (!window.reshapePending) return;
   window.reshapePending = false;
@@ -77,8 +83,12 @@ void runReshape(Window& window) {
   }
 }
 
+// A new window's position (when it is not at (0, 0)) and first reshape come first in the pass.
 void runReshapes() {
-  forEachWindow([](Window& window) { runReshape(window); });
+  forEachWindow([](Window& window) {
+    if (!window.firstPassDone) runMove(window);
+    if (Window* still = findWindow(window.id)) runReshape(*still);
+  });
 }
 
 // Each window's move, then its reshape. A sub-window comes after its parent (its id is larger),

@@ -74,7 +74,11 @@ void notifyMenuStatus(int status, int x, int y) {
 
 // Opens the submenu of entry `entry` of level `level` beside it, closing deeper levels.
 void openSubMenuBeside(Window& window, size_t level, int entry) {
-  window.openMenus.resize(level + 1);
+  if (window.openMenus.size() > level + 1) {
+    // A submenu closes: what it covered is to be drawn again (as in closePopup).
+    window.openMenus.resize(level + 1);
+    window.redisplayPending = true;
+  }
   const OpenMenu parent = window.openMenus[level];
   const Menu* menu = findMenu(parent.menu);
   if (!menu || entry < 0 || entry >= static_cast<int>(menu->items.size())) return;
@@ -175,6 +179,10 @@ void closePopup(Window& window) {
   if (window.openMenus.empty()) return;
   window.openMenus.clear();
   window.menuButton = -1;
+  // The window is drawn again where the pop-up was, as with freeglut and GLUT 3.7 on X, whose
+  // pop-ups are windows of their own: taking one away exposes the program's window, whose
+  // display callback then runs (once, with any glutPostRedisplay of the menu's callback).
+  window.redisplayPending = true;
   notifyMenuStatus(GLUT_MENU_NOT_IN_USE, window.mouseX, window.mouseY);
   if (findWindow(window.id)) refreshScreen(window);
 }

@@ -114,8 +114,11 @@ int glutDeviceGet(GLenum query) {
     case GLUT_HAS_KEYBOARD:
     case GLUT_HAS_MOUSE: return 1;
     case GLUT_NUM_MOUSE_BUTTONS: return 3;
-    case GLUT_DEVICE_IGNORE_KEY_REPEAT: return state().ignoreKeyRepeat ? 1 : 0;
-    case GLUT_DEVICE_KEY_REPEAT: return GLUT_KEY_REPEAT_DEFAULT;
+    case GLUT_DEVICE_IGNORE_KEY_REPEAT: {
+      const Window* window = currentWindow();
+      return window && window->ignoreKeyRepeat ? 1 : 0;
+    }
+    case GLUT_DEVICE_KEY_REPEAT: return state().keyRepeat;
     // No spaceball, dial and button box, tablet or joystick.
     default: return 0;
   }
@@ -154,18 +157,22 @@ int glutExtensionSupported(const char* extension) {
   return 0;
 }
 
+// GLUT 3.7 (glutIgnoreKeyRepeat(3GLUT)): whether the current window gets a held key's repeats.
 void glutIgnoreKeyRepeat(int ignore) {
-  requireInitialised("glutIgnoreKeyRepeat");
-  state().ignoreKeyRepeat = ignore != 0;
+  if (Window* window = requireCurrentWindow("glutIgnoreKeyRepeat")) {
+    window->ignoreKeyRepeat = ignore != 0;
+  }
 }
 
-// The system's key repeat is not GLUT's to change under SDL; the modes are checked as freeglut
-// checks them.
+// Key repeat on or off for every window, as freeglut 3 does it: the system's repeats still come,
+// and GLUT drops them (the default is on).
 void glutSetKeyRepeat(int repeatMode) {
   requireInitialised("glutSetKeyRepeat");
-  if (repeatMode != GLUT_KEY_REPEAT_OFF && repeatMode != GLUT_KEY_REPEAT_ON &&
-      repeatMode != GLUT_KEY_REPEAT_DEFAULT) {
-    fatalError("Invalid glutSetKeyRepeat mode: %d", repeatMode);
+  switch (repeatMode) {
+    case GLUT_KEY_REPEAT_OFF: state().keyRepeat = GLUT_KEY_REPEAT_OFF; break;
+    case GLUT_KEY_REPEAT_ON:
+    case GLUT_KEY_REPEAT_DEFAULT: state().keyRepeat = GLUT_KEY_REPEAT_ON; break;
+    default: fatalError("Invalid glutSetKeyRepeat mode: %d", repeatMode);
   }
 }
 

@@ -17,11 +17,15 @@ namespace {
 
 bool headless = false;
 
+// Where each full-screen window was, and its size, to go back to when it leaves full screen.
+std::map<SDL_Window*, SDL_Rect> windowedGeometry;
+
 // The character a key press gave, kept until its release, so that glutKeyboardUpFunc gets the
 // same character (SDL sends the text of a press in a separate SDL_TEXTINPUT event).
 std::map<SDL_Scancode, int> characterOfPressedKey;
 SDL_Scancode keyAwaitingText = SDL_SCANCODE_UNKNOWN;
 int windowAwaitingText = 0;
+bool repeatAwaitingText = false;  // the press awaiting its text is a key's auto-repeat
 
 Window* windowOfSystemId(Uint32 sdlId) {
   SDL_Window* sdlWindow = SDL_GetWindowFromID(sdlId);
@@ -167,14 +171,36 @@ int latin1Of(const char* text) {
   return -1;
 }
 
+// Where the pointer is in the window (y down, and outside it too), as X gives it to freeglut with
+// a key or wheel event. SDL's key events carry no position, and the window's record of the last
+// motion is stale while the pointer has not moved over the window since it was made or moved
+// (a key typed before the pointer first enters the window got 0, 0).
+void pointerInWindow(const Window& window, int& x, int& y) {
+  int screenX = 0, screenY = 0, windowX = 0, windowY = 0;
+  SDL_GetGlobalMouseState(&screenX, &screenY);
+  SDL_GetWindowPosition(window.sdlWindow, &windowX, &windowY);
+  x = screenX - windowX;
+  y = screenY - windowY;
+}
+
 void translateKey(const SDL_KeyboardEvent& key, Window& window, std::vector<InputEvent>& events) {
   InputEvent event;
   event.window = window.id;
-  event.x = window.mouseX;
-  event.y = window.mouseY;
+  pointerInWindow(window, event.x, event.y);
   event.modifiers = glutModifiersOfKeyEvent(key);
   const bool down = key.type == SDL_KEYDOWN;
-  if (down && key.repeat && state().ignoreKeyRepeat) return;
+  if (down && key.repeat) {
+    // X repeats a held key as a release and a press, and freeglut (as GLUT 3.7) passes both on
+    // to the keyboard-up and keyboard callbacks; SDL gives only the press. Both are marked as a
+    // repeat, for the window that ignores repeats (event_dispatch.cpp).
+    SDL_KeyboardEvent release = key;
+    release.type = SDL_KEYUP;
+    release.state = SDL_RELEASED;
+    const size_t first = events.size();
+    translateKey(release, window, events);
+    for (size_t i = first; i < events.size(); ++i) events[i].repeat = true;
+    event.repeat = true;
+  }
   if (down) keyAwaitingText = SDL_SCANCODE_UNKNOWN;  // a new press ends any wait for text
   if (const int special = specialKeyOf(key.keysym.sym, key.keysym.mod)) {
     event.kind = down ? InputKind::Special : InputKind::SpecialUp;
@@ -195,6 +221,7 @@ void translateKey(const SDL_KeyboardEvent& key, Window& window, std::vector<Inpu
   if (character < 0) {
     keyAwaitingText = key.keysym.scancode;
     windowAwaitingText = window.id;
+    repeatAwaitingText = event.repeat;
     return;
   }
   characterOfPressedKey[key.keysym.scancode] = character;
@@ -214,9 +241,9 @@ void translateText(const SDL_TextInputEvent& text, std::vector<InputEvent>& even
   event.kind = InputKind::Key;
   event.window = window->id;
   event.key = character;
-  event.x = window->mouseX;
-  event.y = window->mouseY;
+  pointerInWindow(*window, event.x, event.y);
   event.modifiers = glutModifiersOf(SDL_GetModState());
+  event.repeat = repeatAwaitingText;
   if (keyAwaitingText != SDL_SCANCODE_UNKNOWN) characterOfPressedKey[keyAwaitingText] = character;
   keyAwaitingText = SDL_SCANCODE_UNKNOWN;
   events.push_back(event);
@@ -300,8 +327,7 @@ void translate(const SDL_Event& e, std::vector<InputEvent>& events) {
       event.button = e.wheel.y != 0 ? 0 : 1;
       const int amount = e.wheel.y != 0 ? e.wheel.y : e.wheel.x;
       event.buttonState = amount > 0 ? 1 : -1;
-      event.x = window->mouseX;
-      event.y = window->mouseY;
+      pointerInWindow(*window, event.x, event.y);
       event.modifiers = glutModifiersOf(SDL_GetModState());
       events.push_back(event);
       return;
@@ -388,6 +414,7 @@ bool createSystemWindow(Window& window, bool borderless) {
 }
 
 void destroySystemWindow(Window& window) {
+  windowedGeometry.erase(window.sdlWindow);
   if (window.sdlWindow) SDL_DestroyWindow(window.sdlWindow);
   window.sdlWindow = nullptr;
 }
@@ -431,9 +458,31 @@ bool systemWindowPosition(const Window& window, int& x, int& y) {
 }
 
 void setSystemWindowFullScreen(Window& window, bool fullScreen) {
-  if (window.sdlWindow) {
-    SDL_SetWindowFullscreen(window.sdlWindow, fullScreen ? SDL_WINDOW_FULLSCREEN_DESKTOP : 0);
+  SDL_Window* sdlWindow = window.sdlWindow;
+  if (!sdlWindow) return;
+  if (!fullScreen) {
+    SDL_SetWindowFullscreen(sdlWindow, 0);
+    if (auto windowed = windowedGeometry.find(sdlWindow); windowed != windowedGeometry.end()) {
+      SDL_SetWindowSize(sdlWindow, windowed->second.w, windowed->second.h);
+      SDL_SetWindowPosition(sdlWindow, windowed->second.x, windowed->second.y);
+      windowedGeometry.erase(windowed);
+    }
+    return;
   }
+  SDL_Rect windowed;
+  SDL_GetWindowPosition(sdlWindow, &windowed.x, &windowed.y);
+  SDL_GetWindowSize(sdlWindow, &windowed.w, &windowed.h);
+  windowedGeometry[sdlWindow] = windowed;
+  // SDL asks the window manager for full screen (X: _NET_WM_STATE_FULLSCREEN); without one that
+  // does it, nothing changes on the screen, though SDL then reports the screen's size. So the
+  // window is first put over the whole screen by the program itself, as freeglut does when the
+  // window manager does not help (GLUT 3.7 spec 4.9: the window covers the screen).
+  SDL_Rect screen;
+  if (SDL_GetDisplayBounds(SDL_GetWindowDisplayIndex(sdlWindow), &screen) == 0) {
+    SDL_SetWindowPosition(sdlWindow, screen.x, screen.y);
+    SDL_SetWindowSize(sdlWindow, screen.w, screen.h);
+  }
+  SDL_SetWindowFullscreen(sdlWindow, SDL_WINDOW_FULLSCREEN_DESKTOP);
 }
 
 void showSystemWindow(Window& window, bool visible) {

@@ -71,6 +71,16 @@ void takeOptions(int* pargc, char** argv) {
   *pargc = kept;
 }
 
+// A move glass made on the system's window (into or out of full screen) is told to the position
+// callback by the loop, as a move the program asks for is (SDL sends no event for either).
+void reportSystemMove(Window& window) {
+  int x = 0, y = 0;
+  if (!systemWindowPosition(window, x, y) || (x == window.x && y == window.y)) return;
+  window.requestedX = x;
+  window.requestedY = y;
+  window.movePending = true;
+}
+
 void freeWindow(Window& window) {
   destroySystemWindow(window);
   if (window.context) glassDestroyContext(window.context);
@@ -251,6 +261,14 @@ int registerWindow(std::unique_ptr<Window> window) {
   glassSetFlushCallback(window->context, presentOnFlush,
                         reinterpret_cast<void*>(static_cast<intptr_t>(window->id)));
   window->shown.assign(static_cast<size_t>(window->width) * window->height * 4, 0);
+  // A window that appears anywhere but at (0, 0) (of the screen, or of its parent) is told its
+  // position before its first reshape, as freeglut tells it on X: it takes the window's first
+  // ConfigureNotify (or a sub-window's CreateNotify) for a move from (0, 0).
+  if (window->x != 0 || window->y != 0) {
+    window->movePending = true;
+    window->requestedX = window->x;
+    window->requestedY = window->y;
+  }
   Window& created = *window;
   s.windows[created.id] = std::move(window);
   makeCurrent(created);
@@ -340,6 +358,7 @@ void glutReshapeWindow(int width, int height) {
   if (window->fullScreen) {
     window->fullScreen = false;
     setSystemWindowFullScreen(*window, false);
+    reportSystemMove(*window);
   }
   window->requestedWidth = width > 0 ? width : 1;
   window->requestedHeight = height > 0 ? height : 1;
@@ -397,6 +416,7 @@ void glutFullScreen(void) {
   if (!window || window->fullScreen || window->parent) return;  // sub-windows: as freeglut
   window->fullScreen = true;
   setSystemWindowFullScreen(*window, true);
+  reportSystemMove(*window);
 }
 
 void glutLeaveFullScreen(void) {
@@ -404,6 +424,7 @@ void glutLeaveFullScreen(void) {
   if (!window || !window->fullScreen) return;
   window->fullScreen = false;
   setSystemWindowFullScreen(*window, false);
+  reportSystemMove(*window);
 }
 
 void glutFullScreenToggle(void) {
@@ -411,6 +432,7 @@ void glutFullScreenToggle(void) {
   if (!window) return;
   window->fullScreen = !window->fullScreen;
   setSystemWindowFullScreen(*window, window->fullScreen);
+  reportSystemMove(*window);
 }
 
 void glutPostRedisplay(void) {
