@@ -218,12 +218,38 @@ display_string)
   [ "$status" -eq 0 ] || fail "exited with $status"
   expect_text err.txt "Display string token not recognized:  bogus=3"
   expect_text out.txt "mode 2"
+  # A multisample window is a wish (GLUT 3.7, glutInitDisplayMode): without multisampling,
+  # glass makes a window without it, as freeglut does where there is none.
+  run glut_display_string "" "rgb samples>=2"
+  [ "$status" -eq 0 ] || fail "'rgb samples>=2' exited with $status"
+  expect_text out.txt "mode 128"
   # What glass cannot have fails at glutCreateWindow, as the same bits of glutInitDisplayMode do.
-  for words in "index" "rgb samples>=2" "stereo"; do
+  for words in "index" "stereo"; do
     run glut_display_string "" "$words"
     [ "$status" -eq 1 ] || fail "'$words' exited with $status"
     expect_text err.txt "FBConfig with necessary capabilities not found"
   done
+  ;;
+display_mode_buffers)
+  # The buffers of a window follow its display mode as Mesa's visuals under X do (freeglut 3.4
+  # with Mesa 22 on Xvfb printed the same, but for 32 depth bits where only GLUT_DEPTH is asked):
+  # depth with GLUT_DEPTH or GLUT_STENCIL, stencil with GLUT_STENCIL, accumulation with
+  # GLUT_ACCUM; without a depth buffer the depth test does nothing (the later, far square
+  # shows). GLUT_MULTISAMPLE gets a window without multisampling.
+  check_mode() {  # MODE "GL ..." "GLUT ..." "pixel ..."
+    run glut_display_mode_buffers "" "$1"
+    [ "$status" -eq 0 ] || fail "mode $1 exited with $status"
+    expect_text out.txt "$2"
+    expect_text out.txt "$3"
+    expect_text out.txt "$4"
+  }
+  check_mode 0 "GL depth 0 stencil 0 accum 0 sample buffers 0" "GLUT depth 0 stencil 0 accum 0" "pixel 0 255 0"
+  check_mode 2 "GL depth 0 stencil 0 accum 0" "GLUT depth 0 stencil 0 accum 0" "pixel 0 255 0"
+  check_mode 18 "GL depth 24 stencil 0 accum 0" "GLUT depth 24 stencil 0 accum 0" "pixel 255 0 0"
+  check_mode 34 "GL depth 24 stencil 8 accum 0" "GLUT depth 24 stencil 8 accum 0" "pixel 255 0 0"
+  check_mode 4 "GL depth 0 stencil 0 accum 16" "GLUT depth 0 stencil 0 accum 16" "pixel 0 255 0"
+  check_mode 54 "GL depth 24 stencil 8 accum 16" "GLUT depth 24 stencil 8 accum 16" "pixel 255 0 0"
+  check_mode 146 "GL depth 24 stencil 0 accum 0 sample buffers 0" "samples 0" "pixel 255 0 0"
   ;;
 game_mode)
   # Game mode: the asked size, depth and rate; the window at the screen's corner with a context

@@ -4,6 +4,7 @@
 #include <cstring>
 #include <optional>
 
+#include "framebuffer_bits.h"
 #include "glut_clock.h"
 #include "glut_errors.h"
 #include "glut_state.h"
@@ -12,12 +13,6 @@
 using namespace glass::glut;
 
 namespace {
-
-// glass's framebuffer (glass/context.h): RGBA8, 24-bit depth, 8-bit stencil, 16-bit accumulation.
-constexpr int kColorBits = 8;
-constexpr int kDepthBits = 24;
-constexpr int kStencilBits = 8;
-constexpr int kAccumulationBits = 16;
 
 // The answer to a query about `window`, or nothing when glutGet has no such query (a position
 // may be negative, so no value can mean that).
@@ -28,8 +23,8 @@ std::optional<int> windowQuery(const Window& window, GLenum query) {
     case GLUT_WINDOW_WIDTH: return window.width;
     case GLUT_WINDOW_HEIGHT: return window.height;
     case GLUT_WINDOW_BUFFER_SIZE: return 4 * kColorBits;
-    case GLUT_WINDOW_STENCIL_SIZE: return kStencilBits;
-    case GLUT_WINDOW_DEPTH_SIZE: return kDepthBits;
+    case GLUT_WINDOW_STENCIL_SIZE: return ancillaryBitsOf(window.displayMode).stencil;
+    case GLUT_WINDOW_DEPTH_SIZE: return ancillaryBitsOf(window.displayMode).depth;
     case GLUT_WINDOW_RED_SIZE:
     case GLUT_WINDOW_GREEN_SIZE:
     case GLUT_WINDOW_BLUE_SIZE:
@@ -37,7 +32,7 @@ std::optional<int> windowQuery(const Window& window, GLenum query) {
     case GLUT_WINDOW_ACCUM_RED_SIZE:
     case GLUT_WINDOW_ACCUM_GREEN_SIZE:
     case GLUT_WINDOW_ACCUM_BLUE_SIZE:
-    case GLUT_WINDOW_ACCUM_ALPHA_SIZE: return kAccumulationBits;
+    case GLUT_WINDOW_ACCUM_ALPHA_SIZE: return ancillaryBitsOf(window.displayMode).accumulation;
     case GLUT_WINDOW_DOUBLEBUFFER: return window.doubleBuffered ? 1 : 0;
     case GLUT_WINDOW_RGBA: return 1;
     case GLUT_WINDOW_PARENT: return window.parent;
@@ -84,7 +79,8 @@ int glutGet(GLenum query) {
       const Menu* menu = findMenu(s.currentMenu);
       return menu ? static_cast<int>(menu->items.size()) : 0;
     }
-    case GLUT_DISPLAY_MODE_POSSIBLE:
+    case GLUT_DISPLAY_MODE_POSSIBLE:  // exactly as asked: glutCreateWindow makes a multisample
+                                      // wish a window without multisampling
       return (s.initDisplayMode & (GLUT_INDEX | GLUT_STEREO | GLUT_MULTISAMPLE)) ? 0 : 1;
     case GLUT_INIT_WINDOW_X: return s.initX;
     case GLUT_INIT_WINDOW_Y: return s.initY;

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "context_version.h"
+#include "framebuffer_bits.h"
 #include "glut_clock.h"
 #include "glut_errors.h"
 #include "glut_state.h"
@@ -222,8 +223,10 @@ namespace {
 // parent for a sub-window), not yet registered.
 std::unique_ptr<Window> newWindow(const char* title, int x, int y, int width, int height) {
   State& s = state();
-  // glass's framebuffer is RGBA; colour index, stereo and multisample visuals do not exist.
-  if (s.initDisplayMode & (GLUT_INDEX | GLUT_STEREO | GLUT_MULTISAMPLE)) {
+  // glass's framebuffer is RGBA; colour index and stereo visuals do not exist. A multisample
+  // window is a wish: "if multisampling is not available, a non-multisampling window will
+  // automatically be chosen" (GLUT 3.7, glutInitDisplayMode; freeglut tries again without it).
+  if (s.initDisplayMode & (GLUT_INDEX | GLUT_STEREO)) {
     fatalError("FBConfig with necessary capabilities not found");
   }
   requireContextGlassHas();
@@ -241,6 +244,8 @@ std::unique_ptr<Window> newWindow(const char* title, int x, int y, int width, in
     fatalError("Unable to create OpenGL context for a %d x %d window", window->width,
                window->height);
   }
+  const AncillaryBits bits = ancillaryBitsOf(window->displayMode);
+  glassSetAncillaryBuffers(window->context, bits.depth, bits.stencil, bits.accumulation);
   return window;
 }
 

@@ -62,6 +62,14 @@ GLASS_API const unsigned char *glassGetColorBuffer(const GlassContext *ctx);
  * no memory, and then nothing changed. */
 GLASS_API int glassResetContext(GlassContext *ctx);
 
+/* Which ancillary buffers the framebuffer has; a new context has all three. Nonzero asks for the
+ * buffer, 0 leaves it out, and then GL acts as OpenGL 1.x says of a framebuffer without it: its
+ * bits read 0 (GL_DEPTH_BITS, ...), the depth or stencil test passes and writes nothing, glClear
+ * leaves it alone, and glAccum and reading its pixels are GL_INVALID_OPERATION. glass's GLUT
+ * takes them from the display mode (GLUT_DEPTH, GLUT_STENCIL, GLUT_ACCUM). Kept by
+ * glassResetContext and glassResizeContext. 1 on success; 0 on a NULL context. */
+GLASS_API int glassSetAncillaryBuffers(GlassContext *ctx, int depth, int stencil, int accumulation);
+
 /* For window systems (glass's GLUT): the hooks a window needs to show a context's picture. */
 
 /* Gives the framebuffer a new size, as a window's resize does; GL state (matrices, viewport,

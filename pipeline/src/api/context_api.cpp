@@ -73,6 +73,13 @@ const unsigned char* glassGetColorBuffer(const GlassContext* ctx) {
   return ctx->gl->framebuffer.colorAt(0, 0);
 }
 
+int glassSetAncillaryBuffers(GlassContext* ctx, int depth, int stencil, int accumulation) {
+  if (!ctx) return 0;
+  glass::gl::finishQueuedDrawing(*ctx->gl);  // what is queued was drawn with the buffers it had
+  ctx->gl->buffers = glass::gl::AncillaryBuffers{depth != 0, stencil != 0, accumulation != 0};
+  return 1;
+}
+
 int glassResizeContext(GlassContext* ctx, int width, int height) {
   if (!ctx || width <= 0 || height <= 0 || width > glass::gl::kMaxViewportSize ||
       height > glass::gl::kMaxViewportSize) {
