@@ -24,6 +24,12 @@ std::map<SDL_Window*, SDL_Rect> windowedGeometry;
 // same character (SDL sends the text of a press in a separate SDL_TEXTINPUT event).
 std::map<SDL_Scancode, int> characterOfPressedKey;
 SDL_Scancode keyAwaitingText = SDL_SCANCODE_UNKNOWN;
+// The modifiers held as of the last event translated: what a mouse, wheel or text event that
+// comes after it in the queue was made with. SDL_GetModState gives them after every event SDL
+// has taken from X so far, so a Shift released just after a click (both in the queue before the
+// click is translated) would already be gone; X gives freeglut each event's own state. Key
+// events carry the state after themselves; focus gained takes SDL's (keys pressed elsewhere).
+Uint16 modifiersSoFar = KMOD_NONE;
 int windowAwaitingText = 0;
 bool repeatAwaitingText = false;  // the press awaiting its text is a key's auto-repeat
 
@@ -184,6 +190,7 @@ void pointerInWindow(const Window& window, int& x, int& y) {
 }
 
 void translateKey(const SDL_KeyboardEvent& key, Window& window, std::vector<InputEvent>& events) {
+  modifiersSoFar = key.keysym.mod;
   InputEvent event;
   event.window = window.id;
   pointerInWindow(window, event.x, event.y);
@@ -242,7 +249,7 @@ void translateText(const SDL_TextInputEvent& text, std::vector<InputEvent>& even
   event.window = window->id;
   event.key = character;
   pointerInWindow(*window, event.x, event.y);
-  event.modifiers = glutModifiersOf(SDL_GetModState());
+  event.modifiers = glutModifiersOf(modifiersSoFar);
   event.repeat = repeatAwaitingText;
   if (keyAwaitingText != SDL_SCANCODE_UNKNOWN) characterOfPressedKey[keyAwaitingText] = character;
   keyAwaitingText = SDL_SCANCODE_UNKNOWN;
@@ -261,6 +268,7 @@ int glutButtonOf(Uint8 button) {
 
 void translateWindowEvent(const SDL_WindowEvent& w, Window& window,
                           std::vector<InputEvent>& events) {
+  if (w.event == SDL_WINDOWEVENT_FOCUS_GAINED) modifiersSoFar = static_cast<Uint16>(SDL_GetModState());
   InputEvent event;
   event.window = window.id;
   switch (w.event) {
@@ -314,7 +322,7 @@ void translate(const SDL_Event& e, std::vector<InputEvent>& events) {
       event.buttonState = e.type == SDL_MOUSEBUTTONDOWN ? GLUT_DOWN : GLUT_UP;
       event.x = e.button.x;
       event.y = e.button.y;
-      event.modifiers = glutModifiersOf(SDL_GetModState());
+      event.modifiers = glutModifiersOf(modifiersSoFar);
       events.push_back(event);
       return;
     }
@@ -328,7 +336,7 @@ void translate(const SDL_Event& e, std::vector<InputEvent>& events) {
       const int amount = e.wheel.y != 0 ? e.wheel.y : e.wheel.x;
       event.buttonState = amount > 0 ? 1 : -1;
       pointerInWindow(*window, event.x, event.y);
-      event.modifiers = glutModifiersOf(SDL_GetModState());
+      event.modifiers = glutModifiersOf(modifiersSoFar);
       events.push_back(event);
       return;
     }
