@@ -118,22 +118,82 @@ const TriangleSettings& TileScene::drawSettingsFor(const TriangleSettings& setti
   return *stored;
 }
 
+int TileScene::onlyTileOf(const WindowVertex& a, const WindowVertex& b, const WindowVertex& c,
+                          const PixelRect& bounds) const {
+  // Within +-2^19 (isRasterizableCoordinate's range): false for NaN and infinities too.
+  constexpr float kMax = static_cast<float>(kMaxWindowCoordinate);
+  const auto inRange = [&](float v) { return std::fabs(v) <= kMax; };
+  if (!(inRange(a.x) & inRange(a.y) & inRange(b.x) & inRange(b.y) & inRange(c.x) & inRange(c.y))) return kNoOneTile;
+  // The pixels whose centres the snapped corners can reach: pixel i is covered only when its
+  // centre i + 0.5 lies within the snapped corners' range, and snapping moves a corner by 1/512
+  // of a pixel at most, so from floor(min - 0.5 - 1/256) to floor(max - 0.5 + 1/256) (a little
+  // more than it takes). The sums are exact in double (the coordinates are within 2^19, with
+  // float's 24 bits), so the truncation of the sum with 2^20 is the floor.
+  const auto floorOf = [](float v, double offset) {
+    return static_cast<int>(static_cast<double>(v) + offset + double(1 << 20)) - (1 << 20);
+  };
+  constexpr double kLow = -0.5 - 1.0 / 256.0, kHigh = -0.5 + 1.0 / 256.0;
+  const int x0 = std::max(bounds.x0, floorOf(std::min(std::min(a.x, b.x), c.x), kLow));
+  const int y0 = std::max(bounds.y0, floorOf(std::min(std::min(a.y, b.y), c.y), kLow));
+  const int x1 = std::min(bounds.x1 - 1, floorOf(std::max(std::max(a.x, b.x), c.x), kHigh));
+  const int y1 = std::min(bounds.y1 - 1, floorOf(std::max(std::max(a.y, b.y), c.y), kHigh));
+  if (x0 > x1 || y0 > y1) return kNoTile;
+  // Here 0 <= x0 <= x1 and 0 <= y0 <= y1 (the bounds lie in the window).
+  const unsigned tileX = static_cast<unsigned>(x0) / kTileSize, tileY = static_cast<unsigned>(y0) / kTileSize;
+  if (tileX != static_cast<unsigned>(x1) / kTileSize || tileY != static_cast<unsigned>(y1) / kTileSize)
+    return kNoOneTile;
+  return static_cast<int>(tileY) * tilesX_ + static_cast<int>(tileX);
+}
+
 void TileScene::addTriangle(const WindowVertex& a, const WindowVertex& b, const WindowVertex& c,
                             const TriangleSettings& settings, FragmentSink& sink) {
+  // A triangle whose pixels can only be in one tile goes to that tile's bin without being set
+  // up here at all (most triangles of a mesh): the tile sets it up in full when it runs, and
+  // finds there whether it covers anything (if it has no area, or its pixels are all outside
+  // the bounds, it draws nothing there as it would draw nothing here).
+  const int tile = onlyTileOf(a, b, c, settings.bounds);
+  if (tile == kNoTile) return;
+  if (tile != kNoOneTile) {
+    return addPolygon<3>({&a, &b, &c}, settings, sink, [&](auto addToBin) { addToBin(tile); });
+  }
   TriangleSetup edges;  // the edge functions and the box alone
   if (!setupTriangleEdges(a, b, c, settings.bounds, edges)) return;
-  addPolygon<3>({&a, &b, &c}, edges, settings, sink);
+  addPolygon<3>({&a, &b, &c}, settings, sink, [&](auto addToBin) { forTilesReached(edges, addToBin); });
 }
 
 void TileScene::addQuad(const WindowVertex& v0, const WindowVertex& v1, const WindowVertex& v2,
                         const WindowVertex& v3, const TriangleSetup& edges, const TriangleSettings& settings,
                         FragmentSink& sink) {
-  addPolygon<4>({&v0, &v1, &v2, &v3}, edges, settings, sink);
+  addPolygon<4>({&v0, &v1, &v2, &v3}, settings, sink, [&](auto addToBin) { forTilesReached(edges, addToBin); });
 }
 
-template <int kCorners>
-void TileScene::addPolygon(const WindowVertex* const (&corners)[kCorners], const TriangleSetup& edges,
-                           const TriangleSettings& settings, FragmentSink& sink) {
+template <typename AddToBin>
+void TileScene::forTilesReached(const TriangleSetup& edges, AddToBin addToBin) const {
+  const PixelRect& box = edges.box;
+  const int firstTileX = box.x0 / kTileSize, lastTileX = (box.x1 - 1) / kTileSize;
+  const int firstTileY = box.y0 / kTileSize, lastTileY = (box.y1 - 1) / kTileSize;
+  // A box within one tile goes to that tile's bin as it is.
+  if (firstTileX == lastTileX && firstTileY == lastTileY) return addToBin(firstTileY * tilesX_ + firstTileX);
+  // Otherwise to the tiles its box overlaps, except those no pixel centre of which is inside:
+  // the coverage walk would reject every block of such a tile anyway. This matters for large
+  // triangles, whose box holds many tiles the triangle misses.
+  if (edges.edgeCount == 3) {
+    return forTilesCovered(PixelEdgeFunctions<3>(edges), firstTileX, lastTileX, firstTileY, lastTileY, addToBin);
+  }
+  forTilesCovered(PixelEdgeFunctions<4>(edges), firstTileX, lastTileX, firstTileY, lastTileY, addToBin);
+}
+
+template <typename EdgeFunctions, typename AddToBin>
+void TileScene::forTilesCovered(const EdgeFunctions& edgeFunctions, int firstTileX, int lastTileX, int firstTileY,
+                                int lastTileY, AddToBin addToBin) const {
+  for (int ty = firstTileY; ty <= lastTileY; ++ty)
+    for (int tx = firstTileX; tx <= lastTileX; ++tx)
+      if (!edgeFunctions.rejects(tx * kTileSize, ty * kTileSize, kTileSize, kTileSize)) addToBin(ty * tilesX_ + tx);
+}
+
+template <int kCorners, typename ForTiles>
+void TileScene::addPolygon(const WindowVertex* const (&corners)[kCorners], const TriangleSettings& settings,
+                           FragmentSink& sink, ForTiles forTiles) {
   hasPrimitives_ = true;
   PolygonRecord<kCorners> r;
   r.sink = &sink;
@@ -164,18 +224,7 @@ void TileScene::addPolygon(const WindowVertex* const (&corners)[kCorners], const
     bin.varyings.prefetchNext(kCorners * n + payload);
     bytes_ += 1 + sizeof r + sizeof(float) * (kCorners * n + payload);
   };
-  const PixelRect& box = edges.box;
-  const int firstTileX = box.x0 / kTileSize, lastTileX = (box.x1 - 1) / kTileSize;
-  const int firstTileY = box.y0 / kTileSize, lastTileY = (box.y1 - 1) / kTileSize;
-  // A box within one tile goes to that tile's bin as it is (most small triangles).
-  if (firstTileX == lastTileX && firstTileY == lastTileY) return addToBin(firstTileY * tilesX_ + firstTileX);
-  // Otherwise to the tiles its box overlaps, except those no pixel centre of which is inside:
-  // the coverage walk would reject every block of such a tile anyway. This matters for large
-  // triangles, whose box holds many tiles the triangle misses.
-  const PixelEdgeFunctions<kCorners> edgeFunctions(edges);
-  for (int ty = firstTileY; ty <= lastTileY; ++ty)
-    for (int tx = firstTileX; tx <= lastTileX; ++tx)
-      if (!edgeFunctions.rejects(tx * kTileSize, ty * kTileSize, kTileSize, kTileSize)) addToBin(ty * tilesX_ + tx);
+  forTiles(addToBin);
 }
 
 void TileScene::addLine(const LineQuad& quad, const PixelRect& pixels, const WindowVertex& a,

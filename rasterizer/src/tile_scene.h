@@ -144,11 +144,23 @@ class TileScene {
   template <int kCorners>
   void runPolygon(const PolygonRecord<kCorners>& r, BinList<float>::Reader& varyingRuns, const PixelRect& rect,
                   const Bin& bin) const;
-  // addTriangle and addQuad: the corners, and the edges and box setupTriangleEdges
-  // (setupQuadEdges) made of them.
-  template <int kCorners>
-  void addPolygon(const WindowVertex* const (&corners)[kCorners], const TriangleSetup& edges,
-                  const TriangleSettings& settings, FragmentSink& sink);
+  // addTriangle and addQuad: a record of the corners to the bin of every tile forTiles names
+  // (forTiles(addToBin) calls addToBin(tile) for each).
+  template <int kCorners, typename ForTiles>
+  void addPolygon(const WindowVertex* const (&corners)[kCorners], const TriangleSettings& settings,
+                  FragmentSink& sink, ForTiles forTiles);
+  // Calls addToBin(tile) for the tiles a polygon's box overlaps (the edges and box
+  // setupTriangleEdges or setupQuadEdges made), but those no pixel centre of which is inside it.
+  template <typename AddToBin>
+  void forTilesReached(const TriangleSetup& edges, AddToBin addToBin) const;
+  template <typename EdgeFunctions, typename AddToBin>
+  void forTilesCovered(const EdgeFunctions& edgeFunctions, int firstTileX, int lastTileX, int firstTileY,
+                       int lastTileY, AddToBin addToBin) const;
+  // The one tile whose pixels a triangle's corners can reach, found from their coordinates
+  // before any snapping; kNoTile when they reach no pixel of the bounds, kNoOneTile when they may
+  // reach more than one tile (or cannot be rasterized: setup decides what they draw).
+  static constexpr int kNoTile = -1, kNoOneTile = -2;
+  int onlyTileOf(const WindowVertex& a, const WindowVertex& b, const WindowVertex& c, const PixelRect& bounds) const;
   template <int kCorners>
   BinList<PolygonRecord<kCorners>>& recordsOf(Bin& bin) {
     if constexpr (kCorners == 3) return bin.triangles; else return bin.quads;

@@ -214,6 +214,47 @@ std::vector<Step> scatteredThenMeshProgram(unsigned seed) {
   return steps;
 }
 
+// Tiny triangles about the tiles' borders (and pixel centres there), under changing bounds: the
+// tiled rasterizer puts a triangle whose corners can only reach one tile's pixels in that bin
+// from its corners' coordinates, before snapping, with a pixel to spare; those about a border go
+// to every tile they reach. Some have no area (a corner twice, or three in a line), some corners
+// cannot be rasterized (NaN, infinite, beyond 2^19 pixels).
+std::vector<Step> tileBorderProgram(unsigned seed) {
+  std::mt19937 random(seed);
+  std::uniform_int_distribution<int> percent(0, 99), borderX(0, kWidth / kTileSize), borderY(0, kHeight / kTileSize);
+  std::uniform_int_distribution<int> sub(-3 * 512, 3 * 512);  // in 1/512 of a pixel
+  std::uniform_real_distribution<float> near(-1.5f, 1.5f);
+  const float unusable[4] = {std::nanf(""), INFINITY, -INFINITY, 1.0e7f};
+  std::vector<Step> steps;
+  TriangleSettings triangle = triangleSettings();
+  bool earlyDepthTest = false;
+  for (int i = 0; i < 800; ++i) {
+    Step s{};
+    s.kind = Step::Triangle;
+    const int p = percent(random);
+    // About a border's crossing, or (a quarter of the time) about a border alone, on either side.
+    const float cx = static_cast<float>(kTileSize * borderX(random)) + static_cast<float>(sub(random)) / 512.0f;
+    const float cy = static_cast<float>(kTileSize * borderY(random)) + static_cast<float>(sub(random)) / 512.0f;
+    for (WindowVertex& vertex : s.v) {
+      // Half the corners on pixel centres or on the 1/512 grid (where snapping ties).
+      float x = cx + near(random), y = cy + near(random);
+      if (percent(random) < 50) x = std::round(x * 2.0f) / 2.0f;
+      if (percent(random) < 50) y = std::round(y * 512.0f) / 512.0f;
+      if (percent(random) < 20) x = std::round(x * 512.0f) / 512.0f;
+      vertex = coloured(x, y, random);
+    }
+    if (p < 10) s.v[2] = s.v[percent(random) % 2];  // a corner twice
+    else if (p < 15) s.v[2] = coloured(2.0f * s.v[1].x - s.v[0].x, 2.0f * s.v[1].y - s.v[0].y, random);  // in a line
+    else if (p < 18) s.v[percent(random) % 3].x = unusable[percent(random) % 4];
+    else if (p < 21) s.v[percent(random) % 3].y = unusable[percent(random) % 4];
+    if (p % 7 == 0) triangle = newDrawSettings(random, earlyDepthTest);
+    s.triangle = triangle;
+    s.earlyDepthTest = earlyDepthTest;
+    steps.push_back(s);
+  }
+  return steps;
+}
+
 LineSettings lineSettings() {
   LineSettings s;
   s.bounds = PixelRect{0, 0, kWidth, kHeight};
@@ -379,4 +420,16 @@ TEST_CASE("one thread: scattered small triangles are binned, a mesh's drawn at o
   for (int i = 0; i < 100; ++i) smallAt(100.0f + 0.1f * static_cast<float>(i), 100.0f);
   CHECK(tiles.idle());
   CHECK_FALSE(tiles.primitivesQueued());
+}
+
+TEST_CASE("tiny triangles about the tiles' borders, some of no area or unusable: the bytes of drawing in order") {
+  for (unsigned seed = 1; seed <= 4; ++seed) {
+    const std::vector<Step> steps = tileBorderProgram(seed);
+    const std::vector<uint8_t> expected = drawnInOrder(steps);
+    for (const int threads : {1, 2, 3}) {
+      CAPTURE(seed);
+      CAPTURE(threads);
+      CHECK(drawnInTiles(steps, threads) == expected);
+    }
+  }
 }
