@@ -104,7 +104,8 @@ TEST_CASE("texture colour indices: a display list maps the indices when it is ex
 
 TEST_CASE("texture colour indices: glGetTexImage does not return indices, and stencil data is refused") {
   ScopedContext context(8, 8);
-  const GLubyte indices[4] = {0, 1, 2, 3};
+  // Two rows of two, each padded to the default unpack alignment of 4 bytes.
+  const GLubyte indices[8] = {0, 1, 0, 0, 2, 3, 0, 0};
   glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 2, 2, 0, GL_COLOR_INDEX, GL_UNSIGNED_BYTE, indices);
   REQUIRE(glGetError() == GL_NO_ERROR);
   GLubyte out[4];
