@@ -15,9 +15,8 @@ inline constexpr int64_t kSubpixelHalf = kSubpixelOne / 2;            // offset 
 // (2^27 * 2^28) well inside 64 bits. Clipped primitives lie inside the viewport, far below this.
 inline constexpr double kMaxWindowCoordinate = double(1 << 19);
 
-inline bool isRasterizableCoordinate(float v) {
-  return std::isfinite(v) && std::fabs(v) <= kMaxWindowCoordinate;
-}
+// One comparison, false for NaN and the infinities too.
+inline bool isRasterizableCoordinate(float v) { return std::fabs(v) <= kMaxWindowCoordinate; }
 
 // Rounds to the nearest 1/256 pixel, ties to even (the default IEEE rounding, so the result is the
 // same on every machine). 256 * v is exact in double. For |v| <= kMaxWindowCoordinate the scaled

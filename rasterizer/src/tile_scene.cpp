@@ -120,10 +120,8 @@ const TriangleSettings& TileScene::drawSettingsFor(const TriangleSettings& setti
 
 int TileScene::onlyTileOf(const WindowVertex& a, const WindowVertex& b, const WindowVertex& c,
                           const PixelRect& bounds) const {
-  // Within +-2^19 (isRasterizableCoordinate's range): false for NaN and infinities too.
-  constexpr float kMax = static_cast<float>(kMaxWindowCoordinate);
-  const auto inRange = [&](float v) { return std::fabs(v) <= kMax; };
-  if (!(inRange(a.x) & inRange(a.y) & inRange(b.x) & inRange(b.y) & inRange(c.x) & inRange(c.y))) return kNoOneTile;
+  for (const WindowVertex* v : {&a, &b, &c})
+    if (!isRasterizableCoordinate(v->x) || !isRasterizableCoordinate(v->y)) return kNoOneTile;
   // The pixels whose centres the snapped corners can reach: pixel i is covered only when its
   // centre i + 0.5 lies within the snapped corners' range, and snapping moves a corner by 1/512
   // of a pixel at most, so from floor(min - 0.5 - 1/256) to floor(max - 0.5 + 1/256) (a little
@@ -158,16 +156,16 @@ void TileScene::addTriangle(const WindowVertex& a, const WindowVertex& b, const 
   }
   TriangleSetup edges;  // the edge functions and the box alone
   if (!setupTriangleEdges(a, b, c, settings.bounds, edges)) return;
-  addPolygon<3>({&a, &b, &c}, settings, sink, [&](auto addToBin) { forTilesReached(edges, addToBin); });
+  addPolygon<3>({&a, &b, &c}, settings, sink, [&](auto addToBin) { forTilesReached<3>(edges, addToBin); });
 }
 
 void TileScene::addQuad(const WindowVertex& v0, const WindowVertex& v1, const WindowVertex& v2,
                         const WindowVertex& v3, const TriangleSetup& edges, const TriangleSettings& settings,
                         FragmentSink& sink) {
-  addPolygon<4>({&v0, &v1, &v2, &v3}, settings, sink, [&](auto addToBin) { forTilesReached(edges, addToBin); });
+  addPolygon<4>({&v0, &v1, &v2, &v3}, settings, sink, [&](auto addToBin) { forTilesReached<4>(edges, addToBin); });
 }
 
-template <typename AddToBin>
+template <int kCorners, typename AddToBin>
 void TileScene::forTilesReached(const TriangleSetup& edges, AddToBin addToBin) const {
   const PixelRect& box = edges.box;
   const int firstTileX = box.x0 / kTileSize, lastTileX = (box.x1 - 1) / kTileSize;
@@ -177,15 +175,7 @@ void TileScene::forTilesReached(const TriangleSetup& edges, AddToBin addToBin) c
   // Otherwise to the tiles its box overlaps, except those no pixel centre of which is inside:
   // the coverage walk would reject every block of such a tile anyway. This matters for large
   // triangles, whose box holds many tiles the triangle misses.
-  if (edges.edgeCount == 3) {
-    return forTilesCovered(PixelEdgeFunctions<3>(edges), firstTileX, lastTileX, firstTileY, lastTileY, addToBin);
-  }
-  forTilesCovered(PixelEdgeFunctions<4>(edges), firstTileX, lastTileX, firstTileY, lastTileY, addToBin);
-}
-
-template <typename EdgeFunctions, typename AddToBin>
-void TileScene::forTilesCovered(const EdgeFunctions& edgeFunctions, int firstTileX, int lastTileX, int firstTileY,
-                                int lastTileY, AddToBin addToBin) const {
+  const PixelEdgeFunctions<kCorners> edgeFunctions(edges);
   for (int ty = firstTileY; ty <= lastTileY; ++ty)
     for (int tx = firstTileX; tx <= lastTileX; ++tx)
       if (!edgeFunctions.rejects(tx * kTileSize, ty * kTileSize, kTileSize, kTileSize)) addToBin(ty * tilesX_ + tx);

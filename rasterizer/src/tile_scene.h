@@ -149,13 +149,10 @@ class TileScene {
   template <int kCorners, typename ForTiles>
   void addPolygon(const WindowVertex* const (&corners)[kCorners], const TriangleSettings& settings,
                   FragmentSink& sink, ForTiles forTiles);
-  // Calls addToBin(tile) for the tiles a polygon's box overlaps (the edges and box
-  // setupTriangleEdges or setupQuadEdges made), but those no pixel centre of which is inside it.
-  template <typename AddToBin>
+  // Calls addToBin(tile) for the tiles a polygon of kCorners corners' box overlaps (the edges and
+  // box setupTriangleEdges or setupQuadEdges made), but those no pixel centre of which is inside.
+  template <int kCorners, typename AddToBin>
   void forTilesReached(const TriangleSetup& edges, AddToBin addToBin) const;
-  template <typename EdgeFunctions, typename AddToBin>
-  void forTilesCovered(const EdgeFunctions& edgeFunctions, int firstTileX, int lastTileX, int firstTileY,
-                       int lastTileY, AddToBin addToBin) const;
   // The one tile whose pixels a triangle's corners can reach, found from their coordinates
   // before any snapping; kNoTile when they reach no pixel of the bounds, kNoOneTile when they may
   // reach more than one tile (or cannot be rasterized: setup decides what they draw).
