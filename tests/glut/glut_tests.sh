@@ -232,24 +232,32 @@ display_string)
   ;;
 display_mode_buffers)
   # The buffers of a window follow its display mode as Mesa's visuals under X do (freeglut 3.4
-  # with Mesa 22 on Xvfb printed the same, but for 32 depth bits where only GLUT_DEPTH is asked):
+  # with Mesa 22 on Xvfb printed the same, but for 32 depth bits where only GLUT_DEPTH is asked,
+  # a 4-sample window for GLUT_MULTISAMPLE and blended alpha 111 for GLUT_ALPHA alone):
   # depth with GLUT_DEPTH or GLUT_STENCIL, stencil with GLUT_STENCIL, accumulation with
-  # GLUT_ACCUM; without a depth buffer the depth test does nothing (the later, far square
-  # shows). GLUT_MULTISAMPLE gets a window without multisampling.
-  check_mode() {  # MODE "GL ..." "GLUT ..." "pixel ..."
-    run glut_display_mode_buffers "" "$1"
-    [ "$status" -eq 0 ] || fail "mode $1 exited with $status"
-    expect_text out.txt "$2"
-    expect_text out.txt "$3"
-    expect_text out.txt "$4"
+  # GLUT_ACCUM, alpha bitplanes with GLUT_ALPHA; without a depth buffer the depth test does
+  # nothing (the later, far square shows); without alpha bitplanes alpha reads 1 after a clear
+  # with alpha 0.25, and blending by (1 - destination alpha, destination alpha) keeps the grey.
+  # GLUT_MULTISAMPLE gets a window without multisampling.
+  check_mode() {  # MODE TEXT...: each TEXT in the output
+    mode=$1
+    shift
+    run glut_display_mode_buffers "" "$mode"
+    [ "$status" -eq 0 ] || fail "mode $mode exited with $status"
+    for text in "$@"; do expect_text out.txt "$text"; done
   }
-  check_mode 0 "GL depth 0 stencil 0 accum 0 sample buffers 0" "GLUT depth 0 stencil 0 accum 0" "pixel 0 255 0"
-  check_mode 2 "GL depth 0 stencil 0 accum 0" "GLUT depth 0 stencil 0 accum 0" "pixel 0 255 0"
-  check_mode 18 "GL depth 24 stencil 0 accum 0" "GLUT depth 24 stencil 0 accum 0" "pixel 255 0 0"
-  check_mode 34 "GL depth 24 stencil 8 accum 0" "GLUT depth 24 stencil 8 accum 0" "pixel 255 0 0"
-  check_mode 4 "GL depth 0 stencil 0 accum 16" "GLUT depth 0 stencil 0 accum 16" "pixel 0 255 0"
-  check_mode 54 "GL depth 24 stencil 8 accum 16" "GLUT depth 24 stencil 8 accum 16" "pixel 255 0 0"
-  check_mode 146 "GL depth 24 stencil 0 accum 0 sample buffers 0" "samples 0" "pixel 255 0 0"
+  no_alpha() { check_mode "$@" "GL alpha 0 GLUT alpha 0 buffer 24" "cleared 128 128 128 255" "blended 128 128 128 255"; }
+  alpha() { check_mode "$@" "GL alpha 8 GLUT alpha 8 buffer 32" "cleared 128 128 128 64" "blended 223 223 223 "; }
+  no_alpha 0 "GL depth 0 stencil 0 accum 0 sample buffers 0" "GLUT depth 0 stencil 0 accum 0" "pixel 0 255 0"
+  no_alpha 2 "GL depth 0 stencil 0 accum 0" "GLUT depth 0 stencil 0 accum 0" "pixel 0 255 0"
+  no_alpha 18 "GL depth 24 stencil 0 accum 0" "GLUT depth 24 stencil 0 accum 0" "pixel 255 0 0"
+  no_alpha 34 "GL depth 24 stencil 8 accum 0" "GLUT depth 24 stencil 8 accum 0" "pixel 255 0 0"
+  no_alpha 4 "GL depth 0 stencil 0 accum 16" "GLUT depth 0 stencil 0 accum 16" "pixel 0 255 0"
+  no_alpha 54 "GL depth 24 stencil 8 accum 16" "GLUT depth 24 stencil 8 accum 16" "pixel 255 0 0"
+  no_alpha 146 "GL depth 24 stencil 0 accum 0 sample buffers 0" "samples 0" "pixel 255 0 0"
+  alpha 8 "GL depth 0 stencil 0 accum 0" "pixel 0 255 0"
+  alpha 26 "GL depth 24 stencil 0 accum 0" "pixel 255 0 0" "blended 223 223 223 112"
+  alpha 62 "GL depth 24 stencil 8 accum 16" "pixel 255 0 0" "blended 223 223 223 112"
   ;;
 game_mode)
   # Game mode: the asked size, depth and rate; the window at the screen's corner with a context
@@ -281,6 +289,7 @@ absent_features)
   printf '%s\n' "asked 1.4 flags 0 profile 0
 overlay possible 0, colour -1, video resize 0, multisample values none 0
 proc glutSwapBuffers found, glActiveTexture found, gluPerspective missing, glutNoSuch missing
+options: rendering context 0, direct 2, skip stale motion 0 -> 1, 0, 1
 device callbacks called 0 times" >expected.txt
   diff expected.txt out.txt >&2 || fail "the answers differ from expected.txt"
   expect_text err.txt "glutSetMenuFont: bitmap font"

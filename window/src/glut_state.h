@@ -156,6 +156,13 @@ struct State {
   uint64_t nextTimerOrder = 0;
 
   int actionOnWindowClose = 0;  // GLUT_ACTION_EXIT
+  // glutSetOption's values that change nothing in glass but are read back as set (freeglut's
+  // defaults): every context is new and direct whatever is asked.
+  int renderingContext = GLUT_CREATE_NEW_CONTEXT;
+  int directRendering = GLUT_TRY_DIRECT_CONTEXT;
+  // GLUT_SKIP_STALE_MOTION_EVENTS: a motion event followed in the same batch by another of the
+  // same window is dropped, so that a slow motion callback sees only the latest position.
+  bool skipStaleMotion = false;
   int keyRepeat = GLUT_KEY_REPEAT_ON;  // glutSetKeyRepeat, for all windows (freeglut's fgState)
   bool loopRunning = false;
   int modifiers = -1;           // valid inside input callbacks only; -1 elsewhere

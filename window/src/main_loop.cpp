@@ -157,6 +157,14 @@ void waitForWork() {
   waitForSystemEvent(static_cast<int>(wait));
 }
 
+// With GLUT_SKIP_STALE_MOTION_EVENTS set, whether events[i] is a motion that the next event, a
+// motion of the same window, makes stale (freeglut on X skips to the last motion queued).
+bool isStaleMotion(const std::vector<InputEvent>& events, size_t i) {
+  if (!state().skipStaleMotion || i + 1 >= events.size()) return false;
+  const InputEvent &e = events[i], &next = events[i + 1];
+  return e.kind == InputKind::Motion && next.kind == InputKind::Motion && next.window == e.window;
+}
+
 }  // namespace
 
 void runLoopPass() {
@@ -165,7 +173,10 @@ void runLoopPass() {
   runReshapes();
   std::vector<InputEvent> events;
   pollSystemEvents(events);
-  for (const InputEvent& event : events) dispatchInput(event);
+  for (size_t i = 0; i < events.size(); ++i) {
+    if (isStaleMotion(events, i)) continue;
+    dispatchInput(events[i]);
+  }
   runScriptStep();
   runDueTimers();
   runMovesAndReshapes();

@@ -22,13 +22,13 @@ std::optional<int> windowQuery(const Window& window, GLenum query) {
     case GLUT_WINDOW_Y: return window.y;
     case GLUT_WINDOW_WIDTH: return window.width;
     case GLUT_WINDOW_HEIGHT: return window.height;
-    case GLUT_WINDOW_BUFFER_SIZE: return 4 * kColorBits;
+    case GLUT_WINDOW_BUFFER_SIZE: return 3 * kColorBits + alphaBitsOf(window.displayMode);
     case GLUT_WINDOW_STENCIL_SIZE: return ancillaryBitsOf(window.displayMode).stencil;
     case GLUT_WINDOW_DEPTH_SIZE: return ancillaryBitsOf(window.displayMode).depth;
     case GLUT_WINDOW_RED_SIZE:
     case GLUT_WINDOW_GREEN_SIZE:
-    case GLUT_WINDOW_BLUE_SIZE:
-    case GLUT_WINDOW_ALPHA_SIZE: return kColorBits;
+    case GLUT_WINDOW_BLUE_SIZE: return kColorBits;
+    case GLUT_WINDOW_ALPHA_SIZE: return alphaBitsOf(window.displayMode);
     case GLUT_WINDOW_ACCUM_RED_SIZE:
     case GLUT_WINDOW_ACCUM_GREEN_SIZE:
     case GLUT_WINDOW_ACCUM_BLUE_SIZE:
@@ -92,8 +92,9 @@ int glutGet(GLenum query) {
     case GLUT_INIT_FLAGS: return s.contextFlags;
     case GLUT_INIT_PROFILE: return s.contextProfile;
     case GLUT_ACTION_ON_WINDOW_CLOSE: return s.actionOnWindowClose;
-    case GLUT_RENDERING_CONTEXT: return GLUT_CREATE_NEW_CONTEXT;
-    case GLUT_DIRECT_RENDERING: return GLUT_FORCE_DIRECT_CONTEXT;
+    case GLUT_RENDERING_CONTEXT: return s.renderingContext;
+    case GLUT_DIRECT_RENDERING: return s.directRendering;
+    case GLUT_SKIP_STALE_MOTION_EVENTS: return s.skipStaleMotion ? 1 : 0;
     default: break;
   }
   const Window* window = currentWindow();
@@ -190,9 +191,9 @@ void glutSetOption(GLenum option, int value) {
     case GLUT_INIT_WINDOW_HEIGHT: s.initHeight = value; break;
     case GLUT_INIT_DISPLAY_MODE: s.initDisplayMode = static_cast<unsigned>(value); break;
     case GLUT_ACTION_ON_WINDOW_CLOSE: s.actionOnWindowClose = value; break;
-    // Contexts are always new and direct in glass.
-    case GLUT_RENDERING_CONTEXT:
-    case GLUT_DIRECT_RENDERING: break;
+    case GLUT_RENDERING_CONTEXT: s.renderingContext = value; break;
+    case GLUT_DIRECT_RENDERING: s.directRendering = value; break;
+    case GLUT_SKIP_STALE_MOTION_EVENTS: s.skipStaleMotion = value != 0; break;
     default: warning("glutSetOption(): missing enum handle %d", static_cast<int>(option)); break;
   }
 }

@@ -71,6 +71,15 @@ int main(int argc, char **argv)
          glutGetProcAddress("glActiveTexture") ? "found" : "missing",
          glutGetProcAddress("gluPerspective") ? "found" : "missing",
          glutGetProcAddress("glutNoSuch") ? "found" : "missing");
+  /* Options kept and read back as set, with freeglut's defaults: they change nothing here. */
+  printf("options: rendering context %d, direct %d, skip stale motion %d",
+         glutGet(GLUT_RENDERING_CONTEXT), glutGet(GLUT_DIRECT_RENDERING),
+         glutGet(GLUT_SKIP_STALE_MOTION_EVENTS));
+  glutSetOption(GLUT_RENDERING_CONTEXT, GLUT_USE_CURRENT_CONTEXT);
+  glutSetOption(GLUT_DIRECT_RENDERING, GLUT_FORCE_INDIRECT_CONTEXT);
+  glutSetOption(GLUT_SKIP_STALE_MOTION_EVENTS, 1);
+  printf(" -> %d, %d, %d\n", glutGet(GLUT_RENDERING_CONTEXT), glutGet(GLUT_DIRECT_RENDERING),
+         glutGet(GLUT_SKIP_STALE_MOTION_EVENTS));
   glutSetMenuFont(glutCreateMenu(menu), GLUT_BITMAP_9_BY_15);
   glutSetMenuFont(glutGetMenu(), GLUT_STROKE_ROMAN);
   fflush(stdout);
