@@ -70,12 +70,26 @@ GLASS_API int glassResetContext(GlassContext *ctx);
  * glassResetContext and glassResizeContext. 1 on success; 0 on a NULL context. */
 GLASS_API int glassSetAncillaryBuffers(GlassContext *ctx, int depth, int stencil, int accumulation);
 
+/* Whether the colour buffer has alpha bitplanes; a new context has them. 0 leaves them out, as
+ * Mesa does for a GLUT window without GLUT_ALPHA and an OSMesa context of a format without
+ * alpha, and then GL acts as OpenGL 1.x says of such a colour buffer: GL_ALPHA_BITS reads 0, and
+ * the destination alpha of blending and the alpha glReadPixels, glCopyPixels and glAccum read
+ * are 1. glass keeps 4 bytes a pixel and stores alpha 255 in every pixel: the buffer's alpha
+ * becomes 255 at once, and glClear, drawing, glDrawPixels, glCopyPixels, glBitmap and
+ * glAccum(GL_RETURN) write 255 whatever the colour's alpha, which the alpha test and GL_SRC_ALPHA
+ * blending still use; glColorMask's alpha is kept and queried as set. Nonzero gives the
+ * bitplanes back (the stored alphas stay 255 until drawn over). glass's GLUT takes it from the
+ * display mode (GLUT_ALPHA). Kept by glassResetContext and glassResizeContext. 1 on success; 0
+ * on a NULL context. */
+GLASS_API int glassSetAlphaBitplanes(GlassContext *ctx, int alpha);
+
 /* For window systems (glass's GLUT): the hooks a window needs to show a context's picture. */
 
 /* Gives the framebuffer a new size, as a window's resize does; GL state (matrices, viewport,
  * lights, textures, lists) is kept, the viewport included (a GLUT reshape sets it), and the
- * colour, depth, stencil and accumulation buffers start again cleared to zero. 1 on success; 0 on
- * a NULL context, a size outside 1 to 16384 or no memory, and then nothing changed. */
+ * colour, depth, stencil and accumulation buffers start again cleared to zero (alpha 255 without
+ * alpha bitplanes). 1 on success; 0 on a NULL context, a size outside 1 to 16384 or no memory,
+ * and then nothing changed. */
 GLASS_API int glassResizeContext(GlassContext *ctx, int width, int height);
 
 /* Called on the calling thread after glFlush or glFinish has put every queued draw of ctx into

@@ -87,6 +87,8 @@ void accumulate(Context& ctx, GLenum op, float value) {
   const float returnScale = value / 32767.0f;
   const int16_t increment = toAccumulation(value * 32767.0f);
   const bool* mask = ctx.fragment.colorMask;
+  // GL_RETURN into a colour buffer without alpha bitplanes keeps its alpha 255.
+  const bool returnsAlpha = ctx.buffers.colorAlpha;
 
   for (int y = region.y0; y < region.y1; ++y) {
     for (int x = region.x0; x < region.x1; ++x) {
@@ -101,7 +103,7 @@ void accumulate(Context& ctx, GLenum op, float value) {
           case GL_ADD: a[k] = saturatedSum(a[k], increment); break;
           case GL_MULT: a[k] = toAccumulation(static_cast<float>(a[k]) * value); break;
           case GL_RETURN:
-            if (mask[k]) c[k] = packColorByte(static_cast<float>(a[k]) * returnScale);
+            if (mask[k] && (k < 3 || returnsAlpha)) c[k] = packColorByte(static_cast<float>(a[k]) * returnScale);
             break;
           default: break;
         }

@@ -76,7 +76,18 @@ const unsigned char* glassGetColorBuffer(const GlassContext* ctx) {
 int glassSetAncillaryBuffers(GlassContext* ctx, int depth, int stencil, int accumulation) {
   if (!ctx) return 0;
   glass::gl::finishQueuedDrawing(*ctx->gl);  // what is queued was drawn with the buffers it had
-  ctx->gl->buffers = glass::gl::AncillaryBuffers{depth != 0, stencil != 0, accumulation != 0};
+  glass::gl::AncillaryBuffers& buffers = ctx->gl->buffers;
+  buffers.depth = depth != 0;
+  buffers.stencil = stencil != 0;
+  buffers.accumulation = accumulation != 0;
+  return 1;
+}
+
+int glassSetAlphaBitplanes(GlassContext* ctx, int alpha) {
+  if (!ctx) return 0;
+  glass::gl::finishQueuedDrawing(*ctx->gl);  // what is queued was drawn with the alpha it had
+  ctx->gl->buffers.colorAlpha = alpha != 0;
+  if (!alpha) glass::gl::fillColorAlpha(ctx->gl->framebuffer);
   return 1;
 }
 

@@ -1,6 +1,8 @@
 #include "core/ancillary_buffers.h"
 
 #include "core/context.h"
+#include "fragment/color_conversion.h"
+#include "glass/raster/framebuffer.h"
 
 namespace glass::gl {
 
@@ -17,5 +19,14 @@ bool hasBufferToRead(const Context& ctx, GLenum formatOrType) {
 bool depthTestActive(const Context& ctx) { return ctx.fragment.depthTest && ctx.buffers.depth; }
 
 bool stencilTestActive(const Context& ctx) { return ctx.fragment.stencilTest && ctx.buffers.stencil; }
+
+uint32_t storedAlphaWord(const Context& ctx) { return ctx.buffers.colorAlpha ? 0u : packColorBytes(0, 0, 0, 255); }
+
+void fillColorAlpha(raster::Framebuffer& framebuffer) {
+  for (int y = 0; y < framebuffer.height(); ++y) {
+    uint8_t* pixel = framebuffer.colorAt(0, y);
+    for (int x = 0; x < framebuffer.width(); ++x) pixel[4 * x + 3] = 255;
+  }
+}
 
 }  // namespace glass::gl

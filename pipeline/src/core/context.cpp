@@ -61,6 +61,7 @@ void resizeFramebuffer(Context& ctx, int width, int height) {
   finishQueuedDrawing(ctx);
   raster::Framebuffer resized(width, height);
   drawIntoFramebuffer(ctx, resized);
+  if (!ctx.buffers.colorAlpha) fillColorAlpha(ctx.framebuffer);
   std::vector<int16_t>().swap(ctx.accumulation.buffer);
 }
 

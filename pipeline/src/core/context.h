@@ -92,7 +92,7 @@ struct Context {
   RenderModeState renderMode;
 
   raster::Framebuffer framebuffer;
-  AncillaryBuffers buffers;  // which of depth, stencil and accumulation it has (all by default)
+  AncillaryBuffers buffers;  // which of depth, stencil, accumulation and alpha it has (all by default)
   std::unique_ptr<DrawPipeline> draw;
 
   // Set by an embedding that shows the framebuffer elsewhere (an OSMesa context copies it into
@@ -108,14 +108,14 @@ struct Context {
 
 // Gives the context a framebuffer of another size (OSMesaMakeCurrent to a buffer of another
 // size), after finishing the queued drawing. The new colour, depth and stencil buffers hold
-// zeros and the accumulation buffer is allocated again when next used; GL state, the viewport
+// zeros (alpha 255 in a colour buffer without alpha bitplanes) and the accumulation buffer is allocated again when next used; GL state, the viewport
 // included, is unchanged. Throws (std::bad_alloc, std::system_error for the threads), leaving the context as it was.
 void resizeFramebuffer(Context& ctx, int width, int height);
 
 // A context in GL's initial state, as a new context of previous's size is, that takes over what
 // outlives a frame: previous's framebuffer and accumulation buffer (their contents kept), its
 // display lists and texture objects (as a context sharing them would), which ancillary buffers
-// it has, its flush callback and its teaching view. The queued drawing of previous is finished
+// and alpha bitplanes it has, its flush callback and its teaching view. The queued drawing of previous is finished
 // first; previous is left with a 1 x 1 framebuffer, to be destroyed. Throws (std::bad_alloc,
 // std::system_error for the threads), leaving previous as it was.
 std::unique_ptr<Context> contextInInitialState(Context& previous);

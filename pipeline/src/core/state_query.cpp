@@ -173,7 +173,8 @@ bool queryCoreState(const Context& ctx, GLenum pname, StateValue& v) {
     case GL_STENCIL_CLEAR_VALUE: v.setIntegers({double(f.clearStencil)}); return true;
 
     // The framebuffer (table 6.33 and 6.34)
-    case GL_RED_BITS: case GL_GREEN_BITS: case GL_BLUE_BITS: case GL_ALPHA_BITS:
+    case GL_ALPHA_BITS: v.setIntegers({ctx.buffers.colorAlpha ? 8.0 : 0.0}); return true;
+    case GL_RED_BITS: case GL_GREEN_BITS: case GL_BLUE_BITS:
     case GL_SUBPIXEL_BITS:
       v.setIntegers({8});
       return true;

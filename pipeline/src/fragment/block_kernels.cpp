@@ -24,7 +24,8 @@
 //             lookup (through Sampler2D, which gives sampleTexture's bits) and environment, then
 //             floatToColorByte (here on a row of pixels at a time) and one store, or, when
 //             blending is on, blend()'s bytes with the stored pixels for a row at a time
-//             (blend_rows.h).
+//             (blend_rows.h); without alpha bitplanes, alpha 255 ORed into what is stored, as
+//             the reference path sets it.
 //   coverage  an antialiased line's or point's (primitive/smooth_coverage.h): the filter the
 //             reference path puts before the fragment stage (CoverageFilter) computes it from
 //             each pixel centre and drops a point's pixels of negative coverage before any
@@ -313,6 +314,11 @@ struct TexturingStage<KernelTexturing::Single2D> {
 // Stores words[i] as the 4 bytes at row + 4 i for each bit i of mask.
 void storeCoveredWords(void* row, const uint32_t* words, unsigned mask) { copyCoveredWords(row, words, mask); }
 
+// words[i] |= alpha for the eight pixels of a row (KernelPixelOps::storedAlpha).
+void orRowWords(uint32_t words[kSize], uint32_t alpha) {
+  for (int i = 0; i < kSize; ++i) words[i] |= alpha;
+}
+
 // The stencil and depth tests and their writes on each pixel of rowMask, a row at a time, each
 // pixel as the reference path's function tests it (stencil_depth_rows-inl.h); rowMask keeps, per
 // row, the pixels that passed both.
@@ -384,6 +390,7 @@ void blendCoveredWords(const KernelPixelOps& ops, uint8_t* row, const uint32_t* 
   alignas(64) uint32_t destination[kSize] = {}, blended[kSize];
   copyCoveredWords(destination, row, mask);
   ops.blendRow(ops.blendSettings, words, destination, blended);
+  orRowWords(blended, ops.storedAlpha);
   storeCoveredWords(row, blended, mask);
 }
 
@@ -448,6 +455,7 @@ void shadeBlock(Context& ctx, const KernelPixelOps& ops, const KernelTexture& te
       if (ops.blend) {
         blendCoveredWords(ops, fb.colorAt(bx, by + j), words, mask);
       } else {
+        orRowWords(words, ops.storedAlpha);
         storeCoveredWords(fb.colorAt(bx, by + j), words, mask);
       }
     }

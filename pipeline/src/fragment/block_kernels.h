@@ -65,6 +65,9 @@ struct KernelPixelOps {
   bool blend = false;  // blend with the colour buffer (blending.h) instead of replacing it
   BlendSettings blendSettings;
   BlendRow blendRow = nullptr;  // blendRowFor(blendSettings), when blending
+  // ORed into every colour word stored, blended or not (storedAlphaWord, core/ancillary_buffers.h):
+  // alpha 255 in a colour buffer without alpha bitplanes, 0 otherwise.
+  uint32_t storedAlpha = 0;
 
   bool operator==(const KernelPixelOps&) const = default;
 };

@@ -41,6 +41,12 @@ void clearBuffers(Context& ctx, GLbitfield mask) {
       request.color[c] = floatToColorByte(f.clearColor[c]);
       request.colorMask[c] = f.colorMask[c];
     }
+    // Without alpha bitplanes the stored alpha is 255 and stays so; writing it whatever the mask
+    // keeps a clear of red, green and blue a clear of whole pixels.
+    if (!ctx.buffers.colorAlpha) {
+      request.color[3] = 255;
+      request.colorMask[3] = true;
+    }
   }
   if ((mask & GL_DEPTH_BUFFER_BIT) && f.depthMask && ctx.buffers.depth) {
     request.clearDepth = true;

@@ -72,7 +72,8 @@ void FragmentProcessor::prepare(Context& ctx, bool phong) {
   s_.blendFunction = fastPathsEnabled() ? blendFunctionFor(s_.blendSettings) : &blend;
   s_.writesColor = drawsColor(f.drawBuffer) &&
                    (s_.colorMask[0] || s_.colorMask[1] || s_.colorMask[2] || s_.colorMask[3]);
-  s_.allChannels = s_.colorMask[0] && s_.colorMask[1] && s_.colorMask[2] && s_.colorMask[3];
+  s_.storedAlpha = storedAlphaWord(ctx);
+  s_.allChannels = s_.colorMask[0] && s_.colorMask[1] && s_.colorMask[2] && (s_.colorMask[3] || s_.storedAlpha != 0);
 
   s_.fragmentCounts = nullptr;
   s_.fragmentColors = nullptr;
@@ -107,6 +108,7 @@ void FragmentProcessor::prepare(Context& ctx, bool phong) {
   pixelOps_.blend = s_.blend;
   pixelOps_.blendSettings = s_.blendSettings;
   pixelOps_.blendRow = s_.blend ? blendRowFor(s_.blendSettings) : nullptr;
+  pixelOps_.storedAlpha = s_.storedAlpha;
   if (kernels_[0] != nullptr && s_.texturing) kernelTexture_.prepare(ctx);
   // With the stencil test on, the kernel makes the depth test itself (block_kernels.h).
   kernelNeedsEarlyDepth_ = s_.tests.depthTest && s_.tests.depthFunc != GL_ALWAYS && !s_.tests.stencilTest;
@@ -170,7 +172,7 @@ bool FragmentProcessor::shadeBlock(const raster::TriangleSetup& setup, const ras
 
 void FragmentProcessor::processLineRuns(const raster::LineRunBatch& batch) {
   if (lineKernel_ != nullptr) {
-    lineKernel_(ctx_->framebuffer, s_.tests, batch);
+    lineKernel_(ctx_->framebuffer, s_.tests, s_.storedAlpha, batch);
   } else {
     raster::FragmentSink::processLineRuns(batch);
   }
@@ -247,7 +249,8 @@ void FragmentProcessor::processFragments(const raster::FragmentBatch& batch,
       // written to memory one by one and read back as a word, they would stall the store until
       // the processor had merged them.
       const uint32_t word = packColorBytes(floatToColorByte(color[0]), floatToColorByte(color[1]),
-                                           floatToColorByte(color[2]), floatToColorByte(color[3]));
+                                           floatToColorByte(color[2]), floatToColorByte(color[3])) |
+                            s_.storedAlpha;
       std::memcpy(pixel, &word, 4);
       continue;
     }
@@ -260,6 +263,7 @@ void FragmentProcessor::processFragments(const raster::FragmentBatch& batch,
     } else if (s_.logicOp) {
       for (int c = 0; c < 4; ++c) out[c] = applyLogicOp(s_.logicOpMode, out[c], pixel[c]);
     }
+    if (s_.storedAlpha != 0) out[3] = 255;  // no alpha bitplanes: the result's alpha is not kept
     if (s_.allChannels) {
       std::memcpy(pixel, out, 4);
     } else {

@@ -94,7 +94,10 @@ class FragmentProcessor final : public raster::FragmentSink {
     GLenum logicOpMode = GL_COPY;
     bool colorMask[4] = {true, true, true, true};
     bool writesColor = true;        // some channel unmasked and glDrawBuffer not GL_NONE
+    // Every stored channel written: all four unmasked, or red, green and blue in a colour buffer
+    // without alpha bitplanes (whose alpha, always 255, a write of 255 leaves as it is).
     bool allChannels = true;
+    uint32_t storedAlpha = 0;  // ORed into every pixel stored (storedAlphaWord, ancillary_buffers.h)
 
     // GLASS_VIEW=overdraw (teaching/teaching_view.h): every fragment is counted on its pixel.
     std::uint16_t* fragmentCounts = nullptr;

@@ -8,7 +8,8 @@
 //             stages that are off, converted by floatToColorByte and stored as one word
 //             (packColorBytes). Every fragment of a run has the same varyings, so the kernel
 //             converts them once per run into the same word, the batch's runs a vector at a time
-//             (PackColorColumns, with color_packing-inl.h's lanes: the scalar operations).
+//             (PackColorColumns, with color_packing-inl.h's lanes: the scalar operations),
+//             ORed with alpha 255 without alpha bitplanes as the reference path's store is.
 //   depth     the reference path's own function, testStencilAndDepth (without a stencil
 //             buffer), on each fragment in the same order, so a fragment that lands on a pixel an
 //             earlier fragment of the batch wrote is tested against that write, as there.
@@ -52,7 +53,7 @@ void PackColorColumns(const float* const component[4], int count, uint32_t* word
 namespace {
 
 template <bool depthTest, bool writeColor>
-void shadeLineRuns(raster::Framebuffer& framebuffer, const StencilDepthSettings& tests,
+void shadeLineRuns(raster::Framebuffer& framebuffer, const StencilDepthSettings& tests, uint32_t storedAlpha,
                    const raster::LineRunBatch& batch) {
   uint8_t* const colors = framebuffer.colorAt(0, 0);
   uint32_t* const depths = framebuffer.depthAt(0, 0);
@@ -64,6 +65,7 @@ void shadeLineRuns(raster::Framebuffer& framebuffer, const StencilDepthSettings&
     const float* const components[4] = {batch.varyings[0], batch.varyings[1], batch.varyings[2],
                                         batch.varyings[3]};
     PackColorColumns(components, batch.count, words);
+    for (int r = 0; r < batch.count; ++r) words[r] |= storedAlpha;
   }
   for (int r = 0; r < batch.count; ++r) {
     size_t index = static_cast<size_t>(batch.y[r]) * width + static_cast<size_t>(batch.x[r]);

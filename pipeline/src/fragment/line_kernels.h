@@ -28,9 +28,10 @@ struct LineKernelKey {
   bool writeColor = false;
 };
 
-// Tests and writes the fragments of a batch of runs. tests.stencilTest must be off.
+// Tests and writes the fragments of a batch of runs, each colour ORed with storedAlpha
+// (storedAlphaWord, core/ancillary_buffers.h). tests.stencilTest must be off.
 using LineKernel = void (*)(raster::Framebuffer& framebuffer, const StencilDepthSettings& tests,
-                            const raster::LineRunBatch& batch);
+                            uint32_t storedAlpha, const raster::LineRunBatch& batch);
 
 // The kernel compiled for the key, in the copy of the chosen SIMD target.
 LineKernel lineKernelFor(const LineKernelKey& key);

@@ -164,9 +164,15 @@ bool drawPixelBytes(Context& ctx, const void* pixels, int width, int height, GLe
   const ZoomedAxis xs = columnsOf(ctx, image, bounds);
   const ZoomedAxis ys = rowsOf(ctx, image, bounds);
   // Without zoom the visible columns show consecutive image columns.
-  for (int y = ys.first; y < ys.end; ++y)
-    unpackByteColorSpan(pixels, xs.end - xs.first, width, xs.source(xs.first), ys.source(y), format, type,
-                        unpack, ctx.framebuffer.colorAt(xs.first, y));
+  const int count = xs.end - xs.first;
+  for (int y = ys.first; y < ys.end; ++y) {
+    uint8_t* row = ctx.framebuffer.colorAt(xs.first, y);
+    unpackByteColorSpan(pixels, count, width, xs.source(xs.first), ys.source(y), format, type, unpack, row);
+    // Without alpha bitplanes the stored alpha stays 255, as the fragment stage stores it.
+    if (!ctx.buffers.colorAlpha) {
+      for (int i = 0; i < count; ++i) row[4 * i + 3] = 255;
+    }
+  }
   return true;
 }
 
