@@ -246,6 +246,7 @@ std::unique_ptr<Window> newWindow(const char* title, int x, int y, int width, in
   }
   const AncillaryBits bits = ancillaryBitsOf(window->displayMode);
   glassSetAncillaryBuffers(window->context, bits.depth, bits.stencil, bits.accumulation);
+  glassSetAlphaBitplanes(window->context, alphaBitsOf(window->displayMode));
   return window;
 }
 

@@ -2,7 +2,10 @@
  * Prints the GL and GLUT sizes of its depth, stencil and accumulation buffers and its samples,
  * then draws a near red square and, after it, a far green one with the depth test on, and prints
  * the pixel: red with a depth buffer, green without (the test then does nothing, as on a visual
- * without depth). Exits 0 after the first frame. */
+ * without depth). Then the alpha bits (GL and GLUT) and the alpha read back after clearing with
+ * alpha 0.25 and after blending white by (GL_ONE_MINUS_DST_ALPHA, GL_DST_ALPHA) over it: 64 and
+ * a lighter grey with alpha bitplanes (GLUT_ALPHA), 255 and the grey unchanged without (the
+ * destination alpha is then 1). Exits 0 after the first frame. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <GL/glut.h>
@@ -19,7 +22,7 @@ static void square(GLfloat z)
 
 static void display(void)
 {
-  GLint depth, stencil, accum, sampleBuffers;
+  GLint depth, stencil, accum, sampleBuffers, alpha;
   unsigned char pixel[4];
   glGetIntegerv(GL_DEPTH_BITS, &depth);
   glGetIntegerv(GL_STENCIL_BITS, &stencil);
@@ -38,6 +41,21 @@ static void display(void)
   square(0.5f);
   glReadPixels(5, 5, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, pixel);
   printf("pixel %d %d %d\n", pixel[0], pixel[1], pixel[2]);
+  glGetIntegerv(GL_ALPHA_BITS, &alpha);
+  printf("GL alpha %d GLUT alpha %d buffer %d\n", alpha, glutGet(GLUT_WINDOW_ALPHA_SIZE),
+         glutGet(GLUT_WINDOW_BUFFER_SIZE));
+  glDisable(GL_DEPTH_TEST);
+  glClearColor(0.5f, 0.5f, 0.5f, 0.25f);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glReadPixels(5, 5, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, pixel);
+  printf("cleared %d %d %d %d\n", pixel[0], pixel[1], pixel[2], pixel[3]);
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_ONE_MINUS_DST_ALPHA, GL_DST_ALPHA);
+  glColor4f(1.0f, 1.0f, 1.0f, 0.5f);
+  square(0.0f);
+  glDisable(GL_BLEND);
+  glReadPixels(5, 5, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, pixel);
+  printf("blended %d %d %d %d\n", pixel[0], pixel[1], pixel[2], pixel[3]);
   fflush(stdout);
   glutSwapBuffers();
   exit(0);
