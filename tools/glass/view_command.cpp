@@ -596,7 +596,9 @@ int runView(const std::vector<std::string> &args) {
   char name[] = "glass view";
   char *argv[] = {name, nullptr};
   glutInit(&argc, argv);
-  glutInitDisplayMode(GLUT_DOUBLE | GLUT_RGBA | GLUT_DEPTH);
+  // The buffers glass render draws a scene with: alpha bitplanes (for dst_alpha blending) and a
+  // stencil buffer besides the depth buffer, so that the window shows the same picture.
+  glutInitDisplayMode(GLUT_DOUBLE | GLUT_RGBA | GLUT_ALPHA | GLUT_DEPTH | GLUT_STENCIL);
   glutInitWindowSize(viewer.width > 0 ? viewer.width : viewer.program.width,
                      viewer.height > 0 ? viewer.height : viewer.program.height);
   glutCreateWindow(("glass view: " + viewer.path).c_str());
