@@ -119,3 +119,43 @@ TEST_CASE("0 accumulation bits: no accumulation buffer, and glAccum is an error"
   CHECK(glGetError() == GL_NO_ERROR);
   OSMesaDestroyContext(ctx);
 }
+
+TEST_CASE("formats without alpha: no alpha bitplanes, and destination alpha reads 1 (as in Mesa)") {
+  // Debian 12's libOSMesa 22.3.6 gives GL_ALPHA_BITS 0 for OSMESA_RGB and OSMESA_RGB_565 (it
+  // refuses OSMESA_BGR), 8 for the formats with alpha; glReadPixels then reads alpha 255 after a
+  // clear with alpha 0.25, and blending by (1 - destination alpha, destination alpha) leaves the
+  // clear colour.
+  struct Case {
+    GLenum format, type;
+    GLint alphaBits;
+    uint8_t cleared, blended[2];  // alpha after the clear; red and alpha after blending
+  };
+  const Case cases[] = {
+      {OSMESA_RGBA, GL_UNSIGNED_BYTE, 8, 64, {223, 112}},
+      {OSMESA_BGRA, GL_UNSIGNED_BYTE, 8, 64, {223, 112}},
+      {OSMESA_ARGB, GL_UNSIGNED_BYTE, 8, 64, {223, 112}},
+      {OSMESA_RGB, GL_UNSIGNED_BYTE, 0, 255, {128, 255}},
+      {OSMESA_BGR, GL_UNSIGNED_BYTE, 0, 255, {128, 255}},
+      {OSMESA_RGB_565, GL_UNSIGNED_SHORT_5_6_5, 0, 255, {128, 255}},
+  };
+  for (const Case& c : cases) {
+    CAPTURE(c.format);
+    std::vector<uint8_t> buffer(kSize * kSize * 4);
+    OSMesaContext ctx = OSMesaCreateContextExt(c.format, 24, 8, 0, nullptr);
+    REQUIRE(OSMesaMakeCurrent(ctx, buffer.data(), c.type, kSize, kSize));
+    CHECK(integer(GL_ALPHA_BITS) == c.alphaBits);
+    glClearColor(0.5f, 0.5f, 0.5f, 0.25f);
+    glClear(GL_COLOR_BUFFER_BIT);
+    GLubyte pixel[4] = {};
+    glReadPixels(1, 1, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, pixel);
+    CHECK(pixel[3] == c.cleared);
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_ONE_MINUS_DST_ALPHA, GL_DST_ALPHA);
+    glColor4f(1, 1, 1, 0.5f);
+    glRectf(-1, -1, 1, 1);
+    glReadPixels(1, 1, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, pixel);
+    CHECK(pixel[0] == c.blended[0]);
+    CHECK(pixel[3] == c.blended[1]);
+    OSMesaDestroyContext(ctx);
+  }
+}

@@ -87,6 +87,10 @@ bool isBufferFormat(GLenum format) {
   }
 }
 
+bool formatHasAlpha(GLenum format) {
+  return format == OSMESA_RGBA || format == OSMESA_BGRA || format == OSMESA_ARGB;
+}
+
 bool acceptsType(GLenum format, GLenum type) {
   if (!isBufferFormat(format)) return false;
   if (format == OSMESA_RGB_565) return type == GL_UNSIGNED_SHORT_5_6_5;

@@ -22,6 +22,9 @@ namespace glass::osmesa {
 bool isBufferFormat(GLenum format);
 // True when a buffer of this format may have components of this type (OSMesaMakeCurrent).
 bool acceptsType(GLenum format, GLenum type);
+// True for the formats with an alpha component (OSMESA_RGBA, _BGRA, _ARGB): a context of
+// another format has no alpha bitplanes (GL_ALPHA_BITS 0), as in Mesa.
+bool formatHasAlpha(GLenum format);
 
 struct BufferLayout {
   GLenum format = 0;
