@@ -3,7 +3,9 @@
 // stencil 0, so that a program that forgets to clear still gets a deterministic picture.
 #include "glass/raster/framebuffer.h"
 
+#include <cstring>
 #include <stdexcept>
+#include <utility>
 
 #include "glass/raster/fragment.h"
 
@@ -24,5 +26,23 @@ Framebuffer::Framebuffer(int width, int height)
       color_(pixelCount(width, height) * 4, 0),
       depth_(pixelCount(width, height), kDepthMax),
       stencil_(pixelCount(width, height), 0) {}
+
+void Framebuffer::addSecondColorBuffer() {
+  if (otherColor_) return;
+  const size_t bytes = pixelCount(width_, height_) * 4;
+  otherColor_ = std::make_unique<CacheAlignedPixels<uint8_t>>(bytes, 0);
+  std::memcpy(&(*otherColor_)[0], &color_[0], bytes);
+}
+
+void Framebuffer::removeSecondColorBuffer() {
+  selectColorBuffer(0);
+  otherColor_.reset();
+}
+
+void Framebuffer::selectColorBuffer(int index) {
+  if (index == selected_ || !otherColor_) return;
+  std::swap(color_, *otherColor_);
+  selected_ = index;
+}
 
 }  // namespace glass::raster

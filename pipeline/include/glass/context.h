@@ -50,7 +50,9 @@ GLASS_API int glassGetWidth(const GlassContext *ctx);
 GLASS_API int glassGetHeight(const GlassContext *ctx);
 
 /* The colour buffer: width * height pixels of 4 bytes (R, G, B, A), bottom row first as in GL,
- * rows packed without padding. Valid until the context is destroyed. NULL for a NULL context. */
+ * rows packed without padding; the back buffer of a double-buffered context
+ * (glassSetDoubleBuffered). Valid until the context is destroyed or resized. NULL for a NULL
+ * context. glassWritePNG writes the same buffer. */
 GLASS_API const unsigned char *glassGetColorBuffer(const GlassContext *ctx);
 
 /* Puts ctx back in GL's initial state, every value as a new context of its size has it, and
@@ -97,6 +99,28 @@ GLASS_API int glassResizeContext(GlassContext *ctx, int width, int height);
  * a single-buffered window shows its picture there. NULL removes it. One callback per context. */
 typedef void (*GlassFlushCallback)(GlassContext *ctx, void *userData);
 GLASS_API void glassSetFlushCallback(GlassContext *ctx, GlassFlushCallback callback, void *userData);
+
+/* Gives ctx a front and a back colour buffer (nonzero) or one (0), as a window of a
+ * double-buffered or single-buffered visual has; a new context has one. With two, GL acts as
+ * OpenGL 1.x says of a double-buffered framebuffer: GL_DOUBLEBUFFER is true, the draw and read
+ * buffers start as GL_BACK (GL_FRONT with one), glDrawBuffer and glReadBuffer choose GL_FRONT,
+ * GL_BACK or, for drawing, GL_FRONT_AND_BACK (each buffer blended with its own pixels), and
+ * glClear and glAccum(GL_RETURN) write the draw buffers. The new front buffer is a copy of the
+ * colour buffer; setting the draw and read buffers to their initial values finishes the call.
+ * glass's GLUT takes it from the display mode (GLUT_DOUBLE). Kept by glassResetContext and
+ * glassResizeContext. 1 on success; 0 on a NULL context or no memory, and then nothing
+ * changed. */
+GLASS_API int glassSetDoubleBuffered(GlassContext *ctx, int doubleBuffered);
+
+/* Copies the back buffer of a double-buffered context into its front buffer, after finishing
+ * every queued draw (the back buffer keeps its pixels, as Mesa's swap leaves them): what a
+ * window's swap does before it shows the front buffer. Does nothing to a single-buffered
+ * context. 1 on success; 0 on a NULL context. */
+GLASS_API int glassSwapBuffers(GlassContext *ctx);
+
+/* The front buffer of a double-buffered context, the picture a window shows, as
+ * glassGetColorBuffer gives the back one; the colour buffer of a single-buffered context. */
+GLASS_API const unsigned char *glassGetFrontBuffer(const GlassContext *ctx);
 
 /* Writes width * height RGBA8 pixels (bottom row first, rows packed, as glassGetColorBuffer gives
  * them) as an RGB PNG, whole or not at all, as glassWritePNG does; 1 on success. For a copy of a

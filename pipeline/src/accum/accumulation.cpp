@@ -90,25 +90,35 @@ void accumulate(Context& ctx, GLenum op, float value) {
   // GL_RETURN into a colour buffer without alpha bitplanes keeps its alpha 255.
   const bool returnsAlpha = ctx.buffers.colorAlpha;
 
-  for (int y = region.y0; y < region.y1; ++y) {
-    for (int x = region.x0; x < region.x1; ++x) {
-      int16_t* a = buffer + (static_cast<size_t>(y) * static_cast<size_t>(fb.width()) + static_cast<size_t>(x)) * 4;
-      uint8_t* c = fb.colorAt(x, y);
-      for (int k = 0; k < 4; ++k) {
-        switch (op) {
-          case GL_LOAD: a[k] = toAccumulation(static_cast<float>(c[k]) * (1.0f / 255.0f) * loadScale); break;
-          case GL_ACCUM:
-            a[k] = saturatedSum(a[k], toAccumulation(static_cast<float>(c[k]) * (1.0f / 255.0f) * loadScale));
-            break;
-          case GL_ADD: a[k] = saturatedSum(a[k], increment); break;
-          case GL_MULT: a[k] = toAccumulation(static_cast<float>(a[k]) * value); break;
-          case GL_RETURN:
-            if (mask[k] && (k < 3 || returnsAlpha)) c[k] = packColorByte(static_cast<float>(a[k]) * returnScale);
-            break;
-          default: break;
+  const auto pass = [&] {
+    for (int y = region.y0; y < region.y1; ++y) {
+      for (int x = region.x0; x < region.x1; ++x) {
+        int16_t* a = buffer + (static_cast<size_t>(y) * static_cast<size_t>(fb.width()) + static_cast<size_t>(x)) * 4;
+        uint8_t* c = fb.colorAt(x, y);
+        for (int k = 0; k < 4; ++k) {
+          switch (op) {
+            case GL_LOAD: a[k] = toAccumulation(static_cast<float>(c[k]) * (1.0f / 255.0f) * loadScale); break;
+            case GL_ACCUM:
+              a[k] = saturatedSum(a[k], toAccumulation(static_cast<float>(c[k]) * (1.0f / 255.0f) * loadScale));
+              break;
+            case GL_ADD: a[k] = saturatedSum(a[k], increment); break;
+            case GL_MULT: a[k] = toAccumulation(static_cast<float>(a[k]) * value); break;
+            case GL_RETURN:
+              if (mask[k] && (k < 3 || returnsAlpha)) c[k] = packColorByte(static_cast<float>(a[k]) * returnScale);
+              break;
+            default: break;
+          }
         }
       }
     }
+  };
+  if (op == GL_LOAD || op == GL_ACCUM) {
+    const ReadBufferSelection read(ctx);  // the read buffer's pixels (a double buffer's front, say)
+    pass();
+  } else if (op == GL_RETURN) {
+    forEachDrawnColorBuffer(ctx, pass);  // both buffers for GL_FRONT_AND_BACK
+  } else {
+    pass();
   }
 }
 

@@ -20,6 +20,7 @@ void glDrawBuffer(GLenum buffer) {
       return recordError(ctx, error);
     }
     ctx.fragment.drawBuffer = buffer;
+    glass::gl::selectDrawBuffer(ctx);
   });
 }
 

@@ -9,6 +9,7 @@
 #include "core/context.h"
 #include "core/png_writer.h"
 #include "core/transform_state.h"
+#include "fragment/buffer_selection.h"
 #include "primitive/queued_drawing.h"
 #include "teaching/teaching_view.h"
 
@@ -53,7 +54,8 @@ int glassWritePNG(GlassContext* ctx, const char* path) {
     return glass::gl::writeRGBAPixelsPNG(view, ctx->gl->framebuffer.width(),
                                          ctx->gl->framebuffer.height(), path) ? 1 : 0;
   }
-  return glass::gl::writeColorBufferPNG(ctx->gl->framebuffer, path) ? 1 : 0;
+  const glass::raster::Framebuffer& fb = ctx->gl->framebuffer;
+  return glass::gl::writeRGBAPixelsPNG(glass::gl::backBufferPixels(*ctx->gl), fb.width(), fb.height(), path) ? 1 : 0;
 }
 
 GlassContext* glassGetCurrentContext(void) { return currentGlassContext; }
@@ -70,7 +72,32 @@ const unsigned char* glassGetColorBuffer(const GlassContext* ctx) {
   if (const unsigned char* view = glass::gl::presentTeachingView(*const_cast<GlassContext*>(ctx)->gl)) {
     return view;
   }
-  return ctx->gl->framebuffer.colorAt(0, 0);
+  return glass::gl::backBufferPixels(*ctx->gl);
+}
+
+const unsigned char* glassGetFrontBuffer(const GlassContext* ctx) {
+  if (!ctx) return nullptr;
+  glass::gl::finishQueuedDrawing(*const_cast<GlassContext*>(ctx)->gl);  // as glassGetColorBuffer
+  if (const unsigned char* view = glass::gl::presentTeachingView(*const_cast<GlassContext*>(ctx)->gl)) {
+    return view;
+  }
+  return glass::gl::frontBufferPixels(*ctx->gl);
+}
+
+int glassSetDoubleBuffered(GlassContext* ctx, int doubleBuffered) {
+  if (!ctx) return 0;
+  try {
+    glass::gl::setDoubleBuffered(*ctx->gl, doubleBuffered != 0);
+  } catch (const std::bad_alloc&) {
+    return 0;
+  }
+  return 1;
+}
+
+int glassSwapBuffers(GlassContext* ctx) {
+  if (!ctx) return 0;
+  glass::gl::swapColorBuffers(*ctx->gl);
+  return 1;
 }
 
 int glassSetAncillaryBuffers(GlassContext* ctx, int depth, int stencil, int accumulation) {

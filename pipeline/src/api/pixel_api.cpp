@@ -72,6 +72,7 @@ void glReadPixels(GLint x, GLint y, GLsizei width, GLsizei height, GLenum format
     if (!glass::gl::hasBufferToRead(ctx, format)) return recordError(ctx, GL_INVALID_OPERATION);
     if (!pixels) return;
     glass::gl::finishQueuedDrawing(ctx);
+    const glass::gl::ReadBufferSelection read(ctx);
     try {
       glass::gl::readPixels(ctx, x, y, width, height, format, type, pixels);
     } catch (const std::bad_alloc&) {

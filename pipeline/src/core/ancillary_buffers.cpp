@@ -23,9 +23,14 @@ bool stencilTestActive(const Context& ctx) { return ctx.fragment.stencilTest && 
 uint32_t storedAlphaWord(const Context& ctx) { return ctx.buffers.colorAlpha ? 0u : packColorBytes(0, 0, 0, 255); }
 
 void fillColorAlpha(raster::Framebuffer& framebuffer) {
+  const bool both = framebuffer.hasSecondColorBuffer();  // a double-buffered framebuffer's front too
   for (int y = 0; y < framebuffer.height(); ++y) {
     uint8_t* pixel = framebuffer.colorAt(0, y);
-    for (int x = 0; x < framebuffer.width(); ++x) pixel[4 * x + 3] = 255;
+    uint8_t* other = both ? framebuffer.otherColorAt(0, y) : nullptr;
+    for (int x = 0; x < framebuffer.width(); ++x) {
+      pixel[4 * x + 3] = 255;
+      if (other) other[4 * x + 3] = 255;
+    }
   }
 }
 

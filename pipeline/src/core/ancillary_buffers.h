@@ -51,8 +51,8 @@ bool stencilTestActive(const Context& ctx);
 // fast paths that a masked alpha channel would leave.
 uint32_t storedAlphaWord(const Context& ctx);
 
-// Sets the alpha of every pixel of the colour buffer to 255 (a colour buffer without alpha
-// bitplanes made, resized or given to the context).
+// Sets the alpha of every pixel of the colour buffers (both of a double-buffered framebuffer) to
+// 255 (a colour buffer without alpha bitplanes made, resized or given to the context).
 void fillColorAlpha(raster::Framebuffer& framebuffer);
 
 }  // namespace glass::gl

@@ -18,6 +18,7 @@
 #include "core/context.h"
 #include "core/errors.h"
 #include "core/state_value.h"
+#include "fragment/buffer_selection.h"
 #include "lighting/lighting_hooks.h"
 #include "lists/command_recording.h"
 #include "texture/texture_object.h"
@@ -403,6 +404,7 @@ void popAttrib(Context& ctx) {
   const std::shared_ptr<const AttribEntry> top = stack.back();
   stack.pop_back();
   restoreAttributes(ctx, *top);
+  selectDrawBuffer(ctx);  // the draw buffer restored may be another colour buffer
 }
 
 void pushClientAttrib(Context& ctx, GLbitfield mask) {

@@ -1,5 +1,6 @@
 #include "core/context.h"
 
+#include "fragment/buffer_selection.h"
 #include "primitive/draw_pipeline.h"
 #include "primitive/queued_drawing.h"
 #include "teaching/frame_statistics.h"
@@ -45,6 +46,10 @@ void Context::startInInitialState() {
   const int width = framebuffer.width(), height = framebuffer.height();
   transform.viewport = Viewport{0, 0, width, height};
   fragment.scissor = ScissorBox{0, 0, width, height};
+  // Spec 4.2.1, 4.3.2: drawing and reading start on the back buffer of a double-buffered
+  // framebuffer (one taken over from another context may be).
+  fragment.drawBuffer = pixelTransfer.readBuffer = initialColorBuffer(*this);
+  selectDrawBuffer(*this);
   attachTeachingViewFromEnvironment(*this);
   attachFrameStatisticsFromEnvironment(*this);
   attachVertexTraceFromEnvironment(*this);
@@ -60,8 +65,10 @@ Context::~Context() {
 void resizeFramebuffer(Context& ctx, int width, int height) {
   finishQueuedDrawing(ctx);
   raster::Framebuffer resized(width, height);
+  if (isDoubleBuffered(ctx)) resized.addSecondColorBuffer();
   drawIntoFramebuffer(ctx, resized);
   if (!ctx.buffers.colorAlpha) fillColorAlpha(ctx.framebuffer);
+  selectDrawBuffer(ctx);
   std::vector<int16_t>().swap(ctx.accumulation.buffer);
 }
 

@@ -8,10 +8,6 @@
 
 namespace glass::gl {
 
-bool writeColorBufferPNG(const raster::Framebuffer& fb, const char* path) {
-  return writeRGBAPixelsPNG(fb.colorAt(0, 0), fb.width(), fb.height(), path);
-}
-
 bool writeRGBAPixelsPNG(const unsigned char* rgba, int width, int height, const char* path) {
   if (!path || !*path || !rgba || width <= 0 || height <= 0) return false;
   const size_t rowBytes = static_cast<size_t>(width) * 3;

@@ -7,6 +7,7 @@
 #include "core/color_index.h"
 #include "core/context.h"
 #include "evaluators/evaluator_commands.h"
+#include "fragment/buffer_selection.h"
 #include "fragment/fog_hooks.h"
 #include "fragment/multisample.h"
 #include "lighting/lighting_hooks.h"
@@ -184,7 +185,8 @@ bool queryCoreState(const Context& ctx, GLenum pname, StateValue& v) {
       v.setIntegers({0});
       return true;
     case GL_RGBA_MODE: v.setBooleans({true}); return true;
-    case GL_INDEX_MODE: case GL_DOUBLEBUFFER: case GL_STEREO: v.setBooleans({false}); return true;
+    case GL_INDEX_MODE: case GL_STEREO: v.setBooleans({false}); return true;
+    case GL_DOUBLEBUFFER: v.setBooleans({isDoubleBuffered(ctx)}); return true;
     case GL_DRAW_BUFFER: v.setIntegers({double(f.drawBuffer)}); return true;
     case GL_READ_BUFFER: v.setIntegers({double(ctx.pixelTransfer.readBuffer)}); return true;
 

@@ -1,12 +1,18 @@
 #include "fragment/buffer_selection.h"
 
+#include <cstring>
+
+#include "core/context.h"
+#include "primitive/queued_drawing.h"
+
 namespace glass::gl {
 
 namespace {
 
-// Table 4.4: the buffers a name denotes. glass's framebuffer has only the front-left buffer
-// (Mesa's off-screen framebuffer treats the back-left names as that same buffer, see the header).
-bool namesTheColorBuffer(GLenum buffer) {
+// Table 4.4: the buffers a name denotes. glass's framebuffer has the front-left buffer, and the
+// back-left one when double-buffered (a single-buffered one takes the back-left names as its one
+// buffer, see the header).
+bool namesAColorBuffer(GLenum buffer) {
   switch (buffer) {
     case GL_FRONT: case GL_BACK: case GL_LEFT: case GL_FRONT_LEFT: case GL_BACK_LEFT:
     case GL_FRONT_AND_BACK:
@@ -25,15 +31,77 @@ bool namesAMissingBuffer(GLenum buffer) {
   }
 }
 
+bool namesFrontOnly(GLenum buffer) { return buffer == GL_FRONT || buffer == GL_FRONT_LEFT; }
+bool namesBoth(GLenum buffer) { return buffer == GL_FRONT_AND_BACK || buffer == GL_LEFT; }
+
+// The buffer a read of `buffer` reads: GL_FRONT_AND_BACK and GL_LEFT read the front one, as in
+// Mesa (spec 4.3.2 leaves them out of glReadBuffer).
+int readColorBuffer(GLenum buffer) {
+  return namesFrontOnly(buffer) || namesBoth(buffer) ? kFrontColorBuffer : kBackColorBuffer;
+}
+
+int drawColorBuffer(GLenum buffer) { return namesFrontOnly(buffer) ? kFrontColorBuffer : kBackColorBuffer; }
+
 }  // namespace
 
 GLenum drawBufferError(GLenum buffer) {
-  if (buffer == GL_NONE || namesTheColorBuffer(buffer)) return GL_NO_ERROR;
+  if (buffer == GL_NONE || namesAColorBuffer(buffer)) return GL_NO_ERROR;
   return namesAMissingBuffer(buffer) ? GL_INVALID_OPERATION : GL_INVALID_ENUM;
 }
 
 // Spec 4.3.2 lists neither GL_FRONT_AND_BACK (two buffers) nor GL_NONE for glReadBuffer; Mesa
-// accepts both on its off-screen framebuffer (GL 3.0 added GL_NONE), and so does glass.
+// accepts both, and so does glass.
 GLenum readBufferError(GLenum buffer) { return drawBufferError(buffer); }
+
+bool isDoubleBuffered(const Context& ctx) { return ctx.framebuffer.hasSecondColorBuffer(); }
+
+GLenum initialColorBuffer(const Context& ctx) { return isDoubleBuffered(ctx) ? GL_BACK : GL_FRONT; }
+
+void setDoubleBuffered(Context& ctx, bool doubleBuffered) {
+  finishQueuedDrawing(ctx);
+  if (doubleBuffered) {
+    ctx.framebuffer.addSecondColorBuffer();
+  } else {
+    ctx.framebuffer.removeSecondColorBuffer();
+  }
+  ctx.fragment.drawBuffer = ctx.pixelTransfer.readBuffer = initialColorBuffer(ctx);
+  selectDrawBuffer(ctx);
+}
+
+void selectDrawBuffer(Context& ctx) {
+  const int wanted = isDoubleBuffered(ctx) ? drawColorBuffer(ctx.fragment.drawBuffer) : kBackColorBuffer;
+  if (ctx.framebuffer.selectedColorBuffer() == wanted) return;
+  finishQueuedDrawing(ctx);
+  ctx.framebuffer.selectColorBuffer(wanted);
+}
+
+bool writesBothBuffers(const Context& ctx) { return isDoubleBuffered(ctx) && namesBoth(ctx.fragment.drawBuffer); }
+
+ReadBufferSelection::ReadBufferSelection(Context& ctx) : ctx_(ctx) {
+  if (!isDoubleBuffered(ctx)) return;
+  const int wanted = readColorBuffer(ctx.pixelTransfer.readBuffer);
+  if (ctx.framebuffer.selectedColorBuffer() == wanted) return;
+  finishQueuedDrawing(ctx);
+  ctx.framebuffer.selectColorBuffer(wanted);
+}
+
+ReadBufferSelection::~ReadBufferSelection() { selectDrawBuffer(ctx_); }
+
+void swapColorBuffers(Context& ctx) {
+  if (!isDoubleBuffered(ctx)) return;
+  finishQueuedDrawing(ctx);
+  const raster::Framebuffer& fb = ctx.framebuffer;
+  const size_t bytes = static_cast<size_t>(fb.width()) * fb.height() * 4;
+  // The front buffer's pixels, written through whichever address the framebuffer gives them.
+  uint8_t* front = fb.selectedColorBuffer() == kFrontColorBuffer ? ctx.framebuffer.colorAt(0, 0)
+                                                                 : ctx.framebuffer.otherColorAt(0, 0);
+  std::memcpy(front, fb.colorBufferPixels(kBackColorBuffer), bytes);
+}
+
+const uint8_t* frontBufferPixels(const Context& ctx) {
+  return ctx.framebuffer.colorBufferPixels(isDoubleBuffered(ctx) ? kFrontColorBuffer : kBackColorBuffer);
+}
+
+const uint8_t* backBufferPixels(const Context& ctx) { return ctx.framebuffer.colorBufferPixels(kBackColorBuffer); }
 
 }  // namespace glass::gl

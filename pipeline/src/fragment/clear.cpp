@@ -57,8 +57,20 @@ void clearBuffers(Context& ctx, GLbitfield mask) {
     request.stencil = static_cast<uint8_t>(f.clearStencil & 0xFF);
     request.stencilWriteMask = static_cast<uint8_t>(f.stencilWriteMask & 0xFFu);
   }
-  if (request.clearsSomething() && !queueClear(ctx, request)) {
-    raster::clearFramebuffer(request, request.rect);
+  const auto clearOne = [&](const raster::ClearRequest& one) {
+    if (one.clearsSomething() && !queueClear(ctx, one)) raster::clearFramebuffer(one, one.rect);
+  };
+  if (request.clearColor && writesBothBuffers(ctx)) {
+    // GL_FRONT_AND_BACK: the front buffer's colour first, then the back's with the rest.
+    raster::ClearRequest colorOnly = request;
+    colorOnly.clearDepth = colorOnly.clearStencil = false;
+    bool front = true;
+    forEachDrawnColorBuffer(ctx, [&] {
+      clearOne(front ? colorOnly : request);
+      front = false;
+    });
+  } else {
+    clearOne(request);
   }
   if ((mask & GL_ACCUM_BUFFER_BIT) && ctx.buffers.accumulation) clearAccumulationBuffer(ctx, x0, y0, x1, y1);
 }

@@ -73,6 +73,7 @@ void FragmentProcessor::prepare(Context& ctx, bool phong) {
   s_.writesColor = drawsColor(f.drawBuffer) &&
                    (s_.colorMask[0] || s_.colorMask[1] || s_.colorMask[2] || s_.colorMask[3]);
   s_.storedAlpha = storedAlphaWord(ctx);
+  s_.bothBuffers = s_.writesColor && writesBothBuffers(ctx);
   s_.allChannels = s_.colorMask[0] && s_.colorMask[1] && s_.colorMask[2] && (s_.colorMask[3] || s_.storedAlpha != 0);
 
   s_.fragmentCounts = nullptr;
@@ -116,7 +117,7 @@ void FragmentProcessor::prepare(Context& ctx, bool phong) {
 
 bool FragmentProcessor::kernelsAllowed() const {
   return fastPathsEnabled() && s_.fragmentCounts == nullptr && s_.fragmentColors == nullptr &&
-         s_.statistics == nullptr;
+         s_.statistics == nullptr && !s_.bothBuffers;
 }
 
 bool FragmentProcessor::storesColorsAsGiven() const {
@@ -243,36 +244,41 @@ void FragmentProcessor::processFragments(const raster::FragmentBatch& batch,
       paintFragmentView(ctx, s_.fragmentColorsView, s_.fragmentColors, s_.fragmentColorsWidth, batch, i,
                         v + varying::kEyeNormal);
     }
-    uint8_t* pixel = fb.colorAt(fragment.x, fragment.y);
-    if (s_.allChannels && !s_.blend && !s_.logicOp) {
-      // The common case, one whole-pixel store. The four bytes are put together in a register:
-      // written to memory one by one and read back as a word, they would stall the store until
-      // the processor had merged them.
-      const uint32_t word = packColorBytes(floatToColorByte(color[0]), floatToColorByte(color[1]),
-                                           floatToColorByte(color[2]), floatToColorByte(color[3])) |
-                            s_.storedAlpha;
-      std::memcpy(pixel, &word, 4);
-      continue;
-    }
-    uint8_t out[4];
-    for (int c = 0; c < 4; ++c) out[c] = floatToColorByte(color[c]);
-    if (s_.blend) {
-      uint8_t blended[4];
-      s_.blendFunction(s_.blendSettings, out, pixel, blended);
-      for (int c = 0; c < 4; ++c) out[c] = blended[c];
-    } else if (s_.logicOp) {
-      for (int c = 0; c < 4; ++c) out[c] = applyLogicOp(s_.logicOpMode, out[c], pixel[c]);
-    }
-    if (s_.storedAlpha != 0) out[3] = 255;  // no alpha bitplanes: the result's alpha is not kept
-    if (s_.allChannels) {
-      std::memcpy(pixel, out, 4);
-    } else {
-      for (int c = 0; c < 4; ++c) {
-        if (s_.colorMask[c]) pixel[c] = out[c];
-      }
-    }
+    writeColor(color, fb.colorAt(fragment.x, fragment.y));
+    if (s_.bothBuffers) writeColor(color, fb.otherColorAt(fragment.x, fragment.y));
   }
   if (counting) addFragmentTally(*s_.statistics, batch.count, tally);
+}
+
+// Spec 4.1.7 to 4.1.10 and 4.2.2: blending or the logic op with the pixel, the colour mask.
+void FragmentProcessor::writeColor(const float color[4], uint8_t* pixel) const {
+  if (s_.allChannels && !s_.blend && !s_.logicOp) {
+    // The common case, one whole-pixel store. The four bytes are put together in a register:
+    // written to memory one by one and read back as a word, they would stall the store until
+    // the processor had merged them.
+    const uint32_t word = packColorBytes(floatToColorByte(color[0]), floatToColorByte(color[1]),
+                                         floatToColorByte(color[2]), floatToColorByte(color[3])) |
+                          s_.storedAlpha;
+    std::memcpy(pixel, &word, 4);
+    return;
+  }
+  uint8_t out[4];
+  for (int c = 0; c < 4; ++c) out[c] = floatToColorByte(color[c]);
+  if (s_.blend) {
+    uint8_t blended[4];
+    s_.blendFunction(s_.blendSettings, out, pixel, blended);
+    for (int c = 0; c < 4; ++c) out[c] = blended[c];
+  } else if (s_.logicOp) {
+    for (int c = 0; c < 4; ++c) out[c] = applyLogicOp(s_.logicOpMode, out[c], pixel[c]);
+  }
+  if (s_.storedAlpha != 0) out[3] = 255;  // no alpha bitplanes: the result's alpha is not kept
+  if (s_.allChannels) {
+    std::memcpy(pixel, out, 4);
+  } else {
+    for (int c = 0; c < 4; ++c) {
+      if (s_.colorMask[c]) pixel[c] = out[c];
+    }
+  }
 }
 
 }  // namespace glass::gl

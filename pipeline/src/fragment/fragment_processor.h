@@ -98,6 +98,9 @@ class FragmentProcessor final : public raster::FragmentSink {
     // without alpha bitplanes (whose alpha, always 255, a write of 255 leaves as it is).
     bool allChannels = true;
     uint32_t storedAlpha = 0;  // ORed into every pixel stored (storedAlphaWord, ancillary_buffers.h)
+    // GL_FRONT_AND_BACK in a double-buffered framebuffer: each fragment is written into the
+    // front buffer too (fragment/buffer_selection.h), by the per-fragment path only.
+    bool bothBuffers = false;
 
     // GLASS_VIEW=overdraw (teaching/teaching_view.h): every fragment is counted on its pixel.
     std::uint16_t* fragmentCounts = nullptr;
@@ -115,9 +118,12 @@ class FragmentProcessor final : public raster::FragmentSink {
     bool operator==(const Settings&) const = default;
   };
 
-  // Whether any kernel may draw: fast paths are on and no teaching view or statistics watch
-  // the fragments (they see them in the reference path, teaching/teaching_hooks.h).
+  // Whether any kernel may draw: fast paths are on, no teaching view or statistics watch the
+  // fragments (they see them in the reference path, teaching/teaching_hooks.h) and the
+  // fragments go to one colour buffer.
   bool kernelsAllowed() const;
+  // Stores a fragment's final colour into one colour buffer's pixel.
+  void writeColor(const float color[4], uint8_t* pixel) const;
   // The key of the block kernels for the settings (coverage None), or none when no kernel
   // covers them (block_kernels.h).
   std::optional<BlockKernelKey> kernelKey() const;

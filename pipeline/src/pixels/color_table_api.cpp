@@ -226,6 +226,7 @@ void glCopyColorTable(GLenum target, GLenum internalformat, GLint x, GLint y, GL
     if (error != GL_NO_ERROR) return recordError(ctx, error);
     if (width > glass::gl::kMaxColorTableWidth) return recordError(ctx, GL_TABLE_TOO_LARGE);
     glass::gl::finishQueuedDrawing(ctx);
+    const glass::gl::ReadBufferSelection read(ctx);
     specifyTable(ctx, t, internalformat, width, glass::gl::readColorBlock(ctx, x, y, width, 1));
   });
 }
@@ -240,6 +241,7 @@ void glCopyColorSubTable(GLenum target, GLsizei start, GLint x, GLint y, GLsizei
     }
     if (const GLenum error = copySourceError(ctx); error != GL_NO_ERROR) return recordError(ctx, error);
     glass::gl::finishQueuedDrawing(ctx);
+    const glass::gl::ReadBufferSelection read(ctx);
     subTable(ctx, t, start, width, glass::gl::readColorBlock(ctx, x, y, width, 1));
   });
 }

@@ -118,6 +118,7 @@ void copyFilter(GLenum target, GLenum expected, GLenum internalFormat, GLint x, 
     }
     if (error != GL_NO_ERROR) return recordError(ctx, error);
     glass::gl::finishQueuedDrawing(ctx);
+    const glass::gl::ReadBufferSelection read(ctx);
     specifyFilter(ctx, convolutionTarget(target), internalFormat, width, height,
                   glass::gl::readColorBlock(ctx, x, y, width, height));
   });

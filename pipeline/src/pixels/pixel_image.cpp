@@ -5,6 +5,7 @@
 
 #include "core/context.h"
 #include "core/float_to_int.h"
+#include "fragment/buffer_selection.h"
 #include "pixels/imaging_pipeline.h"
 #include "pixels/pixel_fragments.h"
 #include "pixels/pixel_transfer.h"
@@ -157,11 +158,14 @@ void copyPixels(Context& ctx, int x, int y, int width, int height, GLenum type) 
   const size_t count = pixelCount(block.width, block.height);
   if (type == GL_COLOR) {
     std::vector<float> rgba(count * 4);
-    for (int j = 0; j < block.height; ++j) {
-      for (int i = 0; i < block.width; ++i) {
-        const uint8_t* c = fb.colorAt(x0 + i, y0 + j);
-        float* out = &rgba[(static_cast<size_t>(j) * block.width + i) * 4];
-        for (int k = 0; k < 4; ++k) out[k] = static_cast<float>(c[k]) / 255.0f;
+    {
+      const ReadBufferSelection read(ctx);  // the read buffer's pixels; drawn into the draw buffer
+      for (int j = 0; j < block.height; ++j) {
+        for (int i = 0; i < block.width; ++i) {
+          const uint8_t* c = fb.colorAt(x0 + i, y0 + j);
+          float* out = &rgba[(static_cast<size_t>(j) * block.width + i) * 4];
+          for (int k = 0; k < 4; ++k) out[k] = static_cast<float>(c[k]) / 255.0f;
+        }
       }
     }
     drawColors(ctx, block, std::move(rgba));

@@ -510,6 +510,7 @@ void copyTexImage(Context& ctx, int dimensions, GLenum target, GLint level, GLen
   // No colour buffer to read from after glReadBuffer(GL_NONE), as for glReadPixels (Mesa too).
   if (!depthImage && !readsColor(ctx.pixelTransfer.readBuffer))
     return recordError(ctx, GL_INVALID_OPERATION);
+  const ReadBufferSelection read(ctx);
 
   const ImageTarget named = imageTarget(ctx, target);
   TextureObject& texture = *named.texture;
@@ -587,6 +588,7 @@ void copyTexSubImage(Context& ctx, int dimensions, GLenum target, GLint level, G
     return recordError(ctx, GL_INVALID_VALUE);
   if (!image.isDepth() && !readsColor(ctx.pixelTransfer.readBuffer))
     return recordError(ctx, GL_INVALID_OPERATION);
+  const ReadBufferSelection read(ctx);
   if (image.isDepth() && !ctx.buffers.depth) return recordError(ctx, GL_INVALID_OPERATION);
   // A border slice of a 3D image is not stored.
   if (zoffset < 0 || zoffset >= image.depth) return;

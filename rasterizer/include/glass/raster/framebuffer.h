@@ -47,9 +47,29 @@ class Framebuffer {
   uint8_t* stencilAt(int x, int y) { return &stencil_[static_cast<size_t>(y) * width_ + x]; }
   const uint8_t* stencilAt(int x, int y) const { return &stencil_[static_cast<size_t>(y) * width_ + x]; }
 
+  // A double-buffered framebuffer (a GLUT_DOUBLE window's) has a second colour buffer of the
+  // same size, which starts as a copy of the first. colorAt addresses the selected one (buffer 0
+  // until selectColorBuffer chooses another) and otherColorAt the other. Selecting costs nothing
+  // (the pixels stay where they are); nothing may be drawing into the framebuffer meanwhile.
+  void addSecondColorBuffer();
+  void removeSecondColorBuffer();  // buffer 0 is kept, and selected
+  bool hasSecondColorBuffer() const { return otherColor_ != nullptr; }
+  void selectColorBuffer(int index);  // 0, or 1 when there is a second buffer
+  int selectedColorBuffer() const { return selected_; }
+  // Buffer `index`'s pixels (as colorAt(0, 0) of it), whichever is selected.
+  const uint8_t* colorBufferPixels(int index) const {
+    return index == selected_ ? &color_[0] : &(*otherColor_)[0];
+  }
+  uint8_t* otherColorAt(int x, int y) { return &(*otherColor_)[(static_cast<size_t>(y) * width_ + x) * 4]; }
+  const uint8_t* otherColorAt(int x, int y) const {
+    return &(*otherColor_)[(static_cast<size_t>(y) * width_ + x) * 4];
+  }
+
  private:
   int width_, height_;
   CacheAlignedPixels<uint8_t> color_;
+  std::unique_ptr<CacheAlignedPixels<uint8_t>> otherColor_;
+  int selected_ = 0;  // which buffer color_ holds
   CacheAlignedPixels<uint32_t> depth_;
   CacheAlignedPixels<uint8_t> stencil_;
 };
