@@ -259,6 +259,46 @@ display_mode_buffers)
   alpha 26 "GL depth 24 stencil 0 accum 0" "pixel 255 0 0" "blended 223 223 223 112"
   alpha 62 "GL depth 24 stencil 8 accum 16" "pixel 255 0 0" "blended 223 223 223 112"
   ;;
+front_buffer)
+  # A double-buffered window's two colour buffers (programs/front_buffer.c): drawing starts on
+  # the back buffer, the swap copies it to the front, an XOR square drawn into the front buffer
+  # and flushed is shown at once and leaves the back buffer alone, GL_FRONT_AND_BACK blends into
+  # each buffer's own pixels, glPopAttrib restores the draw buffer, and a swap shows the back
+  # buffer again. freeglut 3.4 with Mesa 22 on Xvfb printed the same but for the front buffer's
+  # pixels: its front buffer starts black and a swap does not change it (its screen shows that
+  # buffer after the XOR square), where GLX's swap makes the back buffer's contents the front's.
+  run glut_front_buffer "key r
+key f
+snapshot xor.png
+key r
+key b
+key r
+key p
+key s
+key r
+"
+  [ "$status" -eq 0 ] || fail "exited with $status"
+  printf '%s\n' "created: double buffer 1, draw GL_BACK, read GL_BACK
+frame
+front: (0 0 102) (255 0 0) (0 0 102)
+back: (0 0 102) (255 0 0) (0 0 102)
+front: (0 255 102) (255 0 0) (0 0 102)
+back: (0 0 102) (255 0 0) (0 0 102)
+both: double buffer 1, draw GL_FRONT_AND_BACK, read GL_BACK
+front: (0 255 102) (255 0 0) (128 128 179)
+back: (0 0 102) (255 0 0) (128 128 179)
+pushed: double buffer 1, draw GL_FRONT, read GL_BACK
+popped: double buffer 1, draw GL_BACK, read GL_BACK
+swapped
+front: (0 0 102) (255 0 0) (128 128 179)
+back: (0 0 102) (255 0 0) (128 128 179)" >expected.txt
+  diff expected.txt out.txt >&2 || fail "the answers differ from expected.txt"
+  # The XOR square over the red and the blue halves, shown after the flush; at the end the back
+  # buffer swapped in, with the blended square at the bottom right.
+  probe xor.png size 100 100 pixel 50 50 0 255 102 pixel 40 50 255 255 0 pixel 25 50 255 0 0 \
+    pixel 80 5 0 0 102
+  probe snapshot.png pixel 50 50 0 0 102 pixel 80 80 128 128 179
+  ;;
 game_mode)
   # Game mode: the asked size, depth and rate; the window at the screen's corner with a context
   # of that size; entering again replaces the window; leaving destroys it (and with no window

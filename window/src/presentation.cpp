@@ -11,14 +11,27 @@
 
 namespace glass::glut {
 
+namespace {
+
+// Whether the draw buffer, the context being current, includes the front buffer.
+bool drawingIntoFront() {
+  GLint buffer = GL_BACK;
+  glGetIntegerv(GL_DRAW_BUFFER, &buffer);
+  return buffer == GL_FRONT || buffer == GL_FRONT_LEFT || buffer == GL_FRONT_AND_BACK || buffer == GL_LEFT;
+}
+
+}  // namespace
+
 void presentOnFlush(GlassContext*, void* userData) {
   Window* window = findWindow(static_cast<int>(reinterpret_cast<intptr_t>(userData)));
-  // A double-buffered window shows nothing until glutSwapBuffers.
-  if (window && !window->doubleBuffered) presentWindow(*window);
+  // A double-buffered window shows its front buffer again when it is being drawn into (as Mesa
+  // shows front-buffer drawing at glFlush), else nothing until glutSwapBuffers.
+  if (window && (!window->doubleBuffered || drawingIntoFront())) presentWindow(*window);
 }
 
 void presentWindow(Window& window) {
-  const unsigned char* pixels = glassGetColorBuffer(window.context);
+  // The front buffer: a single-buffered context's one colour buffer.
+  const unsigned char* pixels = glassGetFrontBuffer(window.context);
   if (!pixels) return;
   window.shown.assign(pixels, pixels + static_cast<size_t>(window.width) * window.height * 4);
   if (window.inDisplayCallback) {

@@ -247,6 +247,10 @@ std::unique_ptr<Window> newWindow(const char* title, int x, int y, int width, in
   const AncillaryBits bits = ancillaryBitsOf(window->displayMode);
   glassSetAncillaryBuffers(window->context, bits.depth, bits.stencil, bits.accumulation);
   glassSetAlphaBitplanes(window->context, alphaBitsOf(window->displayMode));
+  // GLUT_DOUBLE: a front buffer, which the window shows, and a back one, which GL draws into.
+  if (window->doubleBuffered && !glassSetDoubleBuffered(window->context, 1)) {
+    fatalError("Unable to create OpenGL context for a %d x %d window", window->width, window->height);
+  }
   return window;
 }
 
@@ -452,11 +456,14 @@ void glutPostWindowRedisplay(int id) {
 }
 
 // As freeglut: glFlush first (which shows a single-buffered window's picture), then a
-// double-buffered window shows its picture.
+// double-buffered window's back buffer becomes its front buffer, which it shows.
 void glutSwapBuffers(void) {
   Window* window = requireCurrentWindow("glutSwapBuffers");
   glFlush();
-  if (window && window->doubleBuffered) presentWindow(*window);
+  if (window && window->doubleBuffered) {
+    glassSwapBuffers(window->context);
+    presentWindow(*window);
+  }
 }
 
 void glutWarpPointer(int x, int y) {
