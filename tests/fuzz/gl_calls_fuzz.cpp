@@ -742,9 +742,14 @@ void gluAndGlutCall(ByteReader &in) {
     }
     break;
   case 7: {
-    // The context back in its initial state (glassResetContext), lists, textures and pixels
-    // kept, even between glBegin and glEnd; its arrays point into the buffer again.
+    // A swap, one or two colour buffers, with or without alpha bitplanes (chosen by what is
+    // left of the input, so that no byte is taken), then the context back in its initial state
+    // (glassResetContext), lists, textures and pixels kept, even between glBegin and glEnd; its
+    // arrays point into the buffer again.
     GlassContext *current = glassGetCurrentContext();
+    glassSwapBuffers(current);
+    glassSetDoubleBuffered(current, static_cast<int>(in.size() & 1));
+    glassSetAlphaBitplanes(current, static_cast<int>((in.size() >> 1) & 1));
     glassResetContext(current);
     pointArraysAtBuffer();
     break;

@@ -153,7 +153,11 @@ TEST_CASE("glassSetDoubleBuffered: front and back buffers, drawn and read as glD
   CHECK(glassSwapBuffers(ctx) == 1);
   CHECK(fromMemory(glassGetFrontBuffer(ctx), 20, 19, 9) == Pixel{255, 0, 0, 255});
 
-  // Back to one buffer.
+  // Not between glBegin and glEnd; back to one buffer.
+  glBegin(GL_TRIANGLES);
+  CHECK(glassSetDoubleBuffered(ctx, 0) == 0);
+  glEnd();
+  CHECK(integer(GL_DOUBLEBUFFER) == 1);
   REQUIRE(glassSetDoubleBuffered(ctx, 0) == 1);
   CHECK(integer(GL_DOUBLEBUFFER) == 0);
   CHECK(glassGetFrontBuffer(ctx) == glassGetColorBuffer(ctx));

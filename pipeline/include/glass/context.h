@@ -108,8 +108,8 @@ GLASS_API void glassSetFlushCallback(GlassContext *ctx, GlassFlushCallback callb
  * glClear and glAccum(GL_RETURN) write the draw buffers. The new front buffer is a copy of the
  * colour buffer; setting the draw and read buffers to their initial values finishes the call.
  * glass's GLUT takes it from the display mode (GLUT_DOUBLE). Kept by glassResetContext and
- * glassResizeContext. 1 on success; 0 on a NULL context or no memory, and then nothing
- * changed. */
+ * glassResizeContext. 1 on success; 0 on a NULL context, a call between glBegin and glEnd or no
+ * memory, and then nothing changed. */
 GLASS_API int glassSetDoubleBuffered(GlassContext *ctx, int doubleBuffered);
 
 /* Copies the back buffer of a double-buffered context into its front buffer, after finishing

@@ -85,7 +85,8 @@ const unsigned char* glassGetFrontBuffer(const GlassContext* ctx) {
 }
 
 int glassSetDoubleBuffered(GlassContext* ctx, int doubleBuffered) {
-  if (!ctx) return 0;
+  // Between glBegin and glEnd the draw under way may be writing into both buffers.
+  if (!ctx || ctx->gl->assembly.active) return 0;
   try {
     glass::gl::setDoubleBuffered(*ctx->gl, doubleBuffered != 0);
   } catch (const std::bad_alloc&) {
