@@ -314,8 +314,10 @@ struct TexturingStage<KernelTexturing::Single2D> {
 // Stores words[i] as the 4 bytes at row + 4 i for each bit i of mask.
 void storeCoveredWords(void* row, const uint32_t* words, unsigned mask) { copyCoveredWords(row, words, mask); }
 
-// words[i] |= alpha for the eight pixels of a row (KernelPixelOps::storedAlpha).
+// words[i] |= alpha for the eight pixels of a row (KernelPixelOps::storedAlpha). Nothing to do
+// with alpha bitplanes (alpha 0): the words, just stored, are not loaded and stored again.
 void orRowWords(uint32_t words[kSize], uint32_t alpha) {
+  if (alpha == 0) return;
   for (int i = 0; i < kSize; ++i) words[i] |= alpha;
 }
 

@@ -65,7 +65,9 @@ void shadeLineRuns(raster::Framebuffer& framebuffer, const StencilDepthSettings&
     const float* const components[4] = {batch.varyings[0], batch.varyings[1], batch.varyings[2],
                                         batch.varyings[3]};
     PackColorColumns(components, batch.count, words);
-    for (int r = 0; r < batch.count; ++r) words[r] |= storedAlpha;
+    if (storedAlpha != 0) {
+      for (int r = 0; r < batch.count; ++r) words[r] |= storedAlpha;
+    }
   }
   for (int r = 0; r < batch.count; ++r) {
     size_t index = static_cast<size_t>(batch.y[r]) * width + static_cast<size_t>(batch.x[r]);
