@@ -63,25 +63,27 @@ GlassContext* glassGetCurrentContext(void) { return currentGlassContext; }
 int glassGetWidth(const GlassContext* ctx) { return ctx ? ctx->gl->framebuffer.width() : 0; }
 int glassGetHeight(const GlassContext* ctx) { return ctx ? ctx->gl->framebuffer.height() : 0; }
 
-const unsigned char* glassGetColorBuffer(const GlassContext* ctx) {
+namespace {
+
+// The pixels a caller of glassGetColorBuffer or glassGetFrontBuffer reads: queued draws must be
+// in them (finishing queued work changes no GL state, so the context stays logically const),
+// and with GLASS_VIEW it sees the view's picture (teaching/teaching_view.h), else `buffer`'s.
+const unsigned char* pixelsToRead(const GlassContext* ctx, const uint8_t* (*buffer)(const glass::gl::Context&)) {
   if (!ctx) return nullptr;
-  // The caller reads the pixels: queued draws must be in them. Finishing queued work changes no
-  // GL state, so the context stays logically const.
-  glass::gl::finishQueuedDrawing(*const_cast<GlassContext*>(ctx)->gl);
-  // With GLASS_VIEW the reader sees the view's picture (teaching/teaching_view.h).
-  if (const unsigned char* view = glass::gl::presentTeachingView(*const_cast<GlassContext*>(ctx)->gl)) {
-    return view;
-  }
-  return glass::gl::backBufferPixels(*ctx->gl);
+  glass::gl::Context& gl = *const_cast<GlassContext*>(ctx)->gl;
+  glass::gl::finishQueuedDrawing(gl);
+  if (const unsigned char* view = glass::gl::presentTeachingView(gl)) return view;
+  return buffer(gl);
+}
+
+}  // namespace
+
+const unsigned char* glassGetColorBuffer(const GlassContext* ctx) {
+  return pixelsToRead(ctx, glass::gl::backBufferPixels);
 }
 
 const unsigned char* glassGetFrontBuffer(const GlassContext* ctx) {
-  if (!ctx) return nullptr;
-  glass::gl::finishQueuedDrawing(*const_cast<GlassContext*>(ctx)->gl);  // as glassGetColorBuffer
-  if (const unsigned char* view = glass::gl::presentTeachingView(*const_cast<GlassContext*>(ctx)->gl)) {
-    return view;
-  }
-  return glass::gl::frontBufferPixels(*ctx->gl);
+  return pixelsToRead(ctx, glass::gl::frontBufferPixels);
 }
 
 int glassSetDoubleBuffered(GlassContext* ctx, int doubleBuffered) {
@@ -113,9 +115,7 @@ int glassSetAncillaryBuffers(GlassContext* ctx, int depth, int stencil, int accu
 
 int glassSetAlphaBitplanes(GlassContext* ctx, int alpha) {
   if (!ctx) return 0;
-  glass::gl::finishQueuedDrawing(*ctx->gl);  // what is queued was drawn with the alpha it had
-  ctx->gl->buffers.colorAlpha = alpha != 0;
-  if (!alpha) glass::gl::fillColorAlpha(ctx->gl->framebuffer);
+  glass::gl::setAlphaBitplanes(*ctx->gl, alpha != 0);
   return 1;
 }
 

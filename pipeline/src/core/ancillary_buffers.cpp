@@ -3,6 +3,7 @@
 #include "core/context.h"
 #include "fragment/color_conversion.h"
 #include "glass/raster/framebuffer.h"
+#include "primitive/queued_drawing.h"
 
 namespace glass::gl {
 
@@ -32,6 +33,12 @@ void fillColorAlpha(raster::Framebuffer& framebuffer) {
       if (other) other[4 * x + 3] = 255;
     }
   }
+}
+
+void setAlphaBitplanes(Context& ctx, bool alpha) {
+  finishQueuedDrawing(ctx);
+  ctx.buffers.colorAlpha = alpha;
+  if (!alpha) fillColorAlpha(ctx.framebuffer);
 }
 
 }  // namespace glass::gl

@@ -55,4 +55,8 @@ uint32_t storedAlphaWord(const Context& ctx);
 // 255 (a colour buffer without alpha bitplanes made, resized or given to the context).
 void fillColorAlpha(raster::Framebuffer& framebuffer);
 
+// Gives the colour buffer alpha bitplanes or takes them away (glassSetAlphaBitplanes, an OSMesa
+// format without alpha), after finishing the drawing queued with the alpha it had.
+void setAlphaBitplanes(Context& ctx, bool alpha);
+
 }  // namespace glass::gl

@@ -3,7 +3,6 @@
 
 #include "core/context.h"
 #include "fragment/buffer_selection.h"
-#include "primitive/queued_drawing.h"
 
 namespace glass::gl {
 
@@ -12,15 +11,11 @@ void forEachDrawnColorBuffer(Context& ctx, WriteOne writeOne) {
   if (!writesBothBuffers(ctx)) return writeOne();
   struct BackSelectedAtEnd {
     Context& ctx;
-    ~BackSelectedAtEnd() {
-      finishQueuedDrawing(ctx);
-      ctx.framebuffer.selectColorBuffer(kBackColorBuffer);
-    }
+    ~BackSelectedAtEnd() { selectColorBuffer(ctx, kBackColorBuffer); }
   };
   {
     BackSelectedAtEnd front{ctx};
-    finishQueuedDrawing(ctx);
-    ctx.framebuffer.selectColorBuffer(kFrontColorBuffer);
+    selectColorBuffer(ctx, kFrontColorBuffer);
     writeOne();
   }
   writeOne();

@@ -44,6 +44,12 @@ int drawColorBuffer(GLenum buffer) { return namesFrontOnly(buffer) ? kFrontColor
 
 }  // namespace
 
+void selectColorBuffer(Context& ctx, int index) {
+  if (ctx.framebuffer.selectedColorBuffer() == index) return;
+  finishQueuedDrawing(ctx);  // the queued fragments go to the buffer selected when they came
+  ctx.framebuffer.selectColorBuffer(index);
+}
+
 GLenum drawBufferError(GLenum buffer) {
   if (buffer == GL_NONE || namesAColorBuffer(buffer)) return GL_NO_ERROR;
   return namesAMissingBuffer(buffer) ? GL_INVALID_OPERATION : GL_INVALID_ENUM;
@@ -69,20 +75,13 @@ void setDoubleBuffered(Context& ctx, bool doubleBuffered) {
 }
 
 void selectDrawBuffer(Context& ctx) {
-  const int wanted = isDoubleBuffered(ctx) ? drawColorBuffer(ctx.fragment.drawBuffer) : kBackColorBuffer;
-  if (ctx.framebuffer.selectedColorBuffer() == wanted) return;
-  finishQueuedDrawing(ctx);
-  ctx.framebuffer.selectColorBuffer(wanted);
+  selectColorBuffer(ctx, isDoubleBuffered(ctx) ? drawColorBuffer(ctx.fragment.drawBuffer) : kBackColorBuffer);
 }
 
 bool writesBothBuffers(const Context& ctx) { return isDoubleBuffered(ctx) && namesBoth(ctx.fragment.drawBuffer); }
 
 ReadBufferSelection::ReadBufferSelection(Context& ctx) : ctx_(ctx) {
-  if (!isDoubleBuffered(ctx)) return;
-  const int wanted = readColorBuffer(ctx.pixelTransfer.readBuffer);
-  if (ctx.framebuffer.selectedColorBuffer() == wanted) return;
-  finishQueuedDrawing(ctx);
-  ctx.framebuffer.selectColorBuffer(wanted);
+  if (isDoubleBuffered(ctx)) selectColorBuffer(ctx, readColorBuffer(ctx.pixelTransfer.readBuffer));
 }
 
 ReadBufferSelection::~ReadBufferSelection() { selectDrawBuffer(ctx_); }
@@ -90,12 +89,9 @@ ReadBufferSelection::~ReadBufferSelection() { selectDrawBuffer(ctx_); }
 void swapColorBuffers(Context& ctx) {
   if (!isDoubleBuffered(ctx)) return;
   finishQueuedDrawing(ctx);
-  const raster::Framebuffer& fb = ctx.framebuffer;
+  raster::Framebuffer& fb = ctx.framebuffer;
   const size_t bytes = static_cast<size_t>(fb.width()) * fb.height() * 4;
-  // The front buffer's pixels, written through whichever address the framebuffer gives them.
-  uint8_t* front = fb.selectedColorBuffer() == kFrontColorBuffer ? ctx.framebuffer.colorAt(0, 0)
-                                                                 : ctx.framebuffer.otherColorAt(0, 0);
-  std::memcpy(front, fb.colorBufferPixels(kBackColorBuffer), bytes);
+  std::memcpy(fb.colorBufferPixels(kFrontColorBuffer), fb.colorBufferPixels(kBackColorBuffer), bytes);
 }
 
 const uint8_t* frontBufferPixels(const Context& ctx) {

@@ -43,6 +43,10 @@ inline constexpr int kBackColorBuffer = 0, kFrontColorBuffer = 1;
 
 bool isDoubleBuffered(const Context& ctx);
 
+// Selects the framebuffer's colour buffer `index` for colorAt, after finishing the queued drawing
+// when that changes which.
+void selectColorBuffer(Context& ctx, int index);
+
 // Gives the context a front and a back colour buffer (the front a copy of the colour buffer it
 // had) or only one, and sets the draw and read buffers to their initial values for it: GL_BACK
 // with two, GL_FRONT with one (spec 4.2.1, 4.3.2). Throws std::bad_alloc, changing nothing.

@@ -42,8 +42,7 @@ OSMesaContext createContext(const int* attributes, OSMesaContext sharelist, cons
     ctx->gl.buffers.stencil = request.stencilBits > 0;
     ctx->gl.buffers.accumulation = request.accumBits > 0;
     // A format without alpha gives a colour buffer without alpha bitplanes, as in Mesa.
-    ctx->gl.buffers.colorAlpha = glass::osmesa::formatHasAlpha(request.format);
-    if (!ctx->gl.buffers.colorAlpha) glass::gl::fillColorAlpha(ctx->gl.framebuffer);
+    glass::gl::setAlphaBitplanes(ctx->gl, glass::osmesa::formatHasAlpha(request.format));
     // Display lists and texture objects are shared (docs/osmesa.md).
     if (sharelist) {
       ctx->gl.lists.lists = sharelist->gl.lists.lists;

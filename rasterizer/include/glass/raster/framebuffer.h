@@ -60,6 +60,7 @@ class Framebuffer {
   const uint8_t* colorBufferPixels(int index) const {
     return index == selected_ ? &color_[0] : &(*otherColor_)[0];
   }
+  uint8_t* colorBufferPixels(int index) { return index == selected_ ? &color_[0] : &(*otherColor_)[0]; }
   uint8_t* otherColorAt(int x, int y) { return &(*otherColor_)[(static_cast<size_t>(y) * width_ + x) * 4]; }
   const uint8_t* otherColorAt(int x, int y) const {
     return &(*otherColor_)[(static_cast<size_t>(y) * width_ + x) * 4];
